@@ -1,0 +1,114 @@
+// Typed definition structs that configure a World, each with documented units
+// and defaults (the model: Box2D's b2WorldDef + b2DefaultWorldDef()).
+//
+// Units are SI throughout (m, kg, s, N, rad). BALL's unitless numbers work
+// as they are: a case may use them consistently. 2D discs have unit
+// thickness, so "mass density" is mass per unit area × 1 and forces are per
+// unit depth (Cundall & Strack 1979).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "dem/ids.h"
+#include "dem/math.h"
+
+namespace dem {
+
+// A property type ("material") shared by discs or walls (Cundall & Strack,
+// Input parameters). Walls use friction and cohesion; density only matters
+// for particles.
+struct MaterialDef {
+  std::string name;
+  double density = 1000.0;  // kg/m^3 (per unit thickness in 2D)
+  double friction = 0.0;    // tan(phi_mu), the interparticle friction coefficient
+  double cohesion = 0.0;    // c, N: shear strength at zero normal force (eq. 19)
+};
+
+// BALL's linear springs (Cundall & Strack eqs. 16-17): contact stiffnesses.
+struct LinearLawDef {
+  double normal_stiffness = 1.0e9;  // k_n, N/m
+  double shear_stiffness = 1.0e9;   // k_s, N/m
+};
+
+// The contact law for one pair of materials (or for every pair not named
+// elsewhere when both ids are kInvalidId). Friction and cohesion default to
+// the smaller of the two materials' values (Cundall & Strack eq. 19 and its
+// footnote 1); set them here to give a pair its own values.
+struct ContactModelDef {
+  MaterialId material_a = kInvalidId;
+  MaterialId material_b = kInvalidId;
+  LinearLawDef linear;
+  std::optional<double> friction;
+  std::optional<double> cohesion;
+};
+
+// Contact damping c = beta * k (Cundall & Strack eq. 28) and global damping
+// C = alpha * m, C* = alpha * I (eq. 34).
+struct DampingDef {
+  double contact_beta = 0.0;  // s
+  double global_alpha = 0.0;  // 1/s
+};
+
+struct ParticleDef {
+  Vec2 position = Vec2::Zero();  // m
+  double radius = 1.0;           // m
+  MaterialId material = 0;
+  Vec2 velocity = Vec2::Zero();   // m/s
+  double angular_velocity = 0.0;  // rad/s, counter-clockwise positive
+};
+
+// A servo holds the normal force a wall carries at a target: the wall moves
+// along its normal at gain * (target - measured), capped at max_speed
+// (the servo-controlled plate of Randall 1989, 4.1).
+struct ServoDef {
+  double target_force = 0.0;  // N (per unit depth in 2D); compressive positive
+  double gain = 0.0;          // m/(N s)
+  double max_speed = 0.0;     // m/s, > 0
+};
+
+// How a wall moves: a velocity of its reference point P and an angular
+// velocity about P (Cundall & Strack, Fig. 4), or a servo along its normal.
+struct WallMotion {
+  Vec2 velocity = Vec2::Zero();   // m/s
+  double angular_velocity = 0.0;  // rad/s, counter-clockwise positive
+  std::optional<ServoDef> servo;  // when set, replaces velocity/angular_velocity
+};
+
+// A wall is the segment of the line through P with unit direction e between
+// P + h1 e and P + h2 e (Cundall & Strack, Fig. 4). Its normal is e rotated
+// counter-clockwise: particles are expected on that side, which fixes the
+// sign of the wall's normal force and the direction a servo pushes.
+struct WallDef {
+  std::string name;
+  Vec2 point = Vec2::Zero();          // P, m
+  Vec2 direction = Vec2::UnitX();     // e, unit vector
+  double h1 = 0.0;                    // m, h1 < h2
+  double h2 = 1.0;                    // m
+  MaterialId material = 0;
+  WallMotion motion;
+};
+
+struct WorldDef {
+  std::vector<MaterialDef> materials;
+  std::vector<ContactModelDef> contact_models;
+  std::vector<ParticleDef> particles;
+  std::vector<WallDef> walls;
+  DampingDef damping;
+  Vec2 gravity = Vec2::Zero();  // m/s^2, body force per unit mass
+  // The time step is time_step_fraction times the critical step 2 sqrt(m/k)
+  // estimated from the particles and contact models, unless fixed_time_step > 0.
+  double time_step_fraction = 0.1;
+  double fixed_time_step = 0.0;  // s; 0 = use the fraction of the critical step
+  // Pairs closer than this gap are kept in the contact table (BALL's TOL), so
+  // the neighbour search only runs when something moved more than half of it.
+  // 0 = a tenth of the mean particle radius.
+  double contact_tolerance = 0.0;  // m
+  int threads = 0;                 // 0 = all the machine's cores
+};
+
+WorldDef default_world_def();
+
+}  // namespace dem

@@ -1,0 +1,19 @@
+// Broad phase: a uniform cell grid finds every pair whose gap is below the
+// contact tolerance, in time linear in the number of particles.
+#pragma once
+
+#include <vector>
+
+#include "contact_table.h"
+#include "particles.h"
+#include "walls.h"
+
+namespace dem {
+
+// Sorted (first < second) particle pairs with gap < tolerance.
+std::vector<Candidate> find_pair_candidates(const Particles& particles, double tolerance, int threads);
+
+// Sorted (particle, wall) pairs whose gap to the wall segment is < tolerance.
+std::vector<Candidate> find_wall_candidates(const Particles& particles, const Walls& walls, double tolerance);
+
+}  // namespace dem

@@ -1,0 +1,60 @@
+#include "dem/programme.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dem {
+
+namespace {
+
+bool servos_settled(const World& world, double tolerance) {
+  bool any = false;
+  for (const WallMeasure& m : world.wall_measures()) {
+    const auto& servo = world.wall(m.wall).motion.servo;
+    if (!servo) continue;
+    any = true;
+    if (std::abs(m.normal_force - servo->target_force) > tolerance * std::abs(servo->target_force)) return false;
+  }
+  return any;
+}
+
+bool conditions_hold(const World& world, const StopConditions& until) {
+  const bool needs_assembly = until.kinetic_energy_below || until.out_of_balance_below;
+  const AssemblyMeasures a = needs_assembly ? world.assembly_measures() : AssemblyMeasures{};
+  if (until.kinetic_energy_below && !(a.kinetic_energy < *until.kinetic_energy_below)) return false;
+  if (until.out_of_balance_below && !(a.contacts > 0 && a.out_of_balance < *until.out_of_balance_below)) return false;
+  if (until.servo_tolerance && !servos_settled(world, *until.servo_tolerance)) return false;
+  return true;
+}
+
+bool has_condition(const StopConditions& until) {
+  return until.kinetic_energy_below || until.out_of_balance_below || until.servo_tolerance;
+}
+
+}  // namespace
+
+StageResult run_stage(World& world, const StageDef& stage, std::uint64_t interval, const StageObserver& observer) {
+  for (const auto& [wall, motion] : stage.wall_motions) world.set_wall_motion(wall, motion);
+  if (stage.damping) world.set_damping(*stage.damping);
+
+  StageResult result;
+  const bool conditional = has_condition(stage.until);
+  const std::uint64_t check = std::max<std::uint64_t>(stage.until.check_interval, 1);
+  while (result.cycles_run < stage.cycles) {
+    // Advance to the next output row, condition check or the stage's end.
+    std::uint64_t chunk = stage.cycles - result.cycles_run;
+    if (interval > 0) chunk = std::min(chunk, interval - result.cycles_run % interval);
+    if (conditional) chunk = std::min(chunk, check - result.cycles_run % check);
+    world.cycle(chunk);
+    result.cycles_run += chunk;
+    if (observer && interval > 0 && result.cycles_run % interval == 0 && !observer(world)) break;
+    if (conditional && result.cycles_run >= stage.until.min_cycles && result.cycles_run % check == 0 &&
+        conditions_hold(world, stage.until)) {
+      result.condition_met = true;
+      break;
+    }
+  }
+  return result;
+}
+
+}  // namespace dem

@@ -1,0 +1,78 @@
+#include <cstdint>
+#include <cstring>
+#include <type_traits>
+
+#include "dem/world.h"
+#include "world_state.h"
+
+namespace dem {
+
+namespace {
+
+// FNV-1a over the bytes of the state: any bit that differs changes the hash.
+class Hasher {
+ public:
+  void add_bytes(const void* data, std::size_t size) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < size; ++i) {
+      hash_ ^= bytes[i];
+      hash_ *= 1099511628211ULL;
+    }
+  }
+  template <typename T>
+  void add(const T& value) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    add_bytes(&value, sizeof(T));
+  }
+  void add(const Vec2& v) {
+    add(v.x());
+    add(v.y());
+  }
+  template <typename T>
+  void add_all(const std::vector<T>& values) {
+    for (const T& v : values) add(v);
+  }
+  std::uint64_t value() const { return hash_; }
+
+ private:
+  std::uint64_t hash_ = 14695981039346656037ULL;
+};
+
+void add_contact(Hasher& h, const ContactState& s) {
+  h.add(s.normal_force);
+  h.add(s.shear_force);
+  h.add(s.touching);
+  h.add(s.force);
+}
+
+}  // namespace
+
+std::uint64_t World::state_hash() const {
+  const WorldState& s = *state_;
+  Hasher h;
+  h.add(s.cycle);
+  h.add(s.time);
+  h.add_all(s.particles.position);
+  h.add_all(s.particles.velocity);
+  h.add_all(s.particles.angular_velocity);
+  h.add_all(s.particles.rotation);
+  for (const PairContact& c : s.contacts.pairs) {
+    if (!c.state.touching) continue;
+    h.add(c.first);
+    h.add(c.second);
+    add_contact(h, c.state);
+  }
+  for (const WallContact& c : s.contacts.walls) {
+    if (!c.state.touching) continue;
+    h.add(c.particle);
+    h.add(c.wall);
+    add_contact(h, c.state);
+  }
+  for (const WallDef& w : s.walls.def) {
+    h.add(w.point);
+    h.add(w.direction);
+  }
+  return h.value();
+}
+
+}  // namespace dem

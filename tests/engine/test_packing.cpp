@@ -1,0 +1,69 @@
+// Particle generators: lattices and seeded random non-overlapping packings.
+#include <gtest/gtest.h>
+
+#include "dem/error.h"
+#include "dem/packing.h"
+
+namespace dem {
+namespace {
+
+TEST(Packing, HexagonalLatticeRowsAndShift) {
+  LatticeDef def;
+  def.radius = 1.0;
+  def.columns = 3;
+  def.rows = 2;
+  def.spacing = 2.0;
+  def.arrangement = LatticeArrangement::kHexagonal;
+  const auto p = generate_lattice(def);
+  ASSERT_EQ(p.size(), 6u);
+  EXPECT_DOUBLE_EQ(p[3].position.x(), 1.0);
+  EXPECT_DOUBLE_EQ(p[3].position.y(), std::sqrt(3.0));
+  EXPECT_NEAR((p[3].position - p[0].position).norm(), 2.0, 1e-15);
+}
+
+RandomPackingDef polydisperse_box() {
+  RandomPackingDef def;
+  def.min = {0.0, 0.0};
+  def.max = {840.0, 840.0};
+  def.sizes = {{40, 6}, {35, 7}, {30, 16}, {25, 33}, {20, 33}, {18, 36}, {15, 28}, {10, 38}};
+  def.seed = 1979;
+  return def;
+}
+
+TEST(Packing, RandomPackingHasNoOverlapAndStaysInTheBox) {
+  const auto p = generate_random_packing(polydisperse_box());
+  ASSERT_EQ(p.size(), 197u);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    EXPECT_GE(p[i].position.x() - p[i].radius, 0.0);
+    EXPECT_LE(p[i].position.y() + p[i].radius, 840.0);
+    for (std::size_t j = i + 1; j < p.size(); ++j) {
+      EXPECT_GE((p[i].position - p[j].position).norm(), p[i].radius + p[j].radius) << i << " " << j;
+    }
+  }
+}
+
+TEST(Packing, SeedDecidesThePacking) {
+  const auto a = generate_random_packing(polydisperse_box());
+  const auto b = generate_random_packing(polydisperse_box());
+  RandomPackingDef other = polydisperse_box();
+  other.seed = 7;
+  const auto c = generate_random_packing(other);
+  EXPECT_EQ(a[100].position, b[100].position);
+  EXPECT_NE(a[100].position, c[100].position);
+}
+
+TEST(Packing, ImpossiblePackingIsAnErrorNamingTheSize) {
+  RandomPackingDef def;
+  def.max = {10.0, 10.0};
+  def.sizes = {{1.0, 500}};
+  def.max_attempts = 1000;
+  try {
+    generate_random_packing(def);
+    FAIL();
+  } catch (const DefinitionError& e) {
+    EXPECT_NE(std::string(e.what()).find("radius 1"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace dem

@@ -1,0 +1,152 @@
+// The World API: construction errors, wall steering, measures, determinism.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "dem/error.h"
+#include "dem/packing.h"
+#include "dem/world.h"
+
+namespace dem {
+namespace {
+
+// A dense box of discs under gravity: enough particles for the parallel
+// loops to run threaded (they stay serial below 2048 items).
+WorldDef dense_box(int columns, int rows) {
+  WorldDef def;
+  def.materials = {MaterialDef{"disc", 2650.0, 0.5, 0.0}, MaterialDef{"wall", 1.0, 0.3, 0.0}};
+  def.contact_models = {ContactModelDef{kInvalidId, kInvalidId, {1.0e6, 0.7e6}, {}, {}}};
+  LatticeDef lattice;
+  lattice.radius = 0.01;
+  lattice.origin = {0.011, 0.011};
+  lattice.columns = columns;
+  lattice.rows = rows;
+  lattice.spacing = 0.0205;
+  lattice.arrangement = LatticeArrangement::kHexagonal;
+  def.particles = generate_lattice(lattice);
+  // Slightly varied radii, so the packing is not perfectly regular.
+  for (std::size_t i = 0; i < def.particles.size(); ++i) def.particles[i].radius *= 1.0 - 0.05 * double(i % 7) / 7.0;
+  const double width = columns * 0.0205 + 0.012, height = rows * 0.0205 + 0.012;
+  def.walls = {WallDef{"bottom", {0, 0}, {1, 0}, 0, width, 1, {}}, WallDef{"right", {width, 0}, {0, 1}, 0, 2 * height, 1, {}},
+               WallDef{"left", {0, 2 * height}, {0, -1}, 0, 2 * height, 1, {}}};
+  def.gravity = {0.0, -9.81};
+  def.damping = {1e-5, 1.0};
+  def.time_step_fraction = 0.2;
+  return def;
+}
+
+TEST(World, SameStateHashForOneAndTwoThreads) {
+  WorldDef def = dense_box(80, 40);  // 3200 discs
+  def.threads = 1;
+  World serial(def);
+  def.threads = 2;
+  World parallel(def);
+  EXPECT_EQ(serial.state_hash(), parallel.state_hash());
+  serial.cycle(300);
+  parallel.cycle(300);
+  std::printf("hash after 300 cycles: 1 thread %016llx, 2 threads %016llx, %zu contacts\n",
+              static_cast<unsigned long long>(serial.state_hash()), static_cast<unsigned long long>(parallel.state_hash()),
+              serial.contacts().size());
+  EXPECT_GT(serial.contacts().size(), 3000u);
+  EXPECT_EQ(serial.state_hash(), parallel.state_hash());
+}
+
+TEST(World, SameCaseGivesSameHash) {
+  World a(dense_box(20, 10)), b(dense_box(20, 10));
+  a.cycle(200);
+  b.cycle(100);
+  b.cycle(100);
+  EXPECT_EQ(a.state_hash(), b.state_hash());
+  World c(dense_box(20, 10));
+  c.cycle(199);
+  EXPECT_NE(a.state_hash(), c.state_hash());
+}
+
+TEST(World, RejectsBadDefinitionsNamingTheItem) {
+  auto expect_error = [](WorldDef def, const std::string& fragment) {
+    try {
+      World world(def);
+      ADD_FAILURE() << "accepted a definition that should fail with: " << fragment;
+    } catch (const DefinitionError& e) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+  };
+  WorldDef def = dense_box(3, 3);
+  def.particles[4].radius = -1.0;
+  expect_error(def, "particle 4: radius");
+  def = dense_box(3, 3);
+  def.walls[1].h2 = def.walls[1].h1;
+  expect_error(def, "wall 1 (\"right\"): h2");
+  def = dense_box(3, 3);
+  def.contact_models[0].material_a = 0;
+  def.contact_models[0].material_b = 0;  // disc-wall pair has no law now
+  expect_error(def, "no contact model for materials \"disc\" and \"wall\"");
+  def = dense_box(3, 3);
+  def.materials[0].density = 0.0;
+  expect_error(def, "material 0 (\"disc\"): density");
+  def = dense_box(3, 3);
+  def.particles.clear();
+  expect_error(def, "no particles");
+}
+
+TEST(World, TimeStepIsFractionOfCriticalStep) {
+  WorldDef def = dense_box(3, 3);
+  World world(def);
+  // 2 sqrt(m/k) over the assembly, rotation (I, k_s R^2) included: the
+  // smallest disc (radius 0.01 * (1 - 0.05 * 6/7)) with k_s = 0.7e6.
+  const double r = 0.01 * (1.0 - 0.05 * 6.0 / 7.0);
+  const double m = 2650.0 * std::acos(-1.0) * r * r;
+  const double rotational = 2.0 * std::sqrt(0.5 * m * r * r / (0.7e6 * r * r));
+  EXPECT_DOUBLE_EQ(world.critical_time_step(), rotational);
+  EXPECT_DOUBLE_EQ(world.time_step(), 0.2 * rotational);
+}
+
+TEST(World, WallMeasuresSeeTheWeightOnTheFloor) {
+  World world(dense_box(10, 6));
+  world.set_damping({1e-4, 20.0});
+  world.cycle(20000);
+  double weight = 0.0;
+  for (double m : world.particles().mass) weight += 9.81 * m;
+  const auto walls = world.wall_measures();
+  // Side walls are vertical: the floor carries the weight less the side walls' friction.
+  const double carried = walls[0].force.y() + walls[1].force.y() + walls[2].force.y();
+  std::printf("weight %.6g N, walls carry %.6g N (floor %.6g, %d contacts), out-of-balance %.3g\n", weight,
+              -carried, -walls[0].force.y(), walls[0].contacts, world.assembly_measures().out_of_balance);
+  EXPECT_NEAR(-carried, weight, 1e-3 * weight);
+  EXPECT_EQ(walls[0].contacts, 10);
+  EXPECT_GT(walls[0].normal_force, 0.0);
+  EXPECT_LT(world.assembly_measures().out_of_balance, 1e-3);
+}
+
+TEST(World, WallMotionMovesWallAndReportsSettlement) {
+  World world(dense_box(3, 3));
+  const WallId left = world.find_wall("left");
+  ASSERT_EQ(left, 2);
+  EXPECT_EQ(world.find_wall("nope"), kInvalidId);
+  WallMotion motion;
+  motion.velocity = {0.01, 0.0};
+  world.set_wall_motion(left, motion);
+  world.cycle(100);
+  const WallMeasure m = world.wall_measures()[left];
+  EXPECT_NEAR(m.displacement.x(), 0.01 * 100 * world.time_step(), 1e-15);
+  EXPECT_DOUBLE_EQ(m.displacement.y(), 0.0);
+}
+
+TEST(World, EccentricityOfASingleOffCentreContact) {
+  // One disc resting on a floor wall at a quarter of its length from the
+  // centre: e/(L/2) = 0.5 (Cundall & Strack Table 1, note 1).
+  WorldDef def;
+  def.materials = {MaterialDef{"disc", 1000.0, 0.5, 0.0}};
+  def.contact_models = {ContactModelDef{}};
+  def.particles = {ParticleDef{{0.5, 0.1 - 1e-5}, 0.1, 0}};
+  def.walls = {WallDef{"floor", {0.0, 0.0}, {1.0, 0.0}, -1.0, 1.0, 0, {}}};
+  World world(def);
+  world.cycle();
+  const WallMeasure m = world.wall_measures()[0];
+  EXPECT_EQ(m.contacts, 1);
+  EXPECT_NEAR(m.eccentricity, 0.5, 1e-12);
+  EXPECT_NEAR(m.moment, m.force.y() * 0.5, 1e-9 * std::abs(m.force.y()));
+}
+
+}  // namespace
+}  // namespace dem
