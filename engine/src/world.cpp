@@ -69,7 +69,6 @@ void validate(const WorldDef& def) {
   for (MaterialId m = 0; m < materials; ++m) {
     const MaterialDef& mat = def.materials[m];
     const std::string where = "material " + std::to_string(m) + " (\"" + mat.name + "\")";
-    check(mat.density > 0.0, where + ": density must be > 0");
     check(mat.friction >= 0.0, where + ": friction must be >= 0");
     check(mat.cohesion >= 0.0, where + ": cohesion must be >= 0");
   }
@@ -91,6 +90,8 @@ void validate(const WorldDef& def) {
     const std::string where = "particle " + std::to_string(i);
     check(p.radius > 0.0 && std::isfinite(p.radius), where + ": radius must be > 0");
     check(p.material >= 0 && p.material < materials, where + ": unknown material id");
+    check(def.materials[p.material].density > 0.0, "material " + std::to_string(p.material) + " (\"" +
+                                                       def.materials[p.material].name + "\"): density must be > 0");
     check(p.position.allFinite() && p.velocity.allFinite(), where + ": position and velocity must be finite");
   }
   for (std::size_t w = 0; w < def.walls.size(); ++w) {

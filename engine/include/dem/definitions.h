@@ -22,7 +22,7 @@ namespace dem {
 // for particles.
 struct MaterialDef {
   std::string name;
-  double density = 1000.0;  // kg/m^3 (per unit thickness in 2D)
+  double density = 1000.0;  // kg/m^3 (per unit thickness in 2D); > 0 for particle materials
   double friction = 0.0;    // tan(phi_mu), the interparticle friction coefficient
   double cohesion = 0.0;    // c, N: shear strength at zero normal force (eq. 19)
 };
@@ -109,6 +109,9 @@ struct WorldDef {
   int threads = 0;                 // 0 = all the machine's cores
 };
 
+// A definition with one "default" material and a default contact model for
+// every pair, for programs that build worlds in code. Case conversion starts
+// from an empty WorldDef instead, so material ids follow the case.
 WorldDef default_world_def();
 
 }  // namespace dem

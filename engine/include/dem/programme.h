@@ -39,8 +39,8 @@ struct StageResult {
   bool condition_met = false;  // a stop condition ended the stage before its cycle cap
 };
 
-// Called every `interval` cycles (and once at the start of the stage) so a
-// caller can record outputs; return false to stop the stage.
+// Called every `interval` cycles counted from the stage's start, so a caller
+// can record outputs; return false to stop the stage.
 using StageObserver = std::function<bool(const World&)>;
 
 StageResult run_stage(World& world, const StageDef& stage, std::uint64_t interval = 0,

@@ -1,0 +1,34 @@
+// Reading a case: protobuf text format from a file or a string, or the
+// serialized binary form the service receives. Loading only parses; see
+// case_validation.h for the checks and case_conversion.h for the engine
+// definitions.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "dem/case.pb.h"
+#include "dem/io/case_error.h"
+#include "dem/io/case_source.h"
+
+namespace dem::io {
+
+struct LoadedCase {
+  proto::Case message;
+  CaseSource source;  // for pointing later problems at their lines
+};
+
+// Throws CaseError naming the file when it cannot be read, and
+// "FILE:LINE:COLUMN: message" followed by the offending line for a syntax
+// error or an unknown field.
+LoadedCase load_case_file(const std::filesystem::path& path);
+
+// As load_case_file, for text already in memory; source_name stands in for
+// the file name in messages.
+LoadedCase parse_case_text(std::string_view text, std::string source_name = "<text>");
+
+// A serialized dem.proto.Case. Throws CaseError when the bytes are not one.
+LoadedCase parse_case_binary(std::string_view bytes, std::string source_name = "<binary>");
+
+}  // namespace dem::io

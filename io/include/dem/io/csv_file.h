@@ -1,0 +1,64 @@
+// One CSV output file with a header row. Numbers are written in the shortest
+// form that reads back to the same double (std::to_chars), so nothing is lost
+// to rounding; booleans as 0/1; text quoted only when it must be (RFC 4180).
+#pragma once
+
+#include <concepts>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <string_view>
+
+namespace dem::io {
+
+void append_field(std::string& line, double value);
+void append_field(std::string& line, bool value);
+void append_field(std::string& line, std::string_view text);
+inline void append_field(std::string& line, const char* text) { append_field(line, std::string_view(text)); }
+void append_field(std::string& line, std::int64_t value);
+void append_field(std::string& line, std::uint64_t value);
+template <std::integral T>
+requires(!std::same_as<T, bool>) void append_field(std::string& line, T value) {
+  if constexpr (std::signed_integral<T>) {
+    append_field(line, static_cast<std::int64_t>(value));
+  } else {
+    append_field(line, static_cast<std::uint64_t>(value));
+  }
+}
+
+class CsvFile {
+ public:
+  // Creates the directory if it is missing and writes the header. Throws
+  // std::runtime_error naming the file when it cannot be written.
+  CsvFile(const std::filesystem::path& directory, std::string_view file_name, std::string_view header);
+
+  template <typename... Fields>
+  void write_row(const Fields&... fields) {
+    std::string line;
+    (append_separated(line, fields), ...);
+    line += '\n';
+    write_line(line);
+  }
+
+  // Pushes buffered rows to the file, so a long run can be watched as it
+  // grows; throws std::runtime_error naming the file when that fails.
+  void flush();
+
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  template <typename Field>
+  static void append_separated(std::string& line, const Field& field) {
+    if (!line.empty()) line += ',';
+    append_field(line, field);
+  }
+
+  void write_line(std::string_view line);
+  void check() const;
+
+  std::filesystem::path path_;
+  std::ofstream out_;
+};
+
+}  // namespace dem::io

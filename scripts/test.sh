@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Builds and runs every test (unit, validation, and the later suites).
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+bash "$root/scripts/build.sh"
+# Every DDS process uses the loopback-only configuration.
+export CYCLONEDDS_URI="file://$root/config/cyclonedds-loopback.xml"
+# OpenMP threads must not spin while ctest runs tests side by side.
+export OMP_WAIT_POLICY=passive
+cd "$root/build"
+ctest --output-on-failure -j"$(nproc)"

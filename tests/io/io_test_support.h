@@ -1,0 +1,42 @@
+// Shared by the io tests: the data directory and the valid case every
+// bad-input test starts from.
+#pragma once
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "dem/io/case_loader.h"
+#include "dem/io/case_validation.h"
+
+namespace dem::io::test {
+
+inline std::filesystem::path data_path(const std::string& name) {
+  return std::filesystem::path(DEM_IO_TEST_DATA) / name;
+}
+
+// nine discs, a glass disc and four random discs in a box of four walls,
+// with three stages and two probes (tests/io/data/valid.case.txtpb).
+inline proto::Case valid_case() { return load_case_file(data_path("valid.case.txtpb")).message; }
+
+// "path: message" per problem, one a line, as validate_case reports them.
+inline std::string problem_text(const proto::Case& message) {
+  std::string text;
+  for (const CaseProblem& problem : find_case_problems(message)) {
+    text += problem.path + ": " + problem.message + '\n';
+  }
+  return text;
+}
+
+// A fresh, empty directory for one test's output.
+inline std::filesystem::path fresh_directory(const std::string& name) {
+  // The pid keeps runs from two build trees apart.
+  const auto directory =
+      std::filesystem::temp_directory_path() / ("dem_io_tests_" + std::to_string(::getpid()) + "_" + name);
+  std::filesystem::remove_all(directory);
+  return directory;
+}
+
+}  // namespace dem::io::test

@@ -1,0 +1,268 @@
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <ostream>
+#include <string>
+
+#include "dem/io/case_validation.h"
+#include "io_test_support.h"
+
+namespace dem::io {
+namespace {
+
+using ::testing::HasSubstr;
+
+TEST(CaseValidation, TheValidCaseHasNoProblems) {
+  EXPECT_EQ(test::problem_text(test::valid_case()), "");
+  EXPECT_NO_THROW(validate_case(test::valid_case()));
+}
+
+TEST(CaseValidation, ReportsEveryProblemAtOnce) {
+  proto::Case c = test::valid_case();
+  c.mutable_wall(2)->set_h2(0);
+  c.mutable_material(0)->set_friction(-1);
+  c.mutable_stage(2)->mutable_wall(0)->set_wall("lid");
+  try {
+    validate_case(c, {"case.txtpb", nullptr});
+    FAIL() << "the case validated";
+  } catch (const CaseError& error) {
+    ASSERT_EQ(error.problems().size(), 3u);
+    EXPECT_EQ(std::string(error.what()),
+              "case.txtpb: material[0].friction: must be >= 0 (got -1)\n"
+              "case.txtpb: wall[2].h2: must be greater than h1 (0 <= 0)\n"
+              "case.txtpb: stage[2].wall[0].wall: unknown wall \"lid\" "
+              "(the case defines \"bottom\", \"left\", \"right\", \"top\")");
+  }
+}
+
+// One plausible mistake: a change to the valid case and a piece of the message
+// that must name the field.
+struct Mistake {
+  std::string name;
+  std::function<void(proto::Case&)> make;
+  std::string expected;
+};
+
+std::ostream& operator<<(std::ostream& out, const Mistake& mistake) { return out << mistake.name; }
+
+class CaseMistake : public ::testing::TestWithParam<Mistake> {};
+
+TEST_P(CaseMistake, IsReportedWithItsField) {
+  proto::Case c = test::valid_case();
+  GetParam().make(c);
+  EXPECT_THAT(test::problem_text(c), HasSubstr(GetParam().expected));
+  EXPECT_THROW(validate_case(c), CaseError);
+}
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+proto::Lattice& lattice(proto::Case& c) { return *c.mutable_particles(0)->mutable_lattice(); }
+proto::Particle& disc(proto::Case& c) { return *c.mutable_particles(1)->mutable_particle(); }
+proto::RandomPacking& packing(proto::Case& c) { return *c.mutable_particles(2)->mutable_random_packing(); }
+proto::Until& until(proto::Case& c, int stage) { return *c.mutable_stage(stage)->mutable_until(); }
+proto::WallMotion& command(proto::Case& c) { return *c.mutable_stage(1)->mutable_wall(0)->mutable_motion(); }
+
+const Mistake kMistakes[] = {
+    // Materials
+    {"MaterialWithoutName", [](auto& c) { c.mutable_material(2)->clear_name(); },
+     "material[2].name: must not be empty"},
+    {"DuplicateMaterial", [](auto& c) { c.mutable_material(1)->set_name("disc"); },
+     "material[1].name: duplicate material name \"disc\" (material[0] has it too)"},
+    {"NegativeDensity", [](auto& c) { c.mutable_material(1)->set_density(-1); },
+     "material[1].density: must be >= 0 (got -1)"},
+    {"ParticleMaterialWithoutDensity", [](auto& c) { c.mutable_material(0)->clear_density(); },
+     "material[0].density: must be > 0 for a material particles are made of (got 0)"},
+    {"NegativeFriction", [](auto& c) { c.mutable_material(0)->set_friction(-0.5); },
+     "material[0].friction: must be >= 0 (got -0.5)"},
+    {"NegativeCohesion", [](auto& c) { c.mutable_material(2)->set_cohesion(-3); },
+     "material[2].cohesion: must be >= 0 (got -3)"},
+    {"InfiniteDensity", [](auto& c) { c.mutable_material(0)->set_density(kInfinity); },
+     "material[0].density: must be a finite number (got inf)"},
+    {"NaNFriction", [](auto& c) { c.mutable_material(0)->set_friction(std::nan("")); },
+     "material[0].friction: must be a finite number (got nan)"},
+
+    // Contact models
+    {"ZeroNormalStiffness", [](auto& c) { c.mutable_contact_model(0)->mutable_linear()->set_normal_stiffness(0); },
+     "contact_model[0].linear.normal_stiffness: must be > 0 (got 0)"},
+    {"NegativeShearStiffness", [](auto& c) { c.mutable_contact_model(1)->mutable_linear()->set_shear_stiffness(-1); },
+     "contact_model[1].linear.shear_stiffness: must be >= 0 (got -1)"},
+    {"ContactModelWithoutLaw", [](auto& c) { c.mutable_contact_model(2)->clear_linear(); },
+     "contact_model[2]: has no law; set linear"},
+    {"ContactModelUnknownMaterial", [](auto& c) { c.mutable_contact_model(1)->set_materials(1, "iron"); },
+     "contact_model[1].materials[1]: unknown material \"iron\" (the case defines \"disc\", \"glass\", \"steel\")"},
+    {"ContactModelThreeMaterials", [](auto& c) { c.mutable_contact_model(1)->add_materials("glass"); },
+     "contact_model[1].materials: names 3 materials"},
+    {"ContactModelNegativeFriction", [](auto& c) { c.mutable_contact_model(1)->set_friction(-0.1); },
+     "contact_model[1].friction: must be >= 0 (got -0.1)"},
+    {"ContactModelNegativeCohesion", [](auto& c) { c.mutable_contact_model(0)->set_cohesion(-2); },
+     "contact_model[0].cohesion: must be >= 0 (got -2)"},
+    {"DuplicatePairReversed",
+     [](auto& c) {
+       c.mutable_contact_model(0)->set_materials(0, "steel");
+       c.mutable_contact_model(0)->add_materials("disc");
+     },
+     "contact_model[1].materials: a second contact model for \"disc\" and \"steel\"; contact_model[0] already "
+     "covers the pair"},
+    {"SecondDefaultModel", [](auto& c) { c.mutable_contact_model(0)->clear_materials(); },
+     "contact_model[2]: is a second default model (one naming no materials); contact_model[0] is the first"},
+    {"UncoveredMixedPair", [](auto& c) { c.mutable_contact_model()->RemoveLast(); },
+     "contact_model: no contact model for materials \"disc\" and \"glass\", which can touch"},
+    {"UncoveredSelfPair", [](auto& c) { c.mutable_contact_model()->RemoveLast(); },
+     "contact_model: no contact model for material \"glass\" with itself"},
+    {"UncoveredParticleWallPair", [](auto& c) { c.mutable_contact_model()->RemoveLast(); },
+     "contact_model: no contact model for materials \"steel\" and \"glass\""},
+
+    // Particles
+    {"NoParticles", [](auto& c) { c.clear_particles(); }, "particles: the case defines no particles"},
+    {"EmptySource", [](auto& c) { c.mutable_particles(1)->Clear(); },
+     "particles[1]: is empty; set particle, lattice or random_packing"},
+    {"ParticleNegativeRadius", [](auto& c) { disc(c).set_radius(-0.01); },
+     "particles[1].particle.radius: must be > 0 (got -0.01)"},
+    {"ParticleZeroRadius", [](auto& c) { disc(c).clear_radius(); },
+     "particles[1].particle.radius: must be > 0 (got 0)"},
+    {"ParticleWithoutMaterial", [](auto& c) { disc(c).clear_material(); },
+     "particles[1].particle.material: must name a material"},
+    {"ParticleInfiniteVelocity", [](auto& c) { disc(c).mutable_velocity()->set_y(-kInfinity); },
+     "particles[1].particle.velocity.y: must be a finite number (got -inf)"},
+    {"LatticeUnknownMaterial", [](auto& c) { lattice(c).set_material("sand"); },
+     "particles[0].lattice.material: unknown material \"sand\""},
+    {"LatticeNegativeRadius", [](auto& c) { lattice(c).set_radius(-1); },
+     "particles[0].lattice.radius: must be > 0 (got -1)"},
+    {"LatticeNoColumns", [](auto& c) { lattice(c).clear_columns(); }, "particles[0].lattice.columns: must be > 0"},
+    {"LatticeNoRows", [](auto& c) { lattice(c).set_rows(0); }, "particles[0].lattice.rows: must be > 0"},
+    {"LatticeOverlapping", [](auto& c) { lattice(c).set_spacing(0.015); },
+     "particles[0].lattice.spacing: must be at least 2 * radius (0.02) so neighbours do not overlap (got 0.015)"},
+    {"LatticeNegativeSpacing", [](auto& c) { lattice(c).set_spacing(-0.03); },
+     "particles[0].lattice.spacing: must be >= 0 (got -0.03)"},
+    {"PackingBoxInsideOut", [](auto& c) { packing(c).mutable_max()->set_y(0.05); },
+     "particles[2].random_packing.max: must lie above and to the right of min (min (0, 0.07), max (0.1, 0.05))"},
+    {"PackingNoSizes", [](auto& c) { packing(c).clear_size(); },
+     "particles[2].random_packing.size: lists no size classes"},
+    {"PackingZeroCount", [](auto& c) { packing(c).mutable_size(0)->clear_count(); },
+     "particles[2].random_packing.size[0].count: must be > 0"},
+    {"PackingNegativeRadius", [](auto& c) { packing(c).mutable_size(0)->set_radius(-0.005); },
+     "particles[2].random_packing.size[0].radius: must be > 0 (got -0.005)"},
+    {"PackingDiscTooBig", [](auto& c) { packing(c).mutable_size(0)->set_radius(0.02); },
+     "particles[2].random_packing.size[0].radius: discs of radius 0.02 do not fit in the box (0.1 x "},
+    {"PackingTooManyAttempts", [](auto& c) { packing(c).set_max_attempts(3'000'000'000u); },
+     "particles[2].random_packing.max_attempts: must be at most 2147483647"},
+    {"TooManyParticles",
+     [](auto& c) {
+       lattice(c).set_columns(100'000);
+       lattice(c).set_rows(100'000);
+     },
+     "particles: define 10000000005 particles, more than particle ids can number"},
+
+    // Walls
+    {"WallEndsWhereItStarts", [](auto& c) { c.mutable_wall(2)->set_h2(0); },
+     "wall[2].h2: must be greater than h1 (0 <= 0)"},
+    {"WallBackwards", [](auto& c) { c.mutable_wall(0)->set_h1(0.5); },
+     "wall[0].h2: must be greater than h1 (0.1 <= 0.5)"},
+    {"WallWithoutName", [](auto& c) { c.mutable_wall(1)->clear_name(); }, "wall[1].name: must not be empty"},
+    {"DuplicateWall", [](auto& c) { c.mutable_wall(3)->set_name("top"); },
+     "wall[3].name: duplicate wall name \"top\" (wall[2] has it too)"},
+    {"WallZeroDirection", [](auto& c) { c.mutable_wall(2)->mutable_direction()->Clear(); },
+     "wall[2].direction: must not be zero-length"},
+    {"WallWithoutOrientation", [](auto& c) { c.mutable_wall(0)->clear_angle_deg(); },
+     "wall[0]: has no orientation; set direction"},
+    {"WallInfiniteAngle", [](auto& c) { c.mutable_wall(1)->set_angle_deg(kInfinity); },
+     "wall[1].angle_deg: must be a finite number (got inf)"},
+    {"WallUnknownMaterial", [](auto& c) { c.mutable_wall(1)->set_material("iron"); },
+     "wall[1].material: unknown material \"iron\""},
+    {"WallServoWithoutGain", [](auto& c) { c.mutable_wall(2)->mutable_motion()->mutable_servo()->set_max_speed(1); },
+     "wall[2].motion.servo.gain: must be > 0 (got 0)"},
+    {"WallServoNegativeSpeed",
+     [](auto& c) {
+       c.mutable_wall(2)->mutable_motion()->mutable_servo()->set_gain(1e-3);
+       c.mutable_wall(2)->mutable_motion()->mutable_servo()->set_max_speed(-1);
+     },
+     "wall[2].motion.servo.max_speed: must be > 0 (got -1)"},
+    {"WallServoAndVelocity",
+     [](auto& c) {
+       auto& motion = *c.mutable_wall(2)->mutable_motion();
+       motion.mutable_servo()->set_gain(1e-3);
+       motion.mutable_servo()->set_max_speed(1);
+       motion.mutable_velocity()->set_y(-1);
+     },
+     "wall[2].motion: sets both servo and velocity/angular_velocity"},
+
+    // Damping, time step, gravity, numerics
+    {"NegativeContactDamping", [](auto& c) { c.mutable_damping()->set_contact_beta(-1e-5); },
+     "damping.contact_beta: must be >= 0 (got -1e-05)"},
+    {"NegativeGlobalDamping", [](auto& c) { c.mutable_damping()->set_global_alpha(-2); },
+     "damping.global_alpha: must be >= 0 (got -2)"},
+    {"TimeStepFractionAboveOne", [](auto& c) { c.mutable_time_step()->set_fraction(1.5); },
+     "time_step.fraction: must be in (0, 1] (got 1.5)"},
+    {"NegativeTimeStepFraction", [](auto& c) { c.mutable_time_step()->set_fraction(-0.1); },
+     "time_step.fraction: must be in (0, 1] (got -0.1)"},
+    {"NegativeFixedTimeStep", [](auto& c) { c.mutable_time_step()->set_fixed(-1e-6); },
+     "time_step.fixed: must be >= 0 (got -1e-06)"},
+    {"NaNGravity", [](auto& c) { c.mutable_gravity()->set_x(std::nan("")); },
+     "gravity.x: must be a finite number (got nan)"},
+    {"NegativeContactTolerance", [](auto& c) { c.mutable_numerics()->set_contact_tolerance(-0.001); },
+     "numerics.contact_tolerance: must be >= 0 (got -0.001)"},
+    {"TooManyThreads", [](auto& c) { c.mutable_numerics()->set_threads(3'000'000'000u); },
+     "numerics.threads: must be at most 2147483647"},
+
+    // Stages
+    {"StageUnknownWall", [](auto& c) { c.mutable_stage(1)->mutable_wall(0)->set_wall("lid"); },
+     "stage[1].wall[0].wall: unknown wall \"lid\" (the case defines \"bottom\", \"left\", \"right\", \"top\")"},
+    {"StageCommandWithoutWall", [](auto& c) { c.mutable_stage(2)->mutable_wall(0)->clear_wall(); },
+     "stage[2].wall[0].wall: must name a wall"},
+    {"StageCommandsAWallTwice", [](auto& c) { c.mutable_stage(2)->add_wall()->set_wall("top"); },
+     "stage[2].wall[1].wall: wall \"top\" is already commanded by stage[2].wall[0]"},
+    {"StageServoWithoutGain", [](auto& c) { command(c).mutable_servo()->clear_gain(); },
+     "stage[1].wall[0].motion.servo.gain: must be > 0 (got 0)"},
+    {"StageServoZeroSpeed", [](auto& c) { command(c).mutable_servo()->set_max_speed(0); },
+     "stage[1].wall[0].motion.servo.max_speed: must be > 0 (got 0)"},
+    {"StageServoInfiniteTarget", [](auto& c) { command(c).mutable_servo()->set_target_force(kInfinity); },
+     "stage[1].wall[0].motion.servo.target_force: must be a finite number (got inf)"},
+    {"StageWithoutCycles", [](auto& c) { c.mutable_stage(2)->clear_cycles(); }, "stage[2].cycles: must be > 0"},
+    {"StageNegativeDamping", [](auto& c) { c.mutable_stage(1)->mutable_damping()->set_global_alpha(-1); },
+     "stage[1].damping.global_alpha: must be >= 0 (got -1)"},
+    {"UntilWithoutCondition", [](auto& c) { until(c, 0).clear_kinetic_energy_below(); },
+     "stage[0].until: sets no stop condition"},
+    {"UntilNegativeKineticEnergy", [](auto& c) { until(c, 0).set_kinetic_energy_below(-1); },
+     "stage[0].until.kinetic_energy_below: must be > 0 (got -1)"},
+    {"UntilZeroOutOfBalance", [](auto& c) { until(c, 0).set_out_of_balance_below(0); },
+     "stage[0].until.out_of_balance_below: must be > 0 (got 0)"},
+    {"UntilServoToleranceWithoutServo", [](auto& c) { until(c, 0).set_servo_tolerance(0.01); },
+     "stage[0].until.servo_tolerance: no wall is servo-controlled during this stage"},
+    {"UntilServoToleranceAfterServoStopped", [](auto& c) { until(c, 2).set_servo_tolerance(0.01); },
+     "stage[2].until.servo_tolerance: no wall is servo-controlled during this stage"},
+    {"UntilMinCyclesBeyondCap", [](auto& c) { until(c, 0).set_min_cycles(500); },
+     "stage[0].until.min_cycles: must not exceed the stage's cycles (500 > 400)"},
+
+    // Output
+    {"ProbeUnknownParticle", [](auto& c) { c.mutable_output()->mutable_probe(0)->set_second(99); },
+     "output.probe[0].second: no particle with id 99 (the case defines 14 particles, ids 0 to 13)"},
+    {"ProbeFirstUnknown", [](auto& c) { c.mutable_output()->mutable_probe(1)->set_first(14); },
+     "output.probe[1].first: no particle with id 14"},
+    {"ProbeSameParticle", [](auto& c) { c.mutable_output()->mutable_probe(1)->set_second(4); },
+     "output.probe[1].second: must differ from first (both are 4)"},
+    {"ProbeWithoutName", [](auto& c) { c.mutable_output()->mutable_probe(0)->clear_name(); },
+     "output.probe[0].name: must not be empty"},
+    {"DuplicateProbe", [](auto& c) { c.mutable_output()->mutable_probe(1)->set_name("corner"); },
+     "output.probe[1].name: duplicate probe name \"corner\" (output.probe[0] has it too)"},
+};
+
+INSTANTIATE_TEST_SUITE_P(CaseValidation, CaseMistake, ::testing::ValuesIn(kMistakes),
+                         [](const auto& test) { return test.param.name; });
+
+TEST(CaseValidation, AWallOnlyMaterialNeedsNoDensity) {
+  proto::Case c = test::valid_case();
+  ASSERT_EQ(c.material(1).density(), 0);  // "steel" is only used by walls
+  EXPECT_EQ(test::problem_text(c), "");
+}
+
+TEST(CaseValidation, ADefaultModelCoversEveryPair) {
+  proto::Case c = test::valid_case();
+  c.mutable_contact_model()->DeleteSubrange(0, 2);
+  EXPECT_EQ(test::problem_text(c), "");
+}
+
+}  // namespace
+}  // namespace dem::io

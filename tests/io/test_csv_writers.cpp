@@ -1,0 +1,199 @@
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <charconv>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "dem/io/csv_writers.h"
+#include "io_test_support.h"
+
+namespace dem::io {
+namespace {
+
+using ::testing::HasSubstr;
+
+using Row = std::vector<std::string>;
+
+// A CSV file as rows of fields; nothing these tests write needs quotes.
+std::vector<Row> read_csv(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::vector<Row> rows;
+  for (std::string line; std::getline(in, line);) {
+    Row row;
+    std::istringstream fields(line);
+    for (std::string field; std::getline(fields, field, ',');) row.push_back(field);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+double number(const std::string& field) {
+  double value = 0;
+  const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
+  EXPECT_TRUE(error == std::errc{} && end == field.data() + field.size()) << field;
+  return value;
+}
+
+// Two overlapping discs resting on a floor, a third apart from both, cycled
+// once so the contacts carry forces.
+class CsvWriters : public ::testing::Test {
+ protected:
+  CsvWriters() : world_(make_world()) { world_.cycle(1); }
+  ~CsvWriters() override { std::filesystem::remove_all(directory_); }
+
+  static WorldDef make_world() {
+    WorldDef def;
+    def.materials.push_back({"disc", 1000, 0.5, 0});
+    def.contact_models.push_back({});
+    def.particles.push_back({Vec2(0.0, 0.0099), 0.01, 0, Vec2(0.1 / 3, 0), 0.5});
+    def.particles.push_back({Vec2(0.0199, 0.0099), 0.01, 0, Vec2::Zero(), 0});
+    def.particles.push_back({Vec2(0.1, 0.05), 0.01, 0, Vec2::Zero(), 0});
+    WallDef floor;
+    floor.name = "floor";
+    floor.point = Vec2(-0.05, 0);
+    floor.h2 = 0.2;
+    def.walls.push_back(floor);
+    def.fixed_time_step = 1e-6;
+    return def;
+  }
+
+  std::filesystem::path directory_ =
+      test::fresh_directory(::testing::UnitTest::GetInstance()->current_test_info()->name());
+  World world_;
+};
+
+TEST_F(CsvWriters, WallsAreLongFormat) {
+  WallsCsv walls(directory_ / "nested" / "out");
+  walls.write(world_);
+  world_.cycle(1);
+  walls.write(world_);
+  const auto rows = read_csv(directory_ / "nested" / "out" / "walls.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0], (Row{"cycle", "time", "wall", "fx", "fy", "moment", "normal_force", "contacts", "eccentricity",
+                          "x", "y", "dx", "dy"}));
+  EXPECT_EQ((Row{rows[1][0], rows[1][1], rows[1][2]}), (Row{"1", "1e-06", "floor"}));
+  const WallMeasure measure = world_.wall_measures()[0];
+  const Row& row = rows[2];
+  EXPECT_EQ(row[0], "2");
+  EXPECT_EQ(number(row[3]), measure.force.x());
+  EXPECT_EQ(number(row[4]), measure.force.y());
+  EXPECT_EQ(number(row[5]), measure.moment);
+  EXPECT_EQ(number(row[6]), measure.normal_force);
+  EXPECT_EQ(row[7], "2");
+  EXPECT_EQ(number(row[8]), measure.eccentricity);
+  EXPECT_EQ(number(row[9]), measure.point.x());
+  EXPECT_EQ(number(row[12]), measure.displacement.y());
+  EXPECT_GT(measure.normal_force, 0);
+}
+
+TEST_F(CsvWriters, AssemblyRoundTripsEveryDigit) {
+  AssemblyCsv assembly(directory_);
+  assembly.write(world_);
+  const auto rows = read_csv(directory_ / "assembly.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0], (Row{"cycle", "time", "kinetic_energy", "out_of_balance", "max_contact_force", "contacts",
+                          "sliding_contacts"}));
+  const AssemblyMeasures measures = world_.assembly_measures();
+  EXPECT_EQ(number(rows[1][1]), world_.time());
+  EXPECT_EQ(number(rows[1][2]), measures.kinetic_energy);
+  EXPECT_EQ(number(rows[1][3]), measures.out_of_balance);
+  EXPECT_EQ(number(rows[1][4]), measures.max_contact_force);
+  EXPECT_EQ(rows[1][5], std::to_string(measures.contacts));
+  EXPECT_EQ(rows[1][5], "3");
+}
+
+TEST_F(CsvWriters, ProbesReportTouchingAndApartPairs) {
+  ProbesCsv probes(directory_, {{"pair", 0, 1}, {"apart", 0, 2}});
+  probes.write(world_);
+  const auto rows = read_csv(directory_ / "probes.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0], (Row{"cycle", "time", "probe", "normal_force", "shear_force", "touching"}));
+  const ContactRecord contact = *world_.contact_between(0, 1);
+  EXPECT_EQ(rows[1][2], "pair");
+  EXPECT_EQ(number(rows[1][3]), contact.normal_force);
+  EXPECT_EQ(number(rows[1][4]), contact.shear_force);
+  EXPECT_EQ(rows[1][5], "1");
+  EXPECT_EQ(rows[2], (Row{"1", "1e-06", "apart", "0", "0", "0"}));
+}
+
+TEST_F(CsvWriters, ContactsNameTheSecondBody) {
+  write_contacts_csv(directory_, world_);
+  std::ifstream in(directory_ / "contacts.csv");
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(lines[0],
+            "first,second_kind,second,x,y,nx,ny,overlap,normal_force,shear_force,normal_damping,shear_damping,"
+            "sliding");
+  EXPECT_THAT(lines, ::testing::Contains(::testing::StartsWith("0,particle,1,")));
+  EXPECT_THAT(lines, ::testing::Contains(::testing::StartsWith("0,wall,floor,")));
+  EXPECT_THAT(lines, ::testing::Contains(::testing::StartsWith("1,wall,floor,")));
+}
+
+TEST_F(CsvWriters, ParticlesRoundTrip) {
+  write_particles_csv(directory_, world_);
+  const auto rows = read_csv(directory_ / "particles.csv");
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(rows[0], (Row{"id", "x", "y", "radius", "vx", "vy", "angular_velocity", "rotation"}));
+  const ParticleView particles = world_.particles();
+  for (int id = 0; id < 3; ++id) {
+    const Row& row = rows[id + 1];
+    EXPECT_EQ(row[0], std::to_string(id));
+    EXPECT_EQ(number(row[1]), particles.position[id].x());
+    EXPECT_EQ(number(row[2]), particles.position[id].y());
+    EXPECT_EQ(number(row[3]), particles.radius[id]);
+    EXPECT_EQ(number(row[4]), particles.velocity[id].x());
+    EXPECT_EQ(number(row[5]), particles.velocity[id].y());
+    EXPECT_EQ(number(row[6]), particles.angular_velocity[id]);
+    EXPECT_EQ(number(row[7]), particles.rotation[id]);
+  }
+}
+
+TEST_F(CsvWriters, AnUnwritableDirectoryIsNamed) {
+  // A file where the directory should be: root can write anywhere, so
+  // permissions would not make this fail.
+  std::filesystem::create_directories(directory_);
+  const auto blocker = directory_ / "taken";
+  std::ofstream(blocker) << "a file\n";
+  try {
+    AssemblyCsv assembly(blocker / "out");
+    FAIL() << "wrote under a file";
+  } catch (const std::runtime_error& error) {
+    EXPECT_THAT(error.what(), HasSubstr("cannot create the output directory " + (blocker / "out").string()));
+  }
+}
+
+TEST_F(CsvWriters, AnUnwritableFileIsNamed) {
+  std::filesystem::create_directories(directory_ / "particles.csv");
+  try {
+    write_particles_csv(directory_, world_);
+    FAIL() << "wrote over a directory";
+  } catch (const std::runtime_error& error) {
+    EXPECT_THAT(error.what(), HasSubstr("cannot write " + (directory_ / "particles.csv").string()));
+  }
+}
+
+std::string field(const auto& value) {
+  std::string line;
+  append_field(line, value);
+  return line;
+}
+
+TEST(CsvFields, FormatsAsDocumented) {
+  EXPECT_EQ(field(0.1), "0.1");
+  EXPECT_EQ(field(1.0 / 3.0), "0.3333333333333333");
+  EXPECT_EQ(field(1e-300), "1e-300");
+  EXPECT_EQ(field(true), "1");
+  EXPECT_EQ(field(-7), "-7");
+  EXPECT_EQ(field(std::uint64_t{18446744073709551615u}), "18446744073709551615");
+  EXPECT_EQ(field(std::string("floor")), "floor");
+  EXPECT_EQ(field("floor, north"), "\"floor, north\"");
+  EXPECT_EQ(field("say \"hi\""), "\"say \"\"hi\"\"\"");
+}
+
+}  // namespace
+}  // namespace dem::io

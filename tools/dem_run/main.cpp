@@ -1,0 +1,59 @@
+// dem_run CASE --out DIR [--threads N] [--quiet]
+// Exit codes: 0 done; 1 any other failure (for example an unwritable output
+// directory); 2 bad command-line arguments; 3 a case that cannot be read,
+// parsed, validated or built (the message names the file and the field).
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+#include <string>
+
+#include "dem/error.h"
+#include "dem/io/case_error.h"
+#include "run_case.h"
+
+namespace {
+
+constexpr int kFailure = 1;
+constexpr int kBadArguments = 2;
+constexpr int kBadCase = 3;
+
+// CLI11's NonNegativeNumber would print its upper bound, DBL_MAX, in full.
+std::string whole_number(const std::string& text) {
+  if (!text.empty() && text.find_first_not_of("0123456789") == std::string::npos) return {};
+  return "must be a whole number >= 0 (0 = all cores), got " + text;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Runs a DEM case headless and writes its results as CSV files."};
+  dem::run::RunOptions options;
+  int threads = 0;
+  app.add_option("case", options.case_path, "case file in protobuf text format")->required();
+  app.add_option("-o,--out", options.output_directory, "directory for the CSV files (created if missing)")->required();
+  const CLI::Option* threads_option =
+      app.add_option("-t,--threads", threads, "worker threads, 0 = all cores (default: the case's numerics.threads)")
+          ->check(whole_number);
+  app.add_flag("-q,--quiet", options.quiet, "print errors only: no progress line and no summary");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    // --help arrives here too, and is not a mistake.
+    return app.exit(error) == 0 ? 0 : kBadArguments;
+  }
+  if (threads_option->count() > 0) options.threads = threads;
+
+  try {
+    dem::run::run_case(options);
+    return 0;
+  } catch (const dem::io::CaseError& error) {
+    for (const auto& problem : error.problems()) std::cerr << "error: " << problem << '\n';
+    return kBadCase;
+  } catch (const dem::DefinitionError& error) {
+    std::cerr << "error: " << options.case_path.string() << ": " << error.what() << '\n';
+    return kBadCase;
+  } catch (const std::exception& error) {
+    std::cerr << "error: " << error.what() << '\n';
+    return kFailure;
+  }
+}

@@ -1,0 +1,32 @@
+// A one-line progress report on a terminal, rewritten in place with a
+// carriage return, so a long run shows it is alive without filling the
+// scrollback. Disabled, it prints nothing.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+
+#include "dem/programme.h"
+#include "dem/world.h"
+
+namespace dem::run {
+
+class ProgressLine {
+ public:
+  explicit ProgressLine(bool enabled) : enabled_(enabled) {}
+
+  // Redraws at most a few times a second: output intervals can be far
+  // shorter than a terminal needs.
+  void show(int stage_index, int stage_count, const StageDef& stage, std::uint64_t stage_cycles, const World& world);
+
+  // Blanks the line so the summary that follows starts clean.
+  void clear();
+
+ private:
+  bool enabled_;
+  std::size_t width_ = 0;  // of the line on screen, to blank it
+  std::chrono::steady_clock::time_point last_shown_{};
+};
+
+}  // namespace dem::run

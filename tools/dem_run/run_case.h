@@ -1,0 +1,22 @@
+// The headless run: case file in, CSV tables and a summary out.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+
+namespace dem::run {
+
+struct RunOptions {
+  std::filesystem::path case_path;
+  std::filesystem::path output_directory;
+  std::optional<int> threads;  // overrides the case's numerics.threads
+  bool quiet = false;          // no progress line and no summary
+};
+
+// Loads, validates and converts the case, builds the world and runs every
+// stage, writing the time series each output interval and the snapshots at
+// the end. Throws io::CaseError for a bad case, DefinitionError when the
+// engine rejects it, std::runtime_error when an output cannot be written.
+void run_case(const RunOptions& options);
+
+}  // namespace dem::run

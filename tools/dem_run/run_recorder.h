@@ -1,0 +1,42 @@
+// The CSV tables of one run: the time series (walls, assembly, probes) as the
+// run goes, and the contact and particle snapshots at its end.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+#include "dem/io/case_definition.h"
+#include "dem/io/csv_writers.h"
+#include "dem/world.h"
+
+namespace dem::run {
+
+class RunRecorder {
+ public:
+  // Creates the directory and the time-series files (probes.csv only when
+  // the case has probes).
+  RunRecorder(const std::filesystem::path& directory, const io::OutputSettings& output);
+
+  // Writes a row for the world's current cycle unless one was written
+  // already, so a stage's last cycle and the next stage's first are one row.
+  void record(const World& world);
+
+  // Writes contacts.csv (unless the case turned it off) and particles.csv.
+  void finish(const World& world);
+
+  // Every file written so far, for the summary.
+  const std::vector<std::filesystem::path>& files() const { return files_; }
+
+ private:
+  std::filesystem::path directory_;
+  bool contacts_file_;
+  io::WallsCsv walls_;
+  io::AssemblyCsv assembly_;
+  std::optional<io::ProbesCsv> probes_;
+  std::optional<std::uint64_t> last_cycle_;
+  std::vector<std::filesystem::path> files_;
+};
+
+}  // namespace dem::run

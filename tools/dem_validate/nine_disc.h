@@ -1,0 +1,45 @@
+// The nine-disc test of Cundall & Strack (1979), Figs. 5-9: runs the cases
+// in cases/ball/ and follows the force at contact C cycle by cycle.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace dem::validation {
+
+// One case's history of the force at contact C (one entry per cycle, from cycle 1).
+struct ContactHistory {
+  std::string variant;  // the case name
+  std::vector<double> normal_force;
+  std::vector<double> shear_force;
+};
+
+// Runs a case whose output names a probe "C" and records C at every cycle.
+ContactHistory follow_contact_c(const std::filesystem::path& case_file);
+
+// Undistorted compression (Figs. 6-7).
+struct CompressionReport {
+  ContactHistory undamped, contact_damping, global_damping, damped, slow;
+  double equilibrium_force = 0.0;        // F_eq: the fully damped run's final force at C
+  double undamped_mean = 0.0;            // time mean of the undamped force after loading
+  double undamped_amplitude = 0.0;       // half the peak-to-peak of the undamped force after loading
+  double slow_amplitude = 0.0;           // the same for the slow (0.04) loading
+  double damped_spread = 0.0;            // largest |F_final / F_eq - 1| over the three damped runs
+};
+CompressionReport run_compression(const std::filesystem::path& cases_dir);
+
+// Distortion at constant volume (Figs. 8-9): F_n and F_s at C during the
+// distortion stage for phi = 15, 30 deg and ks/kn = 2/3, 1.
+struct DistortionReport {
+  ContactHistory phi15_ks2_3, phi15_ks1, phi30_ks2_3, phi30_ks1;
+  std::size_t distortion_start = 0;  // index of the first distortion cycle in the histories
+};
+DistortionReport run_distortion(const std::filesystem::path& cases_dir);
+
+// Writes nine_disc.csv (cycle and the normal force at C for each compression
+// variant) and nine_disc_distortion.csv (cycle, F_n and F_s for each distortion variant).
+void write_nine_disc_csv(const CompressionReport& compression, const DistortionReport& distortion,
+                         const std::filesystem::path& out_dir);
+
+}  // namespace dem::validation
