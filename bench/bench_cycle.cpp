@@ -1,10 +1,13 @@
 // Disc-steps per second of the calculation cycle for a dense 2D assembly:
-// N discs in a hexagonal packing whose neighbours overlap by 0.05% of the
-// diameter, in a box under gravity, so every disc has about six contacts
-// from the first cycle. Figures are printed, not asserted.
+// N discs in a hexagonal packing whose neighbours touch, in a box under
+// gravity, so every disc has about six contacts from the first cycle.
+// Figures are printed, not asserted; the us_* counters split a cycle's time
+// into the phases of step() and rebuild_every counts cycles per rebuild of
+// the contact table.
 //   bench_cycle --benchmark_filter=Dense
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "dem/packing.h"
@@ -18,7 +21,8 @@ dem::WorldDef dense_assembly(int discs, int threads) {
   const int rows = discs / columns;
   WorldDef def;
   def.materials = {MaterialDef{"disc", 2650.0, 0.5, 0.0}, MaterialDef{"wall", 1.0, 0.3, 0.0}};
-  def.contact_models = {ContactModelDef{kInvalidId, kInvalidId, {1.0e6, 0.7e6}, {}, {}}};
+  // Stiff enough that the column barely settles under its own weight.
+  def.contact_models = {ContactModelDef{kInvalidId, kInvalidId, {1.0e8, 0.7e8}, {}, {}}};
   LatticeDef lattice;
   lattice.radius = 0.01;
   lattice.origin = {0.011, 0.011};
@@ -27,7 +31,6 @@ dem::WorldDef dense_assembly(int discs, int threads) {
   lattice.spacing = 0.02;
   lattice.arrangement = LatticeArrangement::kHexagonal;
   def.particles = generate_lattice(lattice);
-  for (dem::ParticleDef& p : def.particles) p.radius *= 1.0005;  // neighbours overlap slightly
   const double width = columns * 0.02 + 0.011, height = rows * 0.02;
   def.walls = {WallDef{"bottom", {0, 0}, {1, 0}, 0, width, 1, {}}, WallDef{"right", {width, 0}, {0, 1}, 0, 2 * height, 1, {}},
                WallDef{"left", {0, 2 * height}, {0, -1}, 0, 2 * height, 1, {}}};
@@ -43,7 +46,15 @@ void Dense(benchmark::State& state) {
   dem::World world(dense_assembly(discs, static_cast<int>(state.range(1))));
   world.cycle(200);  // let the packing settle into its contacts
   constexpr int kCyclesPerIteration = 10;
+  const dem::StepProfile before = world.profile();
   for (auto _ : state) world.cycle(kCyclesPerIteration);
+  const dem::StepProfile& after = world.profile();
+  const double cycles = static_cast<double>(after.cycles - before.cycles);
+  state.counters["rebuild_every"] = cycles / static_cast<double>(std::max<std::uint64_t>(after.contact_rebuilds - before.contact_rebuilds, 1));
+  state.counters["us_find"] = 1e6 * (after.find_contacts - before.find_contacts) / cycles;
+  state.counters["us_forces"] = 1e6 * (after.contact_forces - before.contact_forces) / cycles;
+  state.counters["us_sums"] = 1e6 * (after.force_sums - before.force_sums) / cycles;
+  state.counters["us_motion"] = 1e6 * (after.motion - before.motion) / cycles;
   state.SetItemsProcessed(state.iterations() * kCyclesPerIteration * world.particle_count());
   state.counters["discs"] = world.particle_count();
   state.counters["contacts_per_disc"] =

@@ -7,16 +7,17 @@ namespace dem {
 
 namespace {
 
-// Forces on the first body from the spring and dashpot forces: F_n and F_s
+// Force on the first body from the spring and dashpot forces: F_n and F_s
 // act opposite to e_i and t_i (Cundall & Strack, Fig. 3).
-void resolve_force(ContactState& s, const Vec2& e, const Vec2& t) {
-  s.force = -(s.normal_force + s.normal_damping) * e - (s.shear_force + s.shear_damping) * t;
+Vec2 resolve_force(const ContactState& s, const Vec2& e, const Vec2& t) {
+  return -(s.normal_force + s.normal_damping) * e - (s.shear_force + s.shear_damping) * t;
 }
 
 }  // namespace
 
 void compute_pair_forces(const Particles& particles, std::vector<PairContact>& pairs,
-                         const ContactParamTable& params, double dt, int threads) {
+                         std::vector<ContactForce>& forces, const ContactParamTable& params, double dt,
+                         int threads) {
   const auto n = static_cast<std::int64_t>(pairs.size());
   DEM_PARALLEL_FOR(threads, n)
   for (std::int64_t c = 0; c < n; ++c) {
@@ -29,7 +30,7 @@ void compute_pair_forces(const Particles& particles, std::vector<PairContact>& p
     const double overlap = rx + ry - distance;
     if (overlap <= 0.0 || distance == 0.0) {  // eq. 8
       separate(s);
-      contact.moment_second = 0.0;
+      forces[c] = ContactForce{};
       continue;
     }
     const Vec2 e = d / distance;                  // eq. 9
@@ -41,16 +42,15 @@ void compute_pair_forces(const Particles& particles, std::vector<PairContact>& p
                      params(particles.material[x], particles.material[y]), dt);
     s.normal = e;
     s.point = particles.position[x] + (rx - 0.5 * overlap) * e;
-    resolve_force(s, e, t);
     // Sum M = F_s R for each disc (Cundall & Strack, resultant moments).
     const double shear = s.shear_force + s.shear_damping;
-    s.moment_first = shear * rx;
-    contact.moment_second = shear * ry;
+    forces[c] = ContactForce{resolve_force(s, e, t), shear * rx, shear * ry};
   }
 }
 
 void compute_wall_forces(const Particles& particles, const Walls& walls, std::vector<WallContact>& contacts,
-                         const ContactParamTable& params, double dt, int threads) {
+                         std::vector<ContactForce>& forces, const ContactParamTable& params, double dt,
+                         int threads) {
   const auto n = static_cast<std::int64_t>(contacts.size());
   DEM_PARALLEL_FOR(threads, n)
   for (std::int64_t c = 0; c < n; ++c) {
@@ -67,6 +67,7 @@ void compute_wall_forces(const Particles& particles, const Walls& walls, std::ve
     const double overlap = r - distance;
     if (overlap <= 0.0) {
       separate(s);
+      forces[c] = ContactForce{};
       continue;
     }
     // e points from the disc to the wall; a centre exactly on the wall line
@@ -80,8 +81,7 @@ void compute_wall_forces(const Particles& particles, const Walls& walls, std::ve
                      params(particles.material[x], wall.material), dt);
     s.normal = e;
     s.point = centre + (r - 0.5 * overlap) * e;  // halfway between A_(D) and A_(w)
-    resolve_force(s, e, t);
-    s.moment_first = (s.shear_force + s.shear_damping) * r;
+    forces[c] = ContactForce{resolve_force(s, e, t), (s.shear_force + s.shear_damping) * r, 0.0};
   }
 }
 

@@ -10,9 +10,11 @@
 namespace dem {
 
 void compute_pair_forces(const Particles& particles, std::vector<PairContact>& pairs,
-                         const ContactParamTable& params, double dt, int threads);
+                         std::vector<ContactForce>& forces, const ContactParamTable& params, double dt,
+                         int threads);
 
 void compute_wall_forces(const Particles& particles, const Walls& walls, std::vector<WallContact>& contacts,
-                         const ContactParamTable& params, double dt, int threads);
+                         std::vector<ContactForce>& forces, const ContactParamTable& params, double dt,
+                         int threads);
 
 }  // namespace dem

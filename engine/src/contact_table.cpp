@@ -72,6 +72,9 @@ void rebuild_contacts(ContactTable& table, const std::vector<Candidate>& pair_ca
                       const std::vector<Candidate>& wall_candidates, int particle_count) {
   table.pairs = merge(table.pairs, pair_candidates);
   table.walls = merge(table.walls, wall_candidates);
+  // Outputs of the next force pass; every entry is rewritten there.
+  table.pair_forces.assign(table.pairs.size(), ContactForce{});
+  table.wall_forces.assign(table.walls.size(), ContactForce{});
 
   std::vector<std::int32_t> firsts(table.pairs.size()), seconds(table.pairs.size());
   for (std::size_t c = 0; c < table.pairs.size(); ++c) {

@@ -25,15 +25,21 @@ struct ContactState {
   double shear_damping = 0.0;   // D_s (eq. 27)
   Vec2 normal = Vec2::Zero();   // e_i, from the particle towards the other body
   Vec2 point = Vec2::Zero();    // halfway through the overlap
-  Vec2 force = Vec2::Zero();    // total force on the first particle (springs + dashpots)
-  double moment_first = 0.0;    // moment on the first particle
+};
+
+// What a contact exerts this cycle (springs + dashpots), zero when it does
+// not touch. Kept apart from the history rows: the force sums read only
+// these 32 bytes per contact, which keeps the gathers in cache.
+struct ContactForce {
+  Vec2 force = Vec2::Zero();   // on the first particle; the second gets -force
+  double moment_first = 0.0;   // on the first particle
+  double moment_second = 0.0;  // on the second particle (pairs only)
 };
 
 struct PairContact {
   ParticleId first;   // first < second
   ParticleId second;
   ContactState state;
-  double moment_second = 0.0;  // moment on the second particle
 };
 
 struct WallContact {
@@ -54,6 +60,8 @@ struct ContactIndex {
 struct ContactTable {
   std::vector<PairContact> pairs;  // sorted by (first, second)
   std::vector<WallContact> walls;  // sorted by (particle, wall)
+  std::vector<ContactForce> pair_forces;  // parallel to pairs
+  std::vector<ContactForce> wall_forces;  // parallel to walls
   ContactIndex index;
 };
 

@@ -16,37 +16,36 @@ void sum_particle_forces(Particles& particles, const ContactTable& table, int th
     double moment = 0.0;
     for (std::int32_t k = index.pair_offsets[i]; k < index.pair_offsets[i + 1]; ++k) {
       const std::int32_t entry = index.pair_entries[k];
-      const PairContact& c = table.pairs[entry >> 1];
-      if (!c.state.touching) continue;
+      const ContactForce& c = table.pair_forces[entry >> 1];
       if ((entry & 1) == 0) {
-        force += c.state.force;
-        moment += c.state.moment_first;
+        force += c.force;
+        moment += c.moment_first;
       } else {
-        force -= c.state.force;
+        force -= c.force;
         moment += c.moment_second;
       }
     }
     for (std::int32_t k = index.wall_offsets[i]; k < index.wall_offsets[i + 1]; ++k) {
-      const WallContact& c = table.walls[index.wall_entries[k]];
-      if (!c.state.touching) continue;
-      force += c.state.force;
-      moment += c.state.moment_first;
+      const ContactForce& c = table.wall_forces[index.wall_entries[k]];
+      force += c.force;
+      moment += c.moment_first;
     }
     particles.force[i] = force;
     particles.moment[i] = moment;
   }
 }
 
-void sum_wall_forces(Walls& walls, const std::vector<WallContact>& contacts) {
+void sum_wall_forces(Walls& walls, const std::vector<WallContact>& contacts, const std::vector<ContactForce>& forces) {
   std::fill(walls.force.begin(), walls.force.end(), Vec2::Zero());
   std::fill(walls.moment.begin(), walls.moment.end(), 0.0);
   std::fill(walls.normal_force.begin(), walls.normal_force.end(), 0.0);
   std::fill(walls.contacts.begin(), walls.contacts.end(), 0);
   std::fill(walls.normal_force_arm.begin(), walls.normal_force_arm.end(), 0.0);
-  for (const WallContact& c : contacts) {
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const WallContact& c = contacts[k];
     if (!c.state.touching) continue;
     const WallDef& wall = walls.def[c.wall];
-    const Vec2 on_wall = -c.state.force;
+    const Vec2 on_wall = -forces[k].force;
     const Vec2 arm = c.state.point - wall.point;
     // Compressive normal force: the particle pushes the wall away from its particle side.
     const double normal = -on_wall.dot(wall_normal(wall));

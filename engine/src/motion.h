@@ -13,7 +13,7 @@ namespace dem {
 void sum_particle_forces(Particles& particles, const ContactTable& table, int threads);
 
 // Gathers the force each wall receives and the eccentricity sums, in contact order.
-void sum_wall_forces(Walls& walls, const std::vector<WallContact>& contacts);
+void sum_wall_forces(Walls& walls, const std::vector<WallContact>& contacts, const std::vector<ContactForce>& forces);
 
 // Time-centred central differences (eqs. 35-36, then 22a-23a); returns the
 // largest distance of any particle from its position in `reference` (where

@@ -38,11 +38,10 @@ class Hasher {
   std::uint64_t hash_ = 14695981039346656037ULL;
 };
 
-void add_contact(Hasher& h, const ContactState& s) {
+void add_contact(Hasher& h, const ContactState& s, const ContactForce& f) {
   h.add(s.normal_force);
   h.add(s.shear_force);
-  h.add(s.touching);
-  h.add(s.force);
+  h.add(f.force);
 }
 
 }  // namespace
@@ -56,17 +55,18 @@ std::uint64_t World::state_hash() const {
   h.add_all(s.particles.velocity);
   h.add_all(s.particles.angular_velocity);
   h.add_all(s.particles.rotation);
-  for (const PairContact& c : s.contacts.pairs) {
-    if (!c.state.touching) continue;
-    h.add(c.first);
-    h.add(c.second);
-    add_contact(h, c.state);
+  const ContactTable& t = s.contacts;
+  for (std::size_t k = 0; k < t.pairs.size(); ++k) {
+    if (!t.pairs[k].state.touching) continue;
+    h.add(t.pairs[k].first);
+    h.add(t.pairs[k].second);
+    add_contact(h, t.pairs[k].state, t.pair_forces[k]);
   }
-  for (const WallContact& c : s.contacts.walls) {
-    if (!c.state.touching) continue;
-    h.add(c.particle);
-    h.add(c.wall);
-    add_contact(h, c.state);
+  for (std::size_t k = 0; k < t.walls.size(); ++k) {
+    if (!t.walls[k].state.touching) continue;
+    h.add(t.walls[k].particle);
+    h.add(t.walls[k].wall);
+    add_contact(h, t.walls[k].state, t.wall_forces[k]);
   }
   for (const WallDef& w : s.walls.def) {
     h.add(w.point);

@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cassert>
 #include <cmath>
 #include <numbers>
@@ -18,25 +19,49 @@ namespace dem {
 
 namespace {
 
+// Adds the time since the last lap to a profile entry.
+class PhaseTimer {
+ public:
+  explicit PhaseTimer(StepProfile&) : last_(std::chrono::steady_clock::now()) {}
+  void lap(double& entry) {
+    const auto now = std::chrono::steady_clock::now();
+    entry += std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_;
+};
+
 // ---------------------------------------------------------------------------
 // The calculation cycle (Cundall & Strack 1979, The calculation cycle):
 // find contacts -> force-displacement law at every contact -> force sums ->
 // law of motion -> move walls.
 void step(WorldState& s) {
-  if (s.contacts_stale) find_contacts(s);
-  compute_pair_forces(s.particles, s.contacts.pairs, s.params, s.time_step, s.threads);
-  compute_wall_forces(s.particles, s.walls, s.contacts.walls, s.params, s.time_step, s.threads);
+  PhaseTimer timer(s.profile);
+  if (s.contacts_stale) {
+    find_contacts(s);
+    timer.lap(s.profile.find_contacts);
+  }
+  ContactTable& c = s.contacts;
+  compute_pair_forces(s.particles, c.pairs, c.pair_forces, s.params, s.time_step, s.threads);
+  compute_wall_forces(s.particles, s.walls, c.walls, c.wall_forces, s.params, s.time_step, s.threads);
+  timer.lap(s.profile.contact_forces);
   sum_particle_forces(s.particles, s.contacts, s.threads);
-  sum_wall_forces(s.walls, s.contacts.walls);
+  sum_wall_forces(s.walls, c.walls, c.wall_forces);
+  timer.lap(s.profile.force_sums);
   s.particle_travel = integrate_motion(s.particles, s.reference_positions, s.gravity, s.damping.global_alpha,
                                        s.time_step, s.threads);
+  timer.lap(s.profile.motion);
   move_walls(s.walls, s.time_step);
   s.wall_travel += max_wall_step(s.walls, s.time_step);
+  timer.lap(s.profile.walls);
   // A pair outside the table had a gap of at least TOL when it was built:
   // rebuild before anything could have closed that gap.
   s.contacts_stale = 2.0 * s.particle_travel >= s.contact_tolerance ||
                      s.particle_travel + s.wall_travel >= s.contact_tolerance;
   ++s.cycle;
+  ++s.profile.cycles;
   s.time += s.time_step;
 }
 // ---------------------------------------------------------------------------
@@ -51,6 +76,7 @@ void find_contacts(WorldState& s) {
   s.particle_travel = 0.0;
   s.wall_travel = 0.0;
   s.contacts_stale = false;
+  ++s.profile.contact_rebuilds;
 }
 
 namespace {
@@ -231,6 +257,7 @@ void World::set_damping(const DampingDef& damping) {
 Vec2 World::gravity() const { return state_->gravity; }
 void World::set_gravity(const Vec2& gravity) { state_->gravity = gravity; }
 int World::threads() const { return state_->threads; }
+const StepProfile& World::profile() const { return state_->profile; }
 void World::set_threads(int threads) { state_->threads = resolve_threads(threads); }
 
 }  // namespace dem

@@ -7,6 +7,7 @@
 #include "contact_params.h"
 #include "contact_table.h"
 #include "dem/definitions.h"
+#include "dem/profile.h"
 #include "particles.h"
 #include "walls.h"
 
@@ -33,6 +34,7 @@ struct WorldState {
   double particle_travel = 0.0;
   double wall_travel = 0.0;
   bool contacts_stale = true;
+  StepProfile profile;
 };
 
 // Rebuilds the contact table from the broad phase (keeping history).

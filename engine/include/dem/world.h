@@ -11,6 +11,7 @@
 
 #include "dem/definitions.h"
 #include "dem/measures.h"
+#include "dem/profile.h"
 
 namespace dem {
 
@@ -64,6 +65,9 @@ class World {
   void set_damping(const DampingDef& damping);
   Vec2 gravity() const;
   void set_gravity(const Vec2& gravity);
+
+  // Time spent in each phase of the cycle since the world was built.
+  const StepProfile& profile() const;
 
   int threads() const;
   void set_threads(int threads);  // 0 = all cores; results do not depend on it
