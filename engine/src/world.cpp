@@ -200,6 +200,8 @@ World::World(const WorldDef& def) : state_(std::make_unique<WorldState>()) {
   s.contact_tolerance =
       def.contact_tolerance > 0.0 ? def.contact_tolerance : 0.1 * radius_sum / static_cast<double>(n);
   s.critical_time_step = estimate_critical_time_step(s);
+  s.time_step_fraction = def.time_step_fraction;
+  s.fixed_time_step = def.fixed_time_step;
   s.time_step = def.fixed_time_step > 0.0 ? def.fixed_time_step : def.time_step_fraction * s.critical_time_step;
   check(std::isfinite(s.time_step) && s.time_step > 0.0, "world: cannot determine a time step");
 }
@@ -253,6 +255,23 @@ void World::set_damping(const DampingDef& damping) {
   state_->damping = damping;
   state_->params = ContactParamTable(state_->materials, state_->contact_models, damping);
 }
+
+void World::set_time_step_fraction(double fraction) {
+  check(fraction > 0.0 && fraction <= 1.0, "time_step_fraction must be in (0, 1]");
+  state_->time_step_fraction = fraction;
+  state_->fixed_time_step = 0.0;
+  state_->time_step = fraction * state_->critical_time_step;
+}
+
+void World::set_friction(MaterialId material, double friction) {
+  check(material >= 0 && material < static_cast<MaterialId>(state_->materials.size()),
+        "unknown material id " + std::to_string(material));
+  check(friction >= 0.0 && std::isfinite(friction), "friction must be >= 0");
+  state_->materials[material].friction = friction;
+  state_->params = ContactParamTable(state_->materials, state_->contact_models, state_->damping);
+}
+
+const std::vector<MaterialDef>& World::materials() const { return state_->materials; }
 
 Vec2 World::gravity() const { return state_->gravity; }
 void World::set_gravity(const Vec2& gravity) { state_->gravity = gravity; }

@@ -24,6 +24,8 @@ struct WorldState {
   Vec2 gravity = Vec2::Zero();
   double time_step = 0.0;
   double critical_time_step = 0.0;
+  double time_step_fraction = 0.1;  // the user's settings the step came from
+  double fixed_time_step = 0.0;
   double contact_tolerance = 0.0;  // BALL's TOL
   int threads = 1;
   std::uint64_t cycle = 0;

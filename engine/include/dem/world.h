@@ -12,6 +12,7 @@
 #include "dem/definitions.h"
 #include "dem/measures.h"
 #include "dem/profile.h"
+#include "dem/snapshot.h"
 
 namespace dem {
 
@@ -32,6 +33,9 @@ class World {
  public:
   // Throws DefinitionError naming the offending item if the definition is invalid.
   explicit World(const WorldDef& def);
+  // Restores a saved state; throws DefinitionError if the snapshot is
+  // inconsistent (ids out of range, sizes that do not match).
+  explicit World(const WorldSnapshot& snapshot);
   ~World();
   World(World&&) noexcept;
   World& operator=(World&&) noexcept;
@@ -71,6 +75,16 @@ class World {
 
   int threads() const;
   void set_threads(int threads);  // 0 = all cores; results do not depend on it
+
+  // Everything needed to continue this run exactly (see snapshot.h).
+  WorldSnapshot snapshot() const;
+
+  // The time step as a fraction of the critical step (0, 1]; recomputes the step.
+  void set_time_step_fraction(double fraction);
+  // Friction coefficient tan(phi) of a material; recomputes the pair table
+  // (contact models that set their own friction keep it).
+  void set_friction(MaterialId material, double friction);
+  const std::vector<MaterialDef>& materials() const;
 
   // 64-bit hash of the complete dynamic state (positions, velocities,
   // rotations, contact history, walls), bit for bit.

@@ -1,0 +1,158 @@
+#include "dem/snapshot.h"
+
+#include <algorithm>
+#include <string>
+
+#include "dem/error.h"
+#include "dem/world.h"
+#include "world_state.h"
+
+namespace dem {
+
+namespace {
+
+ContactSnapshot save_contact(const ContactState& s, const ContactForce& f) {
+  ContactSnapshot c;
+  c.normal_force = s.normal_force;
+  c.shear_force = s.shear_force;
+  c.sliding = s.sliding;
+  c.overlap = s.overlap;
+  c.normal_damping = s.normal_damping;
+  c.shear_damping = s.shear_damping;
+  c.normal = s.normal;
+  c.point = s.point;
+  c.force = f.force;
+  c.moment_first = f.moment_first;
+  c.moment_second = f.moment_second;
+  return c;
+}
+
+void restore_contact(const ContactSnapshot& c, ContactState& s, ContactForce& f) {
+  s.normal_force = c.normal_force;
+  s.shear_force = c.shear_force;
+  s.touching = true;
+  s.sliding = c.sliding;
+  s.overlap = c.overlap;
+  s.normal_damping = c.normal_damping;
+  s.shear_damping = c.shear_damping;
+  s.normal = c.normal;
+  s.point = c.point;
+  f = ContactForce{c.force, c.moment_first, c.moment_second};
+}
+
+void check(bool ok, const std::string& message) {
+  if (!ok) throw DefinitionError("snapshot: " + message);
+}
+
+// The table row of a saved contact; every touching pair is within the
+// tolerance, so the broad phase has put it in the table.
+template <typename Contact, typename First, typename Second>
+std::size_t find_row(const std::vector<Contact>& rows, ParticleId first, std::int32_t second, First first_of,
+                     Second second_of) {
+  const auto it = std::lower_bound(rows.begin(), rows.end(), std::pair{first, second},
+                                   [&](const Contact& c, const std::pair<ParticleId, std::int32_t>& key) {
+                                     return first_of(c) < key.first ||
+                                            (first_of(c) == key.first && second_of(c) < key.second);
+                                   });
+  check(it != rows.end() && first_of(*it) == first && second_of(*it) == second,
+        "contact (" + std::to_string(first) + ", " + std::to_string(second) + ") does not touch");
+  return static_cast<std::size_t>(it - rows.begin());
+}
+
+}  // namespace
+
+WorldSnapshot World::snapshot() const {
+  const WorldState& s = *state_;
+  WorldSnapshot snap;
+  WorldDef& def = snap.def;
+  def.materials = s.materials;
+  def.contact_models = s.contact_models;
+  def.damping = s.damping;
+  def.gravity = s.gravity;
+  def.contact_tolerance = s.contact_tolerance;
+  def.threads = s.threads;
+  def.fixed_time_step = s.fixed_time_step;
+  def.time_step_fraction = s.time_step_fraction;
+  const Particles& p = s.particles;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    def.particles.push_back(ParticleDef{p.position[i], p.radius[i], p.material[i], p.velocity[i], p.angular_velocity[i]});
+  }
+  snap.rotation = p.rotation;
+  snap.force = p.force;
+  snap.moment = p.moment;
+  def.walls = s.walls.def;
+  for (int w = 0; w < s.walls.size(); ++w) {
+    const Walls& walls = s.walls;
+    snap.walls.push_back(WallSnapshot{walls.initial_point[w], walls.last_velocity[w], walls.last_angular_velocity[w],
+                                      walls.force[w], walls.moment[w], walls.normal_force[w], walls.contacts[w],
+                                      walls.normal_force_arm[w]});
+  }
+  const ContactTable& t = s.contacts;
+  for (std::size_t k = 0; k < t.pairs.size(); ++k) {
+    if (!t.pairs[k].state.touching) continue;
+    ContactSnapshot c = save_contact(t.pairs[k].state, t.pair_forces[k]);
+    c.first = t.pairs[k].first;
+    c.second = t.pairs[k].second;
+    snap.contacts.push_back(c);
+  }
+  for (std::size_t k = 0; k < t.walls.size(); ++k) {
+    if (!t.walls[k].state.touching) continue;
+    ContactSnapshot c = save_contact(t.walls[k].state, t.wall_forces[k]);
+    c.first = t.walls[k].particle;
+    c.second = t.walls[k].wall;
+    c.with_wall = true;
+    snap.contacts.push_back(c);
+  }
+  snap.cycle = s.cycle;
+  snap.time = s.time;
+  snap.time_step = s.time_step;
+  snap.critical_time_step = s.critical_time_step;
+  return snap;
+}
+
+World::World(const WorldSnapshot& snap) : World(snap.def) {
+  WorldState& s = *state_;
+  const std::size_t n = s.particles.size();
+  check(snap.rotation.size() == n && snap.force.size() == n && snap.moment.size() == n,
+        "per-particle arrays do not match the " + std::to_string(n) + " particles");
+  check(snap.walls.size() == s.walls.def.size(), "per-wall records do not match the walls");
+  check(snap.time_step > 0.0 && snap.critical_time_step > 0.0, "time step must be > 0");
+  s.particles.rotation = snap.rotation;
+  s.particles.force = snap.force;
+  s.particles.moment = snap.moment;
+  for (std::size_t w = 0; w < snap.walls.size(); ++w) {
+    const WallSnapshot& ws = snap.walls[w];
+    s.walls.initial_point[w] = ws.initial_point;
+    s.walls.last_velocity[w] = ws.last_velocity;
+    s.walls.last_angular_velocity[w] = ws.last_angular_velocity;
+    s.walls.force[w] = ws.force;
+    s.walls.moment[w] = ws.moment;
+    s.walls.normal_force[w] = ws.normal_force;
+    s.walls.contacts[w] = ws.contacts;
+    s.walls.normal_force_arm[w] = ws.normal_force_arm;
+  }
+  s.cycle = snap.cycle;
+  s.time = snap.time;
+  s.time_step = snap.time_step;
+  s.critical_time_step = snap.critical_time_step;
+
+  find_contacts(s);
+  ContactTable& t = s.contacts;
+  for (const ContactSnapshot& c : snap.contacts) {
+    check(c.first >= 0 && c.first < static_cast<ParticleId>(n), "contact names particle " + std::to_string(c.first));
+    if (c.with_wall) {
+      check(c.second >= 0 && c.second < s.walls.size(), "contact names wall " + std::to_string(c.second));
+      const std::size_t k = find_row(t.walls, c.first, c.second, [](const WallContact& w) { return w.particle; },
+                                     [](const WallContact& w) { return w.wall; });
+      restore_contact(c, t.walls[k].state, t.wall_forces[k]);
+    } else {
+      check(c.second > c.first && c.second < static_cast<ParticleId>(n),
+            "contact names particle " + std::to_string(c.second));
+      const std::size_t k = find_row(t.pairs, c.first, c.second, [](const PairContact& p) { return p.first; },
+                                     [](const PairContact& p) { return p.second; });
+      restore_contact(c, t.pairs[k].state, t.pair_forces[k]);
+    }
+  }
+}
+
+}  // namespace dem
