@@ -1,6 +1,7 @@
 #include "broad_phase.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -10,25 +11,34 @@ namespace dem {
 
 namespace {
 
+template <int Dim>
 struct CellGrid {
-  Vec2 origin;
+  using Cell = std::array<std::int64_t, Dim>;
+  Vec<Dim> origin;
   double cell_size = 1.0;
-  std::int64_t columns = 1, rows = 1;
+  Cell counts{};  // cells along each axis
   std::vector<std::int32_t> cell_start;  // CSR: particles of cell c are cell_particles[start[c]..start[c+1])
   std::vector<std::int32_t> cell_particles;
 
-  std::int64_t column_of(double x) const {
-    return std::clamp<std::int64_t>(static_cast<std::int64_t>((x - origin.x()) / cell_size), 0, columns - 1);
+  Cell cell_of(const Vec<Dim>& x) const {
+    Cell c;
+    for (int d = 0; d < Dim; ++d) {
+      c[d] = std::clamp<std::int64_t>(static_cast<std::int64_t>((x[d] - origin[d]) / cell_size), 0, counts[d] - 1);
+    }
+    return c;
   }
-  std::int64_t row_of(double y) const {
-    return std::clamp<std::int64_t>(static_cast<std::int64_t>((y - origin.y()) / cell_size), 0, rows - 1);
+  std::int64_t index(const Cell& c) const {
+    std::int64_t i = 0;
+    for (int d = Dim - 1; d >= 0; --d) i = i * counts[d] + c[d];
+    return i;
   }
 };
 
-CellGrid build_grid(const Particles& particles, double tolerance) {
+template <int Dim>
+CellGrid<Dim> build_grid(const Particles<Dim>& particles, double tolerance) {
   const std::size_t n = particles.size();
-  CellGrid grid;
-  Vec2 lo = particles.position[0], hi = particles.position[0];
+  CellGrid<Dim> grid;
+  Vec<Dim> lo = particles.position[0], hi = particles.position[0];
   double max_radius = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     lo = lo.cwiseMin(particles.position[i]);
@@ -37,23 +47,27 @@ CellGrid build_grid(const Particles& particles, double tolerance) {
   }
   // Any touching-or-near pair lies in neighbouring cells.
   grid.cell_size = 2.0 * max_radius + tolerance;
-  const Vec2 extent = hi - lo;
+  const Vec<Dim> extent = hi - lo;
   // A few particles flung far away must not blow the grid up: keep at most
   // about 4 cells per particle by growing the cells.
   const double max_cells = 4.0 * static_cast<double>(n) + 16.0;
-  while ((extent.x() / grid.cell_size + 1.0) * (extent.y() / grid.cell_size + 1.0) > max_cells) {
-    grid.cell_size *= 2.0;
-  }
+  auto cell_count = [&] {
+    double cells = 1.0;
+    for (int d = 0; d < Dim; ++d) cells *= extent[d] / grid.cell_size + 1.0;
+    return cells;
+  };
+  while (cell_count() > max_cells) grid.cell_size *= 2.0;
   grid.origin = lo;
-  grid.columns = static_cast<std::int64_t>(extent.x() / grid.cell_size) + 1;
-  grid.rows = static_cast<std::int64_t>(extent.y() / grid.cell_size) + 1;
+  std::int64_t cells = 1;
+  for (int d = 0; d < Dim; ++d) {
+    grid.counts[d] = static_cast<std::int64_t>(extent[d] / grid.cell_size) + 1;
+    cells *= grid.counts[d];
+  }
 
-  const std::int64_t cells = grid.columns * grid.rows;
-  std::vector<std::int32_t> cell_of(n);
+  std::vector<std::int64_t> cell_of(n);
   grid.cell_start.assign(cells + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec2& x = particles.position[i];
-    cell_of[i] = static_cast<std::int32_t>(grid.row_of(x.y()) * grid.columns + grid.column_of(x.x()));
+    cell_of[i] = grid.index(grid.cell_of(particles.position[i]));
     ++grid.cell_start[cell_of[i] + 1];
   }
   for (std::int64_t c = 0; c < cells; ++c) grid.cell_start[c + 1] += grid.cell_start[c];
@@ -63,31 +77,38 @@ CellGrid build_grid(const Particles& particles, double tolerance) {
   return grid;
 }
 
-// Calls visit(j) for every j > i in the 3x3 cells around particle i whose gap is below tolerance.
-template <typename Visit>
-void for_each_near(const CellGrid& grid, const Particles& particles, std::int32_t i, double tolerance,
+// Calls visit(j) for every j > i in the 3^Dim cells around particle i whose gap is below tolerance.
+template <int Dim, typename Visit>
+void for_each_near(const CellGrid<Dim>& grid, const Particles<Dim>& particles, std::int32_t i, double tolerance,
                    Visit visit) {
-  const Vec2& xi = particles.position[i];
-  const std::int64_t ci = grid.column_of(xi.x()), ri = grid.row_of(xi.y());
-  for (std::int64_t r = std::max<std::int64_t>(ri - 1, 0); r <= std::min(ri + 1, grid.rows - 1); ++r) {
-    for (std::int64_t c = std::max<std::int64_t>(ci - 1, 0); c <= std::min(ci + 1, grid.columns - 1); ++c) {
-      const std::int64_t cell = r * grid.columns + c;
-      for (std::int32_t k = grid.cell_start[cell]; k < grid.cell_start[cell + 1]; ++k) {
-        const std::int32_t j = grid.cell_particles[k];
-        if (j <= i) continue;
-        const double gap = (particles.position[j] - xi).norm() - particles.radius[i] - particles.radius[j];
-        if (gap < tolerance) visit(j);
-      }
+  const Vec<Dim>& xi = particles.position[i];
+  const auto home = grid.cell_of(xi);
+  constexpr int kNeighbourCells = Dim == 2 ? 9 : 27;
+  for (int k = 0; k < kNeighbourCells; ++k) {
+    typename CellGrid<Dim>::Cell cell;
+    bool inside = true;
+    for (int d = 0, code = k; d < Dim; ++d, code /= 3) {
+      cell[d] = home[d] + code % 3 - 1;
+      inside = inside && cell[d] >= 0 && cell[d] < grid.counts[d];
+    }
+    if (!inside) continue;
+    const std::int64_t c = grid.index(cell);
+    for (std::int32_t slot = grid.cell_start[c]; slot < grid.cell_start[c + 1]; ++slot) {
+      const std::int32_t j = grid.cell_particles[slot];
+      if (j <= i) continue;
+      const double gap = (particles.position[j] - xi).norm() - particles.radius[i] - particles.radius[j];
+      if (gap < tolerance) visit(j);
     }
   }
 }
 
 }  // namespace
 
-std::vector<Candidate> find_pair_candidates(const Particles& particles, double tolerance, int threads) {
+template <int Dim>
+std::vector<Candidate> find_pair_candidates(const Particles<Dim>& particles, double tolerance, int threads) {
   const auto n = static_cast<std::int32_t>(particles.size());
   if (n < 2) return {};
-  const CellGrid grid = build_grid(particles, tolerance);
+  const CellGrid<Dim> grid = build_grid(particles, tolerance);
 
   // Two passes (count, then fill) give every particle a fixed slot range, so
   // the list is identical for any thread count.
@@ -110,16 +131,23 @@ std::vector<Candidate> find_pair_candidates(const Particles& particles, double t
   return candidates;
 }
 
-std::vector<Candidate> find_wall_candidates(const Particles& particles, const Walls& walls, double tolerance) {
+template <int Dim>
+std::vector<Candidate> find_wall_candidates(const Particles<Dim>& particles, const Walls<Dim>& walls,
+                                            double tolerance) {
   std::vector<Candidate> candidates;
   const auto n = static_cast<std::int32_t>(particles.size());
   for (std::int32_t i = 0; i < n; ++i) {
     for (WallId w = 0; w < walls.size(); ++w) {
-      const SegmentPoint q = closest_point(walls.def[w], particles.position[i]);
+      const auto q = closest_point(walls.def[w], particles.position[i]);
       if ((particles.position[i] - q.point).norm() - particles.radius[i] < tolerance) candidates.push_back({i, w});
     }
   }
   return candidates;
 }
+
+template std::vector<Candidate> find_pair_candidates(const Particles<2>&, double, int);
+template std::vector<Candidate> find_pair_candidates(const Particles<3>&, double, int);
+template std::vector<Candidate> find_wall_candidates(const Particles<2>&, const Walls<2>&, double);
+template std::vector<Candidate> find_wall_candidates(const Particles<3>&, const Walls<3>&, double);
 
 }  // namespace dem

@@ -11,9 +11,12 @@
 namespace dem {
 
 // Sorted (first < second) particle pairs with gap < tolerance.
-std::vector<Candidate> find_pair_candidates(const Particles& particles, double tolerance, int threads);
+template <int Dim>
+std::vector<Candidate> find_pair_candidates(const Particles<Dim>& particles, double tolerance, int threads);
 
-// Sorted (particle, wall) pairs whose gap to the wall segment is < tolerance.
-std::vector<Candidate> find_wall_candidates(const Particles& particles, const Walls& walls, double tolerance);
+// Sorted (particle, wall) pairs whose gap to the wall is < tolerance.
+template <int Dim>
+std::vector<Candidate> find_wall_candidates(const Particles<Dim>& particles, const Walls<Dim>& walls,
+                                            double tolerance);
 
 }  // namespace dem

@@ -9,12 +9,14 @@
 
 namespace dem {
 
-void compute_pair_forces(const Particles& particles, std::vector<PairContact>& pairs,
-                         std::vector<ContactForce>& forces, const ContactParamTable& params, double dt,
+template <int Dim>
+void compute_pair_forces(const Particles<Dim>& particles, std::vector<PairContact<Dim>>& pairs,
+                         std::vector<ContactForce<Dim>>& forces, const ContactParamTable& params, double dt,
                          int threads);
 
-void compute_wall_forces(const Particles& particles, const Walls& walls, std::vector<WallContact>& contacts,
-                         std::vector<ContactForce>& forces, const ContactParamTable& params, double dt,
-                         int threads);
+template <int Dim>
+void compute_wall_forces(const Particles<Dim>& particles, const Walls<Dim>& walls,
+                         std::vector<WallContact<Dim>>& contacts, std::vector<ContactForce<Dim>>& forces,
+                         const ContactParamTable& params, double dt, int threads);
 
 }  // namespace dem

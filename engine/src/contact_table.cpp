@@ -1,16 +1,24 @@
 #include "contact_table.h"
 
 #include <cassert>
-#include <type_traits>
 
 namespace dem {
 
 namespace {
 
-std::int32_t first_of(const PairContact& c) { return c.first; }
-std::int32_t second_of(const PairContact& c) { return c.second; }
-std::int32_t first_of(const WallContact& c) { return c.particle; }
-std::int32_t second_of(const WallContact& c) { return c.wall; }
+template <int Dim>
+std::int32_t first_of(const PairContact<Dim>& c) { return c.first; }
+template <int Dim>
+std::int32_t second_of(const PairContact<Dim>& c) { return c.second; }
+template <int Dim>
+std::int32_t first_of(const WallContact<Dim>& c) { return c.particle; }
+template <int Dim>
+std::int32_t second_of(const WallContact<Dim>& c) { return c.wall; }
+
+template <typename Contact>
+inline constexpr bool kIsPair = false;
+template <int Dim>
+inline constexpr bool kIsPair<PairContact<Dim>> = true;
 
 // Merges the sorted new keys with the sorted old entries, keeping the history
 // of every key present in both: linear in the table size and deterministic.
@@ -30,7 +38,7 @@ std::vector<Contact> merge(const std::vector<Contact>& old_entries, const std::v
       merged.push_back(old_entries[o]);
     } else {
       Contact fresh{};
-      if constexpr (std::is_same_v<Contact, PairContact>) {
+      if constexpr (kIsPair<Contact>) {
         fresh.first = key.first;
         fresh.second = key.second;
       } else {
@@ -68,13 +76,14 @@ void build_index(const std::vector<std::int32_t>& first_owner, const std::vector
 
 }  // namespace
 
-void rebuild_contacts(ContactTable& table, const std::vector<Candidate>& pair_candidates,
+template <int Dim>
+void rebuild_contacts(ContactTable<Dim>& table, const std::vector<Candidate>& pair_candidates,
                       const std::vector<Candidate>& wall_candidates, int particle_count) {
   table.pairs = merge(table.pairs, pair_candidates);
   table.walls = merge(table.walls, wall_candidates);
   // Outputs of the next force pass; every entry is rewritten there.
-  table.pair_forces.assign(table.pairs.size(), ContactForce{});
-  table.wall_forces.assign(table.walls.size(), ContactForce{});
+  table.pair_forces.assign(table.pairs.size(), ContactForce<Dim>{});
+  table.wall_forces.assign(table.walls.size(), ContactForce<Dim>{});
 
   std::vector<std::int32_t> firsts(table.pairs.size()), seconds(table.pairs.size());
   for (std::size_t c = 0; c < table.pairs.size(); ++c) {
@@ -87,5 +96,8 @@ void rebuild_contacts(ContactTable& table, const std::vector<Candidate>& pair_ca
   for (std::size_t c = 0; c < table.walls.size(); ++c) owners[c] = table.walls[c].particle;
   build_index(owners, nullptr, particle_count, table.index.wall_offsets, table.index.wall_entries);
 }
+
+template void rebuild_contacts(ContactTable<2>&, const std::vector<Candidate>&, const std::vector<Candidate>&, int);
+template void rebuild_contacts(ContactTable<3>&, const std::vector<Candidate>&, const std::vector<Candidate>&, int);
 
 }  // namespace dem

@@ -8,44 +8,48 @@
 #include <vector>
 
 #include "dem/ids.h"
-#include "dem/math.h"
+#include "dem/snapshot.h"
 
 namespace dem {
 
 // State shared by particle-particle and particle-wall contacts.
+template <int Dim>
 struct ContactState {
   // history, carried across cycles (eq. 18)
-  double normal_force = 0.0;  // F_n, compressive positive
-  double shear_force = 0.0;   // F_s
+  double normal_force = 0.0;    // F_n, compressive positive
+  ShearForce<Dim> shear = zero_shear<Dim>();  // F_s: signed along t_i (2D) or a tangent-plane vector (3D)
   bool touching = false;
   // results of the last force pass
   bool sliding = false;
   double overlap = 0.0;
-  double normal_damping = 0.0;  // D_n (eq. 26)
-  double shear_damping = 0.0;   // D_s (eq. 27)
-  Vec2 normal = Vec2::Zero();   // e_i, from the particle towards the other body
-  Vec2 point = Vec2::Zero();    // halfway through the overlap
+  double normal_damping = 0.0;        // D_n (eq. 26)
+  ShearForce<Dim> shear_damping = zero_shear<Dim>();  // D_s (eq. 27)
+  Vec<Dim> normal = Vec<Dim>::Zero();  // e_i, from the particle towards the other body
+  Vec<Dim> point = Vec<Dim>::Zero();   // halfway through the overlap
 };
 
 // What a contact exerts this cycle (springs + dashpots), zero when it does
 // not touch. Kept apart from the history rows: the force sums read only
-// these 32 bytes per contact, which keeps the gathers in cache.
+// these few bytes per contact, which keeps the gathers in cache.
+template <int Dim>
 struct ContactForce {
-  Vec2 force = Vec2::Zero();   // on the first particle; the second gets -force
-  double moment_first = 0.0;   // on the first particle
-  double moment_second = 0.0;  // on the second particle (pairs only)
+  Vec<Dim> force = Vec<Dim>::Zero();  // on the first particle; the second gets -force
+  Spin<Dim> moment_first = Space<Dim>::zero_spin();
+  Spin<Dim> moment_second = Space<Dim>::zero_spin();  // pairs only
 };
 
+template <int Dim>
 struct PairContact {
   ParticleId first;   // first < second
   ParticleId second;
-  ContactState state;
+  ContactState<Dim> state;
 };
 
+template <int Dim>
 struct WallContact {
   ParticleId particle;
   WallId wall;
-  ContactState state;
+  ContactState<Dim> state;
 };
 
 // A particle's view of its contacts: CSR offsets into an entry list.
@@ -57,11 +61,12 @@ struct ContactIndex {
   std::vector<std::int32_t> wall_entries;
 };
 
+template <int Dim>
 struct ContactTable {
-  std::vector<PairContact> pairs;  // sorted by (first, second)
-  std::vector<WallContact> walls;  // sorted by (particle, wall)
-  std::vector<ContactForce> pair_forces;  // parallel to pairs
-  std::vector<ContactForce> wall_forces;  // parallel to walls
+  std::vector<PairContact<Dim>> pairs;  // sorted by (first, second)
+  std::vector<WallContact<Dim>> walls;  // sorted by (particle, wall)
+  std::vector<ContactForce<Dim>> pair_forces;  // parallel to pairs
+  std::vector<ContactForce<Dim>> wall_forces;  // parallel to walls
   ContactIndex index;
 };
 
@@ -72,7 +77,8 @@ struct Candidate {
 
 // Replaces the table's entries with the new candidate lists (both sorted),
 // carrying over the history of every pair present in both.
-void rebuild_contacts(ContactTable& table, const std::vector<Candidate>& pair_candidates,
+template <int Dim>
+void rebuild_contacts(ContactTable<Dim>& table, const std::vector<Candidate>& pair_candidates,
                       const std::vector<Candidate>& wall_candidates, int particle_count);
 
 }  // namespace dem

@@ -10,15 +10,19 @@ namespace dem {
 
 // Gathers each particle's contact forces and moments in the fixed order of
 // the contact index: no racing sums, the same bits for any thread count.
-void sum_particle_forces(Particles& particles, const ContactTable& table, int threads);
+template <int Dim>
+void sum_particle_forces(Particles<Dim>& particles, const ContactTable<Dim>& table, int threads);
 
 // Gathers the force each wall receives and the eccentricity sums, in contact order.
-void sum_wall_forces(Walls& walls, const std::vector<WallContact>& contacts, const std::vector<ContactForce>& forces);
+template <int Dim>
+void sum_wall_forces(Walls<Dim>& walls, const std::vector<WallContact<Dim>>& contacts,
+                     const std::vector<ContactForce<Dim>>& forces);
 
 // Time-centred central differences (eqs. 35-36, then 22a-23a); returns the
 // largest distance of any particle from its position in `reference` (where
 // the contact table was last rebuilt), for the neighbour-list check.
-double integrate_motion(Particles& particles, const std::vector<Vec2>& reference, const Vec2& gravity,
+template <int Dim>
+double integrate_motion(Particles<Dim>& particles, const std::vector<Vec<Dim>>& reference, const Vec<Dim>& gravity,
                         double global_alpha, double dt, int threads);
 
 }  // namespace dem

@@ -1,6 +1,7 @@
 #include "dem/packing.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -8,24 +9,39 @@
 
 namespace dem {
 
-std::vector<ParticleDef> generate_lattice(const LatticeDef& def) {
+template <int Dim>
+std::vector<ParticleDefT<Dim>> generate_lattice(const LatticeDefT<Dim>& def) {
   if (def.radius <= 0.0) throw DefinitionError("lattice: radius must be > 0");
-  if (def.columns < 1 || def.rows < 1) throw DefinitionError("lattice: columns and rows must be >= 1");
+  const int layers = Dim == 3 ? def.layers : 1;
+  if (def.columns < 1 || def.rows < 1 || layers < 1) {
+    throw DefinitionError("lattice: columns, rows and layers must be >= 1");
+  }
   if (def.spacing < 2.0 * def.radius) {
     throw DefinitionError("lattice: spacing must be at least twice the radius (particles would overlap)");
   }
   const bool hexagonal = def.arrangement == LatticeArrangement::kHexagonal;
+  // Hexagonal: rows sqrt(3)/2 apart, every other row shifted by half a
+  // spacing; in 3D layers sqrt(2/3) apart, every other layer shifted by half
+  // a spacing along both axes, so no two particles are closer than spacing.
   const double row_pitch = hexagonal ? def.spacing * std::sqrt(3.0) / 2.0 : def.spacing;
-  std::vector<ParticleDef> particles;
-  particles.reserve(static_cast<std::size_t>(def.columns) * def.rows);
-  for (int row = 0; row < def.rows; ++row) {
-    const double shift = hexagonal && row % 2 == 1 ? 0.5 * def.spacing : 0.0;
-    for (int column = 0; column < def.columns; ++column) {
-      ParticleDef p;
-      p.position = def.origin + Vec2(column * def.spacing + shift, row * row_pitch);
-      p.radius = def.radius;
-      p.material = def.material;
-      particles.push_back(p);
+  const double layer_pitch = hexagonal ? def.spacing * std::sqrt(2.0 / 3.0) : def.spacing;
+  std::vector<ParticleDefT<Dim>> particles;
+  particles.reserve(static_cast<std::size_t>(def.columns) * def.rows * layers);
+  for (int layer = 0; layer < layers; ++layer) {
+    const double layer_shift = hexagonal && layer % 2 == 1 ? 0.5 * def.spacing : 0.0;
+    for (int row = 0; row < def.rows; ++row) {
+      const double row_shift = hexagonal && row % 2 == 1 ? 0.5 * def.spacing : 0.0;
+      for (int column = 0; column < def.columns; ++column) {
+        ParticleDefT<Dim> p;
+        Vec<Dim> offset = Vec<Dim>::Zero();
+        offset[0] = column * def.spacing + row_shift + layer_shift;
+        offset[1] = row * row_pitch + (hexagonal && layer % 2 == 1 ? row_pitch / 3.0 : 0.0);
+        if constexpr (Dim == 3) offset[2] = layer * layer_pitch;
+        p.position = def.origin + offset;
+        p.radius = def.radius;
+        p.material = def.material;
+        particles.push_back(p);
+      }
     }
   }
   return particles;
@@ -50,45 +66,64 @@ class Random {
   std::uint64_t state_;
 };
 
-// Occupancy grid with cells of the largest diameter: a new disc can only
-// overlap discs in the 3x3 cells around its centre.
+// Occupancy grid with cells of the largest diameter: a new particle can only
+// overlap particles in the 3^Dim cells around its centre.
+template <int Dim>
 class PlacementGrid {
  public:
-  PlacementGrid(const Vec2& min, const Vec2& max, double cell)
-      : min_(min), cell_(cell),
-        columns_(static_cast<int>((max.x() - min.x()) / cell) + 1),
-        rows_(static_cast<int>((max.y() - min.y()) / cell) + 1),
-        cells_(static_cast<std::size_t>(columns_) * rows_) {}
+  PlacementGrid(const Vec<Dim>& min, const Vec<Dim>& max, double cell) : min_(min), cell_(cell) {
+    std::size_t total = 1;
+    for (int d = 0; d < Dim; ++d) {
+      counts_[d] = static_cast<int>((max[d] - min[d]) / cell) + 1;
+      total *= static_cast<std::size_t>(counts_[d]);
+    }
+    cells_.resize(total);
+  }
 
-  bool is_free(const Vec2& x, double r, const std::vector<ParticleDef>& placed) const {
-    const int c0 = column(x), r0 = row(x);
-    for (int rr = std::max(r0 - 1, 0); rr <= std::min(r0 + 1, rows_ - 1); ++rr) {
-      for (int cc = std::max(c0 - 1, 0); cc <= std::min(c0 + 1, columns_ - 1); ++cc) {
-        for (int k : cells_[static_cast<std::size_t>(rr) * columns_ + cc]) {
-          const double reach = r + placed[k].radius;
-          if ((placed[k].position - x).squaredNorm() < reach * reach) return false;
-        }
+  bool is_free(const Vec<Dim>& x, double r, const std::vector<ParticleDefT<Dim>>& placed) const {
+    const auto home = cell_of(x);
+    constexpr int kNeighbourCells = Dim == 2 ? 9 : 27;
+    for (int k = 0; k < kNeighbourCells; ++k) {
+      std::array<int, Dim> cell;
+      bool inside = true;
+      for (int d = 0, code = k; d < Dim; ++d, code /= 3) {
+        cell[d] = home[d] + code % 3 - 1;
+        inside = inside && cell[d] >= 0 && cell[d] < counts_[d];
+      }
+      if (!inside) continue;
+      for (int j : cells_[index(cell)]) {
+        const double reach = r + placed[j].radius;
+        if ((placed[j].position - x).squaredNorm() < reach * reach) return false;
       }
     }
     return true;
   }
-  void insert(const Vec2& x, int id) { cells_[static_cast<std::size_t>(row(x)) * columns_ + column(x)].push_back(id); }
+  void insert(const Vec<Dim>& x, int id) { cells_[index(cell_of(x))].push_back(id); }
 
  private:
-  int column(const Vec2& x) const { return std::clamp(static_cast<int>((x.x() - min_.x()) / cell_), 0, columns_ - 1); }
-  int row(const Vec2& x) const { return std::clamp(static_cast<int>((x.y() - min_.y()) / cell_), 0, rows_ - 1); }
+  std::array<int, Dim> cell_of(const Vec<Dim>& x) const {
+    std::array<int, Dim> c;
+    for (int d = 0; d < Dim; ++d) c[d] = std::clamp(static_cast<int>((x[d] - min_[d]) / cell_), 0, counts_[d] - 1);
+    return c;
+  }
+  std::size_t index(const std::array<int, Dim>& c) const {
+    std::size_t i = 0;
+    for (int d = Dim - 1; d >= 0; --d) i = i * static_cast<std::size_t>(counts_[d]) + static_cast<std::size_t>(c[d]);
+    return i;
+  }
 
-  Vec2 min_;
+  Vec<Dim> min_;
   double cell_;
-  int columns_, rows_;
+  std::array<int, Dim> counts_{};
   std::vector<std::vector<int>> cells_;
 };
 
 }  // namespace
 
-std::vector<ParticleDef> generate_random_packing(const RandomPackingDef& def) {
-  if (!(def.max.x() > def.min.x() && def.max.y() > def.min.y())) {
-    throw DefinitionError("random packing: max must exceed min in x and y");
+template <int Dim>
+std::vector<ParticleDefT<Dim>> generate_random_packing(const RandomPackingDefT<Dim>& def) {
+  if (!(def.max.array() > def.min.array()).all()) {
+    throw DefinitionError("random packing: max must exceed min along every axis");
   }
   if (def.sizes.empty()) throw DefinitionError("random packing: no size classes");
   std::vector<SizeClass> sizes = def.sizes;
@@ -98,25 +133,26 @@ std::vector<ParticleDef> generate_random_packing(const RandomPackingDef& def) {
     if (s.count < 0) throw DefinitionError("random packing: size class count must be >= 0");
     largest = std::max(largest, s.radius);
   }
-  // Largest first: the big discs find room before the box fills up.
+  // Largest first: the big particles find room before the box fills up.
   std::stable_sort(sizes.begin(), sizes.end(), [](const SizeClass& a, const SizeClass& b) { return a.radius > b.radius; });
 
   Random random(def.seed);
-  PlacementGrid grid(def.min, def.max, 2.0 * largest);
-  std::vector<ParticleDef> placed;
+  PlacementGrid<Dim> grid(def.min, def.max, 2.0 * largest);
+  std::vector<ParticleDefT<Dim>> placed;
   for (const SizeClass& size : sizes) {
-    const Vec2 lo = def.min + Vec2::Constant(size.radius);
-    const Vec2 span = (def.max - def.min) - Vec2::Constant(2.0 * size.radius);
-    if (span.x() < 0.0 || span.y() < 0.0) {
+    const Vec<Dim> lo = def.min + Vec<Dim>::Constant(size.radius);
+    const Vec<Dim> span = (def.max - def.min) - Vec<Dim>::Constant(2.0 * size.radius);
+    if ((span.array() < 0.0).any()) {
       throw DefinitionError("random packing: radius " + std::to_string(size.radius) + " does not fit in the box");
     }
     for (int k = 0; k < size.count; ++k) {
       bool done = false;
       for (int attempt = 0; attempt < def.max_attempts && !done; ++attempt) {
-        const Vec2 x = lo + Vec2(random.uniform() * span.x(), random.uniform() * span.y());
+        Vec<Dim> x = lo;
+        for (int d = 0; d < Dim; ++d) x[d] += random.uniform() * span[d];
         if (!grid.is_free(x, size.radius, placed)) continue;
         grid.insert(x, static_cast<int>(placed.size()));
-        ParticleDef p;
+        ParticleDefT<Dim> p;
         p.position = x;
         p.radius = size.radius;
         p.material = def.material;
@@ -133,5 +169,10 @@ std::vector<ParticleDef> generate_random_packing(const RandomPackingDef& def) {
   }
   return placed;
 }
+
+template std::vector<ParticleDefT<2>> generate_lattice(const LatticeDefT<2>&);
+template std::vector<ParticleDefT<3>> generate_lattice(const LatticeDefT<3>&);
+template std::vector<ParticleDefT<2>> generate_random_packing(const RandomPackingDefT<2>&);
+template std::vector<ParticleDefT<3>> generate_random_packing(const RandomPackingDefT<3>&);
 
 }  // namespace dem

@@ -1,6 +1,6 @@
 // Particle state as structure-of-arrays, indexed by ParticleId. Hot data
 // (positions, velocities, force sums) in parallel arrays; no per-particle
-// objects. Cundall & Strack's discs have unit thickness.
+// objects. Written once over the dimension.
 #pragma once
 
 #include <cstddef>
@@ -11,19 +11,20 @@
 
 namespace dem {
 
+template <int Dim>
 struct Particles {
   // dynamic state
-  std::vector<Vec2> position;        // x_i at cycle N
-  std::vector<Vec2> velocity;        // x_dot_i at N - 1/2 (time-centred, eq. 22)
-  std::vector<double> angular_velocity;  // theta_dot at N - 1/2 (eq. 23)
-  std::vector<double> rotation;      // theta, accumulated (eq. 23a)
+  std::vector<Vec<Dim>> position;          // x_i at cycle N
+  std::vector<Vec<Dim>> velocity;          // x_dot_i at N - 1/2 (time-centred, eq. 22)
+  std::vector<Spin<Dim>> angular_velocity;  // at N - 1/2 (eq. 23)
+  std::vector<Orientation<Dim>> rotation;  // accumulated angle (2D) or unit quaternion (3D) (eq. 23a)
   // per-cycle sums (eqs. 20-21): contact forces and damping forces, moments
-  std::vector<Vec2> force;
-  std::vector<double> moment;
+  std::vector<Vec<Dim>> force;
+  std::vector<Spin<Dim>> moment;
   // constant properties
   std::vector<double> radius;
   std::vector<double> mass;
-  std::vector<double> inertia;
+  std::vector<double> inertia;  // about any axis through the centre (discs and spheres)
   std::vector<MaterialId> material;
 
   std::size_t size() const { return position.size(); }

@@ -7,9 +7,10 @@ namespace dem {
 
 namespace {
 
-bool servos_settled(const World& world, double tolerance) {
+template <int Dim>
+bool servos_settled(const BasicWorld<Dim>& world, double tolerance) {
   bool any = false;
-  for (const WallMeasure& m : world.wall_measures()) {
+  for (const WallMeasureT<Dim>& m : world.wall_measures()) {
     const auto& servo = world.wall(m.wall).motion.servo;
     if (!servo) continue;
     any = true;
@@ -18,7 +19,8 @@ bool servos_settled(const World& world, double tolerance) {
   return any;
 }
 
-bool conditions_hold(const World& world, const StopConditions& until) {
+template <int Dim>
+bool conditions_hold(const BasicWorld<Dim>& world, const StopConditions& until) {
   const bool needs_assembly = until.kinetic_energy_below || until.out_of_balance_below;
   const AssemblyMeasures a = needs_assembly ? world.assembly_measures() : AssemblyMeasures{};
   if (until.kinetic_energy_below && !(a.kinetic_energy < *until.kinetic_energy_below)) return false;
@@ -33,7 +35,9 @@ bool has_condition(const StopConditions& until) {
 
 }  // namespace
 
-StageResult run_stage(World& world, const StageDef& stage, std::uint64_t interval, const StageObserver& observer) {
+template <int Dim>
+StageResult run_stage(BasicWorld<Dim>& world, const StageDefT<Dim>& stage, std::uint64_t interval,
+                      const std::type_identity_t<StageObserverT<Dim>>& observer) {
   for (const auto& [wall, motion] : stage.wall_motions) world.set_wall_motion(wall, motion);
   if (stage.damping) world.set_damping(*stage.damping);
 
@@ -56,5 +60,8 @@ StageResult run_stage(World& world, const StageDef& stage, std::uint64_t interva
   }
   return result;
 }
+
+template StageResult run_stage<2>(BasicWorld<2>&, const StageDefT<2>&, std::uint64_t, const StageObserverT<2>&);
+template StageResult run_stage<3>(BasicWorld<3>&, const StageDefT<3>&, std::uint64_t, const StageObserverT<3>&);
 
 }  // namespace dem

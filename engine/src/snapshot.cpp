@@ -1,20 +1,18 @@
-#include "dem/snapshot.h"
-
 #include <algorithm>
 #include <string>
 
 #include "dem/error.h"
-#include "dem/world.h"
 #include "world_state.h"
 
 namespace dem {
 
 namespace {
 
-ContactSnapshot save_contact(const ContactState& s, const ContactForce& f) {
-  ContactSnapshot c;
+template <int Dim>
+ContactSnapshotT<Dim> save_contact(const ContactState<Dim>& s, const ContactForce<Dim>& f) {
+  ContactSnapshotT<Dim> c;
   c.normal_force = s.normal_force;
-  c.shear_force = s.shear_force;
+  c.shear_force = s.shear;
   c.sliding = s.sliding;
   c.overlap = s.overlap;
   c.normal_damping = s.normal_damping;
@@ -27,9 +25,10 @@ ContactSnapshot save_contact(const ContactState& s, const ContactForce& f) {
   return c;
 }
 
-void restore_contact(const ContactSnapshot& c, ContactState& s, ContactForce& f) {
+template <int Dim>
+void restore_contact(const ContactSnapshotT<Dim>& c, ContactState<Dim>& s, ContactForce<Dim>& f) {
   s.normal_force = c.normal_force;
-  s.shear_force = c.shear_force;
+  s.shear = c.shear_force;
   s.touching = true;
   s.sliding = c.sliding;
   s.overlap = c.overlap;
@@ -37,7 +36,7 @@ void restore_contact(const ContactSnapshot& c, ContactState& s, ContactForce& f)
   s.shear_damping = c.shear_damping;
   s.normal = c.normal;
   s.point = c.point;
-  f = ContactForce{c.force, c.moment_first, c.moment_second};
+  f = ContactForce<Dim>{c.force, c.moment_first, c.moment_second};
 }
 
 void check(bool ok, const std::string& message) {
@@ -46,58 +45,58 @@ void check(bool ok, const std::string& message) {
 
 // The table row of a saved contact; every touching pair is within the
 // tolerance, so the broad phase has put it in the table.
-template <typename Contact, typename First, typename Second>
-std::size_t find_row(const std::vector<Contact>& rows, ParticleId first, std::int32_t second, First first_of,
-                     Second second_of) {
+template <typename Contact, typename Key>
+std::size_t find_row(const std::vector<Contact>& rows, ParticleId first, std::int32_t second, Key key) {
   const auto it = std::lower_bound(rows.begin(), rows.end(), std::pair{first, second},
-                                   [&](const Contact& c, const std::pair<ParticleId, std::int32_t>& key) {
-                                     return first_of(c) < key.first ||
-                                            (first_of(c) == key.first && second_of(c) < key.second);
+                                   [&](const Contact& c, const std::pair<ParticleId, std::int32_t>& k) {
+                                     return key(c) < k;
                                    });
-  check(it != rows.end() && first_of(*it) == first && second_of(*it) == second,
+  check(it != rows.end() && key(*it) == std::pair{first, second},
         "contact (" + std::to_string(first) + ", " + std::to_string(second) + ") does not touch");
   return static_cast<std::size_t>(it - rows.begin());
 }
 
 }  // namespace
 
-WorldSnapshot World::snapshot() const {
-  const WorldState& s = *state_;
-  WorldSnapshot snap;
-  WorldDef& def = snap.def;
+template <int Dim>
+WorldSnapshotT<Dim> save_snapshot(const WorldState<Dim>& s) {
+  WorldSnapshotT<Dim> snap;
+  WorldDefT<Dim>& def = snap.def;
   def.materials = s.materials;
   def.contact_models = s.contact_models;
   def.damping = s.damping;
   def.gravity = s.gravity;
+  def.planar_particle = s.planar_particle;
   def.contact_tolerance = s.contact_tolerance;
   def.threads = s.threads;
   def.fixed_time_step = s.fixed_time_step;
   def.time_step_fraction = s.time_step_fraction;
-  const Particles& p = s.particles;
+  const Particles<Dim>& p = s.particles;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    def.particles.push_back(ParticleDef{p.position[i], p.radius[i], p.material[i], p.velocity[i], p.angular_velocity[i]});
+    def.particles.push_back(
+        ParticleDefT<Dim>{p.position[i], p.radius[i], p.material[i], p.velocity[i], p.angular_velocity[i]});
   }
   snap.rotation = p.rotation;
   snap.force = p.force;
   snap.moment = p.moment;
-  def.walls = s.walls.def;
-  for (int w = 0; w < s.walls.size(); ++w) {
-    const Walls& walls = s.walls;
-    snap.walls.push_back(WallSnapshot{walls.initial_point[w], walls.last_velocity[w], walls.last_angular_velocity[w],
-                                      walls.force[w], walls.moment[w], walls.normal_force[w], walls.contacts[w],
-                                      walls.normal_force_arm[w]});
+  const Walls<Dim>& walls = s.walls;
+  def.walls = walls.def;
+  for (int w = 0; w < walls.size(); ++w) {
+    snap.walls.push_back(WallSnapshotT<Dim>{walls.initial_point[w], walls.last_velocity[w],
+                                            walls.last_angular_velocity[w], walls.force[w], walls.moment[w],
+                                            walls.normal_force[w], walls.contacts[w], walls.normal_force_arm[w]});
   }
-  const ContactTable& t = s.contacts;
+  const ContactTable<Dim>& t = s.contacts;
   for (std::size_t k = 0; k < t.pairs.size(); ++k) {
     if (!t.pairs[k].state.touching) continue;
-    ContactSnapshot c = save_contact(t.pairs[k].state, t.pair_forces[k]);
+    ContactSnapshotT<Dim> c = save_contact(t.pairs[k].state, t.pair_forces[k]);
     c.first = t.pairs[k].first;
     c.second = t.pairs[k].second;
     snap.contacts.push_back(c);
   }
   for (std::size_t k = 0; k < t.walls.size(); ++k) {
     if (!t.walls[k].state.touching) continue;
-    ContactSnapshot c = save_contact(t.walls[k].state, t.wall_forces[k]);
+    ContactSnapshotT<Dim> c = save_contact(t.walls[k].state, t.wall_forces[k]);
     c.first = t.walls[k].particle;
     c.second = t.walls[k].wall;
     c.with_wall = true;
@@ -110,8 +109,8 @@ WorldSnapshot World::snapshot() const {
   return snap;
 }
 
-World::World(const WorldSnapshot& snap) : World(snap.def) {
-  WorldState& s = *state_;
+template <int Dim>
+void restore_snapshot(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) {
   const std::size_t n = s.particles.size();
   check(snap.rotation.size() == n && snap.force.size() == n && snap.moment.size() == n,
         "per-particle arrays do not match the " + std::to_string(n) + " particles");
@@ -121,7 +120,7 @@ World::World(const WorldSnapshot& snap) : World(snap.def) {
   s.particles.force = snap.force;
   s.particles.moment = snap.moment;
   for (std::size_t w = 0; w < snap.walls.size(); ++w) {
-    const WallSnapshot& ws = snap.walls[w];
+    const WallSnapshotT<Dim>& ws = snap.walls[w];
     s.walls.initial_point[w] = ws.initial_point;
     s.walls.last_velocity[w] = ws.last_velocity;
     s.walls.last_angular_velocity[w] = ws.last_angular_velocity;
@@ -137,22 +136,27 @@ World::World(const WorldSnapshot& snap) : World(snap.def) {
   s.critical_time_step = snap.critical_time_step;
 
   find_contacts(s);
-  ContactTable& t = s.contacts;
-  for (const ContactSnapshot& c : snap.contacts) {
+  ContactTable<Dim>& t = s.contacts;
+  for (const ContactSnapshotT<Dim>& c : snap.contacts) {
     check(c.first >= 0 && c.first < static_cast<ParticleId>(n), "contact names particle " + std::to_string(c.first));
     if (c.with_wall) {
       check(c.second >= 0 && c.second < s.walls.size(), "contact names wall " + std::to_string(c.second));
-      const std::size_t k = find_row(t.walls, c.first, c.second, [](const WallContact& w) { return w.particle; },
-                                     [](const WallContact& w) { return w.wall; });
+      const std::size_t k =
+          find_row(t.walls, c.first, c.second, [](const WallContact<Dim>& w) { return std::pair{w.particle, w.wall}; });
       restore_contact(c, t.walls[k].state, t.wall_forces[k]);
     } else {
       check(c.second > c.first && c.second < static_cast<ParticleId>(n),
             "contact names particle " + std::to_string(c.second));
-      const std::size_t k = find_row(t.pairs, c.first, c.second, [](const PairContact& p) { return p.first; },
-                                     [](const PairContact& p) { return p.second; });
+      const std::size_t k =
+          find_row(t.pairs, c.first, c.second, [](const PairContact<Dim>& p) { return std::pair{p.first, p.second}; });
       restore_contact(c, t.pairs[k].state, t.pair_forces[k]);
     }
   }
 }
+
+template WorldSnapshotT<2> save_snapshot(const WorldState<2>&);
+template WorldSnapshotT<3> save_snapshot(const WorldState<3>&);
+template void restore_snapshot(WorldState<2>&, const WorldSnapshotT<2>&);
+template void restore_snapshot(WorldState<3>&, const WorldSnapshotT<3>&);
 
 }  // namespace dem

@@ -1,8 +1,6 @@
 #include <cstdint>
-#include <cstring>
 #include <type_traits>
 
-#include "dem/world.h"
 #include "world_state.h"
 
 namespace dem {
@@ -20,14 +18,15 @@ class Hasher {
     }
   }
   template <typename T>
-  void add(const T& value) {
-    static_assert(std::is_trivially_copyable_v<T>);
+    requires std::is_arithmetic_v<T>
+  void add(T value) {
     add_bytes(&value, sizeof(T));
   }
-  void add(const Vec2& v) {
-    add(v.x());
-    add(v.y());
+  template <typename Derived>
+  void add(const Eigen::MatrixBase<Derived>& v) {
+    for (Eigen::Index i = 0; i < v.size(); ++i) add(static_cast<double>(v[i]));
   }
+  void add(const Quaternion& q) { add(q.coeffs()); }
   template <typename T>
   void add_all(const std::vector<T>& values) {
     for (const T& v : values) add(v);
@@ -38,16 +37,17 @@ class Hasher {
   std::uint64_t hash_ = 14695981039346656037ULL;
 };
 
-void add_contact(Hasher& h, const ContactState& s, const ContactForce& f) {
+template <int Dim>
+void add_contact(Hasher& h, const ContactState<Dim>& s, const ContactForce<Dim>& f) {
   h.add(s.normal_force);
-  h.add(s.shear_force);
+  h.add(s.shear);
   h.add(f.force);
 }
 
 }  // namespace
 
-std::uint64_t World::state_hash() const {
-  const WorldState& s = *state_;
+template <int Dim>
+std::uint64_t hash_state(const WorldState<Dim>& s) {
   Hasher h;
   h.add(s.cycle);
   h.add(s.time);
@@ -55,7 +55,7 @@ std::uint64_t World::state_hash() const {
   h.add_all(s.particles.velocity);
   h.add_all(s.particles.angular_velocity);
   h.add_all(s.particles.rotation);
-  const ContactTable& t = s.contacts;
+  const ContactTable<Dim>& t = s.contacts;
   for (std::size_t k = 0; k < t.pairs.size(); ++k) {
     if (!t.pairs[k].state.touching) continue;
     h.add(t.pairs[k].first);
@@ -68,11 +68,14 @@ std::uint64_t World::state_hash() const {
     h.add(t.walls[k].wall);
     add_contact(h, t.walls[k].state, t.wall_forces[k]);
   }
-  for (const WallDef& w : s.walls.def) {
+  for (const WallDefT<Dim>& w : s.walls.def) {
     h.add(w.point);
     h.add(w.direction);
   }
   return h.value();
 }
+
+template std::uint64_t hash_state(const WorldState<2>&);
+template std::uint64_t hash_state(const WorldState<3>&);
 
 }  // namespace dem

@@ -10,8 +10,9 @@ namespace dem {
 // 2 sqrt(m/k). For each particle we take the stiffest contact its material
 // can make, for translation (m, k_n) and rotation (I, k_s R^2), and keep the
 // smallest over the assembly. The user's fraction covers several contacts.
-double estimate_critical_time_step(const WorldState& state) {
-  const Particles& p = state.particles;
+template <int Dim>
+double estimate_critical_time_step(const WorldState<Dim>& state) {
+  const Particles<Dim>& p = state.particles;
   const auto materials = static_cast<MaterialId>(state.materials.size());
   double critical = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -29,5 +30,8 @@ double estimate_critical_time_step(const WorldState& state) {
   }
   return critical;
 }
+
+template double estimate_critical_time_step(const WorldState<2>&);
+template double estimate_critical_time_step(const WorldState<3>&);
 
 }  // namespace dem

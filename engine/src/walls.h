@@ -1,5 +1,5 @@
-// Walls as line segments (Cundall & Strack, Fig. 4), their motion and the
-// resultants the particles exert on them.
+// Walls: 2D segments (Cundall & Strack, Fig. 4) and 3D rectangles, their
+// motion and the resultants the particles exert on them.
 #pragma once
 
 #include <vector>
@@ -9,45 +9,66 @@
 
 namespace dem {
 
+template <int Dim>
 struct Walls {
-  std::vector<WallDef> def;            // current P, e and commanded motion
-  std::vector<Vec2> initial_point;     // P when the world was built (settlement)
+  std::vector<WallDefT<Dim>> def;        // current P, directions and commanded motion
+  std::vector<Vec<Dim>> initial_point;   // P when the world was built (settlement)
   // The motion that carried each wall over the last cycle: the force law at
   // cycle N needs the velocity over [N-1, N], like the particles' x_dot_{N-1/2}.
-  std::vector<Vec2> last_velocity;
-  std::vector<double> last_angular_velocity;
+  std::vector<Vec<Dim>> last_velocity;
+  std::vector<Spin<Dim>> last_angular_velocity;
   // Resultants from the last force pass (for servos and measures).
-  std::vector<Vec2> force;
-  std::vector<double> moment;
+  std::vector<Vec<Dim>> force;
+  std::vector<Spin<Dim>> moment;
   std::vector<double> normal_force;
   std::vector<int> contacts;
-  std::vector<double> normal_force_arm;  // sum of N_c * s_c, for the eccentricity
+  std::vector<Eccentricity<Dim>> normal_force_arm;  // sum of N_c times its position in the wall
 
   int size() const { return static_cast<int>(def.size()); }
 };
 
-// The wall's normal: its direction rotated counter-clockwise (the particle side).
-inline Vec2 wall_normal(const WallDef& wall) { return counter_clockwise_perpendicular(wall.direction); }
+// The wall's normal, towards the particle side: e rotated counter-clockwise
+// in 2D, u x v in 3D.
+inline Vec2 wall_normal(const WallDefT<2>& wall) { return counter_clockwise_perpendicular(wall.direction); }
+inline Vec3 wall_normal(const WallDefT<3>& wall) { return wall.direction.cross(wall.direction2); }
 
-// Closest point of the segment to x, and its position s along the wall.
-struct SegmentPoint {
-  Vec2 point;
-  double s;
+// Closest point of the wall to x, and its coordinates in the wall
+// (along e in 2D; along u and v in 3D).
+template <int Dim>
+struct WallPoint {
+  Vec<Dim> point;
+  Eccentricity<Dim> coordinates;
 };
-SegmentPoint closest_point(const WallDef& wall, const Vec2& x);
+WallPoint<2> closest_point(const WallDefT<2>& wall, const Vec2& x);
+WallPoint<3> closest_point(const WallDefT<3>& wall, const Vec3& x);
+
+// Position of the wall's centre in its own coordinates, and its half size.
+Eccentricity<2> wall_centre(const WallDefT<2>& wall);
+Eccentricity<3> wall_centre(const WallDefT<3>& wall);
+Eccentricity<2> wall_half_size(const WallDefT<2>& wall);
+Eccentricity<3> wall_half_size(const WallDefT<3>& wall);
+
+// Length (2D) or area (3D) of the wall.
+double wall_extent(const WallDefT<2>& wall);
+double wall_extent(const WallDefT<3>& wall);
 
 // Velocity of a point q attached to a wall moving with (velocity, omega) about P.
-inline Vec2 wall_point_velocity(const WallDef& wall, const Vec2& velocity, double omega, const Vec2& q) {
-  return velocity + cross(omega, q - wall.point);
+template <int Dim>
+Vec<Dim> wall_point_velocity(const WallDefT<Dim>& wall, const Vec<Dim>& velocity, const Spin<Dim>& omega,
+                             const Vec<Dim>& q) {
+  return velocity + cross(omega, Vec<Dim>(q - wall.point));
 }
 
 // Sets each wall's velocity for this cycle (servos from the last measured
-// normal force) and moves P and e over one time step.
-void move_walls(Walls& walls, double dt);
+// normal force) and moves P and its directions over one time step.
+template <int Dim>
+void move_walls(Walls<Dim>& walls, double dt);
 
 // Largest distance any point of any wall travelled in the last step.
-double max_wall_step(const Walls& walls, double dt);
+template <int Dim>
+double max_wall_step(const Walls<Dim>& walls, double dt);
 
-WallMeasure measure_wall(const Walls& walls, WallId id);
+template <int Dim>
+WallMeasureT<Dim> measure_wall(const Walls<Dim>& walls, WallId id);
 
 }  // namespace dem

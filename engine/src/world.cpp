@@ -3,8 +3,8 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cassert>
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -22,7 +22,7 @@ namespace {
 // Adds the time since the last lap to a profile entry.
 class PhaseTimer {
  public:
-  explicit PhaseTimer(StepProfile&) : last_(std::chrono::steady_clock::now()) {}
+  PhaseTimer() : last_(std::chrono::steady_clock::now()) {}
   void lap(double& entry) {
     const auto now = std::chrono::steady_clock::now();
     entry += std::chrono::duration<double>(now - last_).count();
@@ -37,17 +37,18 @@ class PhaseTimer {
 // The calculation cycle (Cundall & Strack 1979, The calculation cycle):
 // find contacts -> force-displacement law at every contact -> force sums ->
 // law of motion -> move walls.
-void step(WorldState& s) {
-  PhaseTimer timer(s.profile);
+template <int Dim>
+void step(WorldState<Dim>& s) {
+  PhaseTimer timer;
   if (s.contacts_stale) {
     find_contacts(s);
     timer.lap(s.profile.find_contacts);
   }
-  ContactTable& c = s.contacts;
+  ContactTable<Dim>& c = s.contacts;
   compute_pair_forces(s.particles, c.pairs, c.pair_forces, s.params, s.time_step, s.threads);
   compute_wall_forces(s.particles, s.walls, c.walls, c.wall_forces, s.params, s.time_step, s.threads);
   timer.lap(s.profile.contact_forces);
-  sum_particle_forces(s.particles, s.contacts, s.threads);
+  sum_particle_forces(s.particles, c, s.threads);
   sum_wall_forces(s.walls, c.walls, c.wall_forces);
   timer.lap(s.profile.force_sums);
   s.particle_travel = integrate_motion(s.particles, s.reference_positions, s.gravity, s.damping.global_alpha,
@@ -66,35 +67,34 @@ void step(WorldState& s) {
 }
 // ---------------------------------------------------------------------------
 
-}  // namespace
-
-void find_contacts(WorldState& s) {
-  const auto n = static_cast<int>(s.particles.size());
-  rebuild_contacts(s.contacts, find_pair_candidates(s.particles, s.contact_tolerance, s.threads),
-                   find_wall_candidates(s.particles, s.walls, s.contact_tolerance), n);
-  s.reference_positions = s.particles.position;
-  s.particle_travel = 0.0;
-  s.wall_travel = 0.0;
-  s.contacts_stale = false;
-  ++s.profile.contact_rebuilds;
-}
-
-namespace {
-
 int resolve_threads(int threads) { return threads > 0 ? threads : std::max(1, omp_get_num_procs()); }
 
 void check(bool ok, const std::string& message) {
   if (!ok) throw DefinitionError(message);
 }
 
-std::string material_name(const WorldState& s, MaterialId id) { return "\"" + s.materials[id].name + "\""; }
+std::string quoted(const MaterialDef& m) { return "\"" + m.name + "\""; }
 
-void validate(const WorldDef& def) {
+void validate_wall(const WallDefT<2>& wall, const std::string& where) {
+  check(std::abs(wall.direction.norm() - 1.0) < 1e-9, where + ": direction must be a unit vector");
+  check(wall.h2 > wall.h1, where + ": h2 must be greater than h1");
+}
+
+void validate_wall(const WallDefT<3>& wall, const std::string& where) {
+  check(std::abs(wall.direction.norm() - 1.0) < 1e-9 && std::abs(wall.direction2.norm() - 1.0) < 1e-9,
+        where + ": direction and direction2 must be unit vectors");
+  check(std::abs(wall.direction.dot(wall.direction2)) < 1e-9, where + ": direction2 must be perpendicular to direction");
+  check(wall.h2 > wall.h1, where + ": h2 must be greater than h1");
+  check(wall.k2 > wall.k1, where + ": k2 must be greater than k1");
+}
+
+template <int Dim>
+void validate(const WorldDefT<Dim>& def) {
   const auto materials = static_cast<MaterialId>(def.materials.size());
   check(materials > 0, "world: no materials defined");
   for (MaterialId m = 0; m < materials; ++m) {
     const MaterialDef& mat = def.materials[m];
-    const std::string where = "material " + std::to_string(m) + " (\"" + mat.name + "\")";
+    const std::string where = "material " + std::to_string(m) + " (" + quoted(mat) + ")";
     check(mat.friction >= 0.0, where + ": friction must be >= 0");
     check(mat.cohesion >= 0.0, where + ": cohesion must be >= 0");
   }
@@ -112,19 +112,18 @@ void validate(const WorldDef& def) {
   }
   check(!def.particles.empty(), "world: no particles defined");
   for (std::size_t i = 0; i < def.particles.size(); ++i) {
-    const ParticleDef& p = def.particles[i];
+    const ParticleDefT<Dim>& p = def.particles[i];
     const std::string where = "particle " + std::to_string(i);
     check(p.radius > 0.0 && std::isfinite(p.radius), where + ": radius must be > 0");
     check(p.material >= 0 && p.material < materials, where + ": unknown material id");
-    check(def.materials[p.material].density > 0.0, "material " + std::to_string(p.material) + " (\"" +
-                                                       def.materials[p.material].name + "\"): density must be > 0");
+    const MaterialDef& mat = def.materials[p.material];
+    check(mat.density > 0.0, "material " + std::to_string(p.material) + " (" + quoted(mat) + "): density must be > 0");
     check(p.position.allFinite() && p.velocity.allFinite(), where + ": position and velocity must be finite");
   }
   for (std::size_t w = 0; w < def.walls.size(); ++w) {
-    const WallDef& wall = def.walls[w];
+    const WallDefT<Dim>& wall = def.walls[w];
     const std::string where = "wall " + std::to_string(w) + " (\"" + wall.name + "\")";
-    check(std::abs(wall.direction.norm() - 1.0) < 1e-9, where + ": direction must be a unit vector");
-    check(wall.h2 > wall.h1, where + ": h2 must be greater than h1");
+    validate_wall(wall, where);
     check(wall.material >= 0 && wall.material < materials, where + ": unknown material id");
     if (wall.motion.servo) {
       check(wall.motion.servo->gain > 0.0, where + ": servo gain must be > 0");
@@ -139,62 +138,95 @@ void validate(const WorldDef& def) {
 }
 
 // Every pair of materials that can touch needs a contact law.
-void check_contact_laws(const WorldState& s) {
-  std::vector<bool> particle_material(s.materials.size(), false), wall_material(s.materials.size(), false);
+template <int Dim>
+void check_contact_laws(const WorldState<Dim>& s) {
+  const auto count = static_cast<MaterialId>(s.materials.size());
+  std::vector<bool> particle_material(count, false), wall_material(count, false);
   for (MaterialId m : s.particles.material) particle_material[m] = true;
-  for (const WallDef& w : s.walls.def) wall_material[w.material] = true;
-  for (MaterialId a = 0; a < static_cast<MaterialId>(s.materials.size()); ++a) {
+  for (const WallDefT<Dim>& w : s.walls.def) wall_material[w.material] = true;
+  for (MaterialId a = 0; a < count; ++a) {
     if (!particle_material[a]) continue;
-    for (MaterialId b = 0; b < static_cast<MaterialId>(s.materials.size()); ++b) {
+    for (MaterialId b = 0; b < count; ++b) {
       if (!particle_material[b] && !wall_material[b]) continue;
       check(s.params(a, b).defined,
-            "no contact model for materials " + material_name(s, a) + " and " + material_name(s, b));
+            "no contact model for materials " + quoted(s.materials[a]) + " and " + quoted(s.materials[b]));
     }
   }
 }
 
+// Mass and moment of inertia: discs of unit thickness (Cundall & Strack)
+// or spheres, in the plane (Randall 1989, 4.4) or in space.
+struct MassProperties {
+  double mass, inertia;
+};
+MassProperties mass_properties(double density, double radius, bool disc) {
+  if (disc) {
+    const double m = density * std::numbers::pi * radius * radius;
+    return {m, 0.5 * m * radius * radius};
+  }
+  const double m = density * 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
+  return {m, 0.4 * m * radius * radius};
+}
+
 }  // namespace
 
-World::World(const WorldDef& def) : state_(std::make_unique<WorldState>()) {
+template <int Dim>
+void find_contacts(WorldState<Dim>& s) {
+  const auto n = static_cast<int>(s.particles.size());
+  rebuild_contacts(s.contacts, find_pair_candidates(s.particles, s.contact_tolerance, s.threads),
+                   find_wall_candidates(s.particles, s.walls, s.contact_tolerance), n);
+  s.reference_positions = s.particles.position;
+  s.particle_travel = 0.0;
+  s.wall_travel = 0.0;
+  s.contacts_stale = false;
+  ++s.profile.contact_rebuilds;
+}
+
+template <int Dim>
+BasicWorld<Dim>::BasicWorld(const Def& def) : state_(std::make_unique<WorldState<Dim>>()) {
   validate(def);
-  WorldState& s = *state_;
+  WorldState<Dim>& s = *state_;
   s.materials = def.materials;
   s.contact_models = def.contact_models;
   s.damping = def.damping;
   s.gravity = def.gravity;
+  s.planar_particle = def.planar_particle;
   s.threads = resolve_threads(def.threads);
   s.params = ContactParamTable(s.materials, s.contact_models, s.damping);
 
-  Particles& p = s.particles;
+  Particles<Dim>& p = s.particles;
   const std::size_t n = def.particles.size();
+  const bool discs = Dim == 2 && def.planar_particle == PlanarParticle::kDisc;
   double radius_sum = 0.0;
-  for (const ParticleDef& d : def.particles) {
-    // Discs of unit thickness (Cundall & Strack): m = rho pi R^2, I = m R^2 / 2.
-    const double mass = s.materials[d.material].density * std::numbers::pi * d.radius * d.radius;
+  for (const ParticleDefT<Dim>& d : def.particles) {
+    const MassProperties mp = mass_properties(s.materials[d.material].density, d.radius, discs);
     p.position.push_back(d.position);
     p.velocity.push_back(d.velocity);
     p.angular_velocity.push_back(d.angular_velocity);
-    p.rotation.push_back(0.0);
+    p.rotation.push_back(Space<Dim>::identity());
     p.radius.push_back(d.radius);
-    p.mass.push_back(mass);
-    p.inertia.push_back(0.5 * mass * d.radius * d.radius);
+    p.mass.push_back(mp.mass);
+    p.inertia.push_back(mp.inertia);
     p.material.push_back(d.material);
     radius_sum += d.radius;
   }
-  p.force.assign(n, Vec2::Zero());
-  p.moment.assign(n, 0.0);
+  p.force.assign(n, Vec<Dim>::Zero());
+  p.moment.assign(n, Space<Dim>::zero_spin());
+  // Stresses on 2D walls: discs have unit thickness; spheres in the plane
+  // are taken as a layer one mean diameter deep (Randall 1989, 4.4).
+  s.depth = discs || Dim == 3 ? 1.0 : 2.0 * radius_sum / static_cast<double>(n);
 
-  Walls& w = s.walls;
+  Walls<Dim>& w = s.walls;
   w.def = def.walls;
-  for (const WallDef& wall : def.walls) w.initial_point.push_back(wall.point);
+  for (const WallDefT<Dim>& wall : def.walls) w.initial_point.push_back(wall.point);
   const std::size_t walls = def.walls.size();
-  w.last_velocity.assign(walls, Vec2::Zero());
-  w.last_angular_velocity.assign(walls, 0.0);
-  w.force.assign(walls, Vec2::Zero());
-  w.moment.assign(walls, 0.0);
+  w.last_velocity.assign(walls, Vec<Dim>::Zero());
+  w.last_angular_velocity.assign(walls, Space<Dim>::zero_spin());
+  w.force.assign(walls, Vec<Dim>::Zero());
+  w.moment.assign(walls, Space<Dim>::zero_spin());
   w.normal_force.assign(walls, 0.0);
   w.contacts.assign(walls, 0);
-  w.normal_force_arm.assign(walls, 0.0);
+  w.normal_force_arm.assign(walls, zero_eccentricity<Dim>());
 
   check_contact_laws(s);
   s.contact_tolerance =
@@ -206,27 +238,44 @@ World::World(const WorldDef& def) : state_(std::make_unique<WorldState>()) {
   check(std::isfinite(s.time_step) && s.time_step > 0.0, "world: cannot determine a time step");
 }
 
-World::~World() = default;
-World::World(World&&) noexcept = default;
-World& World::operator=(World&&) noexcept = default;
+template <int Dim>
+BasicWorld<Dim>::BasicWorld(const Snapshot& snapshot) : BasicWorld(snapshot.def) {
+  restore_snapshot(*state_, snapshot);
+}
 
-void World::cycle(std::uint64_t n) {
+template <int Dim>
+BasicWorld<Dim>::~BasicWorld() = default;
+template <int Dim>
+BasicWorld<Dim>::BasicWorld(BasicWorld&&) noexcept = default;
+template <int Dim>
+BasicWorld<Dim>& BasicWorld<Dim>::operator=(BasicWorld&&) noexcept = default;
+
+template <int Dim>
+void BasicWorld<Dim>::cycle(std::uint64_t n) {
   for (std::uint64_t k = 0; k < n; ++k) step(*state_);
 }
 
-std::uint64_t World::cycle_count() const { return state_->cycle; }
-double World::time() const { return state_->time; }
-double World::time_step() const { return state_->time_step; }
-double World::critical_time_step() const { return state_->critical_time_step; }
-int World::particle_count() const { return static_cast<int>(state_->particles.size()); }
-int World::wall_count() const { return state_->walls.size(); }
+template <int Dim>
+std::uint64_t BasicWorld<Dim>::cycle_count() const { return state_->cycle; }
+template <int Dim>
+double BasicWorld<Dim>::time() const { return state_->time; }
+template <int Dim>
+double BasicWorld<Dim>::time_step() const { return state_->time_step; }
+template <int Dim>
+double BasicWorld<Dim>::critical_time_step() const { return state_->critical_time_step; }
+template <int Dim>
+int BasicWorld<Dim>::particle_count() const { return static_cast<int>(state_->particles.size()); }
+template <int Dim>
+int BasicWorld<Dim>::wall_count() const { return state_->walls.size(); }
 
-ParticleView World::particles() const {
-  const Particles& p = state_->particles;
+template <int Dim>
+ParticleViewT<Dim> BasicWorld<Dim>::particles() const {
+  const Particles<Dim>& p = state_->particles;
   return {p.position, p.velocity, p.angular_velocity, p.rotation, p.radius, p.mass};
 }
 
-WallId World::find_wall(std::string_view name) const {
+template <int Dim>
+WallId BasicWorld<Dim>::find_wall(std::string_view name) const {
   const auto& walls = state_->walls.def;
   for (WallId w = 0; w < static_cast<WallId>(walls.size()); ++w) {
     if (walls[w].name == name) return w;
@@ -234,12 +283,14 @@ WallId World::find_wall(std::string_view name) const {
   return kInvalidId;
 }
 
-const WallDef& World::wall(WallId id) const {
+template <int Dim>
+const WallDefT<Dim>& BasicWorld<Dim>::wall(WallId id) const {
   assert(id >= 0 && id < wall_count());
   return state_->walls.def[id];
 }
 
-void World::set_wall_motion(WallId id, const WallMotion& motion) {
+template <int Dim>
+void BasicWorld<Dim>::set_wall_motion(WallId id, const Motion& motion) {
   assert(id >= 0 && id < wall_count());
   if (motion.servo) {
     check(motion.servo->gain > 0.0 && motion.servo->max_speed > 0.0,
@@ -248,22 +299,48 @@ void World::set_wall_motion(WallId id, const WallMotion& motion) {
   state_->walls.def[id].motion = motion;
 }
 
-DampingDef World::damping() const { return state_->damping; }
+template <int Dim>
+double BasicWorld<Dim>::wall_area(WallId id) const {
+  assert(id >= 0 && id < wall_count());
+  return wall_extent(state_->walls.def[id]) * (Dim == 2 ? state_->depth : 1.0);
+}
 
-void World::set_damping(const DampingDef& damping) {
+template <int Dim>
+std::vector<WallMeasureT<Dim>> BasicWorld<Dim>::wall_measures() const {
+  std::vector<WallMeasureT<Dim>> measures;
+  for (WallId w = 0; w < wall_count(); ++w) measures.push_back(measure_wall(state_->walls, w));
+  return measures;
+}
+
+template <int Dim>
+AssemblyMeasures BasicWorld<Dim>::assembly_measures() const { return measure_assembly(*state_); }
+template <int Dim>
+std::vector<ContactRecordT<Dim>> BasicWorld<Dim>::contacts() const { return list_contacts(*state_); }
+template <int Dim>
+std::optional<ContactRecordT<Dim>> BasicWorld<Dim>::contact_between(ParticleId a, ParticleId b) const {
+  return find_pair_contact(*state_, a, b);
+}
+
+template <int Dim>
+DampingDef BasicWorld<Dim>::damping() const { return state_->damping; }
+
+template <int Dim>
+void BasicWorld<Dim>::set_damping(const DampingDef& damping) {
   check(damping.contact_beta >= 0.0 && damping.global_alpha >= 0.0, "damping must be >= 0");
   state_->damping = damping;
   state_->params = ContactParamTable(state_->materials, state_->contact_models, damping);
 }
 
-void World::set_time_step_fraction(double fraction) {
+template <int Dim>
+void BasicWorld<Dim>::set_time_step_fraction(double fraction) {
   check(fraction > 0.0 && fraction <= 1.0, "time_step_fraction must be in (0, 1]");
   state_->time_step_fraction = fraction;
   state_->fixed_time_step = 0.0;
   state_->time_step = fraction * state_->critical_time_step;
 }
 
-void World::set_friction(MaterialId material, double friction) {
+template <int Dim>
+void BasicWorld<Dim>::set_friction(MaterialId material, double friction) {
   check(material >= 0 && material < static_cast<MaterialId>(state_->materials.size()),
         "unknown material id " + std::to_string(material));
   check(friction >= 0.0 && std::isfinite(friction), "friction must be >= 0");
@@ -271,12 +348,26 @@ void World::set_friction(MaterialId material, double friction) {
   state_->params = ContactParamTable(state_->materials, state_->contact_models, state_->damping);
 }
 
-const std::vector<MaterialDef>& World::materials() const { return state_->materials; }
+template <int Dim>
+const std::vector<MaterialDef>& BasicWorld<Dim>::materials() const { return state_->materials; }
+template <int Dim>
+Vec<Dim> BasicWorld<Dim>::gravity() const { return state_->gravity; }
+template <int Dim>
+void BasicWorld<Dim>::set_gravity(const Vec<Dim>& gravity) { state_->gravity = gravity; }
+template <int Dim>
+int BasicWorld<Dim>::threads() const { return state_->threads; }
+template <int Dim>
+const StepProfile& BasicWorld<Dim>::profile() const { return state_->profile; }
+template <int Dim>
+void BasicWorld<Dim>::set_threads(int threads) { state_->threads = resolve_threads(threads); }
+template <int Dim>
+WorldSnapshotT<Dim> BasicWorld<Dim>::snapshot() const { return save_snapshot(*state_); }
+template <int Dim>
+std::uint64_t BasicWorld<Dim>::state_hash() const { return hash_state(*state_); }
 
-Vec2 World::gravity() const { return state_->gravity; }
-void World::set_gravity(const Vec2& gravity) { state_->gravity = gravity; }
-int World::threads() const { return state_->threads; }
-const StepProfile& World::profile() const { return state_->profile; }
-void World::set_threads(int threads) { state_->threads = resolve_threads(threads); }
+template void find_contacts(WorldState<2>&);
+template void find_contacts(WorldState<3>&);
+template class BasicWorld<2>;
+template class BasicWorld<3>;
 
 }  // namespace dem

@@ -17,9 +17,11 @@ TEST(Verification, AssemblyReachesTable1State) {
   const io::CaseDefinition def = io::convert_case(loaded.message, loaded.source);
   World world(def.world);
   ASSERT_EQ(world.particle_count(), 197);
-  StageResult compress = run_stage(world, def.stages[0]);
-  EXPECT_TRUE(compress.condition_met) << "servos did not settle within " << def.stages[0].cycles << " cycles";
-  run_stage(world, def.stages[1]);
+  for (const StageDef& stage : def.stages) {
+    const StageResult result = run_stage(world, stage);
+    EXPECT_TRUE(result.condition_met) << "stage " << stage.name << " did not settle within " << stage.cycles
+                                      << " cycles";
+  }
 
   const auto walls = world.wall_measures();
   const double vertical = 0.5 * (walls[0].normal_force + walls[2].normal_force);

@@ -1,9 +1,11 @@
 // Typed definition structs that configure a World, each with documented units
-// and defaults (the model: Box2D's b2WorldDef + b2DefaultWorldDef()).
+// and defaults (the model: Box2D's b2WorldDef + b2DefaultWorldDef()). They
+// are written once over the dimension; the 2D names (WorldDef, ParticleDef,
+// ...) are the Dim = 2 instances, the 3D ones end in 3 (WorldDef3, ...).
 //
 // Units are SI throughout (m, kg, s, N, rad). BALL's unitless numbers work
 // as they are: a case may use them consistently. 2D discs have unit
-// thickness, so "mass density" is mass per unit area × 1 and forces are per
+// thickness, so "mass density" is mass per unit area x 1 and forces are per
 // unit depth (Cundall & Strack 1979).
 #pragma once
 
@@ -17,14 +19,16 @@
 
 namespace dem {
 
-// A property type ("material") shared by discs or walls (Cundall & Strack,
-// Input parameters). Walls use friction and cohesion; density only matters
-// for particles.
+// A property type ("material") shared by particles or walls (Cundall &
+// Strack, Input parameters). Walls use friction, cohesion and the elastic
+// constants; density only matters for particles.
 struct MaterialDef {
   std::string name;
-  double density = 1000.0;  // kg/m^3 (per unit thickness in 2D); > 0 for particle materials
+  double density = 1000.0;  // kg/m^3 (per unit thickness for 2D discs); > 0 for particle materials
   double friction = 0.0;    // tan(phi_mu), the interparticle friction coefficient
   double cohesion = 0.0;    // c, N: shear strength at zero normal force (eq. 19)
+  double youngs_modulus = 0.0;  // E, Pa: Hertz laws only (walls: 0 = rigid)
+  double poisson_ratio = 0.0;   // nu: Hertz laws only
 };
 
 // BALL's linear springs (Cundall & Strack eqs. 16-17): contact stiffnesses.
@@ -52,52 +56,82 @@ struct DampingDef {
   double global_alpha = 0.0;  // 1/s
 };
 
-struct ParticleDef {
-  Vec2 position = Vec2::Zero();  // m
-  double radius = 1.0;           // m
+template <int Dim>
+struct ParticleDefT {
+  Vec<Dim> position = Vec<Dim>::Zero();  // m
+  double radius = 1.0;                   // m
   MaterialId material = 0;
-  Vec2 velocity = Vec2::Zero();   // m/s
-  double angular_velocity = 0.0;  // rad/s, counter-clockwise positive
+  Vec<Dim> velocity = Vec<Dim>::Zero();  // m/s
+  Spin<Dim> angular_velocity = Space<Dim>::zero_spin();  // rad/s (2D: counter-clockwise positive)
 };
 
 // A servo holds the normal force a wall carries at a target: the wall moves
 // along its normal at gain * (target - measured), capped at max_speed
 // (the servo-controlled plate of Randall 1989, 4.1).
 struct ServoDef {
-  double target_force = 0.0;  // N (per unit depth in 2D); compressive positive
+  double target_force = 0.0;  // N (per unit depth for 2D discs); compressive positive
   double gain = 0.0;          // m/(N s)
   double max_speed = 0.0;     // m/s, > 0
 };
 
 // How a wall moves: a velocity of its reference point P and an angular
 // velocity about P (Cundall & Strack, Fig. 4), or a servo along its normal.
-struct WallMotion {
-  Vec2 velocity = Vec2::Zero();   // m/s
-  double angular_velocity = 0.0;  // rad/s, counter-clockwise positive
+template <int Dim>
+struct WallMotionT {
+  Vec<Dim> velocity = Vec<Dim>::Zero();                  // m/s
+  Spin<Dim> angular_velocity = Space<Dim>::zero_spin();  // rad/s
   std::optional<ServoDef> servo;  // when set, replaces velocity/angular_velocity
 };
 
-// A wall is the segment of the line through P with unit direction e between
-// P + h1 e and P + h2 e (Cundall & Strack, Fig. 4). Its normal is e rotated
-// counter-clockwise: particles are expected on that side, which fixes the
-// sign of the wall's normal force and the direction a servo pushes.
-struct WallDef {
+template <int Dim>
+struct WallDefT;
+
+// A 2D wall is the segment of the line through P with unit direction e
+// between P + h1 e and P + h2 e (Cundall & Strack, Fig. 4). Its normal is e
+// rotated counter-clockwise: particles are expected on that side, which
+// fixes the sign of the wall's normal force and the direction a servo pushes.
+template <>
+struct WallDefT<2> {
   std::string name;
-  Vec2 point = Vec2::Zero();          // P, m
-  Vec2 direction = Vec2::UnitX();     // e, unit vector
-  double h1 = 0.0;                    // m, h1 < h2
-  double h2 = 1.0;                    // m
+  Vec2 point = Vec2::Zero();       // P, m
+  Vec2 direction = Vec2::UnitX();  // e, unit vector
+  double h1 = 0.0;                 // m, h1 < h2
+  double h2 = 1.0;                 // m
   MaterialId material = 0;
-  WallMotion motion;
+  WallMotionT<2> motion;
 };
 
-struct WorldDef {
+// A 3D wall is the rectangle P + s u + t v, h1 <= s <= h2, k1 <= t <= k2,
+// with u and v orthonormal. Its normal is u x v: particles are expected on
+// that side.
+template <>
+struct WallDefT<3> {
+  std::string name;
+  Vec3 point = Vec3::Zero();        // P, m
+  Vec3 direction = Vec3::UnitX();   // u, unit vector
+  double h1 = 0.0;                  // m, h1 < h2
+  double h2 = 1.0;
+  Vec3 direction2 = Vec3::UnitY();  // v, unit vector perpendicular to u
+  double k1 = 0.0;                  // m, k1 < k2
+  double k2 = 1.0;
+  MaterialId material = 0;
+  WallMotionT<3> motion;
+};
+
+// What a particle is in the plane: a disc of unit thickness (Cundall &
+// Strack) or a sphere whose centre lies in the plane (Randall 1989, 4.4).
+enum class PlanarParticle { kDisc, kSphere };
+
+template <int Dim>
+struct WorldDefT {
   std::vector<MaterialDef> materials;
   std::vector<ContactModelDef> contact_models;
-  std::vector<ParticleDef> particles;
-  std::vector<WallDef> walls;
+  std::vector<ParticleDefT<Dim>> particles;
+  std::vector<WallDefT<Dim>> walls;
   DampingDef damping;
-  Vec2 gravity = Vec2::Zero();  // m/s^2, body force per unit mass
+  Vec<Dim> gravity = Vec<Dim>::Zero();  // m/s^2, body force per unit mass
+  // 2D only: discs or spheres in the plane (3D particles are spheres).
+  PlanarParticle planar_particle = PlanarParticle::kDisc;
   // The time step is time_step_fraction times the critical step 2 sqrt(m/k)
   // estimated from the particles and contact models, unless fixed_time_step > 0.
   double time_step_fraction = 0.1;
@@ -108,6 +142,15 @@ struct WorldDef {
   double contact_tolerance = 0.0;  // m
   int threads = 0;                 // 0 = all the machine's cores
 };
+
+using ParticleDef = ParticleDefT<2>;
+using ParticleDef3 = ParticleDefT<3>;
+using WallMotion = WallMotionT<2>;
+using WallMotion3 = WallMotionT<3>;
+using WallDef = WallDefT<2>;
+using WallDef3 = WallDefT<3>;
+using WorldDef = WorldDefT<2>;
+using WorldDef3 = WorldDefT<3>;
 
 // A definition with one "default" material and a default contact model for
 // every pair, for programs that build worlds in code. Case conversion starts

@@ -1,30 +1,49 @@
 // What a World reports: per-wall resultants (Cundall & Strack Table 1),
-// assembly measures, and a view of each contact.
+// assembly measures, and a view of each contact. Written once over Dim; the
+// 2D names are the Dim = 2 instances.
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 
 #include "dem/ids.h"
 #include "dem/math.h"
 
 namespace dem {
 
+// Position of the normal force's centre along the wall, relative to the
+// wall's centre and divided by its half length: a scalar along a 2D
+// segment, a pair (along u, along v) on a 3D rectangle.
+template <int Dim>
+using Eccentricity = std::conditional_t<Dim == 2, double, Eigen::Vector2d>;
+
+// Eigen leaves vectors uninitialised by default: these are the zeros.
+template <int Dim>
+Eccentricity<Dim> zero_eccentricity() {
+  if constexpr (Dim == 2) {
+    return 0.0;
+  } else {
+    return Eigen::Vector2d::Zero();
+  }
+}
+
 // The resultant the particles exert on one wall.
-struct WallMeasure {
+template <int Dim>
+struct WallMeasureT {
   WallId wall = kInvalidId;
-  Vec2 force = Vec2::Zero();   // N (per unit depth in 2D): sum of contact forces on the wall
-  double moment = 0.0;         // N m, about the wall's reference point P, counter-clockwise
-  double normal_force = 0.0;   // N, compressive component along the wall's normal
-  int contacts = 0;            // number of touching particles
-  // Eccentricity of the normal force divided by half the wall length,
-  // e / (L/2) (Cundall & Strack Table 1, note 1); 0 without contacts.
-  double eccentricity = 0.0;
-  Vec2 point = Vec2::Zero();  // current position of P, m
-  Vec2 displacement = Vec2::Zero();  // P's displacement since the world was built, m
+  Vec<Dim> force = Vec<Dim>::Zero();  // N (per unit depth for 2D discs): sum of contact forces on the wall
+  Spin<Dim> moment = Space<Dim>::zero_spin();  // N m, about the wall's reference point P
+  double normal_force = 0.0;          // N, compressive component along the wall's normal
+  int contacts = 0;                   // number of touching particles
+  // Eccentricity of the normal force over the half length, e / (L/2)
+  // (Cundall & Strack Table 1, note 1); 0 without contacts.
+  Eccentricity<Dim> eccentricity = zero_eccentricity<Dim>();
+  Vec<Dim> point = Vec<Dim>::Zero();         // current position of P, m
+  Vec<Dim> displacement = Vec<Dim>::Zero();  // P's displacement since the world was built, m
 };
 
 struct AssemblyMeasures {
-  double kinetic_energy = 0.0;  // J (per unit depth): translation + rotation
+  double kinetic_energy = 0.0;  // J (per unit depth for 2D discs): translation + rotation
   // Largest resultant force on any particle over the largest contact force,
   // Delta F / F (Cundall & Strack Table 1, note 2); 0 without contacts.
   double out_of_balance = 0.0;
@@ -37,18 +56,27 @@ struct AssemblyMeasures {
 // second_particle is kInvalidId. The normal points from the first particle
 // towards the second body (Cundall & Strack's e_i); forces follow the sign
 // convention of Fig. 3 (positive normal force is compressive).
-struct ContactRecord {
+template <int Dim>
+struct ContactRecordT {
   ParticleId first = kInvalidId;
   ParticleId second_particle = kInvalidId;
   WallId second_wall = kInvalidId;
-  Vec2 point = Vec2::Zero();   // m, halfway through the overlap
-  Vec2 normal = Vec2::Zero();  // e_i, unit
-  double overlap = 0.0;        // m
-  double normal_force = 0.0;   // F_n, N (spring part)
-  double shear_force = 0.0;    // F_s, N (spring part)
-  double normal_damping = 0.0; // D_n, N (eq. 26)
-  double shear_damping = 0.0;  // D_s, N (eq. 27)
-  bool sliding = false;        // |F_s| reached (F_s)max
+  Vec<Dim> point = Vec<Dim>::Zero();   // m, halfway through the overlap
+  Vec<Dim> normal = Vec<Dim>::Zero();  // e_i, unit
+  double overlap = 0.0;                // m
+  double normal_force = 0.0;           // F_n, N (spring part)
+  // F_s, N (spring part): signed along t_i in 2D (Fig. 3), the magnitude in 3D.
+  double shear_force = 0.0;
+  // The spring's tangential force on the first particle (-F_s t_i in 2D).
+  Vec<Dim> tangential_force = Vec<Dim>::Zero();
+  double normal_damping = 0.0;         // D_n, N (eq. 26)
+  double shear_damping = 0.0;          // D_s, N (eq. 27): signed in 2D, the magnitude in 3D
+  bool sliding = false;                // |F_s| reached (F_s)max
 };
+
+using WallMeasure = WallMeasureT<2>;
+using WallMeasure3 = WallMeasureT<3>;
+using ContactRecord = ContactRecordT<2>;
+using ContactRecord3 = ContactRecordT<3>;
 
 }  // namespace dem

@@ -1,5 +1,6 @@
 // Particle generators: a regular lattice and a random non-overlapping packing
-// with a size distribution and a seed. Deterministic for a given definition.
+// with a size distribution and a seed, in 2D and 3D. Deterministic for a
+// given definition.
 #pragma once
 
 #include <cstdint>
@@ -9,15 +10,20 @@
 
 namespace dem {
 
+// Square: a square (2D) or simple cubic (3D) grid. Hexagonal: rows shifted
+// by half a spacing (2D triangular packing; in 3D the same layers stacked
+// with every other layer shifted, a hexagonal close packing of rows).
 enum class LatticeArrangement { kSquare, kHexagonal };
 
-struct LatticeDef {
+template <int Dim>
+struct LatticeDefT {
   MaterialId material = 0;
-  double radius = 1.0;            // m
-  Vec2 origin = Vec2::Zero();     // centre of the first particle, m
+  double radius = 1.0;                 // m
+  Vec<Dim> origin = Vec<Dim>::Zero();  // centre of the first particle, m
   int columns = 1;
   int rows = 1;
-  double spacing = 2.0;           // centre distance along a row, m
+  int layers = 1;                      // 3D only
+  double spacing = 2.0;                // centre distance along a row, m
   LatticeArrangement arrangement = LatticeArrangement::kSquare;
 };
 
@@ -27,18 +33,26 @@ struct SizeClass {
 };
 
 // Random sequential placement inside [min, max] (centres keep a radius from
-// the edges), largest sizes first; a particle that finds no free place after
+// the faces), largest sizes first; a particle that finds no free place after
 // max_attempts tries is an error (DefinitionError) naming its size class.
-struct RandomPackingDef {
+template <int Dim>
+struct RandomPackingDefT {
   MaterialId material = 0;
-  Vec2 min = Vec2::Zero();
-  Vec2 max = Vec2::Ones();
+  Vec<Dim> min = Vec<Dim>::Zero();
+  Vec<Dim> max = Vec<Dim>::Ones();
   std::vector<SizeClass> sizes;
   std::uint64_t seed = 1;
   int max_attempts = 100000;
 };
 
-std::vector<ParticleDef> generate_lattice(const LatticeDef& def);
-std::vector<ParticleDef> generate_random_packing(const RandomPackingDef& def);
+template <int Dim>
+std::vector<ParticleDefT<Dim>> generate_lattice(const LatticeDefT<Dim>& def);
+template <int Dim>
+std::vector<ParticleDefT<Dim>> generate_random_packing(const RandomPackingDefT<Dim>& def);
+
+using LatticeDef = LatticeDefT<2>;
+using LatticeDef3 = LatticeDefT<3>;
+using RandomPackingDef = RandomPackingDefT<2>;
+using RandomPackingDef3 = RandomPackingDefT<3>;
 
 }  // namespace dem

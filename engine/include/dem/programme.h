@@ -6,6 +6,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -26,10 +27,11 @@ struct StopConditions {
   std::uint64_t check_interval = 10;
 };
 
-struct StageDef {
+template <int Dim>
+struct StageDefT {
   std::string name;
-  std::vector<std::pair<WallId, WallMotion>> wall_motions;  // applied when the stage starts
-  std::optional<DampingDef> damping;                        // applied when the stage starts
+  std::vector<std::pair<WallId, WallMotionT<Dim>>> wall_motions;  // applied when the stage starts
+  std::optional<DampingDef> damping;                              // applied when the stage starts
   std::uint64_t cycles = 0;  // the stage's length, or its cap when conditions are set
   StopConditions until;
 };
@@ -41,9 +43,16 @@ struct StageResult {
 
 // Called every `interval` cycles counted from the stage's start, so a caller
 // can record outputs; return false to stop the stage.
-using StageObserver = std::function<bool(const World&)>;
+template <int Dim>
+using StageObserverT = std::function<bool(const BasicWorld<Dim>&)>;
 
-StageResult run_stage(World& world, const StageDef& stage, std::uint64_t interval = 0,
-                      const StageObserver& observer = {});
+// The observer is not used to deduce Dim, so a lambda can be passed as it is.
+template <int Dim>
+StageResult run_stage(BasicWorld<Dim>& world, const StageDefT<Dim>& stage, std::uint64_t interval = 0,
+                      const std::type_identity_t<StageObserverT<Dim>>& observer = {});
+
+using StageDef = StageDefT<2>;
+using StageDef3 = StageDefT<3>;
+using StageObserver = StageObserverT<2>;
 
 }  // namespace dem

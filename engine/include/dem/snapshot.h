@@ -5,58 +5,82 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "dem/definitions.h"
+#include "dem/measures.h"
 
 namespace dem {
+
+// The shear history of a contact: BALL's signed scalar F_s in 2D (along
+// t_i, Fig. 3), a vector in the tangent plane in 3D.
+template <int Dim>
+using ShearForce = std::conditional_t<Dim == 2, double, Vec3>;
+
+template <int Dim>
+ShearForce<Dim> zero_shear() {
+  if constexpr (Dim == 2) {
+    return 0.0;
+  } else {
+    return Vec3::Zero();
+  }
+}
 
 // One touching contact: its history (Cundall & Strack eq. 18) and what the
 // last force pass made of it. Contacts that do not touch carry no history,
 // so only touching ones are stored.
-struct ContactSnapshot {
+template <int Dim>
+struct ContactSnapshotT {
   ParticleId first = kInvalidId;
   std::int32_t second = kInvalidId;  // a particle, or a wall when with_wall
   bool with_wall = false;
   double normal_force = 0.0;
-  double shear_force = 0.0;
+  ShearForce<Dim> shear_force = zero_shear<Dim>();
   bool sliding = false;
   double overlap = 0.0;
   double normal_damping = 0.0;
-  double shear_damping = 0.0;
-  Vec2 normal = Vec2::Zero();
-  Vec2 point = Vec2::Zero();
-  Vec2 force = Vec2::Zero();   // on the first particle
-  double moment_first = 0.0;
-  double moment_second = 0.0;
+  ShearForce<Dim> shear_damping = zero_shear<Dim>();
+  Vec<Dim> normal = Vec<Dim>::Zero();
+  Vec<Dim> point = Vec<Dim>::Zero();
+  Vec<Dim> force = Vec<Dim>::Zero();  // on the first particle
+  Spin<Dim> moment_first = Space<Dim>::zero_spin();
+  Spin<Dim> moment_second = Space<Dim>::zero_spin();
 };
 
-struct WallSnapshot {
-  Vec2 initial_point = Vec2::Zero();  // for settlement
-  Vec2 last_velocity = Vec2::Zero();  // the motion over the last cycle
-  double last_angular_velocity = 0.0;
-  Vec2 force = Vec2::Zero();          // resultants of the last force pass
-  double moment = 0.0;
+template <int Dim>
+struct WallSnapshotT {
+  Vec<Dim> initial_point = Vec<Dim>::Zero();  // for settlement
+  Vec<Dim> last_velocity = Vec<Dim>::Zero();  // the motion over the last cycle
+  Spin<Dim> last_angular_velocity = Space<Dim>::zero_spin();
+  Vec<Dim> force = Vec<Dim>::Zero();          // resultants of the last force pass
+  Spin<Dim> moment = Space<Dim>::zero_spin();
   double normal_force = 0.0;
   int contacts = 0;
-  double normal_force_arm = 0.0;
+  Eccentricity<Dim> normal_force_arm = zero_eccentricity<Dim>();
 };
 
-struct WorldSnapshot {
+template <int Dim>
+struct WorldSnapshotT {
   // The definition as it stands now: materials, contact models, damping,
   // gravity, threads, time-step settings; walls at their current position,
   // direction and commanded motion; particles at their current position,
   // (half-step) velocity and angular velocity.
-  WorldDef def;
-  std::vector<double> rotation;        // per particle
-  std::vector<Vec2> force;             // per particle, last force sums
-  std::vector<double> moment;          // per particle
-  std::vector<WallSnapshot> walls;     // per wall
-  std::vector<ContactSnapshot> contacts;
+  WorldDefT<Dim> def;
+  std::vector<Orientation<Dim>> rotation;  // per particle
+  std::vector<Vec<Dim>> force;             // per particle, last force sums
+  std::vector<Spin<Dim>> moment;           // per particle
+  std::vector<WallSnapshotT<Dim>> walls;   // per wall
+  std::vector<ContactSnapshotT<Dim>> contacts;
   std::uint64_t cycle = 0;
   double time = 0.0;
   double time_step = 0.0;           // s, as in use (not re-estimated on restore)
   double critical_time_step = 0.0;  // s
 };
+
+using ContactSnapshot = ContactSnapshotT<2>;
+using WallSnapshot = WallSnapshotT<2>;
+using WorldSnapshot = WorldSnapshotT<2>;
+using WorldSnapshot3 = WorldSnapshotT<3>;
 
 }  // namespace dem

@@ -1,5 +1,6 @@
 // The public face of the engine: build a World from a WorldDef, cycle it,
 // steer its walls, and read what it measures. No files, no networking.
+// Written once over the dimension: World is the 2D world, World3 the 3D one.
 #pragma once
 
 #include <cstdint>
@@ -16,31 +17,41 @@
 
 namespace dem {
 
+template <int Dim>
 struct WorldState;  // engine/src: particles, walls, contacts
 
 // Read-only views of the particles' state arrays (structure of arrays,
 // indexed by ParticleId). Valid until the next call that changes the World.
-struct ParticleView {
-  std::span<const Vec2> position;
-  std::span<const Vec2> velocity;          // at the last half step, m/s
-  std::span<const double> angular_velocity;
-  std::span<const double> rotation;        // accumulated angle, rad
+template <int Dim>
+struct ParticleViewT {
+  std::span<const Vec<Dim>> position;
+  std::span<const Vec<Dim>> velocity;  // at the last half step, m/s
+  std::span<const Spin<Dim>> angular_velocity;
+  std::span<const Orientation<Dim>> rotation;  // 2D: accumulated angle, rad; 3D: unit quaternion
   std::span<const double> radius;
   std::span<const double> mass;
 };
 
-class World {
+template <int Dim>
+class BasicWorld {
  public:
+  using Def = WorldDefT<Dim>;
+  using WallDefinition = WallDefT<Dim>;
+  using Motion = WallMotionT<Dim>;
+  using Measure = WallMeasureT<Dim>;
+  using Record = ContactRecordT<Dim>;
+  using Snapshot = WorldSnapshotT<Dim>;
+
   // Throws DefinitionError naming the offending item if the definition is invalid.
-  explicit World(const WorldDef& def);
+  explicit BasicWorld(const Def& def);
   // Restores a saved state; throws DefinitionError if the snapshot is
   // inconsistent (ids out of range, sizes that do not match).
-  explicit World(const WorldSnapshot& snapshot);
-  ~World();
-  World(World&&) noexcept;
-  World& operator=(World&&) noexcept;
-  World(const World&) = delete;
-  World& operator=(const World&) = delete;
+  explicit BasicWorld(const Snapshot& snapshot);
+  ~BasicWorld();
+  BasicWorld(BasicWorld&&) noexcept;
+  BasicWorld& operator=(BasicWorld&&) noexcept;
+  BasicWorld(const BasicWorld&) = delete;
+  BasicWorld& operator=(const BasicWorld&) = delete;
 
   // Runs n calculation cycles (Cundall & Strack, The calculation cycle).
   void cycle(std::uint64_t n = 1);
@@ -52,23 +63,26 @@ class World {
 
   int particle_count() const;
   int wall_count() const;
-  ParticleView particles() const;
+  ParticleViewT<Dim> particles() const;
 
   // Walls, by dense id; find_wall returns kInvalidId for an unknown name.
   WallId find_wall(std::string_view name) const;
-  const WallDef& wall(WallId id) const;  // current geometry and motion
-  void set_wall_motion(WallId id, const WallMotion& motion);
+  const WallDefinition& wall(WallId id) const;  // current geometry and motion
+  void set_wall_motion(WallId id, const Motion& motion);
+  // Length (2D, times the out-of-plane depth) or area (3D) that turns a
+  // wall's normal force into a normal stress.
+  double wall_area(WallId id) const;
 
-  std::vector<WallMeasure> wall_measures() const;
+  std::vector<Measure> wall_measures() const;
   AssemblyMeasures assembly_measures() const;
-  std::vector<ContactRecord> contacts() const;  // touching contacts only
+  std::vector<Record> contacts() const;  // touching contacts only
   // The touching contact between two particles, if any.
-  std::optional<ContactRecord> contact_between(ParticleId a, ParticleId b) const;
+  std::optional<Record> contact_between(ParticleId a, ParticleId b) const;
 
   DampingDef damping() const;
   void set_damping(const DampingDef& damping);
-  Vec2 gravity() const;
-  void set_gravity(const Vec2& gravity);
+  Vec<Dim> gravity() const;
+  void set_gravity(const Vec<Dim>& gravity);
 
   // Time spent in each phase of the cycle since the world was built.
   const StepProfile& profile() const;
@@ -77,7 +91,7 @@ class World {
   void set_threads(int threads);  // 0 = all cores; results do not depend on it
 
   // Everything needed to continue this run exactly (see snapshot.h).
-  WorldSnapshot snapshot() const;
+  Snapshot snapshot() const;
 
   // The time step as a fraction of the critical step (0, 1]; recomputes the step.
   void set_time_step_fraction(double fraction);
@@ -91,7 +105,14 @@ class World {
   std::uint64_t state_hash() const;
 
  private:
-  std::unique_ptr<WorldState> state_;
+  std::unique_ptr<WorldState<Dim>> state_;
 };
+
+using World = BasicWorld<2>;
+using World3 = BasicWorld<3>;
+using ParticleView = ParticleViewT<2>;
+
+extern template class BasicWorld<2>;
+extern template class BasicWorld<3>;
 
 }  // namespace dem
