@@ -22,7 +22,9 @@ dem::WorldDef dense_assembly(int discs, int threads) {
   WorldDef def;
   def.materials = {MaterialDef{"disc", 2650.0, 0.5, 0.0}, MaterialDef{"wall", 1.0, 0.3, 0.0}};
   // Stiff enough that the column barely settles under its own weight.
-  def.contact_models = {ContactModelDef{kInvalidId, kInvalidId, {1.0e8, 0.7e8}, {}, {}}};
+  ContactModelDef model;
+  model.linear = {1.0e8, 0.7e8};
+  def.contact_models = {model};
   LatticeDef lattice;
   lattice.radius = 0.01;
   lattice.origin = {0.011, 0.011};

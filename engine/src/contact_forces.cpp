@@ -1,7 +1,9 @@
 #include "contact_forces.h"
 
+#include "hertz_laws.h"
 #include "linear_law.h"
 #include "parallel.h"
+#include "restitution_law.h"
 
 namespace dem {
 
@@ -16,15 +18,12 @@ Vec<Dim> resolve_force(const ContactState<Dim>& s, const Vec<Dim>& e) {
 
 template <int Dim>
 ContactKinematics<Dim> kinematics(double overlap, const Vec<Dim>& relative, const Vec<Dim>& e) {
-  return {overlap, relative.dot(e), tangential_velocity(relative, e)};  // eqs. 12-13
+  return {overlap, relative.dot(e), tangential_velocity(relative, e), e};  // eqs. 12-13
 }
 
-}  // namespace
-
-template <int Dim>
-void compute_pair_forces(const Particles<Dim>& particles, std::vector<PairContact<Dim>>& pairs,
-                         std::vector<ContactForce<Dim>>& forces, const ContactParamTable& params, double dt,
-                         int threads) {
+template <int Dim, typename Law>
+void pair_pass(const Particles<Dim>& particles, std::vector<PairContact<Dim>>& pairs,
+               std::vector<ContactForce<Dim>>& forces, const ContactParamTable& params, double dt, int threads) {
   const auto n = static_cast<std::int64_t>(pairs.size());
   DEM_PARALLEL_FOR(threads, n)
   for (std::int64_t c = 0; c < n; ++c) {
@@ -45,7 +44,9 @@ void compute_pair_forces(const Particles<Dim>& particles, std::vector<PairContac
     const Vec<Dim> relative =
         relative_contact_velocity(particles.velocity[x], particles.angular_velocity[x], rx, particles.velocity[y],
                                   particles.angular_velocity[y], ry, e);  // eq. 11
-    apply_linear_law(s, kinematics(overlap, relative, e), params(particles.material[x], particles.material[y]), dt);
+    const double mx = particles.mass[x], my = particles.mass[y];
+    const PairProperties pair{rx * ry / (rx + ry), mx * my / (mx + my)};  // Randall 4.5-4.6
+    Law::apply(s, kinematics(overlap, relative, e), pair, params(particles.material[x], particles.material[y]), dt);
     s.normal = e;
     s.point = particles.position[x] + (rx - 0.5 * overlap) * e;
     // Sum M = F_s R for each body (Cundall & Strack, resultant moments).
@@ -54,10 +55,9 @@ void compute_pair_forces(const Particles<Dim>& particles, std::vector<PairContac
   }
 }
 
-template <int Dim>
-void compute_wall_forces(const Particles<Dim>& particles, const Walls<Dim>& walls,
-                         std::vector<WallContact<Dim>>& contacts, std::vector<ContactForce<Dim>>& forces,
-                         const ContactParamTable& params, double dt, int threads) {
+template <int Dim, typename Law>
+void wall_pass(const Particles<Dim>& particles, const Walls<Dim>& walls, std::vector<WallContact<Dim>>& contacts,
+               std::vector<ContactForce<Dim>>& forces, const ContactParamTable& params, double dt, int threads) {
   const auto n = static_cast<std::int64_t>(contacts.size());
   DEM_PARALLEL_FOR(threads, n)
   for (std::int64_t c = 0; c < n; ++c) {
@@ -86,7 +86,8 @@ void compute_wall_forces(const Particles<Dim>& particles, const Walls<Dim>& wall
     const Vec<Dim> relative =
         relative_contact_velocity(particles.velocity[x], particles.angular_velocity[x], r, wall_velocity,
                                   Space<Dim>::zero_spin(), 0.0, e);
-    apply_linear_law(s, kinematics(overlap, relative, e), params(particles.material[x], wall.material), dt);
+    const PairProperties pair{r, particles.mass[x]};
+    Law::apply(s, kinematics(overlap, relative, e), pair, params(particles.material[x], wall.material), dt);
     s.normal = e;
     s.point = centre + (r - 0.5 * overlap) * e;  // halfway between A_(D) and A_(w)
     forces[c] = ContactForce<Dim>{resolve_force(s, e), shear_moment(ShearForce<Dim>(s.shear + s.shear_damping), r, e),
@@ -94,13 +95,49 @@ void compute_wall_forces(const Particles<Dim>& particles, const Walls<Dim>& wall
   }
 }
 
-template void compute_pair_forces(const Particles<2>&, std::vector<PairContact<2>>&, std::vector<ContactForce<2>>&,
-                                  const ContactParamTable&, double, int);
-template void compute_pair_forces(const Particles<3>&, std::vector<PairContact<3>>&, std::vector<ContactForce<3>>&,
-                                  const ContactParamTable&, double, int);
-template void compute_wall_forces(const Particles<2>&, const Walls<2>&, std::vector<WallContact<2>>&,
+// Calls pass.template operator()<Law>() with the law's type: one branch
+// per pass, none per contact.
+template <typename Pass>
+void with_law(ContactLaw law, Pass pass) {
+  switch (law) {
+    case ContactLaw::kLinear:
+      pass.template operator()<LinearLaw>();
+      break;
+    case ContactLaw::kLinearRestitution:
+      pass.template operator()<RestitutionLaw>();
+      break;
+    case ContactLaw::kHertzMindlin:
+      pass.template operator()<HertzMindlinLaw>();
+      break;
+    case ContactLaw::kHertzLinearTangential:
+      pass.template operator()<HertzLinearTangentialLaw>();
+      break;
+  }
+}
+
+}  // namespace
+
+template <int Dim>
+void compute_pair_forces(ContactLaw law, const Particles<Dim>& particles, std::vector<PairContact<Dim>>& pairs,
+                         std::vector<ContactForce<Dim>>& forces, const ContactParamTable& params, double dt,
+                         int threads) {
+  with_law(law, [&]<typename Law>() { pair_pass<Dim, Law>(particles, pairs, forces, params, dt, threads); });
+}
+
+template <int Dim>
+void compute_wall_forces(ContactLaw law, const Particles<Dim>& particles, const Walls<Dim>& walls,
+                         std::vector<WallContact<Dim>>& contacts, std::vector<ContactForce<Dim>>& forces,
+                         const ContactParamTable& params, double dt, int threads) {
+  with_law(law, [&]<typename Law>() { wall_pass<Dim, Law>(particles, walls, contacts, forces, params, dt, threads); });
+}
+
+template void compute_pair_forces(ContactLaw, const Particles<2>&, std::vector<PairContact<2>>&,
                                   std::vector<ContactForce<2>>&, const ContactParamTable&, double, int);
-template void compute_wall_forces(const Particles<3>&, const Walls<3>&, std::vector<WallContact<3>>&,
+template void compute_pair_forces(ContactLaw, const Particles<3>&, std::vector<PairContact<3>>&,
+                                  std::vector<ContactForce<3>>&, const ContactParamTable&, double, int);
+template void compute_wall_forces(ContactLaw, const Particles<2>&, const Walls<2>&, std::vector<WallContact<2>>&,
+                                  std::vector<ContactForce<2>>&, const ContactParamTable&, double, int);
+template void compute_wall_forces(ContactLaw, const Particles<3>&, const Walls<3>&, std::vector<WallContact<3>>&,
                                   std::vector<ContactForce<3>>&, const ContactParamTable&, double, int);
 
 }  // namespace dem

@@ -10,12 +10,21 @@ namespace dem {
 
 struct ContactParams {
   bool defined = false;
-  double normal_stiffness = 0.0;  // k_n
-  double shear_stiffness = 0.0;   // k_s
+  ContactLaw law = ContactLaw::kLinear;
   double friction = 0.0;          // tan(phi_mu) of the pair (eq. 19)
   double cohesion = 0.0;          // c of the pair (eq. 19)
-  double normal_viscosity = 0.0;  // c_n = beta k_n (eq. 28)
-  double shear_viscosity = 0.0;   // c_s = beta k_s (eq. 28)
+  // Linear laws
+  double normal_stiffness = 0.0;  // k_n
+  double shear_stiffness = 0.0;   // k_s
+  double normal_viscosity = 0.0;  // BALL: c_n = beta k_n (eq. 28)
+  double shear_viscosity = 0.0;   // BALL: c_s = beta k_s (eq. 28)
+  // Miyata eq. 17 without the effective mass: c_n = restitution_viscosity sqrt(m*).
+  double restitution_viscosity = 0.0;
+  // Hertz laws
+  double contact_modulus = 0.0;   // E* (Randall 3.6, 4.7)
+  double shear_modulus = 0.0;     // G* (Randall 4.8-4.10)
+  double damping_ratio = 0.0;     // beta, fraction of critical (Randall 4.13)
+  bool tangential_damping = false;
 };
 
 // A square table indexed by (material_a, material_b), symmetric.
@@ -30,5 +39,8 @@ class ContactParamTable {
   int count_ = 0;
   std::vector<ContactParams> params_;
 };
+
+// Hertz damping ratio beta equivalent to a coefficient of restitution e.
+double damping_ratio_from_restitution(double restitution);
 
 }  // namespace dem

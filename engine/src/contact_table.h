@@ -9,6 +9,7 @@
 
 #include "dem/ids.h"
 #include "dem/snapshot.h"
+#include "mindlin.h"
 
 namespace dem {
 
@@ -26,6 +27,10 @@ struct ContactState {
   ShearForce<Dim> shear_damping = zero_shear<Dim>();  // D_s (eq. 27)
   Vec<Dim> normal = Vec<Dim>::Zero();  // e_i, from the particle towards the other body
   Vec<Dim> point = Vec<Dim>::Zero();   // halfway through the overlap
+  // Mindlin-Deresiewicz history (Hertz-Mindlin law only); in 3D the law
+  // works along a loading axis in the tangent plane.
+  MindlinHistory mindlin;
+  Vec<Dim> mindlin_axis = Vec<Dim>::Zero();
 };
 
 // What a contact exerts this cycle (springs + dashpots), zero when it does

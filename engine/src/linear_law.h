@@ -5,42 +5,37 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact_kinematics.h"
 #include "contact_params.h"
 #include "contact_table.h"
 #include "tangential.h"
 
 namespace dem {
 
-// What the force law needs to know of the contact's motion this cycle.
-template <int Dim>
-struct ContactKinematics {
-  double overlap;                     // R_x + R_y - D (eq. 8), > 0
-  double normal_velocity;             // n_dot (eq. 12), compression positive
-  ShearForce<Dim> shear_velocity;     // s_dot (eq. 13); a tangent-plane vector in 3D
-};
-
-// Updates the contact's force history and dashpot forces for one cycle.
-template <int Dim>
-void apply_linear_law(ContactState<Dim>& s, const ContactKinematics<Dim>& k, const ContactParams& p, double dt) {
-  if (!s.touching) {
-    // A contact that forms during the step starts from its overlap (the
-    // integral of eq. 16 since touching) and no shear history.
-    s.normal_force = p.normal_stiffness * k.overlap;
-    s.shear = zero_shear<Dim>();
-    s.touching = true;
-  } else {
-    s.normal_force += p.normal_stiffness * k.normal_velocity * dt;  // eqs. 16, 18
-    s.shear += p.shear_stiffness * k.shear_velocity * dt;           // eqs. 17, 18
+struct LinearLaw {
+  template <int Dim>
+  static void apply(ContactState<Dim>& s, const ContactKinematics<Dim>& k, const PairProperties&,
+                    const ContactParams& p, double dt) {
+    if (!s.touching) {
+      // A contact that forms during the step starts from its overlap (the
+      // integral of eq. 16 since touching) and no shear history.
+      s.normal_force = p.normal_stiffness * k.overlap;
+      s.shear = zero_shear<Dim>();
+      s.touching = true;
+    } else {
+      s.normal_force += p.normal_stiffness * k.normal_velocity * dt;  // eqs. 16, 18
+      s.shear += p.shear_stiffness * k.shear_velocity * dt;           // eqs. 17, 18
+    }
+    s.overlap = k.overlap;
+    // Coulomb limit with cohesion (eq. 19); never negative, even under tension.
+    const double shear_limit = std::max(0.0, s.normal_force * p.friction + p.cohesion);
+    s.sliding = shear_magnitude(s.shear) > shear_limit;
+    if (s.sliding) clamp_shear(s.shear, shear_limit);
+    // Dashpots (eqs. 26-28); no shear dashpot while sliding: friction alone damps.
+    s.normal_damping = p.normal_viscosity * k.normal_velocity;
+    s.shear_damping = s.sliding ? zero_shear<Dim>() : ShearForce<Dim>(p.shear_viscosity * k.shear_velocity);
   }
-  s.overlap = k.overlap;
-  // Coulomb limit with cohesion (eq. 19); never negative, even under tension.
-  const double shear_limit = std::max(0.0, s.normal_force * p.friction + p.cohesion);
-  s.sliding = shear_magnitude(s.shear) > shear_limit;
-  if (s.sliding) clamp_shear(s.shear, shear_limit);
-  // Dashpots (eqs. 26-28); no shear dashpot while sliding: friction alone damps.
-  s.normal_damping = p.normal_viscosity * k.normal_velocity;
-  s.shear_damping = s.sliding ? zero_shear<Dim>() : ShearForce<Dim>(p.shear_viscosity * k.shear_velocity);
-}
+};
 
 // A pair that no longer overlaps carries no force and loses its history.
 template <int Dim>

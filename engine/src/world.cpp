@@ -45,8 +45,8 @@ void step(WorldState<Dim>& s) {
     timer.lap(s.profile.find_contacts);
   }
   ContactTable<Dim>& c = s.contacts;
-  compute_pair_forces(s.particles, c.pairs, c.pair_forces, s.params, s.time_step, s.threads);
-  compute_wall_forces(s.particles, s.walls, c.walls, c.wall_forces, s.params, s.time_step, s.threads);
+  compute_pair_forces(s.pair_law, s.particles, c.pairs, c.pair_forces, s.params, s.time_step, s.threads);
+  compute_wall_forces(s.wall_law, s.particles, s.walls, c.walls, c.wall_forces, s.params, s.time_step, s.threads);
   timer.lap(s.profile.contact_forces);
   sum_particle_forces(s.particles, c, s.threads);
   sum_wall_forces(s.walls, c.walls, c.wall_forces);
@@ -105,8 +105,19 @@ void validate(const WorldDefT<Dim>& def) {
     const bool both_valid = model.material_a >= 0 && model.material_a < materials && model.material_b >= 0 &&
                             model.material_b < materials;
     check(both_default || both_valid, where + ": unknown material id");
-    check(model.linear.normal_stiffness > 0.0, where + ": normal stiffness must be > 0");
-    check(model.linear.shear_stiffness >= 0.0, where + ": shear stiffness must be >= 0");
+    const bool linear = model.law == ContactLaw::kLinear || model.law == ContactLaw::kLinearRestitution;
+    if (linear) {
+      check(model.linear.normal_stiffness > 0.0, where + ": normal stiffness must be > 0");
+      check(model.linear.shear_stiffness >= 0.0, where + ": shear stiffness must be >= 0");
+    }
+    if (model.law == ContactLaw::kLinearRestitution) {
+      check(model.restitution > 0.0 && model.restitution <= 1.0, where + ": restitution must be in (0, 1]");
+    }
+    if (!linear) {
+      check(model.hertz.damping_ratio >= 0.0, where + ": damping ratio must be >= 0");
+      check(!model.hertz.restitution || (*model.hertz.restitution > 0.0 && *model.hertz.restitution <= 1.0),
+            where + ": restitution must be in (0, 1]");
+    }
     check(model.friction.value_or(0.0) >= 0.0, where + ": friction must be >= 0");
     check(model.cohesion.value_or(0.0) >= 0.0, where + ": cohesion must be >= 0");
   }
@@ -137,20 +148,67 @@ void validate(const WorldDefT<Dim>& def) {
   check(def.damping.contact_beta >= 0.0 && def.damping.global_alpha >= 0.0, "world: damping must be >= 0");
 }
 
-// Every pair of materials that can touch needs a contact law.
+const char* law_name(ContactLaw law) {
+  switch (law) {
+    case ContactLaw::kLinear:
+      return "linear";
+    case ContactLaw::kLinearRestitution:
+      return "linear_restitution";
+    case ContactLaw::kHertzMindlin:
+      return "hertz_mindlin";
+    case ContactLaw::kHertzLinearTangential:
+      return "hertz_linear_tangential";
+  }
+  return "?";
+}
+
+bool is_hertz(ContactLaw law) { return law == ContactLaw::kHertzMindlin || law == ContactLaw::kHertzLinearTangential; }
+
+// Every pair of materials that can touch needs a contact law, and one law
+// serves all particle-particle contacts and one all particle-wall contacts
+// (so the force passes choose it once, not per contact). Hertz laws need
+// the elastic constants of the particles' materials.
 template <int Dim>
-void check_contact_laws(const WorldState<Dim>& s) {
+void resolve_contact_laws(WorldState<Dim>& s) {
   const auto count = static_cast<MaterialId>(s.materials.size());
   std::vector<bool> particle_material(count, false), wall_material(count, false);
   for (MaterialId m : s.particles.material) particle_material[m] = true;
   for (const WallDefT<Dim>& w : s.walls.def) wall_material[w.material] = true;
+  struct Seen {
+    bool any = false;
+    ContactLaw law = ContactLaw::kLinear;
+    MaterialId a = 0, b = 0;
+  };
+  Seen pairs, walls;
+  auto note = [&](Seen& seen, MaterialId a, MaterialId b, const char* kind) {
+    const ContactParams& p = s.params(a, b);
+    check(p.defined, "no contact model for materials " + quoted(s.materials[a]) + " and " + quoted(s.materials[b]));
+    if (!seen.any) {
+      seen = {true, p.law, a, b};
+      return;
+    }
+    check(p.law == seen.law, std::string(kind) + " contacts must all use one contact law: materials " +
+                                 quoted(s.materials[seen.a]) + " and " + quoted(s.materials[seen.b]) + " use " +
+                                 law_name(seen.law) + ", " + quoted(s.materials[a]) + " and " +
+                                 quoted(s.materials[b]) + " use " + law_name(p.law));
+  };
   for (MaterialId a = 0; a < count; ++a) {
     if (!particle_material[a]) continue;
     for (MaterialId b = 0; b < count; ++b) {
-      if (!particle_material[b] && !wall_material[b]) continue;
-      check(s.params(a, b).defined,
-            "no contact model for materials " + quoted(s.materials[a]) + " and " + quoted(s.materials[b]));
+      if (particle_material[b]) note(pairs, a, b, "particle-particle");
+      if (wall_material[b]) note(walls, a, b, "particle-wall");
     }
+  }
+  s.pair_law = pairs.law;
+  s.wall_law = walls.law;
+  const bool hertz = (pairs.any && is_hertz(pairs.law)) || (walls.any && is_hertz(walls.law));
+  if (!hertz) return;
+  for (MaterialId m = 0; m < count; ++m) {
+    if (!particle_material[m]) continue;
+    const MaterialDef& mat = s.materials[m];
+    check(mat.youngs_modulus > 0.0, "material " + quoted(mat) + ": a Hertz law needs youngs_modulus > 0");
+    check(mat.poisson_ratio > -1.0 && mat.poisson_ratio < 0.5,
+          "material " + quoted(mat) + ": poisson_ratio must be in (-1, 0.5)");
   }
 }
 
@@ -228,7 +286,7 @@ BasicWorld<Dim>::BasicWorld(const Def& def) : state_(std::make_unique<WorldState
   w.contacts.assign(walls, 0);
   w.normal_force_arm.assign(walls, zero_eccentricity<Dim>());
 
-  check_contact_laws(s);
+  resolve_contact_laws(s);
   s.contact_tolerance =
       def.contact_tolerance > 0.0 ? def.contact_tolerance : 0.1 * radius_sum / static_cast<double>(n);
   s.critical_time_step = estimate_critical_time_step(s);

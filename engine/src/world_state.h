@@ -24,6 +24,8 @@ struct WorldState {
   Walls<Dim> walls;
   ContactTable<Dim> contacts;
   ContactParamTable params;
+  ContactLaw pair_law = ContactLaw::kLinear;  // the law of every particle-particle contact
+  ContactLaw wall_law = ContactLaw::kLinear;  // the law of every particle-wall contact
   DampingDef damping;
   Vec<Dim> gravity = Vec<Dim>::Zero();
   PlanarParticle planar_particle = PlanarParticle::kDisc;

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "dem/world.h"
+#include "model_builders.h"
 
 namespace dem {
 namespace {
@@ -22,7 +23,7 @@ constexpr double kTimeStep = 1.0e-4;
 WorldDef two_discs_between_walls() {
   WorldDef def;
   def.materials = {MaterialDef{"disc", kDensity, 0.0, 0.0}};
-  def.contact_models = {ContactModelDef{0, 0, {kStiffness, kStiffness}, {}, {}}};
+  def.contact_models = {testing::linear_model(kStiffness, kStiffness, 0, 0)};
   def.particles = {ParticleDef{{kRadius, 0.0}, kRadius, 0}, ParticleDef{{3.0 * kRadius, 0.0}, kRadius, 0}};
   WallDef left{"left", {0.0, 0.0}, {0.0, -1.0}, -2.0, 2.0, 0, {}};  // normal points to +1
   WallDef right{"right", {4.0 * kRadius, 0.0}, {0.0, 1.0}, -2.0, 2.0, 0, {}};
@@ -82,7 +83,7 @@ TEST(ContactLaw, Fig1HandCalculationOfTheFirstCycles) {
 WorldDef disc_dragged_into_corner(double disc_friction, double wall_friction, double cohesion) {
   WorldDef def;
   def.materials = {MaterialDef{"disc", 1000.0, disc_friction, cohesion}, MaterialDef{"floor", 1.0, wall_friction, 2.0 * cohesion}};
-  def.contact_models = {ContactModelDef{kInvalidId, kInvalidId, {1.0e7, 0.8e7}, {}, {}}};
+  def.contact_models = {testing::linear_model(1.0e7, 0.8e7)};
   def.particles = {ParticleDef{{0.0, 0.1}, 0.1, 0}};
   WallDef floor{"floor", {0.0, 0.0}, {1.0, 0.0}, -100.0, 100.0, 1, {}};
   WallDef side{"side", {0.1, 0.0}, {0.0, 1.0}, 0.0, 100.0, 1, {}};

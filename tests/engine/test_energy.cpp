@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "dem/world.h"
+#include "model_builders.h"
 
 namespace dem {
 namespace {
@@ -22,7 +23,7 @@ namespace {
 WorldDef discs_on_a_line(double time_step_fraction) {
   WorldDef def;
   def.materials = {MaterialDef{"disc", 1000.0, 0.0, 0.0}};
-  def.contact_models = {ContactModelDef{kInvalidId, kInvalidId, {1.0e6, 1.0e6}, {}, {}}};
+  def.contact_models = {testing::linear_model(1.0e6, 1.0e6)};
   const double radius[] = {0.010, 0.012};
   const double speed[] = {1.5, -0.7};
   const double gap = 2.0e-4;

@@ -4,6 +4,7 @@
 #include "dem/error.h"
 #include "dem/packing.h"
 #include "dem/world.h"
+#include "model_builders.h"
 
 namespace dem {
 namespace {
@@ -13,7 +14,7 @@ namespace {
 WorldDef settling_box() {
   WorldDef def;
   def.materials = {MaterialDef{"disc", 2650.0, 0.4, 0.0}, MaterialDef{"wall", 1.0, 0.2, 0.0}};
-  def.contact_models = {ContactModelDef{kInvalidId, kInvalidId, {1.0e6, 0.7e6}, {}, {}}};
+  def.contact_models = {testing::linear_model(1.0e6, 0.7e6)};
   RandomPackingDef packing;
   packing.min = {0.0, 0.0};
   packing.max = {0.3, 0.3};

@@ -6,6 +6,7 @@
 #include "dem/error.h"
 #include "dem/packing.h"
 #include "dem/world.h"
+#include "model_builders.h"
 
 namespace dem {
 namespace {
@@ -15,7 +16,7 @@ namespace {
 WorldDef dense_box(int columns, int rows) {
   WorldDef def;
   def.materials = {MaterialDef{"disc", 2650.0, 0.5, 0.0}, MaterialDef{"wall", 1.0, 0.3, 0.0}};
-  def.contact_models = {ContactModelDef{kInvalidId, kInvalidId, {1.0e6, 0.7e6}, {}, {}}};
+  def.contact_models = {testing::linear_model(1.0e6, 0.7e6)};
   LatticeDef lattice;
   lattice.radius = 0.01;
   lattice.origin = {0.011, 0.011};

@@ -7,6 +7,7 @@
 
 #include "dem/packing.h"
 #include "dem/world.h"
+#include "model_builders.h"
 
 namespace dem {
 namespace {
@@ -26,7 +27,7 @@ WallDef3 floor_wall(double half) {
 WorldDef3 spheres_in_a_box(int per_side, int threads) {
   WorldDef3 def;
   def.materials = {MaterialDef{"sphere", 2500.0, 0.5, 0.0}, MaterialDef{"wall", 1.0, 0.3, 0.0}};
-  def.contact_models = {ContactModelDef{kInvalidId, kInvalidId, {1.0e5, 0.8e5}, {}, {}}};
+  def.contact_models = {testing::linear_model(1.0e5, 0.8e5)};
   // A simple cubic stack of touching spheres that gravity presses together.
   LatticeDef3 lattice;
   lattice.radius = 0.0038;
@@ -70,7 +71,7 @@ WorldDef3 spheres_in_a_box(int per_side, int threads) {
 TEST(World3, SphereRestsOnARectangularFloorUnderItsWeight) {
   WorldDef3 def;
   def.materials = {MaterialDef{"sphere", 2500.0, 0.5, 0.0}, MaterialDef{"wall", 1.0, 0.5, 0.0}};
-  def.contact_models = {ContactModelDef{kInvalidId, kInvalidId, {1.0e5, 1.0e5}, {}, {}}};
+  def.contact_models = {testing::linear_model(1.0e5, 1.0e5)};
   def.particles = {ParticleDef3{{0.2, -0.1, 0.011}, 0.01, 0}};
   def.walls = {floor_wall(0.5)};
   def.gravity = {0.0, 0.0, -9.81};
@@ -92,7 +93,7 @@ TEST(World3, SphereRestsOnARectangularFloorUnderItsWeight) {
 TEST(World3, ObliqueFrictionalCollisionConservesMomentum) {
   WorldDef3 def;
   def.materials = {MaterialDef{"sphere", 2500.0, 0.3, 0.0}};
-  def.contact_models = {ContactModelDef{kInvalidId, kInvalidId, {1.0e5, 0.8e5}, {}, {}}};
+  def.contact_models = {testing::linear_model(1.0e5, 0.8e5)};
   def.particles = {ParticleDef3{{0.0, 0.0, 0.0}, 0.01, 0, {1.0, 0.2, -0.1}, {0.0, 5.0, 0.0}},
                    ParticleDef3{{0.025, 0.006, 0.004}, 0.012, 0, {-0.5, 0.0, 0.3}, {1.0, 0.0, -2.0}}};
   def.damping = {1e-4, 0.0};

@@ -37,16 +37,51 @@ struct LinearLawDef {
   double shear_stiffness = 1.0e9;   // k_s, N/m
 };
 
+// The contact laws a pair of materials can use.
+enum class ContactLaw {
+  // BALL: incremental linear springs, Coulomb limit with cohesion, dashpots
+  // c = beta k (Cundall & Strack eqs. 16-19, 26-28).
+  kLinear,
+  // Linear spring-dashpot whose normal dashpot gives a coefficient of
+  // restitution, incremental shear spring with a Coulomb slider (Miyata
+  // et al. 2002, eqs. 13-23).
+  kLinearRestitution,
+  // Hertz normal force (Randall 1989, 3.13 and 4.5-4.14) with the
+  // Mindlin-Deresiewicz tangential law and its loading history (Randall
+  // 3.94-3.98, coded as in 4.15-4.25).
+  kHertzMindlin,
+  // Hertz normal force with the linear-pressure-dependent tangential
+  // stiffness k_s = 8 G* a (Miyata et al. 2002, eq. 31).
+  kHertzLinearTangential,
+};
+
+// Damping of the Hertz laws. The normal dashpot is a fraction beta of the
+// critical damping of the current normal stiffness 2 E* a (Randall 4.13):
+// D = 2 beta sqrt(m* 2 E* a) n_dot. Given a coefficient of restitution e
+// instead, beta = sqrt(5/6) |ln e| / sqrt(ln^2 e + pi^2), the form LIGGGHTS
+// uses (../shared/bench/README.md).
+struct HertzDampingDef {
+  double damping_ratio = 0.0;         // beta, fraction of critical
+  std::optional<double> restitution;  // e in (0, 1]; overrides damping_ratio when set
+  // The same fraction of critical damping on the tangential stiffness
+  // (Randall 4.19; optional there, as the Mindlin law dissipates already).
+  bool tangential = false;
+};
+
 // The contact law for one pair of materials (or for every pair not named
 // elsewhere when both ids are kInvalidId). Friction and cohesion default to
 // the smaller of the two materials' values (Cundall & Strack eq. 19 and its
-// footnote 1); set them here to give a pair its own values.
+// footnote 1); set them here to give a pair its own values. The Hertz laws
+// take E and nu from the two materials (a wall material with E = 0 is rigid).
 struct ContactModelDef {
   MaterialId material_a = kInvalidId;
   MaterialId material_b = kInvalidId;
-  LinearLawDef linear;
+  LinearLawDef linear;  // kLinear and kLinearRestitution
   std::optional<double> friction;
   std::optional<double> cohesion;
+  ContactLaw law = ContactLaw::kLinear;
+  double restitution = 1.0;  // kLinearRestitution: e in (0, 1] (Miyata eq. 17)
+  HertzDampingDef hertz;     // kHertzMindlin and kHertzLinearTangential
 };
 
 // Contact damping c = beta * k (Cundall & Strack eq. 28) and global damping
