@@ -1,9 +1,7 @@
 #include "contact_forces.h"
 
-#include "hertz_laws.h"
-#include "linear_law.h"
+#include "law_dispatch.h"
 #include "parallel.h"
-#include "restitution_law.h"
 
 namespace dem {
 
@@ -92,26 +90,6 @@ void wall_pass(const Particles<Dim>& particles, const Walls<Dim>& walls, std::ve
     s.point = centre + (r - 0.5 * overlap) * e;  // halfway between A_(D) and A_(w)
     forces[c] = ContactForce<Dim>{resolve_force(s, e), shear_moment(ShearForce<Dim>(s.shear + s.shear_damping), r, e),
                                   Space<Dim>::zero_spin()};
-  }
-}
-
-// Calls pass.template operator()<Law>() with the law's type: one branch
-// per pass, none per contact.
-template <typename Pass>
-void with_law(ContactLaw law, Pass pass) {
-  switch (law) {
-    case ContactLaw::kLinear:
-      pass.template operator()<LinearLaw>();
-      break;
-    case ContactLaw::kLinearRestitution:
-      pass.template operator()<RestitutionLaw>();
-      break;
-    case ContactLaw::kHertzMindlin:
-      pass.template operator()<HertzMindlinLaw>();
-      break;
-    case ContactLaw::kHertzLinearTangential:
-      pass.template operator()<HertzLinearTangentialLaw>();
-      break;
   }
 }
 

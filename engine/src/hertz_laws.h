@@ -82,7 +82,10 @@ struct HertzMindlinLaw {
       s.shear = along * axis + across + 8.0 * p.shear_modulus * n.contact_radius * theta * (ds - ds_along * axis);
     }
     const double limit = std::max(0.0, mu * s.normal_force + p.cohesion);
-    s.sliding = shear_magnitude(s.shear) > limit;
+    // With theta = 0 the law lands exactly on mu N: full slip (Randall 3.95), so
+    // reaching the limit counts as sliding, not only passing it.
+    const double magnitude = shear_magnitude(s.shear);
+    s.sliding = magnitude > limit || (limit > 0.0 && magnitude >= limit * (1.0 - 1e-12));
     if (s.sliding) {
       clamp_shear(s.shear, limit);
       if constexpr (Dim == 2) {

@@ -1,5 +1,9 @@
 // dem_validate: reproduces the seeds' checks and writes their figures as CSV.
-//   dem_validate nine-disc --out DIR   (Cundall & Strack 1979, Figs. 6-9)
+//   dem_validate nine-disc --out DIR        (Cundall & Strack 1979, Figs. 6-9)
+//   dem_validate hertz-impact --out DIR     (Randall 1989, 5.3.1)
+//   dem_validate oblique-impact --out DIR   (Randall 1989, 5.4)
+//   dem_validate restitution --out DIR      (Miyata et al. 2002, eq. 17)
+//   dem_validate mindlin-loading --out DIR  (Randall 1989, 5.2)
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -7,6 +11,7 @@
 #include <exception>
 #include <filesystem>
 
+#include "contact_mechanics.h"
 #include "nine_disc.h"
 
 namespace {
@@ -42,8 +47,17 @@ int main(int argc, char** argv) {
   auto* nine = app.add_subcommand("nine-disc", "Cundall & Strack (1979) nine-disc test, Figs. 6-9");
   nine->add_option("--out", out, "directory for nine_disc.csv and nine_disc_distortion.csv");
   nine->add_option("--cases", cases, "directory holding the cases/ball case files")->check(CLI::ExistingDirectory);
+  auto* hertz = app.add_subcommand("hertz-impact", "Hertz normal impact, sphere-wall and sphere-sphere (Randall 5.3.1)");
+  auto* oblique = app.add_subcommand("oblique-impact", "oblique impact sweep 0-90 degrees (Randall 5.4, Maw et al.)");
+  auto* restitution = app.add_subcommand("restitution", "linear spring-dashpot restitution (Miyata eq. 17)");
+  auto* mindlin = app.add_subcommand("mindlin-loading", "Mindlin-Deresiewicz loading history (Randall 5.2)");
+  for (auto* sub : {hertz, oblique, restitution, mindlin}) sub->add_option("--out", out, "directory for the CSV files");
   CLI11_PARSE(app, argc, argv);
   try {
+    if (*hertz) dem::validation::report_hertz_impact(out);
+    if (*oblique) dem::validation::report_oblique_impact(out);
+    if (*restitution) dem::validation::report_restitution(out);
+    if (*mindlin) dem::validation::report_mindlin_loading(out);
     if (*nine) {
       const auto compression = dem::validation::run_compression(cases / "ball");
       const auto distortion = dem::validation::run_distortion(cases / "ball");

@@ -1,0 +1,142 @@
+#include "contact_mechanics.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <numbers>
+#include <stdexcept>
+
+#include "mindlin_loading.h"
+
+namespace dem::validation {
+
+namespace {
+
+std::ofstream open_csv(const std::filesystem::path& path) {
+  std::filesystem::create_directories(path.parent_path());
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+  out.precision(10);
+  return out;
+}
+
+double sphere_mass(const Sphere& s) { return s.density * 4.0 / 3.0 * std::numbers::pi * std::pow(s.radius, 3); }
+
+// E* of two bodies of the sphere's material (Randall 3.6).
+double contact_modulus(const Sphere& s) { return s.youngs_modulus / (2.0 * (1.0 - s.poisson_ratio * s.poisson_ratio)); }
+
+}  // namespace
+
+Sphere maw_sphere() { return Sphere{}; }
+
+ContactModelDef hertz_mindlin_model() {
+  ContactModelDef m;
+  m.law = ContactLaw::kHertzMindlin;
+  return m;
+}
+
+ContactModelDef restitution_model(double restitution) {
+  ContactModelDef m;
+  m.law = ContactLaw::kLinearRestitution;
+  m.linear = {1.0e5, 0.8e5};
+  m.restitution = restitution;
+  return m;
+}
+
+void report_hertz_impact(const std::filesystem::path& out) {
+  const Sphere s = maw_sphere();
+  auto csv = open_csv(out / "hertz_impact.csv");
+  csv << "case,speed,contact_duration,theory_duration,duration_error,peak_force,theory_peak_force,"
+         "peak_force_error,restitution\n";
+  std::printf("Hertz normal impact (Randall 5.3.1): steel sphere R = %.1f mm, E = %.0f GPa, nu = %.2f\n",
+              1e3 * s.radius, 1e-9 * s.youngs_modulus, s.poisson_ratio);
+  for (const char* which : {"sphere-wall", "sphere-sphere"}) {
+    for (double v : {0.1, 0.4, 1.0}) {
+      const bool wall = std::string(which) == "sphere-wall";
+      const ImpactResult r = wall ? sphere_wall_impact(s, hertz_mindlin_model(), v, 0.0, kImpactTimeStepFraction)
+                                  : sphere_sphere_impact(s, hertz_mindlin_model(), v, kImpactTimeStepFraction);
+      const double m = wall ? sphere_mass(s) : 0.5 * sphere_mass(s);
+      const double radius = wall ? s.radius : 0.5 * s.radius;
+      // A wall of the same material: E* as for two spheres (Randall 3.6).
+      const HertzTheory t = hertz_theory(m, radius, contact_modulus(s), v);
+      const double de = r.contact_duration / t.contact_duration - 1.0;
+      const double fe = r.peak_normal_force / t.peak_normal_force - 1.0;
+      csv << which << ',' << v << ',' << r.contact_duration << ',' << t.contact_duration << ',' << de << ','
+          << r.peak_normal_force << ',' << t.peak_normal_force << ',' << fe << ',' << r.restitution << '\n';
+      std::printf("  %-13s V = %.1f m/s: T_c %.4e s (theory %.4e, %+.3f%%), N_max %.4e N (theory %.4e, %+.3f%%), "
+                  "e = %.6f\n",
+                  which, v, r.contact_duration, t.contact_duration, 100.0 * de, r.peak_normal_force,
+                  t.peak_normal_force, 100.0 * fe, r.restitution);
+    }
+  }
+}
+
+void report_oblique_impact(const std::filesystem::path& out) {
+  const Sphere s = maw_sphere();
+  const double chi = maw_chi(s.poisson_ratio);
+  auto csv = open_csv(out / "oblique_impact.csv");
+  csv << "angle_deg,psi1,psi2,restitution,sliding_throughout\n";
+  auto forces = open_csv(out / "oblique_impact_forces.csv");
+  forces << "angle_deg,t_over_tc,tangential_over_mu_nmax,normal_over_nmax,sliding\n";
+  std::printf("Oblique impact (Randall 5.4, Maw et al. 1976): V = 0.4 m/s, mu = %.2f, chi = %.4f, 4 chi - 1 = %.3f\n",
+              s.friction, chi, 4.0 * chi - 1.0);
+  std::printf("  angle  psi1     psi2     restitution  sliding throughout\n");
+  for (double angle = 0.0; angle <= 90.0; angle += 2.5) {
+    const double tangent = std::tan(angle * std::numbers::pi / 180.0);
+    if (angle >= 90.0) {  // grazing: no normal velocity, no contact, nothing changes
+      csv << angle << ",inf,inf,1,0\n";
+      std::printf("  %5.1f  (grazing: no contact, restitution 1)\n", angle);
+      continue;
+    }
+    const ImpactResult r = sphere_wall_impact(s, hertz_mindlin_model(), 0.4, angle, kImpactTimeStepFraction);
+    const double psi1 = maw_psi(s.poisson_ratio, s.friction, tangent);
+    const double psi2 = maw_psi(s.poisson_ratio, s.friction, r.tangential_velocity_after / r.normal_velocity_after);
+    csv << angle << ',' << psi1 << ',' << psi2 << ',' << r.restitution << ',' << r.sliding_throughout << '\n';
+    std::printf("  %5.1f  %7.3f  %+7.3f  %.5f      %s\n", angle, psi1, psi2, r.restitution,
+                r.sliding_throughout ? "yes" : "no");
+    // Randall Fig. 5.9: T / (mu N_max) against t / T_c for a few angles.
+    if (angle == 5.0 || angle == 20.0 || angle == 40.0 || angle == 60.0) {
+      for (const ImpactSample& sample : r.history) {
+        forces << angle << ',' << sample.time / r.contact_duration << ','
+               << sample.tangential_force / (s.friction * r.peak_normal_force) << ','
+               << sample.normal_force / r.peak_normal_force << ',' << sample.sliding << '\n';
+      }
+    }
+  }
+}
+
+void report_restitution(const std::filesystem::path& out) {
+  const Sphere s = maw_sphere();
+  auto csv = open_csv(out / "restitution.csv");
+  csv << "case,requested,measured,error\n";
+  std::printf("Linear spring-dashpot restitution (Miyata et al. 2002, eq. 17), time step %.3f of critical:\n",
+              kRestitutionTimeStepFraction);
+  for (double e : {0.1, 0.5, 0.9}) {
+    const ImpactResult wall = sphere_wall_impact(s, restitution_model(e), 0.4, 0.0, kRestitutionTimeStepFraction);
+    const ImpactResult pair = sphere_sphere_impact(s, restitution_model(e), 0.4, kRestitutionTimeStepFraction);
+    for (const auto& [name, r] : {std::pair{"sphere-wall", wall}, std::pair{"sphere-sphere", pair}}) {
+      csv << name << ',' << e << ',' << r.restitution << ',' << r.restitution / e - 1.0 << '\n';
+      std::printf("  %-13s e = %.1f: measured %.5f (%+.3f%%)\n", name, e, r.restitution,
+                  100.0 * (r.restitution / e - 1.0));
+    }
+  }
+}
+
+void report_mindlin_loading(const std::filesystem::path& out) {
+  const MindlinLoadingResult r = mindlin_constant_normal_force(2000);
+  auto csv = open_csv(out / "mindlin_loading.csv");
+  csv << "branch,displacement,simulated,theory\n";
+  for (const MindlinPoint& p : r.points) {
+    csv << p.branch << ',' << p.displacement << ',' << p.simulated << ',' << p.theory << '\n';
+  }
+  const VaryingNormalResult v = mindlin_varying_normal_force();
+  std::printf("Mindlin-Deresiewicz loading (Randall 5.2): N = %.3f N, mu N = %.3f N, slip displacement %.4e m\n",
+              r.normal_force, r.friction_force, r.slip_displacement);
+  std::printf("  constant N, loading / unloading / reloading: largest error %.4f%% of mu N over %zu points\n",
+              100.0 * r.largest_error, r.points.size());
+  std::printf("  varying N: largest |T|/(mu N) = %.6f, %d sliding steps, %d lagging steps with theta = 1 "
+              "(largest error %.2e)\n",
+              v.largest_ratio, v.sliding_steps, v.lagging_checks, v.largest_lag_error);
+}
+
+}  // namespace dem::validation
