@@ -19,12 +19,40 @@ ContactKinematics<Dim> kinematics(double overlap, const Vec<Dim>& relative, cons
   return {overlap, relative.dot(e), tangential_velocity(relative, e), e};  // eqs. 12-13
 }
 
+// The work of last cycle's contact forces, settled now. A force of cycle N
+// acts from N - 1/2 to N + 1/2 while the bodies move at the mean of the
+// relative velocity it was computed from and the next one, so
+// F_N . (v_(N-1/2) + v_(N+1/2)) / 2 dt is what the kinetic energy paid:
+// for the dashpots (eqs. 26-27) it is dissipated; for the tangential spring
+// it is stored, or lost to sliding.
+template <int Dim>
+void settle_contact_work(ContactState<Dim>& s, const Vec<Dim>& relative, double dt, ContactEnergy& energy) {
+  const Vec<Dim> mean = 0.5 * (s.relative_velocity + relative);
+  energy.damping -= s.dashpot_force.dot(mean) * dt;
+  energy.tangential_work += shear_vector(s.shear, s.normal).dot(mean) * dt;
+  s.dashpot_force.setZero();
+}
+
+// Records this cycle's dashpot force (on the first body) and the relative velocity it came from.
+template <int Dim>
+void remember_dashpot(ContactState<Dim>& s, const Vec<Dim>& e, const Vec<Dim>& relative) {
+  s.dashpot_force = -s.normal_damping * e - shear_vector(s.shear_damping, e);
+  s.relative_velocity = relative;
+}
+
+ContactEnergy total(const std::vector<ContactEnergy>& partials) {
+  ContactEnergy sum;
+  for (const ContactEnergy& p : partials) sum += p;
+  return sum;
+}
+
 template <int Dim, typename Law>
-void pair_pass(const Particles<Dim>& particles, std::vector<PairContact<Dim>>& pairs,
-               std::vector<ContactForce<Dim>>& forces, const ContactParamTable& params, double dt, int threads) {
+ContactEnergy pair_pass(const Particles<Dim>& particles, std::vector<PairContact<Dim>>& pairs,
+                        std::vector<ContactForce<Dim>>& forces, const ContactParamTable& params, double dt,
+                        int threads) {
   const auto n = static_cast<std::int64_t>(pairs.size());
-  DEM_PARALLEL_FOR(threads, n)
-  for (std::int64_t c = 0; c < n; ++c) {
+  return total(for_blocks<ContactEnergy>(n, threads, [&](std::int64_t begin, std::int64_t end, ContactEnergy& energy) {
+  for (std::int64_t c = begin; c < end; ++c) {
     PairContact<Dim>& contact = pairs[c];
     ContactState<Dim>& s = contact.state;
     const ParticleId x = contact.first, y = contact.second;
@@ -32,33 +60,38 @@ void pair_pass(const Particles<Dim>& particles, std::vector<PairContact<Dim>>& p
     const double distance = d.norm();
     const double rx = particles.radius[x], ry = particles.radius[y];
     const double overlap = rx + ry - distance;
+    const Vec<Dim> e = distance > 0.0 ? Vec<Dim>(d / distance) : Vec<Dim>::UnitX();  // eq. 9
+    const Vec<Dim> relative =
+        relative_contact_velocity(particles.velocity[x], particles.angular_velocity[x], rx, particles.velocity[y],
+                                  particles.angular_velocity[y], ry, e);  // eq. 11
+    if (s.touching) settle_contact_work(s, relative, dt, energy);
     if (overlap <= 0.0 || distance == 0.0) {  // eq. 8
       separate(s);
       forces[c] = ContactForce<Dim>{};
       continue;
     }
-    const Vec<Dim> e = d / distance;  // eq. 9
     if (s.touching) carry_shear(s.shear, e);
-    const Vec<Dim> relative =
-        relative_contact_velocity(particles.velocity[x], particles.angular_velocity[x], rx, particles.velocity[y],
-                                  particles.angular_velocity[y], ry, e);  // eq. 11
     const double mx = particles.mass[x], my = particles.mass[y];
     const PairProperties pair{rx * ry / (rx + ry), mx * my / (mx + my)};  // Randall 4.5-4.6
-    Law::apply(s, kinematics(overlap, relative, e), pair, params(particles.material[x], particles.material[y]), dt);
+    const ContactKinematics<Dim> k = kinematics(overlap, relative, e);
+    Law::apply(s, k, pair, params(particles.material[x], particles.material[y]), dt);
+    remember_dashpot(s, e, relative);
     s.normal = e;
     s.point = particles.position[x] + (rx - 0.5 * overlap) * e;
     // Sum M = F_s R for each body (Cundall & Strack, resultant moments).
     const ShearForce<Dim> shear = s.shear + s.shear_damping;
     forces[c] = ContactForce<Dim>{resolve_force(s, e), shear_moment(shear, rx, e), shear_moment(shear, ry, e)};
   }
+  }));
 }
 
 template <int Dim, typename Law>
-void wall_pass(const Particles<Dim>& particles, const Walls<Dim>& walls, std::vector<WallContact<Dim>>& contacts,
-               std::vector<ContactForce<Dim>>& forces, const ContactParamTable& params, double dt, int threads) {
+ContactEnergy wall_pass(const Particles<Dim>& particles, const Walls<Dim>& walls,
+                        std::vector<WallContact<Dim>>& contacts, std::vector<ContactForce<Dim>>& forces,
+                        const ContactParamTable& params, double dt, int threads) {
   const auto n = static_cast<std::int64_t>(contacts.size());
-  DEM_PARALLEL_FOR(threads, n)
-  for (std::int64_t c = 0; c < n; ++c) {
+  return total(for_blocks<ContactEnergy>(n, threads, [&](std::int64_t begin, std::int64_t end, ContactEnergy& energy) {
+  for (std::int64_t c = begin; c < end; ++c) {
     WallContact<Dim>& contact = contacts[c];
     ContactState<Dim>& s = contact.state;
     const ParticleId x = contact.particle;
@@ -70,52 +103,64 @@ void wall_pass(const Particles<Dim>& particles, const Walls<Dim>& walls, std::ve
     const Vec<Dim> d = q - centre;
     const double distance = d.norm();
     const double overlap = r - distance;
-    if (overlap <= 0.0) {
-      separate(s);
-      forces[c] = ContactForce<Dim>{};
-      continue;
-    }
     // e points from the particle to the wall; a centre exactly on the wall
     // takes the wall's normal towards the particle side, reversed.
     const Vec<Dim> e = distance > 0.0 ? Vec<Dim>(d / distance) : Vec<Dim>(-wall_normal(wall));
-    if (s.touching) carry_shear(s.shear, e);
     const Vec<Dim> wall_velocity = wall_point_velocity(wall, walls.last_velocity[contact.wall],
                                                        walls.last_angular_velocity[contact.wall], q);
     const Vec<Dim> relative =
         relative_contact_velocity(particles.velocity[x], particles.angular_velocity[x], r, wall_velocity,
                                   Space<Dim>::zero_spin(), 0.0, e);
+    if (s.touching) settle_contact_work(s, relative, dt, energy);
+    if (overlap <= 0.0) {
+      separate(s);
+      forces[c] = ContactForce<Dim>{};
+      continue;
+    }
+    if (s.touching) carry_shear(s.shear, e);
     const PairProperties pair{r, particles.mass[x]};
-    Law::apply(s, kinematics(overlap, relative, e), pair, params(particles.material[x], wall.material), dt);
+    const ContactKinematics<Dim> k = kinematics(overlap, relative, e);
+    Law::apply(s, k, pair, params(particles.material[x], wall.material), dt);
+    remember_dashpot(s, e, relative);
     s.normal = e;
     s.point = centre + (r - 0.5 * overlap) * e;  // halfway between A_(D) and A_(w)
     forces[c] = ContactForce<Dim>{resolve_force(s, e), shear_moment(ShearForce<Dim>(s.shear + s.shear_damping), r, e),
                                   Space<Dim>::zero_spin()};
+    // The wall's motion does work on the particle through this contact.
+    energy.wall_work += forces[c].force.dot(wall_velocity) * dt;
   }
+  }));
 }
 
 }  // namespace
 
 template <int Dim>
-void compute_pair_forces(ContactLaw law, const Particles<Dim>& particles, std::vector<PairContact<Dim>>& pairs,
-                         std::vector<ContactForce<Dim>>& forces, const ContactParamTable& params, double dt,
-                         int threads) {
-  with_law(law, [&]<typename Law>() { pair_pass<Dim, Law>(particles, pairs, forces, params, dt, threads); });
+ContactEnergy compute_pair_forces(ContactLaw law, const Particles<Dim>& particles,
+                                  std::vector<PairContact<Dim>>& pairs, std::vector<ContactForce<Dim>>& forces,
+                                  const ContactParamTable& params, double dt, int threads) {
+  ContactEnergy energy;
+  with_law(law, [&]<typename Law>() { energy = pair_pass<Dim, Law>(particles, pairs, forces, params, dt, threads); });
+  return energy;
 }
 
 template <int Dim>
-void compute_wall_forces(ContactLaw law, const Particles<Dim>& particles, const Walls<Dim>& walls,
-                         std::vector<WallContact<Dim>>& contacts, std::vector<ContactForce<Dim>>& forces,
-                         const ContactParamTable& params, double dt, int threads) {
-  with_law(law, [&]<typename Law>() { wall_pass<Dim, Law>(particles, walls, contacts, forces, params, dt, threads); });
+ContactEnergy compute_wall_forces(ContactLaw law, const Particles<Dim>& particles, const Walls<Dim>& walls,
+                                  std::vector<WallContact<Dim>>& contacts, std::vector<ContactForce<Dim>>& forces,
+                                  const ContactParamTable& params, double dt, int threads) {
+  ContactEnergy energy;
+  with_law(law, [&]<typename Law>() {
+    energy = wall_pass<Dim, Law>(particles, walls, contacts, forces, params, dt, threads);
+  });
+  return energy;
 }
 
-template void compute_pair_forces(ContactLaw, const Particles<2>&, std::vector<PairContact<2>>&,
+template ContactEnergy compute_pair_forces(ContactLaw, const Particles<2>&, std::vector<PairContact<2>>&,
                                   std::vector<ContactForce<2>>&, const ContactParamTable&, double, int);
-template void compute_pair_forces(ContactLaw, const Particles<3>&, std::vector<PairContact<3>>&,
+template ContactEnergy compute_pair_forces(ContactLaw, const Particles<3>&, std::vector<PairContact<3>>&,
                                   std::vector<ContactForce<3>>&, const ContactParamTable&, double, int);
-template void compute_wall_forces(ContactLaw, const Particles<2>&, const Walls<2>&, std::vector<WallContact<2>>&,
+template ContactEnergy compute_wall_forces(ContactLaw, const Particles<2>&, const Walls<2>&, std::vector<WallContact<2>>&,
                                   std::vector<ContactForce<2>>&, const ContactParamTable&, double, int);
-template void compute_wall_forces(ContactLaw, const Particles<3>&, const Walls<3>&, std::vector<WallContact<3>>&,
+template ContactEnergy compute_wall_forces(ContactLaw, const Particles<3>&, const Walls<3>&, std::vector<WallContact<3>>&,
                                   std::vector<ContactForce<3>>&, const ContactParamTable&, double, int);
 
 }  // namespace dem

@@ -11,13 +11,28 @@
 
 namespace dem {
 
+// Energy flows of the contacts settled in one pass: the work the dashpots
+// took out, the work done on the tangential springs (what they do not give
+// back was lost to sliding and micro-slip), and the work of moving walls.
+struct ContactEnergy {
+  double damping = 0.0;
+  double tangential_work = 0.0;
+  double wall_work = 0.0;
+  ContactEnergy& operator+=(const ContactEnergy& o) {
+    damping += o.damping;
+    tangential_work += o.tangential_work;
+    wall_work += o.wall_work;
+    return *this;
+  }
+};
+
 template <int Dim>
-void compute_pair_forces(ContactLaw law, const Particles<Dim>& particles, std::vector<PairContact<Dim>>& pairs,
+ContactEnergy compute_pair_forces(ContactLaw law, const Particles<Dim>& particles, std::vector<PairContact<Dim>>& pairs,
                          std::vector<ContactForce<Dim>>& forces, const ContactParamTable& params, double dt,
                          int threads);
 
 template <int Dim>
-void compute_wall_forces(ContactLaw law, const Particles<Dim>& particles, const Walls<Dim>& walls,
+ContactEnergy compute_wall_forces(ContactLaw law, const Particles<Dim>& particles, const Walls<Dim>& walls,
                          std::vector<WallContact<Dim>>& contacts, std::vector<ContactForce<Dim>>& forces,
                          const ContactParamTable& params, double dt, int threads);
 

@@ -31,6 +31,12 @@ struct ContactState {
   // works along a loading axis in the tangent plane.
   MindlinHistory mindlin;
   Vec<Dim> mindlin_axis = Vec<Dim>::Zero();
+  // Energy bookkeeping: the dashpot force applied last cycle (on the first
+  // body) and the relative velocity it was computed from. Its work is only
+  // known once the next relative velocity is: it acts over the step the
+  // central differences centre on (see contact_forces.cpp).
+  Vec<Dim> dashpot_force = Vec<Dim>::Zero();
+  Vec<Dim> relative_velocity = Vec<Dim>::Zero();
 };
 
 // What a contact exerts this cycle (springs + dashpots), zero when it does

@@ -109,8 +109,7 @@ struct HertzLinearTangentialLaw {
     const double stiffness = 8.0 * p.shear_modulus * n.contact_radius;  // Miyata eq. 31
     s.shear += stiffness * k.shear_velocity * dt;
     const double limit = std::max(0.0, p.friction * s.normal_force + p.cohesion);
-    s.sliding = shear_magnitude(s.shear) > limit;
-    if (s.sliding) clamp_shear(s.shear, limit);
+    apply_coulomb_limit(s, limit);
     s.shear_damping = tangential_dashpot(s, k, pair, p, stiffness);
   }
 };

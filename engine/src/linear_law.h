@@ -15,7 +15,7 @@ namespace dem {
 struct LinearLaw {
   template <int Dim>
   static void apply(ContactState<Dim>& s, const ContactKinematics<Dim>& k, const PairProperties&,
-                    const ContactParams& p, double dt) {
+                      const ContactParams& p, double dt) {
     if (!s.touching) {
       // A contact that forms during the step starts from its overlap (the
       // integral of eq. 16 since touching) and no shear history.
@@ -29,8 +29,7 @@ struct LinearLaw {
     s.overlap = k.overlap;
     // Coulomb limit with cohesion (eq. 19); never negative, even under tension.
     const double shear_limit = std::max(0.0, s.normal_force * p.friction + p.cohesion);
-    s.sliding = shear_magnitude(s.shear) > shear_limit;
-    if (s.sliding) clamp_shear(s.shear, shear_limit);
+    apply_coulomb_limit(s, shear_limit);
     // Dashpots (eqs. 26-28); no shear dashpot while sliding: friction alone damps.
     s.normal_damping = p.normal_viscosity * k.normal_velocity;
     s.shear_damping = s.sliding ? zero_shear<Dim>() : ShearForce<Dim>(p.shear_viscosity * k.shear_velocity);

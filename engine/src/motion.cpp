@@ -72,35 +72,98 @@ void turn(Quaternion& q, const Vec3& omega, double dt) {
 
 }  // namespace
 
+namespace {
+
+// Local non-viscous damping (Miyata eq. 33, per component as PFC applies
+// it): each component of the resultant loses alpha' times its magnitude,
+// against the velocity component.
+template <typename Derived, typename VelocityDerived>
+auto local_damping(const Eigen::MatrixBase<Derived>& force, const Eigen::MatrixBase<VelocityDerived>& velocity,
+                   double alpha) {
+  using V = typename Derived::PlainObject;
+  V damping = V::Zero();
+  for (Eigen::Index d = 0; d < force.size(); ++d) {
+    if (velocity[d] != 0.0) damping[d] = -alpha * std::abs(force[d]) * (velocity[d] > 0.0 ? 1.0 : -1.0);
+  }
+  return damping;
+}
+double local_damping(double moment, double spin, double alpha) {
+  return spin == 0.0 ? 0.0 : -alpha * std::abs(moment) * (spin > 0.0 ? 1.0 : -1.0);
+}
+
+double dot(double a, double b) { return a * b; }
+double dot(const Vec3& a, const Vec3& b) { return a.dot(b); }
+
+MotionStep& operator+=(MotionStep& a, const MotionStep& b) {
+  a.max_travel = std::max(a.max_travel, b.max_travel);
+  a.gravity_work += b.gravity_work;
+  a.global_damping += b.global_damping;
+  a.local_damping += b.local_damping;
+  a.time_step_ratio = std::max(a.time_step_ratio, b.time_step_ratio);
+  return a;
+}
+
+}  // namespace
+
 template <int Dim>
-double integrate_motion(Particles<Dim>& particles, const std::vector<Vec<Dim>>& reference, const Vec<Dim>& gravity,
-                        double global_alpha, double dt, int threads) {
+MotionStep integrate_motion(Particles<Dim>& particles, const std::vector<Vec<Dim>>& reference,
+                            const Vec<Dim>& gravity, const DampingDef& damping, double dt, int threads) {
   const auto n = static_cast<std::int64_t>(particles.size());
   // Global damping C = alpha m, C* = alpha I (eq. 34) in the central
-  // difference form of eqs. 35-36.
-  const double keep = 1.0 - 0.5 * global_alpha * dt;
-  const double scale = 1.0 / (1.0 + 0.5 * global_alpha * dt);
-  double max_moved = 0.0;
-  DEM_PARALLEL_FOR_MAX(threads, n, max_moved)
-  for (std::int64_t i = 0; i < n; ++i) {
-    const double m = particles.mass[i];
-    // Body force m g added to the force sum (Cundall & Strack, Motion).
-    const Vec<Dim> force = particles.force[i] + m * gravity;
-    particles.velocity[i] = (particles.velocity[i] * keep + force * (dt / m)) * scale;  // eq. 35
-    particles.angular_velocity[i] =
-        (particles.angular_velocity[i] * keep + particles.moment[i] * (dt / particles.inertia[i])) * scale;  // eq. 36
-    particles.position[i] += particles.velocity[i] * dt;  // eq. 22a
-    turn(particles.rotation[i], particles.angular_velocity[i], dt);  // eq. 23a
-    max_moved = std::max(max_moved, (particles.position[i] - reference[i]).squaredNorm());
-  }
-  return std::sqrt(max_moved);
+  // difference form of eqs. 35-36; Miyata eq. 32 lets rotation have its own constant.
+  const double alpha = damping.global_alpha;
+  const double alpha_rotation = damping.global_alpha_rotation.value_or(alpha);
+  const double keep = 1.0 - 0.5 * alpha * dt, scale = 1.0 / (1.0 + 0.5 * alpha * dt);
+  const double keep_rotation = 1.0 - 0.5 * alpha_rotation * dt;
+  const double scale_rotation = 1.0 / (1.0 + 0.5 * alpha_rotation * dt);
+  const double local = damping.local_alpha;
+  const double local_rotation = damping.local_alpha_rotation.value_or(local);
+  const auto partials = for_blocks<MotionStep>(n, threads, [&](std::int64_t begin, std::int64_t end, MotionStep& step) {
+    for (std::int64_t i = begin; i < end; ++i) {
+      const double m = particles.mass[i], inertia = particles.inertia[i];
+      // Body force m g added to the force sum (Cundall & Strack, Motion).
+      const Vec<Dim> resultant = particles.force[i] + m * gravity;
+      const Vec<Dim> v0 = particles.velocity[i];
+      const Spin<Dim> w0 = particles.angular_velocity[i];
+      const Vec<Dim> local_force = local_damping(resultant, v0, local);
+      const Spin<Dim> local_moment = local_damping(particles.moment[i], w0, local_rotation);
+      particles.velocity[i] = (v0 * keep + (resultant + local_force) * (dt / m)) * scale;  // eq. 35
+      particles.angular_velocity[i] =
+          (w0 * keep_rotation + (particles.moment[i] + local_moment) * (dt / inertia)) * scale_rotation;  // eq. 36
+      const Vec<Dim>& v1 = particles.velocity[i];
+      const Spin<Dim>& w1 = particles.angular_velocity[i];
+      particles.position[i] += v1 * dt;                        // eq. 22a
+      turn(particles.rotation[i], w1, dt);                     // eq. 23a
+      step.max_travel = std::max(step.max_travel, (particles.position[i] - reference[i]).norm());
+
+      // Energy over the step, at the mid-step velocity the scheme is centred on.
+      const Vec<Dim> v_mid = 0.5 * (v0 + v1);
+      const Spin<Dim> w_mid = 0.5 * (w0 + w1);
+      step.gravity_work += m * gravity.dot(v1) * dt;
+      step.global_damping += (alpha * m * v_mid.squaredNorm() + alpha_rotation * inertia * dot(w_mid, w_mid)) * dt;
+      step.local_damping -= (local_force.dot(v_mid) + dot(local_moment, w_mid)) * dt;
+
+      // Randall 4.35-4.40: the stiffness the particle meets, K = d|sum F| / dx,
+      // gives its own critical step 2 (m / K)^(1/2).
+      const double force_norm = particles.force[i].norm();
+      const double dx = v1.norm() * dt;
+      const double change = std::abs(force_norm - particles.previous_force[i]);
+      if (dx > 0.0 && change > 0.0) {
+        step.time_step_ratio = std::max(step.time_step_ratio, dt / (2.0 * std::sqrt(m * dx / change)));
+      }
+      particles.previous_force[i] = force_norm;
+    }
+  });
+  MotionStep total;
+  for (const MotionStep& p : partials) total += p;
+  return total;
 }
 
 template void sum_particle_forces(Particles<2>&, const ContactTable<2>&, int);
 template void sum_particle_forces(Particles<3>&, const ContactTable<3>&, int);
 template void sum_wall_forces(Walls<2>&, const std::vector<WallContact<2>>&, const std::vector<ContactForce<2>>&);
 template void sum_wall_forces(Walls<3>&, const std::vector<WallContact<3>>&, const std::vector<ContactForce<3>>&);
-template double integrate_motion(Particles<2>&, const std::vector<Vec2>&, const Vec2&, double, double, int);
-template double integrate_motion(Particles<3>&, const std::vector<Vec3>&, const Vec3&, double, double, int);
+template MotionStep integrate_motion(Particles<2>&, const std::vector<Vec2>&, const Vec2&, const DampingDef&, double, int);
+template MotionStep integrate_motion(Particles<3>&, const std::vector<Vec3>&, const Vec3&, const DampingDef&, double, int);
 
 }  // namespace dem

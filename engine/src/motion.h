@@ -18,11 +18,20 @@ template <int Dim>
 void sum_wall_forces(Walls<Dim>& walls, const std::vector<WallContact<Dim>>& contacts,
                      const std::vector<ContactForce<Dim>>& forces);
 
-// Time-centred central differences (eqs. 35-36, then 22a-23a); returns the
-// largest distance of any particle from its position in `reference` (where
-// the contact table was last rebuilt), for the neighbour-list check.
+// What one integration step reports.
+struct MotionStep {
+  double max_travel = 0.0;       // largest distance from the positions at the last contact-table rebuild
+  double gravity_work = 0.0;     // J
+  double global_damping = 0.0;   // J dissipated
+  double local_damping = 0.0;    // J dissipated
+  double time_step_ratio = 0.0;  // dt over the smallest particle-wise critical step (Randall 4.35-4.40)
+};
+
+// Time-centred central differences (Cundall & Strack eqs. 35-36, then
+// 22a-23a) with the body force, global damping (eq. 34; Miyata eq. 32) and
+// local non-viscous damping (Miyata eq. 33).
 template <int Dim>
-double integrate_motion(Particles<Dim>& particles, const std::vector<Vec<Dim>>& reference, const Vec<Dim>& gravity,
-                        double global_alpha, double dt, int threads);
+MotionStep integrate_motion(Particles<Dim>& particles, const std::vector<Vec<Dim>>& reference,
+                            const Vec<Dim>& gravity, const DampingDef& damping, double dt, int threads);
 
 }  // namespace dem

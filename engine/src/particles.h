@@ -21,6 +21,8 @@ struct Particles {
   // per-cycle sums (eqs. 20-21): contact forces and damping forces, moments
   std::vector<Vec<Dim>> force;
   std::vector<Spin<Dim>> moment;
+  // |sum F| of the previous cycle, for the particle-wise critical step (Randall 4.38)
+  std::vector<double> previous_force;
   // constant properties
   std::vector<double> radius;
   std::vector<double> mass;

@@ -17,7 +17,7 @@ namespace dem {
 struct RestitutionLaw {
   template <int Dim>
   static void apply(ContactState<Dim>& s, const ContactKinematics<Dim>& k, const PairProperties& pair,
-                    const ContactParams& p, double dt) {
+                      const ContactParams& p, double dt) {
     if (!s.touching) {
       s.shear = zero_shear<Dim>();  // eq. 19: the shear force starts at zero
       s.touching = true;
@@ -29,8 +29,7 @@ struct RestitutionLaw {
     // eq. 17 with the pair's effective mass (eq. 18).
     s.normal_damping = p.restitution_viscosity * std::sqrt(pair.effective_mass) * k.normal_velocity;  // eq. 14
     const double shear_limit = std::max(0.0, p.friction * s.normal_force + p.cohesion);  // eq. 22
-    s.sliding = shear_magnitude(s.shear) > shear_limit;
-    if (s.sliding) clamp_shear(s.shear, shear_limit);
+    apply_coulomb_limit(s, shear_limit);
     s.shear_damping = zero_shear<Dim>();
   }
 };

@@ -102,6 +102,8 @@ WorldSnapshotT<Dim> save_snapshot(const WorldState<Dim>& s) {
     c.with_wall = true;
     snap.contacts.push_back(c);
   }
+  snap.energy = s.energy;
+  snap.tangential_work = s.tangential_work;
   snap.cycle = s.cycle;
   snap.time = s.time;
   snap.time_step = s.time_step;
@@ -130,6 +132,8 @@ void restore_snapshot(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) {
     s.walls.contacts[w] = ws.contacts;
     s.walls.normal_force_arm[w] = ws.normal_force_arm;
   }
+  s.energy = snap.energy;
+  s.tangential_work = snap.tangential_work;
   s.cycle = snap.cycle;
   s.time = snap.time;
   s.time_step = snap.time_step;

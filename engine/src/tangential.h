@@ -33,6 +33,8 @@ inline Vec2 shear_vector(double shear, const Vec2& e) { return shear * clockwise
 inline Vec3 shear_vector(const Vec3& shear, const Vec3&) { return shear; }
 
 inline double shear_magnitude(double shear) { return std::abs(shear); }
+inline double shear_dot(double a, double b) { return a * b; }
+inline double shear_dot(const Vec3& a, const Vec3& b) { return a.dot(b); }
 inline double shear_magnitude(const Vec3& shear) { return shear.norm(); }
 
 // Scales the shear force down to the Coulomb limit, keeping its direction (eq. 19).
@@ -40,6 +42,13 @@ inline void clamp_shear(double& shear, double limit) { shear = std::copysign(lim
 inline void clamp_shear(Vec3& shear, double limit) {
   const double magnitude = shear.norm();
   if (magnitude > 0.0) shear *= limit / magnitude;
+}
+
+// Coulomb limit (Cundall & Strack eq. 19): a spring force beyond it is held at it and the contact slides.
+template <typename State>
+void apply_coulomb_limit(State& s, double limit) {
+  s.sliding = shear_magnitude(s.shear) > limit;
+  if (s.sliding) clamp_shear(s.shear, limit);
 }
 
 // Keeps the shear history in the tangent plane as the contact turns. In 2D

@@ -45,14 +45,24 @@ void step(WorldState<Dim>& s) {
     timer.lap(s.profile.find_contacts);
   }
   ContactTable<Dim>& c = s.contacts;
-  compute_pair_forces(s.pair_law, s.particles, c.pairs, c.pair_forces, s.params, s.time_step, s.threads);
-  compute_wall_forces(s.wall_law, s.particles, s.walls, c.walls, c.wall_forces, s.params, s.time_step, s.threads);
+  ContactEnergy contact_energy =
+      compute_pair_forces(s.pair_law, s.particles, c.pairs, c.pair_forces, s.params, s.time_step, s.threads);
+  contact_energy +=
+      compute_wall_forces(s.wall_law, s.particles, s.walls, c.walls, c.wall_forces, s.params, s.time_step, s.threads);
+  s.energy.contact_damping += contact_energy.damping;
+  s.tangential_work += contact_energy.tangential_work;
+  s.energy.wall_work += contact_energy.wall_work;
   timer.lap(s.profile.contact_forces);
   sum_particle_forces(s.particles, c, s.threads);
   sum_wall_forces(s.walls, c.walls, c.wall_forces);
   timer.lap(s.profile.force_sums);
-  s.particle_travel = integrate_motion(s.particles, s.reference_positions, s.gravity, s.damping.global_alpha,
-                                       s.time_step, s.threads);
+  const MotionStep motion =
+      integrate_motion(s.particles, s.reference_positions, s.gravity, s.damping, s.time_step, s.threads);
+  s.particle_travel = motion.max_travel;
+  s.energy.gravity_work += motion.gravity_work;
+  s.energy.global_damping += motion.global_damping;
+  s.energy.local_damping += motion.local_damping;
+  s.time_step_ratio = motion.time_step_ratio;
   timer.lap(s.profile.motion);
   move_walls(s.walls, s.time_step);
   s.wall_travel += max_wall_step(s.walls, s.time_step);
@@ -86,6 +96,14 @@ void validate_wall(const WallDefT<3>& wall, const std::string& where) {
   check(std::abs(wall.direction.dot(wall.direction2)) < 1e-9, where + ": direction2 must be perpendicular to direction");
   check(wall.h2 > wall.h1, where + ": h2 must be greater than h1");
   check(wall.k2 > wall.k1, where + ": k2 must be greater than k1");
+}
+
+void check_damping(const DampingDef& d) {
+  check(d.contact_beta >= 0.0 && d.global_alpha >= 0.0 && d.global_alpha_rotation.value_or(0.0) >= 0.0,
+        "damping: contact_beta and global_alpha must be >= 0");
+  check(d.local_alpha >= 0.0 && d.local_alpha < 1.0 && d.local_alpha_rotation.value_or(0.0) >= 0.0 &&
+            d.local_alpha_rotation.value_or(0.0) < 1.0,
+        "damping: local_alpha must be in [0, 1)");
 }
 
 template <int Dim>
@@ -145,7 +163,7 @@ void validate(const WorldDefT<Dim>& def) {
         "world: time_step_fraction must be in (0, 1]");
   check(def.fixed_time_step >= 0.0, "world: fixed_time_step must be >= 0");
   check(def.contact_tolerance >= 0.0, "world: contact_tolerance must be >= 0");
-  check(def.damping.contact_beta >= 0.0 && def.damping.global_alpha >= 0.0, "world: damping must be >= 0");
+  check_damping(def.damping);
 }
 
 const char* law_name(ContactLaw law) {
@@ -270,6 +288,7 @@ BasicWorld<Dim>::BasicWorld(const Def& def) : state_(std::make_unique<WorldState
   }
   p.force.assign(n, Vec<Dim>::Zero());
   p.moment.assign(n, Space<Dim>::zero_spin());
+  p.previous_force.assign(n, 0.0);
   // Stresses on 2D walls: discs have unit thickness; spheres in the plane
   // are taken as a layer one mean diameter deep (Randall 1989, 4.4).
   s.depth = discs || Dim == 3 ? 1.0 : 2.0 * radius_sum / static_cast<double>(n);
@@ -294,6 +313,7 @@ BasicWorld<Dim>::BasicWorld(const Def& def) : state_(std::make_unique<WorldState
   s.fixed_time_step = def.fixed_time_step;
   s.time_step = def.fixed_time_step > 0.0 ? def.fixed_time_step : def.time_step_fraction * s.critical_time_step;
   check(std::isfinite(s.time_step) && s.time_step > 0.0, "world: cannot determine a time step");
+  s.energy.initial_kinetic = measure_assembly(s).kinetic_energy;
 }
 
 template <int Dim>
@@ -384,7 +404,7 @@ DampingDef BasicWorld<Dim>::damping() const { return state_->damping; }
 
 template <int Dim>
 void BasicWorld<Dim>::set_damping(const DampingDef& damping) {
-  check(damping.contact_beta >= 0.0 && damping.global_alpha >= 0.0, "damping must be >= 0");
+  check_damping(damping);
   state_->damping = damping;
   state_->params = ContactParamTable(state_->materials, state_->contact_models, damping);
 }

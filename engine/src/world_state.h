@@ -45,6 +45,11 @@ struct WorldState {
   double wall_travel = 0.0;
   bool contacts_stale = true;
   StepProfile profile;
+  // Accumulated energy terms (the held terms, kinetic and strain, are
+  // measured when asked) and the last cycle's particle-wise step check.
+  EnergyBudget energy;
+  double tangential_work = 0.0;  // done on the tangential springs; friction = this - what they hold
+  double time_step_ratio = 0.0;
 };
 
 // Rebuilds the contact table from the broad phase (keeping history).

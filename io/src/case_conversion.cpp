@@ -1,31 +1,68 @@
 #include "dem/io/case_conversion.h"
 
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <numbers>
 #include <string>
 
 #include "dem/error.h"
 #include "dem/io/case_validation.h"
+#include "dem/io/particle_file.h"
 #include "dem/packing.h"
 #include "field_path.h"
+#include "problem_list.h"
 
 namespace dem::io {
 namespace {
 
-Vec2 to_vec2(const proto::Vector2& v) { return {v.x(), v.y()}; }
+template <int Dim>
+Vec<Dim> to_vec(const proto::Vector& v) {
+  if constexpr (Dim == 2) {
+    return {v.x(), v.y()};
+  } else {
+    return {v.x(), v.y(), v.z()};
+  }
+}
 
-WallMotion to_motion(const proto::WallMotion& motion) {
-  WallMotion def;
-  def.velocity = to_vec2(motion.velocity());
-  def.angular_velocity = motion.angular_velocity();
+// An angular velocity: the scalar about z in 2D, the vector in 3D.
+template <int Dim>
+Spin<Dim> to_spin(double about_z, const proto::Vector& vector) {
+  if constexpr (Dim == 2) {
+    return about_z;
+  } else {
+    return to_vec<3>(vector);
+  }
+}
+
+template <int Dim>
+WallMotionT<Dim> to_motion(const proto::WallMotion& motion) {
+  WallMotionT<Dim> def;
+  def.velocity = to_vec<Dim>(motion.velocity());
+  def.angular_velocity = to_spin<Dim>(motion.angular_velocity(), motion.angular_velocity_3d());
   if (motion.has_servo()) {
     def.servo = ServoDef{motion.servo().target_force(), motion.servo().gain(), motion.servo().max_speed()};
   }
   return def;
 }
 
-DampingDef to_damping(const proto::Damping& damping) { return {damping.contact_beta(), damping.global_alpha()}; }
+DampingDef to_damping(const proto::Damping& damping) {
+  DampingDef def;
+  def.contact_beta = damping.contact_beta();
+  def.global_alpha = damping.global_alpha();
+  if (damping.has_global_alpha_rotation()) def.global_alpha_rotation = damping.global_alpha_rotation();
+  def.local_alpha = damping.local_alpha();
+  if (damping.has_local_alpha_rotation()) def.local_alpha_rotation = damping.local_alpha_rotation();
+  return def;
+}
+
+HertzDampingDef to_hertz_damping(const proto::HertzLaw& law) {
+  HertzDampingDef def;
+  if (law.has_damping_ratio()) def.damping_ratio = law.damping_ratio();
+  if (law.has_restitution()) def.restitution = law.restitution();
+  def.tangential = law.tangential_damping();
+  return def;
+}
 
 StopConditions to_stop_conditions(const proto::Until& until) {
   StopConditions def;
@@ -38,35 +75,37 @@ StopConditions to_stop_conditions(const proto::Until& until) {
 }
 
 // Converts a case validate_case accepted, so every name it looks up exists.
+template <int Dim>
 class Converter {
  public:
   Converter(const proto::Case& c, const CaseSource& source) : case_(c), source_(source) {}
 
-  CaseDefinition run() {
-    CaseDefinition def;
+  CaseDefinitionT<Dim> run() {
+    CaseDefinitionT<Dim> def;
     def.name = case_.name();
     def.description = case_.description();
     // Not default_world_def(): its stand-in material and default contact
     // model would shift the case's material ids and cover pairs the case left out.
-    def.world = WorldDef{};
+    def.world = WorldDefT<Dim>{};
     add_materials(def.world);
     add_contact_models(def.world);
     add_particles(def.world);
     add_walls(def.world);
     def.world.damping = to_damping(case_.damping());
-    def.world.gravity = to_vec2(case_.gravity());
+    def.world.gravity = to_vec<Dim>(case_.gravity());
+    if (case_.planar_particle() == proto::Case::SPHERE) def.world.planar_particle = PlanarParticle::kSphere;
     // proto3 cannot tell an unset number from 0, so 0 keeps the engine's default.
     if (case_.time_step().fraction() > 0) def.world.time_step_fraction = case_.time_step().fraction();
     def.world.fixed_time_step = case_.time_step().fixed();
     def.world.contact_tolerance = case_.numerics().contact_tolerance();
     def.world.threads = static_cast<int>(case_.numerics().threads());
     add_stages(def.stages);
-    add_output(def.output);
+    add_output(def.output, def.world.particles.size());
     return def;
   }
 
  private:
-  void add_materials(WorldDef& world) {
+  void add_materials(WorldDefT<Dim>& world) {
     for (int i = 0; i < case_.material_size(); ++i) {
       const proto::Material& material = case_.material(i);
       MaterialDef def;
@@ -76,31 +115,52 @@ class Converter {
       if (material.density() > 0) def.density = material.density();
       def.friction = material.friction();
       def.cohesion = material.cohesion();
+      def.youngs_modulus = material.youngs_modulus();
+      def.poisson_ratio = material.poisson_ratio();
       world.materials.push_back(def);
       materials_.emplace(material.name(), i);
     }
   }
 
-  void add_contact_models(WorldDef& world) {
+  void add_contact_models(WorldDefT<Dim>& world) {
     for (const proto::ContactModel& model : case_.contact_model()) {
       ContactModelDef def;
       if (model.materials_size() > 0) {
         def.material_a = materials_.at(model.materials(0));
         def.material_b = materials_.at(model.materials(model.materials_size() - 1));
       }
-      def.linear.normal_stiffness = model.linear().normal_stiffness();
-      def.linear.shear_stiffness = model.linear().shear_stiffness();
+      switch (model.law_case()) {
+        case proto::ContactModel::kLinear:
+          def.law = ContactLaw::kLinear;
+          def.linear = {model.linear().normal_stiffness(), model.linear().shear_stiffness()};
+          break;
+        case proto::ContactModel::kLinearRestitution:
+          def.law = ContactLaw::kLinearRestitution;
+          def.linear = {model.linear_restitution().normal_stiffness(), model.linear_restitution().shear_stiffness()};
+          def.restitution = model.linear_restitution().restitution();
+          break;
+        case proto::ContactModel::kHertzMindlin:
+          def.law = ContactLaw::kHertzMindlin;
+          def.hertz = to_hertz_damping(model.hertz_mindlin());
+          break;
+        case proto::ContactModel::kHertzLinearTangential:
+          def.law = ContactLaw::kHertzLinearTangential;
+          def.hertz = to_hertz_damping(model.hertz_linear_tangential());
+          break;
+        case proto::ContactModel::LAW_NOT_SET:
+          break;
+      }
       if (model.has_friction()) def.friction = model.friction();
       if (model.has_cohesion()) def.cohesion = model.cohesion();
       world.contact_models.push_back(def);
     }
   }
 
-  void add_particles(WorldDef& world) {
+  void add_particles(WorldDefT<Dim>& world) {
     for (int i = 0; i < case_.particles_size(); ++i) {
       const proto::ParticleSource& source = case_.particles(i);
-      const std::string path = indexed("particles", i);
-      std::vector<ParticleDef> particles;
+      const std::string path = indexed("particles", i) + '.' + source_field(source);
+      std::vector<ParticleDefT<Dim>> particles;
       try {
         switch (source.source_case()) {
           case proto::ParticleSource::kParticle:
@@ -112,11 +172,20 @@ class Converter {
           case proto::ParticleSource::kRandomPacking:
             particles = generate_random_packing(to_random_packing(source.random_packing()));
             break;
+          case proto::ParticleSource::kCsvFile:
+            particles = read_file(source.csv_file());
+            break;
           case proto::ParticleSource::SOURCE_NOT_SET:
             break;
         }
       } catch (const DefinitionError& error) {
-        throw CaseError(describe_problem(source_, path + '.' + source_field(source), error.what()));
+        throw CaseError(describe_problem(source_, path, error.what()));
+      } catch (const CaseError& error) {
+        // The particle file's own problems, "FILE:LINE: ...", each under the source that names the file.
+        std::vector<std::string> problems;
+        for (const std::string& problem : error.problems())
+          problems.push_back(describe_problem(source_, path, problem));
+        throw CaseError(std::move(problems));
       }
       world.particles.insert(world.particles.end(), particles.begin(), particles.end());
     }
@@ -127,34 +196,35 @@ class Converter {
     return field != nullptr ? field->name() : std::string("source");
   }
 
-  ParticleDef to_particle(const proto::Particle& particle) const {
-    ParticleDef def;
-    def.position = to_vec2(particle.position());
+  ParticleDefT<Dim> to_particle(const proto::Particle& particle) const {
+    ParticleDefT<Dim> def;
+    def.position = to_vec<Dim>(particle.position());
     def.radius = particle.radius();
     def.material = materials_.at(particle.material());
-    def.velocity = to_vec2(particle.velocity());
-    def.angular_velocity = particle.angular_velocity();
+    def.velocity = to_vec<Dim>(particle.velocity());
+    def.angular_velocity = to_spin<Dim>(particle.angular_velocity(), particle.angular_velocity_3d());
     return def;
   }
 
-  LatticeDef to_lattice(const proto::Lattice& lattice) const {
-    LatticeDef def;
+  LatticeDefT<Dim> to_lattice(const proto::Lattice& lattice) const {
+    LatticeDefT<Dim> def;
     def.material = materials_.at(lattice.material());
     def.radius = lattice.radius();
-    def.origin = to_vec2(lattice.origin());
+    def.origin = to_vec<Dim>(lattice.origin());
     def.columns = static_cast<int>(lattice.columns());
     def.rows = static_cast<int>(lattice.rows());
+    if (lattice.layers() > 0) def.layers = static_cast<int>(lattice.layers());
     def.spacing = lattice.spacing() > 0 ? lattice.spacing() : 2 * lattice.radius();
     def.arrangement = lattice.arrangement() == proto::LATTICE_HEXAGONAL ? LatticeArrangement::kHexagonal
                                                                         : LatticeArrangement::kSquare;
     return def;
   }
 
-  RandomPackingDef to_random_packing(const proto::RandomPacking& packing) const {
-    RandomPackingDef def;
+  RandomPackingDefT<Dim> to_random_packing(const proto::RandomPacking& packing) const {
+    RandomPackingDefT<Dim> def;
     def.material = materials_.at(packing.material());
-    def.min = to_vec2(packing.min());
-    def.max = to_vec2(packing.max());
+    def.min = to_vec<Dim>(packing.min());
+    def.max = to_vec<Dim>(packing.max());
     for (const proto::SizeClass& size : packing.size()) {
       def.sizes.push_back({size.radius(), static_cast<int>(size.count())});
     }
@@ -163,33 +233,55 @@ class Converter {
     return def;
   }
 
-  void add_walls(WorldDef& world) {
+  // A relative path starts from the case file's directory; an absolute one stays.
+  std::vector<ParticleDefT<Dim>> read_file(const proto::ParticleFile& file) const {
+    std::vector<ParticleDefT<Dim>> particles = read_particle_file<Dim>(source_.directory / file.path());
+    const MaterialId material = materials_.at(file.material());
+    const Vec<Dim> offset = to_vec<Dim>(file.offset());
+    for (ParticleDefT<Dim>& particle : particles) {
+      particle.material = material;
+      particle.position += offset;
+    }
+    return particles;
+  }
+
+  void add_walls(WorldDefT<Dim>& world) {
     for (int i = 0; i < case_.wall_size(); ++i) {
       const proto::Wall& wall = case_.wall(i);
-      WallDef def;
+      WallDefT<Dim> def;
       def.name = wall.name();
-      def.point = to_vec2(wall.point());
-      if (wall.orientation_case() == proto::Wall::kAngleDeg) {
-        const double angle = wall.angle_deg() * std::numbers::pi / 180.0;
-        def.direction = {std::cos(angle), std::sin(angle)};
+      def.point = to_vec<Dim>(wall.point());
+      if constexpr (Dim == 2) {
+        if (wall.orientation_case() == proto::Wall::kAngleDeg) {
+          const double angle = wall.angle_deg() * std::numbers::pi / 180.0;
+          def.direction = {std::cos(angle), std::sin(angle)};
+        } else {
+          def.direction = to_vec<2>(wall.direction()).normalized();
+        }
       } else {
-        def.direction = to_vec2(wall.direction()).normalized();
+        def.direction = to_vec<3>(wall.direction()).normalized();
+        // Validation accepts sides perpendicular to a few digits; the
+        // engine wants them orthonormal, so the rest of v along u goes.
+        const Vec3 v = to_vec<3>(wall.direction2());
+        def.direction2 = (v - v.dot(def.direction) * def.direction).normalized();
+        def.k1 = wall.k1();
+        def.k2 = wall.k2();
       }
       def.h1 = wall.h1();
       def.h2 = wall.h2();
       def.material = materials_.at(wall.material());
-      def.motion = to_motion(wall.motion());
+      def.motion = to_motion<Dim>(wall.motion());
       world.walls.push_back(def);
       walls_.emplace(wall.name(), i);
     }
   }
 
-  void add_stages(std::vector<StageDef>& stages) const {
+  void add_stages(std::vector<StageDefT<Dim>>& stages) const {
     for (const proto::Stage& stage : case_.stage()) {
-      StageDef def;
+      StageDefT<Dim> def;
       def.name = stage.name();
       for (const proto::WallCommand& command : stage.wall()) {
-        def.wall_motions.emplace_back(walls_.at(command.wall()), to_motion(command.motion()));
+        def.wall_motions.emplace_back(walls_.at(command.wall()), to_motion<Dim>(command.motion()));
       }
       if (stage.has_damping()) def.damping = to_damping(stage.damping());
       def.cycles = stage.cycles();
@@ -198,13 +290,24 @@ class Converter {
     }
   }
 
-  void add_output(OutputSettings& output) const {
+  // Validation could not check probe ids against particle files it does
+  // not read; the particles are all known here.
+  void add_output(OutputSettings& output, std::size_t particle_count) const {
     if (case_.output().interval() > 0) output.interval = case_.output().interval();
     output.contacts_file = !case_.output().no_contacts_file();
-    for (const proto::ContactProbe& probe : case_.output().probe()) {
+    std::vector<std::string> problems;
+    for (int i = 0; i < case_.output().probe_size(); ++i) {
+      const proto::ContactProbe& probe = case_.output().probe(i);
+      for (const auto& [field, id] : {std::pair{".first", probe.first()}, std::pair{".second", probe.second()}}) {
+        if (id >= particle_count) {
+          problems.push_back(
+              describe_problem(source_, indexed("output.probe", i) + field, no_particle_with_id(id, particle_count)));
+        }
+      }
       output.probes.push_back(
           {probe.name(), static_cast<ParticleId>(probe.first()), static_cast<ParticleId>(probe.second())});
     }
+    if (!problems.empty()) throw CaseError(std::move(problems));
   }
 
   const proto::Case& case_;
@@ -215,9 +318,25 @@ class Converter {
 
 }  // namespace
 
-CaseDefinition convert_case(const proto::Case& message, const CaseSource& source) {
+int case_dimension(const proto::Case& message) { return message.dimension() == 3 ? 3 : 2; }
+
+template <int Dim>
+CaseDefinitionT<Dim> convert_case(const proto::Case& message, const CaseSource& source) {
   validate_case(message, source);
-  return Converter(message, source).run();
+  if (const int declared = case_dimension(message); declared != Dim) {
+    throw CaseError(describe_problem(
+        source, "dimension",
+        "the case is " + std::to_string(declared) + "D, but a " + std::to_string(Dim) + "D case is expected here"));
+  }
+  return Converter<Dim>(message, source).run();
+}
+
+template CaseDefinitionT<2> convert_case<2>(const proto::Case&, const CaseSource&);
+template CaseDefinitionT<3> convert_case<3>(const proto::Case&, const CaseSource&);
+
+AnyCaseDefinition convert_any_case(const proto::Case& message, const CaseSource& source) {
+  if (case_dimension(message) == 3) return convert_case<3>(message, source);
+  return convert_case<2>(message, source);
 }
 
 }  // namespace dem::io

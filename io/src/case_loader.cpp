@@ -84,7 +84,8 @@ LoadedCase parse_case_text(std::string_view text, std::string source_name) {
     if (problems.empty()) problems.push_back(source_name + ": not a valid case in protobuf text format");
     throw CaseError(std::move(problems));
   }
-  loaded.source = {std::move(source_name), std::move(locations)};
+  loaded.source.name = std::move(source_name);
+  loaded.source.locations = std::move(locations);
   return loaded;
 }
 
@@ -99,7 +100,9 @@ LoadedCase load_case_file(const std::filesystem::path& path) {
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw CaseError(name + ": cannot read the case file: " + std::strerror(errno));
-  return parse_case_text(text.str(), name);
+  LoadedCase loaded = parse_case_text(text.str(), name);
+  loaded.source.directory = path.parent_path();
+  return loaded;
 }
 
 LoadedCase parse_case_binary(std::string_view bytes, std::string source_name) {

@@ -5,10 +5,13 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <set>
 #include <string_view>
 #include <utility>
 
+#include "case_names.h"
+#include "contact_model_checks.h"
 #include "field_path.h"
 #include "format_number.h"
 #include "problem_list.h"
@@ -16,27 +19,15 @@
 namespace dem::io {
 namespace {
 
-std::string quoted(std::string_view name) { return '"' + std::string(name) + '"'; }
-
-// A pair of material indices in the order a contact model's key uses.
-std::pair<int, int> unordered_pair(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
-
-std::string point(const proto::Vector2& v) { return '(' + format_number(v.x()) + ", " + format_number(v.y()) + ')'; }
-
-// Names a case can refer to (materials, walls), each with the index of its
-// first definition.
-using NameIndex = std::map<std::string, int, std::less<>>;
-
-// "(the case defines "a", "b")", so an unknown name comes with the known ones.
-std::string defined_names(const NameIndex& names) {
-  if (names.empty()) return "(the case defines none)";
-  std::string text = "(the case defines ";
-  for (const auto& [name, index] : names) {
-    if (text.back() != ' ') text += ", ";
-    text += quoted(name);
-  }
+std::string point(const proto::Vector& v, int dimension) {
+  std::string text = '(' + format_number(v.x()) + ", " + format_number(v.y());
+  if (dimension == 3) text += ", " + format_number(v.z());
   return text + ')';
 }
+
+// What a case must say to be the other dimension, for messages about fields
+// that only mean something in one.
+constexpr std::string_view kSet3d = "set dimension: 3 for a 3D case";
 
 // One pass over a case. Cross-references (materials, walls, particle ids) are
 // resolved against the definitions as they are read.
@@ -45,13 +36,14 @@ class CaseChecker {
   explicit CaseChecker(const proto::Case& c) : case_(c) { note_material_uses(); }
 
   std::vector<CaseProblem> run() {
+    check_dimension();
     check_materials();
-    check_contact_models();
+    check_contact_models(case_, {materials_, particle_materials_, wall_materials_}, problems_);
     check_particle_sources();
     check_walls();
     check_damping("damping", case_.damping());
     check_time_step();
-    problems_.finite("gravity", case_.gravity());
+    vector("gravity", case_.gravity());
     check_stages();
     check_output();
     check_numerics();
@@ -59,6 +51,43 @@ class CaseChecker {
   }
 
  private:
+  // 2 or 3; 0 when the case declares neither, and then the checks that
+  // depend on the dimension are left out rather than guessed.
+  void check_dimension() {
+    const std::uint32_t declared = case_.dimension();
+    if (declared == 0 || declared == 2) {
+      dimension_ = 2;
+    } else if (declared == 3) {
+      dimension_ = 3;
+    } else {
+      problems_.add("dimension", "must be 2 or 3 (got " + std::to_string(declared) + "); leave it out for 2");
+    }
+    if (!proto::Case::PlanarParticle_IsValid(case_.planar_particle())) {
+      problems_.add("planar_particle", "must be DISC or SPHERE (got " + std::to_string(case_.planar_particle()) + ")");
+    } else {
+      only_in_2d("planar_particle", case_.planar_particle() != proto::Case::DISC, "3D particles are spheres");
+    }
+  }
+
+  // A finite vector, with z left at 0 in a 2D case.
+  bool vector(const std::string& path, const proto::Vector& v) {
+    if (!problems_.finite(path, v)) return false;
+    if (dimension_ == 2 && v.z() != 0) {
+      problems_.add(path + ".z", "must be 0 in a 2D case (got " + format_number(v.z()) + "); " + std::string(kSet3d));
+      return false;
+    }
+    return true;
+  }
+
+  // A field that only means something in 3D, set in a 2D case (or the reverse).
+  void only_in_3d(const std::string& path, bool set) {
+    if (dimension_ == 2 && set) problems_.add(path, "is for 3D cases only (this case is 2D); " + std::string(kSet3d));
+  }
+
+  void only_in_2d(const std::string& path, bool set, std::string_view instead) {
+    if (dimension_ == 3 && set) problems_.add(path, "is for 2D cases only (this case is 3D); " + std::string(instead));
+  }
+
   // Which materials particles and walls are made of, needed before the
   // materials themselves are checked (density) and for the contact pairs.
   void note_material_uses() {
@@ -72,6 +101,9 @@ class CaseChecker {
           break;
         case proto::ParticleSource::kRandomPacking:
           particle_materials_.insert(source.random_packing().material());
+          break;
+        case proto::ParticleSource::kCsvFile:
+          particle_materials_.insert(source.csv_file().material());
           break;
         case proto::ParticleSource::SOURCE_NOT_SET:
           break;
@@ -88,7 +120,7 @@ class CaseChecker {
         problems_.add(path + ".name",
                       "must not be empty (particles, walls and contact models refer to materials by name)");
       } else if (const auto [first, inserted] = materials_.emplace(material.name(), i); !inserted) {
-        problems_.add(path + ".name", "duplicate material name " + quoted(material.name()) + " (" +
+        problems_.add(path + ".name", "duplicate material name " + in_quotes(material.name()) + " (" +
                                           indexed("material", first->second) + " has it too)");
       }
       if (problems_.non_negative(path + ".density", material.density()) && material.density() == 0 &&
@@ -97,99 +129,19 @@ class CaseChecker {
       }
       problems_.non_negative(path + ".friction", material.friction());
       problems_.non_negative(path + ".cohesion", material.cohesion());
+      problems_.non_negative(path + ".youngs_modulus", material.youngs_modulus());
+      problems_.within(path + ".poisson_ratio", material.poisson_ratio(), kPoissonRatio);
     }
   }
 
-  // Returns the material's index, or -1 after reporting why there is none.
   int material_reference(const std::string& path, const std::string& name) {
-    if (name.empty()) {
-      problems_.add(path, "must name a material " + defined_names(materials_));
-      return -1;
-    }
-    const auto found = materials_.find(name);
-    if (found == materials_.end()) {
-      problems_.add(path, "unknown material " + quoted(name) + ' ' + defined_names(materials_));
-      return -1;
-    }
-    return found->second;
-  }
-
-  void check_contact_models() {
-    // Unordered material pairs (by index) to the model that covers them;
-    // {-1, -1} is the default model.
-    std::map<std::pair<int, int>, int> covered;
-    for (int i = 0; i < case_.contact_model_size(); ++i) {
-      const proto::ContactModel& model = case_.contact_model(i);
-      const std::string path = indexed("contact_model", i);
-      const int named = model.materials_size();
-      if (named > 2) {
-        problems_.add(path + ".materials", "names " + std::to_string(named) +
-                                               " materials; name none (the default law), one (a material with itself) "
-                                               "or two (a mixed pair)");
-      }
-      std::vector<int> ids;
-      for (int j = 0; j < named; ++j) {
-        ids.push_back(material_reference(indexed(path + ".materials", j), model.materials(j)));
-      }
-      if (model.law_case() == proto::ContactModel::kLinear) {
-        problems_.positive(path + ".linear.normal_stiffness", model.linear().normal_stiffness());
-        problems_.non_negative(path + ".linear.shear_stiffness", model.linear().shear_stiffness());
-      } else {
-        problems_.add(path, "has no law; set linear { normal_stiffness: ... shear_stiffness: ... }");
-      }
-      if (model.has_friction()) problems_.non_negative(path + ".friction", model.friction());
-      if (model.has_cohesion()) problems_.non_negative(path + ".cohesion", model.cohesion());
-
-      if (named > 2 || std::ranges::count(ids, -1) > 0) continue;
-      const std::pair<int, int> pair = named == 0   ? std::pair{-1, -1}
-                                       : named == 1 ? std::pair{ids[0], ids[0]}
-                                                    : unordered_pair(ids[0], ids[1]);
-      const auto [first, inserted] = covered.emplace(pair, i);
-      if (inserted) continue;
-      if (named == 0) {
-        problems_.add(path, "is a second default model (one naming no materials); " +
-                                indexed("contact_model", first->second) + " is the first");
-      } else {
-        problems_.add(path + ".materials", "a second contact model for " + quoted(model.materials(0)) + " and " +
-                                               quoted(model.materials(named - 1)) + "; " +
-                                               indexed("contact_model", first->second) + " already covers the pair");
-      }
-    }
-    if (!covered.contains({-1, -1})) check_pairs_covered(covered);
-  }
-
-  // Without a default model, every pair of materials that can touch needs
-  // its own: particle with particle (including the same material) and
-  // particle with wall. Walls never touch each other.
-  void check_pairs_covered(const std::map<std::pair<int, int>, int>& covered) {
-    std::set<int> particle_ids;
-    std::set<int> wall_ids;
-    for (const auto& name : particle_materials_) {
-      if (const auto found = materials_.find(name); found != materials_.end()) particle_ids.insert(found->second);
-    }
-    for (const auto& name : wall_materials_) {
-      if (const auto found = materials_.find(name); found != materials_.end()) wall_ids.insert(found->second);
-    }
-    std::set<std::pair<int, int>> touching;
-    for (const int a : particle_ids) {
-      for (const int b : particle_ids) touching.insert(unordered_pair(a, b));
-      for (const int w : wall_ids) touching.insert(unordered_pair(a, w));
-    }
-    for (const auto& [a, b] : touching) {
-      if (covered.contains({a, b})) continue;
-      const std::string& name_a = case_.material(a).name();
-      const std::string& name_b = case_.material(b).name();
-      problems_.add("contact_model", "no contact model for " +
-                                         (a == b ? "material " + quoted(name_a) + " with itself"
-                                                 : "materials " + quoted(name_a) + " and " + quoted(name_b)) +
-                                         ", which can touch; add one naming " + (a == b ? "it" : "both") +
-                                         ", or a default model naming no materials");
-    }
+    return find_material(problems_, materials_, path, name);
   }
 
   void check_particle_sources() {
     if (case_.particles_size() == 0) {
-      problems_.add("particles", "the case defines no particles; add a particle, lattice or random_packing source");
+      problems_.add("particles",
+                    "the case defines no particles; add a particle, lattice, random_packing or csv_file source");
       return;
     }
     for (int i = 0; i < case_.particles_size(); ++i) {
@@ -205,8 +157,11 @@ class CaseChecker {
         case proto::ParticleSource::kRandomPacking:
           check_random_packing(path + ".random_packing", source.random_packing());
           break;
+        case proto::ParticleSource::kCsvFile:
+          check_particle_file(path + ".csv_file", source.csv_file());
+          break;
         case proto::ParticleSource::SOURCE_NOT_SET:
-          problems_.add(path, "is empty; set particle, lattice or random_packing");
+          problems_.add(path, "is empty; set particle, lattice, random_packing or csv_file");
           break;
       }
     }
@@ -217,20 +172,34 @@ class CaseChecker {
   }
 
   void check_particle(const std::string& path, const proto::Particle& particle) {
-    problems_.finite(path + ".position", particle.position());
+    vector(path + ".position", particle.position());
     problems_.positive(path + ".radius", particle.radius());
     material_reference(path + ".material", particle.material());
-    problems_.finite(path + ".velocity", particle.velocity());
-    problems_.finite(path + ".angular_velocity", particle.angular_velocity());
+    vector(path + ".velocity", particle.velocity());
+    check_spin(path + ".angular_velocity", particle.angular_velocity(), particle.has_angular_velocity_3d(),
+               particle.angular_velocity_3d());
     particle_count_ += 1;
+  }
+
+  // An angular velocity: a scalar about z in 2D, a vector in 3D.
+  void check_spin(const std::string& path, double about_z, bool has_vector, const proto::Vector& spin) {
+    if (problems_.finite(path, about_z)) {
+      only_in_2d(path, about_z != 0, "set " + path.substr(path.rfind('.') + 1) + "_3d { x: ... y: ... z: ... }");
+    }
+    if (has_vector) {
+      problems_.finite(path + "_3d", spin);
+      only_in_3d(path + "_3d", true);
+    }
   }
 
   void check_lattice(const std::string& path, const proto::Lattice& lattice) {
     material_reference(path + ".material", lattice.material());
     const bool radius_ok = problems_.positive(path + ".radius", lattice.radius());
-    problems_.finite(path + ".origin", lattice.origin());
+    vector(path + ".origin", lattice.origin());
     if (lattice.columns() == 0) problems_.add(path + ".columns", "must be > 0");
     if (lattice.rows() == 0) problems_.add(path + ".rows", "must be > 0");
+    // 0 means the default, one layer.
+    only_in_3d(path + ".layers", lattice.layers() > 1);
     // 0 means the default, touching neighbours at 2 * radius.
     if (problems_.non_negative(path + ".spacing", lattice.spacing()) && radius_ok && lattice.spacing() > 0 &&
         lattice.spacing() < 2 * lattice.radius()) {
@@ -238,31 +207,36 @@ class CaseChecker {
                                            ") so neighbours do not overlap (got " + format_number(lattice.spacing()) +
                                            "); leave it out for touching neighbours");
     }
-    particle_count_ += std::uint64_t{lattice.columns()} * lattice.rows();
+    particle_count_ += std::uint64_t{lattice.columns()} * lattice.rows() * std::max(lattice.layers(), 1u);
   }
 
   void check_random_packing(const std::string& path, const proto::RandomPacking& packing) {
     material_reference(path + ".material", packing.material());
-    const bool min_ok = problems_.finite(path + ".min", packing.min());
-    const bool max_ok = problems_.finite(path + ".max", packing.max());
+    const bool min_ok = vector(path + ".min", packing.min());
+    const bool max_ok = vector(path + ".max", packing.max());
+    const bool three = dimension_ == 3;
     const double width = packing.max().x() - packing.min().x();
     const double height = packing.max().y() - packing.min().y();
-    const bool box_ok = min_ok && max_ok && width > 0 && height > 0;
+    const double depth = packing.max().z() - packing.min().z();
+    const bool box_ok = min_ok && max_ok && width > 0 && height > 0 && (!three || depth > 0);
     if (min_ok && max_ok && !box_ok) {
-      problems_.add(path + ".max", "must lie above and to the right of min (min " + point(packing.min()) + ", max " +
-                                       point(packing.max()) + ")");
+      problems_.add(path + ".max",
+                    std::string(three ? "must exceed min along x, y and z" : "must lie above and to the right of min") +
+                        " (min " + point(packing.min(), dimension_) + ", max " + point(packing.max(), dimension_) +
+                        ")");
     }
+    const double smallest_side = three ? std::min({width, height, depth}) : std::min(width, height);
+    const std::string box =
+        format_number(width) + " x " + format_number(height) + (three ? " x " + format_number(depth) : std::string());
     if (packing.size_size() == 0) {
       problems_.add(path + ".size", "lists no size classes; add at least one size { radius: ... count: ... }");
     }
     for (int j = 0; j < packing.size_size(); ++j) {
       const proto::SizeClass& size = packing.size(j);
       const std::string size_path = indexed(path + ".size", j);
-      if (problems_.positive(size_path + ".radius", size.radius()) && box_ok &&
-          2 * size.radius() > std::min(width, height)) {
-        problems_.add(size_path + ".radius", "discs of radius " + format_number(size.radius()) +
-                                                 " do not fit in the box (" + format_number(width) + " x " +
-                                                 format_number(height) + ")");
+      if (problems_.positive(size_path + ".radius", size.radius()) && box_ok && 2 * size.radius() > smallest_side) {
+        problems_.add(size_path + ".radius", std::string(three ? "spheres" : "discs") + " of radius " +
+                                                 format_number(size.radius()) + " do not fit in the box (" + box + ")");
       }
       if (size.count() == 0) problems_.add(size_path + ".count", "must be > 0");
       particle_count_ += size.count();
@@ -272,6 +246,19 @@ class CaseChecker {
     }
   }
 
+  // How many particles the file holds is known only when it is read (at
+  // conversion), so checks that count particles stop here.
+  void check_particle_file(const std::string& path, const proto::ParticleFile& file) {
+    if (file.path().empty()) {
+      problems_.add(path + ".path", std::string("must name a CSV file of particles (lines of ") +
+                                        (dimension_ == 3 ? "x,y,z,r" : "x,y,r") +
+                                        "), relative to the case file's directory");
+    }
+    material_reference(path + ".material", file.material());
+    vector(path + ".offset", file.offset());
+    count_known_ = false;
+  }
+
   void check_walls() {
     for (int i = 0; i < case_.wall_size(); ++i) {
       const proto::Wall& wall = case_.wall(i);
@@ -279,42 +266,92 @@ class CaseChecker {
       if (wall.name().empty()) {
         problems_.add(path + ".name", "must not be empty (stages and outputs refer to walls by name)");
       } else if (const auto [first, inserted] = walls_.emplace(wall.name(), i); !inserted) {
-        problems_.add(path + ".name", "duplicate wall name " + quoted(wall.name()) + " (" +
+        problems_.add(path + ".name", "duplicate wall name " + in_quotes(wall.name()) + " (" +
                                           indexed("wall", first->second) + " has it too)");
       }
-      problems_.finite(path + ".point", wall.point());
+      vector(path + ".point", wall.point());
+      const bool direction_ok =
+          wall.orientation_case() == proto::Wall::kDirection && non_zero_vector(path + ".direction", wall.direction());
       switch (wall.orientation_case()) {
         case proto::Wall::kDirection:
-          if (problems_.finite(path + ".direction", wall.direction()) &&
-              std::hypot(wall.direction().x(), wall.direction().y()) == 0) {
-            problems_.add(path + ".direction", "must not be zero-length");
-          }
           break;
         case proto::Wall::kAngleDeg:
           problems_.finite(path + ".angle_deg", wall.angle_deg());
+          only_in_2d(path + ".angle_deg", true, "set direction { x: ... y: ... z: ... } and direction2");
           break;
         case proto::Wall::ORIENTATION_NOT_SET:
-          problems_.add(path, "has no orientation; set direction { x: ... y: ... } or angle_deg");
+          problems_.add(path, dimension_ == 3 ? "has no orientation; set direction { x: ... y: ... z: ... } and "
+                                                "direction2 (the normal direction x direction2 faces the particles)"
+                                              : "has no orientation; set direction { x: ... y: ... } or angle_deg");
           break;
       }
-      const bool h1_ok = problems_.finite(path + ".h1", wall.h1());
-      if (problems_.finite(path + ".h2", wall.h2()) && h1_ok && wall.h2() <= wall.h1()) {
-        problems_.add(path + ".h2",
-                      "must be greater than h1 (" + format_number(wall.h2()) + " <= " + format_number(wall.h1()) + ")");
+      check_extent(path, "h1", wall.h1(), "h2", wall.h2());
+      if (dimension_ == 3) {
+        check_rectangle(path, wall, direction_ok);
+      } else {
+        only_in_3d(path + ".direction2", wall.has_direction2());
+        only_in_3d(path + ".k1", wall.k1() != 0);
+        only_in_3d(path + ".k2", wall.k2() != 0);
       }
       material_reference(path + ".material", wall.material());
       check_motion(path + ".motion", wall.motion());
     }
   }
 
+  bool non_zero_vector(const std::string& path, const proto::Vector& v) {
+    if (!vector(path, v)) return false;
+    if (v.x() == 0 && v.y() == 0 && v.z() == 0) {
+      problems_.add(path, "must not be zero-length");
+      return false;
+    }
+    return true;
+  }
+
+  void check_extent(const std::string& path, std::string_view low_name, double low, std::string_view high_name,
+                    double high) {
+    const bool low_ok = problems_.finite(path + '.' + std::string(low_name), low);
+    if (problems_.finite(path + '.' + std::string(high_name), high) && low_ok && high <= low) {
+      problems_.add(path + '.' + std::string(high_name), "must be greater than " + std::string(low_name) + " (" +
+                                                             format_number(high) + " <= " + format_number(low) + ")");
+    }
+  }
+
+  // The second side of a 3D wall: v perpendicular to u, and its extent.
+  void check_rectangle(const std::string& path, const proto::Wall& wall, bool direction_ok) {
+    if (!wall.has_direction2()) {
+      problems_.add(path + ".direction2",
+                    "must be set for a 3D wall: the second side's direction, perpendicular to direction (the "
+                    "normal direction x direction2 faces the particles)");
+    } else if (non_zero_vector(path + ".direction2", wall.direction2()) && direction_ok) {
+      const proto::Vector& u = wall.direction();
+      const proto::Vector& v = wall.direction2();
+      // Perpendicular to within what a case written with a few digits can
+      // say; conversion removes the rest.
+      const double cosine =
+          (u.x() * v.x() + u.y() * v.y() + u.z() * v.z()) /
+          std::sqrt((u.x() * u.x() + u.y() * u.y() + u.z() * u.z()) * (v.x() * v.x() + v.y() * v.y() + v.z() * v.z()));
+      if (std::abs(cosine) > 1e-6) {
+        // In hundredths of a degree: enough to see how far off they are.
+        const double degrees = std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / std::numbers::pi;
+        problems_.add(path + ".direction2", "must be perpendicular to direction (they are " +
+                                                format_number(std::round(degrees * 100.0) / 100.0) + " degrees apart)");
+      }
+    }
+    check_extent(path, "k1", wall.k1(), "k2", wall.k2());
+  }
+
   void check_motion(const std::string& path, const proto::WallMotion& motion) {
-    problems_.finite(path + ".velocity", motion.velocity());
-    problems_.finite(path + ".angular_velocity", motion.angular_velocity());
+    vector(path + ".velocity", motion.velocity());
+    check_spin(path + ".angular_velocity", motion.angular_velocity(), motion.has_angular_velocity_3d(),
+               motion.angular_velocity_3d());
     if (!motion.has_servo()) return;
     problems_.finite(path + ".servo.target_force", motion.servo().target_force());
     problems_.positive(path + ".servo.gain", motion.servo().gain());
     problems_.positive(path + ".servo.max_speed", motion.servo().max_speed());
-    if (motion.velocity().x() != 0 || motion.velocity().y() != 0 || motion.angular_velocity() != 0) {
+    const proto::Vector& v = motion.velocity();
+    const proto::Vector& spin = motion.angular_velocity_3d();
+    if (v.x() != 0 || v.y() != 0 || v.z() != 0 || motion.angular_velocity() != 0 || spin.x() != 0 || spin.y() != 0 ||
+        spin.z() != 0) {
       problems_.add(path, "sets both servo and velocity/angular_velocity; the servo replaces them, so drop one");
     }
   }
@@ -322,6 +359,14 @@ class CaseChecker {
   void check_damping(const std::string& path, const proto::Damping& damping) {
     problems_.non_negative(path + ".contact_beta", damping.contact_beta());
     problems_.non_negative(path + ".global_alpha", damping.global_alpha());
+    if (damping.has_global_alpha_rotation()) {
+      problems_.non_negative(path + ".global_alpha_rotation", damping.global_alpha_rotation());
+    }
+    const Interval fraction{0.0, 1.0, false, true};  // [0, 1)
+    problems_.within(path + ".local_alpha", damping.local_alpha(), fraction);
+    if (damping.has_local_alpha_rotation()) {
+      problems_.within(path + ".local_alpha_rotation", damping.local_alpha_rotation(), fraction);
+    }
   }
 
   void check_time_step() {
@@ -350,9 +395,10 @@ class CaseChecker {
         if (command.wall().empty()) {
           problems_.add(command_path + ".wall", "must name a wall " + defined_names(walls_));
         } else if (wall == walls_.end()) {
-          problems_.add(command_path + ".wall", "unknown wall " + quoted(command.wall()) + ' ' + defined_names(walls_));
+          problems_.add(command_path + ".wall",
+                        "unknown wall " + in_quotes(command.wall()) + ' ' + defined_names(walls_));
         } else if (const auto [first, inserted] = commanded.emplace(command.wall(), j); !inserted) {
-          problems_.add(command_path + ".wall", "wall " + quoted(command.wall()) + " is already commanded by " +
+          problems_.add(command_path + ".wall", "wall " + in_quotes(command.wall()) + " is already commanded by " +
                                                     indexed(path + ".wall", first->second));
         } else {
           servo[wall->second] = command.motion().has_servo();
@@ -394,7 +440,8 @@ class CaseChecker {
   }
 
   void check_output() {
-    const bool count_known = particle_count_ <= static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max());
+    const bool count_known =
+        count_known_ && particle_count_ <= static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max());
     std::map<std::string, int, std::less<>> names;
     for (int i = 0; i < case_.output().probe_size(); ++i) {
       const proto::ContactProbe& probe = case_.output().probe(i);
@@ -402,15 +449,12 @@ class CaseChecker {
       if (probe.name().empty()) {
         problems_.add(path + ".name", "must not be empty (it labels the probe's rows in probes.csv)");
       } else if (const auto [first, inserted] = names.emplace(probe.name(), i); !inserted) {
-        problems_.add(path + ".name", "duplicate probe name " + quoted(probe.name()) + " (" +
+        problems_.add(path + ".name", "duplicate probe name " + in_quotes(probe.name()) + " (" +
                                           indexed("output.probe", first->second) + " has it too)");
       }
       const auto check_id = [&](const std::string& id_path, std::uint32_t id) {
         if (!count_known || id < particle_count_) return;
-        problems_.add(id_path, "no particle with id " + std::to_string(id) + " (the case defines " +
-                                   std::to_string(particle_count_) + " particles" +
-                                   (particle_count_ > 0 ? ", ids 0 to " + std::to_string(particle_count_ - 1) : "") +
-                                   ")");
+        problems_.add(id_path, no_particle_with_id(id, particle_count_));
       };
       check_id(path + ".first", probe.first());
       check_id(path + ".second", probe.second());
@@ -434,6 +478,8 @@ class CaseChecker {
   std::set<std::string> particle_materials_;
   std::set<std::string> wall_materials_;
   std::uint64_t particle_count_ = 0;
+  bool count_known_ = true;  // false once a csv_file source holds an unknown number
+  int dimension_ = 0;        // 2 or 3; 0 until known (or when the case declares neither)
 };
 
 }  // namespace

@@ -3,15 +3,41 @@
 #include <utility>
 
 namespace dem::io {
+namespace {
 
-WallsCsv::WallsCsv(const std::filesystem::path& directory)
-    : file_(directory, "walls.csv", "cycle,time,wall,fx,fy,moment,normal_force,contacts,eccentricity,x,y,dx,dy") {}
+constexpr const char* kWallsHeader2 = "cycle,time,wall,fx,fy,moment,normal_force,contacts,eccentricity,x,y,dx,dy";
+constexpr const char* kWallsHeader3 =
+    "cycle,time,wall,fx,fy,fz,moment_x,moment_y,moment_z,normal_force,contacts,eccentricity_u,eccentricity_v,"
+    "x,y,z,dx,dy,dz";
+constexpr const char* kContactsHeader2 =
+    "first,second_kind,second,x,y,nx,ny,overlap,normal_force,shear_force,normal_damping,shear_damping,sliding";
+constexpr const char* kContactsHeader3 =
+    "first,second_kind,second,x,y,z,nx,ny,nz,overlap,normal_force,shear_force,tangential_x,tangential_y,"
+    "tangential_z,normal_damping,shear_damping,sliding";
+constexpr const char* kParticlesHeader2 = "id,x,y,radius,vx,vy,angular_velocity,rotation";
+constexpr const char* kParticlesHeader3 =
+    "id,x,y,z,radius,vx,vy,vz,angular_velocity_x,angular_velocity_y,angular_velocity_z,rotation_w,rotation_x,"
+    "rotation_y,rotation_z";
 
-void WallsCsv::write(const World& world) {
-  for (const WallMeasure& measure : world.wall_measures()) {
-    file_.write_row(world.cycle_count(), world.time(), world.wall(measure.wall).name, measure.force.x(),
-                    measure.force.y(), measure.moment, measure.normal_force, measure.contacts, measure.eccentricity,
-                    measure.point.x(), measure.point.y(), measure.displacement.x(), measure.displacement.y());
+}  // namespace
+
+template <int Dim>
+WallsCsvT<Dim>::WallsCsvT(const std::filesystem::path& directory)
+    : file_(directory, "walls.csv", Dim == 2 ? kWallsHeader2 : kWallsHeader3) {}
+
+template <int Dim>
+void WallsCsvT<Dim>::write(const BasicWorld<Dim>& world) {
+  for (const WallMeasureT<Dim>& m : world.wall_measures()) {
+    const std::string& name = world.wall(m.wall).name;
+    if constexpr (Dim == 2) {
+      file_.write_row(world.cycle_count(), world.time(), name, m.force.x(), m.force.y(), m.moment, m.normal_force,
+                      m.contacts, m.eccentricity, m.point.x(), m.point.y(), m.displacement.x(), m.displacement.y());
+    } else {
+      file_.write_row(world.cycle_count(), world.time(), name, m.force.x(), m.force.y(), m.force.z(), m.moment.x(),
+                      m.moment.y(), m.moment.z(), m.normal_force, m.contacts, m.eccentricity.x(), m.eccentricity.y(),
+                      m.point.x(), m.point.y(), m.point.z(), m.displacement.x(), m.displacement.y(),
+                      m.displacement.z());
+    }
   }
   file_.flush();
 }
@@ -20,7 +46,8 @@ AssemblyCsv::AssemblyCsv(const std::filesystem::path& directory)
     : file_(directory, "assembly.csv",
             "cycle,time,kinetic_energy,out_of_balance,max_contact_force,contacts,sliding_contacts") {}
 
-void AssemblyCsv::write(const World& world) {
+template <int Dim>
+void AssemblyCsv::write(const BasicWorld<Dim>& world) {
   const AssemblyMeasures measures = world.assembly_measures();
   file_.write_row(world.cycle_count(), world.time(), measures.kinetic_energy, measures.out_of_balance,
                   measures.max_contact_force, measures.contacts, measures.sliding_contacts);
@@ -31,44 +58,68 @@ ProbesCsv::ProbesCsv(const std::filesystem::path& directory, std::vector<Probe> 
     : file_(directory, "probes.csv", "cycle,time,probe,normal_force,shear_force,touching"),
       probes_(std::move(probes)) {}
 
-void ProbesCsv::write(const World& world) {
+template <int Dim>
+void ProbesCsv::write(const BasicWorld<Dim>& world) {
   for (const Probe& probe : probes_) {
-    const std::optional<ContactRecord> contact = world.contact_between(probe.first, probe.second);
+    const std::optional<ContactRecordT<Dim>> contact = world.contact_between(probe.first, probe.second);
     file_.write_row(world.cycle_count(), world.time(), probe.name, contact ? contact->normal_force : 0.0,
                     contact ? contact->shear_force : 0.0, contact.has_value());
   }
   file_.flush();
 }
 
-void write_contacts_csv(const std::filesystem::path& directory, const World& world) {
-  CsvFile file(directory, "contacts.csv",
-               "first,second_kind,second,x,y,nx,ny,overlap,normal_force,shear_force,normal_damping,"
-               "shear_damping,sliding");
-  for (const ContactRecord& contact : world.contacts()) {
-    const bool wall = contact.second_wall != kInvalidId;
+template <int Dim>
+void write_contacts_csv(const std::filesystem::path& directory, const BasicWorld<Dim>& world) {
+  CsvFile file(directory, "contacts.csv", Dim == 2 ? kContactsHeader2 : kContactsHeader3);
+  for (const ContactRecordT<Dim>& c : world.contacts()) {
+    const bool wall = c.second_wall != kInvalidId;
     const auto fields = [&](const auto& second) {
-      file.write_row(contact.first, wall ? "wall" : "particle", second, contact.point.x(), contact.point.y(),
-                     contact.normal.x(), contact.normal.y(), contact.overlap, contact.normal_force, contact.shear_force,
-                     contact.normal_damping, contact.shear_damping, contact.sliding);
+      const char* kind = wall ? "wall" : "particle";
+      if constexpr (Dim == 2) {
+        file.write_row(c.first, kind, second, c.point.x(), c.point.y(), c.normal.x(), c.normal.y(), c.overlap,
+                       c.normal_force, c.shear_force, c.normal_damping, c.shear_damping, c.sliding);
+      } else {
+        file.write_row(c.first, kind, second, c.point.x(), c.point.y(), c.point.z(), c.normal.x(), c.normal.y(),
+                       c.normal.z(), c.overlap, c.normal_force, c.shear_force, c.tangential_force.x(),
+                       c.tangential_force.y(), c.tangential_force.z(), c.normal_damping, c.shear_damping, c.sliding);
+      }
     };
     if (wall) {
-      fields(world.wall(contact.second_wall).name);
+      fields(world.wall(c.second_wall).name);
     } else {
-      fields(contact.second_particle);
+      fields(c.second_particle);
     }
   }
   file.flush();
 }
 
-void write_particles_csv(const std::filesystem::path& directory, const World& world) {
-  CsvFile file(directory, "particles.csv", "id,x,y,radius,vx,vy,angular_velocity,rotation");
-  const ParticleView particles = world.particles();
+template <int Dim>
+void write_particles_csv(const std::filesystem::path& directory, const BasicWorld<Dim>& world) {
+  CsvFile file(directory, "particles.csv", Dim == 2 ? kParticlesHeader2 : kParticlesHeader3);
+  const ParticleViewT<Dim> p = world.particles();
   for (ParticleId id = 0; id < world.particle_count(); ++id) {
-    file.write_row(id, particles.position[id].x(), particles.position[id].y(), particles.radius[id],
-                   particles.velocity[id].x(), particles.velocity[id].y(), particles.angular_velocity[id],
-                   particles.rotation[id]);
+    if constexpr (Dim == 2) {
+      file.write_row(id, p.position[id].x(), p.position[id].y(), p.radius[id], p.velocity[id].x(), p.velocity[id].y(),
+                     p.angular_velocity[id], p.rotation[id]);
+    } else {
+      const Quaternion& q = p.rotation[id];
+      file.write_row(id, p.position[id].x(), p.position[id].y(), p.position[id].z(), p.radius[id], p.velocity[id].x(),
+                     p.velocity[id].y(), p.velocity[id].z(), p.angular_velocity[id].x(), p.angular_velocity[id].y(),
+                     p.angular_velocity[id].z(), q.w(), q.x(), q.y(), q.z());
+    }
   }
   file.flush();
 }
+
+template class WallsCsvT<2>;
+template class WallsCsvT<3>;
+template void AssemblyCsv::write(const World&);
+template void AssemblyCsv::write(const World3&);
+template void ProbesCsv::write(const World&);
+template void ProbesCsv::write(const World3&);
+template void write_contacts_csv(const std::filesystem::path&, const World&);
+template void write_contacts_csv(const std::filesystem::path&, const World3&);
+template void write_particles_csv(const std::filesystem::path&, const World&);
+template void write_particles_csv(const std::filesystem::path&, const World3&);
 
 }  // namespace dem::io

@@ -1,8 +1,10 @@
 // The problems validation finds, with the checks many fields share
-// (finite, > 0, >= 0), each phrased the same way wherever it applies.
+// (finite, > 0, >= 0, within an interval), each phrased the same way
+// wherever it applies.
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,6 +14,35 @@
 #include "format_number.h"
 
 namespace dem::io {
+
+// A range of numbers whose ends may be open, as messages spell it: "(0, 1]".
+struct Interval {
+  double low = 0.0;
+  double high = 0.0;
+  bool low_open = false;
+  bool high_open = false;
+
+  std::string text() const {
+    std::string text(1, low_open ? '(' : '[');
+    text += format_number(low);
+    text += ", ";
+    text += format_number(high);
+    text += high_open ? ')' : ']';
+    return text;
+  }
+};
+
+// Poisson's ratio of an isotropic elastic solid (positive shear and bulk moduli).
+inline const Interval kPoissonRatio{-1.0, 0.5, true, true};
+// A coefficient of restitution: 1 is elastic; 0 has no logarithm (Miyata eq. 17).
+inline const Interval kRestitution{0.0, 1.0, true, false};
+
+// Why a probe's particle id is wrong, for validation and for conversion
+// (which alone knows how many particles a csv_file source holds).
+inline std::string no_particle_with_id(std::uint64_t id, std::uint64_t count) {
+  return "no particle with id " + std::to_string(id) + " (the case defines " + std::to_string(count) + " particles" +
+         (count > 0 ? ", ids 0 to " + std::to_string(count - 1) : "") + ")";
+}
 
 // Each check returns whether the value passed, so callers can skip checks
 // that build on it.
@@ -25,10 +56,11 @@ class ProblemList {
     return false;
   }
 
-  bool finite(const std::string& path, const proto::Vector2& v) {
+  bool finite(const std::string& path, const proto::Vector& v) {
     const bool x_ok = finite(path + ".x", v.x());
     const bool y_ok = finite(path + ".y", v.y());
-    return x_ok && y_ok;
+    const bool z_ok = finite(path + ".z", v.z());
+    return x_ok && y_ok && z_ok;
   }
 
   bool positive(const std::string& path, double value) {
@@ -42,6 +74,15 @@ class ProblemList {
     if (!finite(path, value)) return false;
     if (value >= 0) return true;
     add(path, "must be >= 0 (got " + format_number(value) + ")");
+    return false;
+  }
+
+  bool within(const std::string& path, double value, const Interval& interval) {
+    if (!finite(path, value)) return false;
+    const bool above = interval.low_open ? value > interval.low : value >= interval.low;
+    const bool below = interval.high_open ? value < interval.high : value <= interval.high;
+    if (above && below) return true;
+    add(path, "must be in " + interval.text() + " (got " + format_number(value) + ")");
     return false;
   }
 

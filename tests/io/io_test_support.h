@@ -21,6 +21,12 @@ inline std::filesystem::path data_path(const std::string& name) {
 // with three stages and two probes (tests/io/data/valid.case.txtpb).
 inline proto::Case valid_case() { return load_case_file(data_path("valid.case.txtpb")).message; }
 
+// 21 steel and glass spheres from every kind of source (one of them a CSV
+// file beside the case, so conversion needs the loaded source) in a box of
+// six rectangular walls, with Hertz-Mindlin contacts and two stages
+// (tests/io/data/valid_3d.case.txtpb).
+inline LoadedCase valid_3d_case() { return load_case_file(data_path("valid_3d.case.txtpb")); }
+
 // "path: message" per problem, one a line, as validate_case reports them.
 inline std::string problem_text(const proto::Case& message) {
   std::string text;

@@ -2,6 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <string>
+#include <variant>
 
 #include "dem/io/case_conversion.h"
 #include "dem/world.h"
@@ -97,7 +100,7 @@ TEST_F(CaseConversion, GeneratorFailureNamesTheSource) {
   packing.mutable_size(0)->set_count(500);
   packing.set_max_attempts(50);
   try {
-    convert_case(case_, {"case.txtpb", nullptr});
+    convert_case(case_, {.name = "case.txtpb"});
     FAIL() << "500 discs fitted in the box";
   } catch (const CaseError& error) {
     EXPECT_THAT(error.what(), HasSubstr("case.txtpb: particles[2].random_packing: "));
@@ -137,12 +140,23 @@ TEST_F(CaseConversion, WallMotionAndServo) {
   EXPECT_EQ(walls[0].motion.servo->max_speed, 0.5);
 }
 
+TEST_F(CaseConversion, MiyataDampingForms) {
+  case_.mutable_damping()->set_global_alpha_rotation(3.0);  // Miyata eq. 32
+  case_.mutable_damping()->set_local_alpha(0.7);            // Miyata eq. 33
+  const WorldDef world = convert_case(case_).world;
+  EXPECT_EQ(world.damping.global_alpha_rotation, 3.0);
+  EXPECT_EQ(world.damping.local_alpha, 0.7);
+  EXPECT_FALSE(world.damping.local_alpha_rotation.has_value());
+}
+
 TEST_F(CaseConversion, DampingGravityTimeStepAndNumerics) {
   case_.mutable_numerics()->set_contact_tolerance(0.001);
   case_.mutable_time_step()->set_fixed(1e-5);
   const WorldDef world = convert_case(case_).world;
   EXPECT_EQ(world.damping.contact_beta, 1e-5);
   EXPECT_EQ(world.damping.global_alpha, 2);
+  EXPECT_FALSE(world.damping.global_alpha_rotation.has_value());
+  EXPECT_EQ(world.damping.local_alpha, 0.0);
   EXPECT_EQ(world.gravity, Vec2(0, -9.81));
   EXPECT_EQ(world.time_step_fraction, 0.2);
   EXPECT_EQ(world.fixed_time_step, 1e-5);
@@ -225,6 +239,241 @@ TEST_F(CaseConversion, TheEngineAcceptsTheResult) {
   EXPECT_EQ(world.particle_count(), 14);
   EXPECT_EQ(world.wall_count(), 4);
   EXPECT_EQ(world.find_wall("top"), 2);
+}
+
+TEST_F(CaseConversion, A2dCaseIsTwoDimensionalAndOfDiscs) {
+  EXPECT_EQ(case_dimension(case_), 2);
+  const AnyCaseDefinition any = convert_any_case(case_);
+  ASSERT_TRUE(std::holds_alternative<CaseDefinition>(any));
+  EXPECT_EQ(std::get<CaseDefinition>(any).world.planar_particle, PlanarParticle::kDisc);
+  EXPECT_EQ(std::get<CaseDefinition>(any).world.contact_models[0].law, ContactLaw::kLinear);
+}
+
+TEST_F(CaseConversion, A2dCaseIsNotRead3d) {
+  try {
+    convert_case<3>(case_, {.name = "case.txtpb"});
+    FAIL() << "a 2D case converted to 3D";
+  } catch (const CaseError& error) {
+    EXPECT_EQ(std::string(error.what()), "case.txtpb: dimension: the case is 2D, but a 3D case is expected here");
+  }
+}
+
+// The 2D case of tests/io/data/hertz_2d.case.txtpb: the newer laws, spheres
+// in the plane, and discs from a CSV file.
+TEST(CaseConversion2d, HertzLawsSpheresInThePlaneAndAParticleFile) {
+  const LoadedCase loaded = load_case_file(test::data_path("hertz_2d.case.txtpb"));
+  const CaseDefinition def = convert_case(loaded.message, loaded.source);
+  EXPECT_EQ(def.world.planar_particle, PlanarParticle::kSphere);
+  EXPECT_EQ(def.world.materials[0].youngs_modulus, 7e10);
+  EXPECT_EQ(def.world.materials[0].poisson_ratio, 0.25);
+  const ContactModelDef& pairs = def.world.contact_models[0];
+  EXPECT_EQ(pairs.law, ContactLaw::kHertzLinearTangential);
+  EXPECT_EQ(pairs.hertz.damping_ratio, 0.1);
+  EXPECT_FALSE(pairs.hertz.restitution);
+  EXPECT_FALSE(pairs.hertz.tangential);
+  const ContactModelDef& walls = def.world.contact_models[1];
+  EXPECT_EQ(walls.law, ContactLaw::kLinearRestitution);
+  EXPECT_EQ(walls.linear.normal_stiffness, 1e7);
+  EXPECT_EQ(walls.linear.shear_stiffness, 5e6);
+  EXPECT_EQ(walls.restitution, 0.5);
+  // discs_2d.csv (no header), then the explicit particle.
+  ASSERT_EQ(def.world.particles.size(), 3u);
+  EXPECT_EQ(def.world.particles[1].position, Vec2(0.08, 0.05));
+  EXPECT_EQ(def.world.particles[1].radius, 0.01);
+  EXPECT_EQ(def.world.particles[1].material, 0);
+  EXPECT_EQ(def.world.particles[2].angular_velocity, 2);
+  const World world(def.world);
+  EXPECT_EQ(world.particle_count(), 3);
+}
+
+class CaseConversion3d : public ::testing::Test {
+ protected:
+  CaseDefinition3 convert() const { return convert_case<3>(loaded_.message, loaded_.source); }
+
+  LoadedCase loaded_ = test::valid_3d_case();
+};
+
+TEST_F(CaseConversion3d, TheCaseDeclaresItsDimension) {
+  EXPECT_EQ(case_dimension(loaded_.message), 3);
+  const AnyCaseDefinition any = convert_any_case(loaded_.message, loaded_.source);
+  ASSERT_TRUE(std::holds_alternative<CaseDefinition3>(any));
+  EXPECT_EQ(std::get<CaseDefinition3>(any).name, "spheres_3d");
+}
+
+TEST_F(CaseConversion3d, IsNotRead2d) {
+  try {
+    convert_case(loaded_.message, loaded_.source);
+    FAIL() << "a 3D case converted to 2D";
+  } catch (const CaseError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("valid_3d.case.txtpb:9:1: dimension: the case is 3D, but a 2D case is "
+                                        "expected here"));
+  }
+}
+
+TEST_F(CaseConversion3d, MaterialsCarryTheirElasticConstants) {
+  const WorldDef3 world = convert().world;
+  ASSERT_EQ(world.materials.size(), 3u);
+  EXPECT_EQ(world.materials[0].youngs_modulus, 2.1e11);
+  EXPECT_EQ(world.materials[0].poisson_ratio, 0.28);
+  EXPECT_EQ(world.materials[1].youngs_modulus, 6.3e10);
+  EXPECT_EQ(world.materials[2].youngs_modulus, 0);  // a rigid wall
+}
+
+TEST_F(CaseConversion3d, HertzMindlinLawsAndTheirDamping) {
+  const WorldDef3 world = convert().world;
+  ASSERT_EQ(world.contact_models.size(), 3u);
+  const ContactModelDef& fallback = world.contact_models[0];
+  EXPECT_EQ(fallback.material_a, kInvalidId);
+  EXPECT_EQ(fallback.law, ContactLaw::kHertzMindlin);
+  EXPECT_EQ(fallback.hertz.restitution, 0.8);
+  EXPECT_TRUE(fallback.hertz.tangential);
+  const ContactModelDef& steel_wall = world.contact_models[1];
+  EXPECT_EQ(steel_wall.material_a, 0);
+  EXPECT_EQ(steel_wall.material_b, 2);
+  EXPECT_EQ(steel_wall.law, ContactLaw::kHertzMindlin);
+  EXPECT_EQ(steel_wall.hertz.damping_ratio, 0.05);
+  EXPECT_FALSE(steel_wall.hertz.restitution);
+  EXPECT_FALSE(steel_wall.hertz.tangential);
+  EXPECT_EQ(steel_wall.friction, 0.5);
+}
+
+TEST_F(CaseConversion3d, ParticleSourcesExpandInOrder) {
+  const std::vector<ParticleDef3> particles = convert().world.particles;
+  ASSERT_EQ(particles.size(), 21u);
+  // The single sphere.
+  EXPECT_EQ(particles[0].position, Vec3(0.005, 0.005, 0.004));
+  EXPECT_EQ(particles[0].velocity, Vec3(0, 0, -0.1));
+  EXPECT_EQ(particles[0].angular_velocity, Vec3(1, 2, 3));
+  EXPECT_EQ(particles[0].material, 1);
+  // The lattice: 3 columns x 2 rows x 2 layers, the second layer above the first.
+  EXPECT_EQ(particles[1].position, Vec3(0.001, 0.001, 0.001));
+  EXPECT_NEAR(particles[7].position.z(), 0.003, 1e-15);
+  EXPECT_NEAR(particles[12].position.x(), 0.005, 1e-15);
+  EXPECT_NEAR(particles[12].position.y(), 0.003, 1e-15);
+  // The random packing, inside its box.
+  for (std::size_t i = 13; i < 18; ++i) {
+    EXPECT_EQ(particles[i].radius, 0.0008);
+    EXPECT_GE(particles[i].position.z(), 0.0068);
+    EXPECT_LE(particles[i].position.z(), 0.0092);
+  }
+  // spheres_3d.csv, shifted by the offset, of the source's material.
+  EXPECT_EQ(particles[18].position, Vec3(0.008, 0.002, 0.001));
+  EXPECT_EQ(particles[19].position, Vec3(0.008, 0.006, 0.001));
+  EXPECT_EQ(particles[20].radius, 0.0009);
+  EXPECT_EQ(particles[20].material, 0);
+}
+
+TEST_F(CaseConversion3d, WallsAreRectanglesFacingTheParticles) {
+  const std::vector<WallDef3> walls = convert().world.walls;
+  ASSERT_EQ(walls.size(), 6u);
+  EXPECT_EQ(walls[0].name, "floor");
+  EXPECT_EQ(walls[0].point, Vec3(0, 0, 0));
+  EXPECT_EQ(walls[0].direction, Vec3(1, 0, 0));
+  EXPECT_EQ(walls[0].direction2, Vec3(0, 1, 0));
+  EXPECT_EQ(walls[0].h2, 0.01);
+  EXPECT_EQ(walls[1].k2, 0.012);
+  EXPECT_EQ(walls[4].direction, Vec3(1, 0, 0));  // direction { x: 2 }, normalised
+  EXPECT_EQ(walls[2].material, 2);
+  // Each normal u x v points into the box.
+  const Vec3 inward[] = {{0, 0, 1}, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, -1}};
+  for (std::size_t i = 0; i < walls.size(); ++i) {
+    EXPECT_EQ(walls[i].direction.cross(walls[i].direction2), inward[i]) << walls[i].name;
+  }
+}
+
+TEST_F(CaseConversion3d, NearlyPerpendicularSidesAreMadeOrthonormal) {
+  auto& direction2 = *loaded_.message.mutable_wall(0)->mutable_direction2();
+  direction2.set_x(1e-7);
+  direction2.set_y(3);
+  const WallDef3 floor = convert().world.walls[0];
+  EXPECT_EQ(floor.direction.dot(floor.direction2), 0);
+  EXPECT_NEAR(floor.direction2.norm(), 1, 1e-15);
+}
+
+TEST_F(CaseConversion3d, GravityStagesAndMotion) {
+  const CaseDefinition3 def = convert();
+  EXPECT_EQ(def.world.gravity, Vec3(0, 0, -9.81));
+  EXPECT_EQ(def.world.time_step_fraction, 0.2);
+  ASSERT_EQ(def.stages.size(), 2u);
+  EXPECT_EQ(def.stages[0].until.kinetic_energy_below, 1e-15);
+  ASSERT_EQ(def.stages[1].wall_motions.size(), 1u);
+  EXPECT_EQ(def.stages[1].wall_motions[0].first, 5);  // "lid"
+  EXPECT_EQ(def.stages[1].wall_motions[0].second.velocity, Vec3(0, 0, -0.05));
+  EXPECT_EQ(def.stages[1].wall_motions[0].second.angular_velocity, Vec3(0, 0, 0.1));
+  ASSERT_EQ(def.output.probes.size(), 1u);
+  EXPECT_EQ(def.output.probes[0].second, 2);
+}
+
+TEST_F(CaseConversion3d, TheEngineAcceptsTheResult) {
+  const World3 world(convert().world);
+  EXPECT_EQ(world.particle_count(), 21);
+  EXPECT_EQ(world.wall_count(), 6);
+  EXPECT_EQ(world.find_wall("lid"), 5);
+}
+
+TEST_F(CaseConversion3d, AMissingParticleFileIsNamed) {
+  loaded_.message.mutable_particles(3)->mutable_csv_file()->set_path("no_such.csv");
+  try {
+    convert();
+    FAIL() << "a missing particle file converted";
+  } catch (const CaseError& error) {
+    ASSERT_EQ(error.problems().size(), 1u);
+    EXPECT_THAT(error.problems()[0], HasSubstr("valid_3d.case.txtpb:55:13: particles[3].csv_file: " +
+                                               test::data_path("no_such.csv").string() +
+                                               ": cannot read the particle file: No such file or directory"));
+  }
+}
+
+TEST_F(CaseConversion3d, MalformedParticleFileRowsAreNamedByLine) {
+  loaded_.message.mutable_particles(3)->mutable_csv_file()->set_path("malformed_3d.csv");
+  try {
+    convert();
+    FAIL() << "a malformed particle file converted";
+  } catch (const CaseError& error) {
+    ASSERT_EQ(error.problems().size(), 3u);
+    const std::string file = test::data_path("malformed_3d.csv").string();
+    EXPECT_THAT(error.problems()[0], HasSubstr("particles[3].csv_file: " + file +
+                                               ":4: expected 4 values (x,y,z,r), got 3 (x,y,r is a 2D row; the case "
+                                               "is 3D)"));
+    EXPECT_THAT(error.problems()[1], HasSubstr(file + ":5: column 2 (y): \"north\" is not a number"));
+    EXPECT_THAT(error.problems()[2], HasSubstr(file + ":6: column 4 (r): the radius must be > 0 (got -0.001)"));
+  }
+}
+
+TEST_F(CaseConversion3d, AnAbsoluteParticleFilePathStaysAsItIs) {
+  loaded_.message.mutable_particles(3)->mutable_csv_file()->set_path(test::data_path("spheres_3d.csv").string());
+  loaded_.source.directory = "/nowhere";
+  EXPECT_EQ(convert().world.particles.size(), 21u);
+}
+
+TEST_F(CaseConversion3d, ProbeIdsAreCheckedOnceTheParticleFilesAreRead) {
+  loaded_.message.mutable_output()->mutable_probe(0)->set_second(21);
+  try {
+    convert();
+    FAIL() << "a probe of a particle that does not exist converted";
+  } catch (const CaseError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("output.probe[0].second: no particle with id 21 (the case defines 21 "
+                                        "particles, ids 0 to 20)"));
+  }
+}
+
+template <int Dim>
+int built_particles(const CaseDefinitionT<Dim>& def) {
+  return BasicWorld<Dim>(def.world).particle_count();
+}
+
+// Every case the repository ships converts, and the engine accepts it.
+TEST(ShippedCases, ConvertAndBuild) {
+  int count = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(DEM_CASES_DIR)) {
+    if (!entry.path().string().ends_with(".case.txtpb")) continue;
+    SCOPED_TRACE(entry.path().string());
+    const LoadedCase loaded = load_case_file(entry.path());
+    std::visit([](const auto& def) { EXPECT_GT(built_particles(def), 0); },
+               convert_any_case(loaded.message, loaded.source));
+    ++count;
+  }
+  EXPECT_GE(count, 12);
 }
 
 }  // namespace

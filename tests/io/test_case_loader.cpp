@@ -62,6 +62,23 @@ TEST(CaseLoader, TextErrorsUseTheGivenSourceName) {
               HasSubstr("case.txtpb:2:5: Non-repeated field \"name\" is specified multiple times."));
 }
 
+TEST(CaseLoader, AHertzLawTakesOneKindOfDamping) {
+  EXPECT_THAT(text_error("contact_model {\n  hertz_mindlin { damping_ratio: 0.1 restitution: 0.5 }\n}\n"),
+              HasSubstr("case.txtpb:2:49: Field \"restitution\" is specified along with field \"damping_ratio\", "
+                        "another member of oneof \"damping\""));
+}
+
+TEST(CaseLoader, AContactModelTakesOneLaw) {
+  EXPECT_THAT(text_error("contact_model {\n  linear { normal_stiffness: 1 }\n  hertz_mindlin {}\n}\n"),
+              HasSubstr("case.txtpb:3:17: Field \"hertz_mindlin\" is specified along with field \"linear\""));
+}
+
+TEST(CaseLoader, RelativeFilesAreFoundBesideTheCase) {
+  EXPECT_EQ(load_case_file(test::data_path("valid_3d.case.txtpb")).source.directory,
+            test::data_path("valid_3d.case.txtpb").parent_path());
+  EXPECT_EQ(parse_case_text("").source.directory, std::filesystem::path());
+}
+
 TEST(CaseLoader, MissingFileIsNamed) {
   const auto path = test::data_path("no_such.case.txtpb");
   EXPECT_THAT(load_error(path), HasSubstr(path.string() + ": cannot read the case file: No such file or directory"));

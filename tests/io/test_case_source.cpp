@@ -40,7 +40,7 @@ TEST(CaseSource, UnknownPlacesGiveTheNameAlone) {
 }
 
 TEST(CaseSource, WithoutLocationsOrName) {
-  EXPECT_EQ(describe_problem({"request 3", nullptr}, "wall[0].h2", "bad"), "request 3: wall[0].h2: bad");
+  EXPECT_EQ(describe_problem({.name = "request 3"}, "wall[0].h2", "bad"), "request 3: wall[0].h2: bad");
   EXPECT_EQ(describe_problem({}, "wall[0].h2", "bad"), "wall[0].h2: bad");
 }
 

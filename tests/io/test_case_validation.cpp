@@ -26,7 +26,7 @@ TEST(CaseValidation, ReportsEveryProblemAtOnce) {
   c.mutable_material(0)->set_friction(-1);
   c.mutable_stage(2)->mutable_wall(0)->set_wall("lid");
   try {
-    validate_case(c, {"case.txtpb", nullptr});
+    validate_case(c, {.name = "case.txtpb"});
     FAIL() << "the case validated";
   } catch (const CaseError& error) {
     ASSERT_EQ(error.problems().size(), 3u);
@@ -64,6 +64,12 @@ proto::Particle& disc(proto::Case& c) { return *c.mutable_particles(1)->mutable_
 proto::RandomPacking& packing(proto::Case& c) { return *c.mutable_particles(2)->mutable_random_packing(); }
 proto::Until& until(proto::Case& c, int stage) { return *c.mutable_stage(stage)->mutable_until(); }
 proto::WallMotion& command(proto::Case& c) { return *c.mutable_stage(1)->mutable_wall(0)->mutable_motion(); }
+proto::ParticleFile& new_particle_file(proto::Case& c) {
+  auto& file = *c.add_particles()->mutable_csv_file();
+  file.set_path("more.csv");
+  file.set_material("disc");
+  return file;
+}
 
 const Mistake kMistakes[] = {
     // Materials
@@ -83,6 +89,12 @@ const Mistake kMistakes[] = {
      "material[0].density: must be a finite number (got inf)"},
     {"NaNFriction", [](auto& c) { c.mutable_material(0)->set_friction(std::nan("")); },
      "material[0].friction: must be a finite number (got nan)"},
+    {"NegativeYoungsModulus", [](auto& c) { c.mutable_material(0)->set_youngs_modulus(-1); },
+     "material[0].youngs_modulus: must be >= 0 (got -1)"},
+    {"PoissonRatioHalf", [](auto& c) { c.mutable_material(2)->set_poisson_ratio(0.5); },
+     "material[2].poisson_ratio: must be in (-1, 0.5) (got 0.5)"},
+    {"PoissonRatioMinusOne", [](auto& c) { c.mutable_material(1)->set_poisson_ratio(-1); },
+     "material[1].poisson_ratio: must be in (-1, 0.5) (got -1)"},
 
     // Contact models
     {"ZeroNormalStiffness", [](auto& c) { c.mutable_contact_model(0)->mutable_linear()->set_normal_stiffness(0); },
@@ -90,7 +102,40 @@ const Mistake kMistakes[] = {
     {"NegativeShearStiffness", [](auto& c) { c.mutable_contact_model(1)->mutable_linear()->set_shear_stiffness(-1); },
      "contact_model[1].linear.shear_stiffness: must be >= 0 (got -1)"},
     {"ContactModelWithoutLaw", [](auto& c) { c.mutable_contact_model(2)->clear_linear(); },
-     "contact_model[2]: has no law; set linear"},
+     "contact_model[2]: has no law; set linear { normal_stiffness: ... shear_stiffness: ... }, linear_restitution, "
+     "hertz_mindlin or hertz_linear_tangential"},
+    {"RestitutionLawZeroStiffness",
+     [](auto& c) { c.mutable_contact_model(0)->mutable_linear_restitution()->set_restitution(0.5); },
+     "contact_model[0].linear_restitution.normal_stiffness: must be > 0 (got 0)"},
+    {"RestitutionLawNegativeShearStiffness",
+     [](auto& c) { c.mutable_contact_model(0)->mutable_linear_restitution()->set_shear_stiffness(-1); },
+     "contact_model[0].linear_restitution.shear_stiffness: must be >= 0 (got -1)"},
+    {"RestitutionLawWithoutRestitution",
+     [](auto& c) { c.mutable_contact_model(0)->mutable_linear_restitution()->set_normal_stiffness(1e6); },
+     "contact_model[0].linear_restitution.restitution: must be in (0, 1] (got 0)"},
+    {"HertzNegativeDampingRatio",
+     [](auto& c) { c.mutable_contact_model(0)->mutable_hertz_mindlin()->set_damping_ratio(-0.1); },
+     "contact_model[0].hertz_mindlin.damping_ratio: must be >= 0 (got -0.1)"},
+    {"HertzRestitutionAboveOne",
+     [](auto& c) { c.mutable_contact_model(0)->mutable_hertz_linear_tangential()->set_restitution(1.5); },
+     "contact_model[0].hertz_linear_tangential.restitution: must be in (0, 1] (got 1.5)"},
+    {"HertzWithoutYoungsModulus",
+     [](auto& c) {
+       for (auto& model : *c.mutable_contact_model()) model.mutable_hertz_mindlin();
+     },
+     "material[0].youngs_modulus: must be > 0 for a material particles are made of, as a Hertz law serves its "
+     "contacts (got 0)"},
+    {"TwoLawsForParticles", [](auto& c) { c.mutable_contact_model(0)->mutable_hertz_mindlin(); },
+     "contact_model[2]: uses linear for \"disc\" and \"glass\", but contact_model[0] uses hertz_mindlin for "
+     "\"disc\" with itself; one law must serve every particle-particle contact"},
+    {"TwoLawsForWalls",
+     [](auto& c) {
+       auto& law = *c.mutable_contact_model(1)->mutable_linear_restitution();
+       law.set_normal_stiffness(2e6);
+       law.set_restitution(0.5);
+     },
+     "contact_model[2]: uses linear for \"steel\" and \"glass\", but contact_model[1] uses linear_restitution for "
+     "\"disc\" and \"steel\"; one law must serve every particle-wall contact"},
     {"ContactModelUnknownMaterial", [](auto& c) { c.mutable_contact_model(1)->set_materials(1, "iron"); },
      "contact_model[1].materials[1]: unknown material \"iron\" (the case defines \"disc\", \"glass\", \"steel\")"},
     {"ContactModelThreeMaterials", [](auto& c) { c.mutable_contact_model(1)->add_materials("glass"); },
@@ -117,8 +162,11 @@ const Mistake kMistakes[] = {
 
     // Particles
     {"NoParticles", [](auto& c) { c.clear_particles(); }, "particles: the case defines no particles"},
+    {"DimensionFour", [](auto& c) { c.set_dimension(4); }, "dimension: must be 2 or 3 (got 4); leave it out for 2"},
+    {"UnknownPlanarParticle", [](auto& c) { c.set_planar_particle(static_cast<proto::Case::PlanarParticle>(7)); },
+     "planar_particle: must be DISC or SPHERE (got 7)"},
     {"EmptySource", [](auto& c) { c.mutable_particles(1)->Clear(); },
-     "particles[1]: is empty; set particle, lattice or random_packing"},
+     "particles[1]: is empty; set particle, lattice, random_packing or csv_file"},
     {"ParticleNegativeRadius", [](auto& c) { disc(c).set_radius(-0.01); },
      "particles[1].particle.radius: must be > 0 (got -0.01)"},
     {"ParticleZeroRadius", [](auto& c) { disc(c).clear_radius(); },
@@ -127,6 +175,22 @@ const Mistake kMistakes[] = {
      "particles[1].particle.material: must name a material"},
     {"ParticleInfiniteVelocity", [](auto& c) { disc(c).mutable_velocity()->set_y(-kInfinity); },
      "particles[1].particle.velocity.y: must be a finite number (got -inf)"},
+    {"ParticleZIn2d", [](auto& c) { disc(c).mutable_position()->set_z(0.01); },
+     "particles[1].particle.position.z: must be 0 in a 2D case (got 0.01); set dimension: 3 for a 3D case"},
+    {"ParticleSpinVectorIn2d", [](auto& c) { disc(c).mutable_angular_velocity_3d()->set_x(1); },
+     "particles[1].particle.angular_velocity_3d: is for 3D cases only (this case is 2D); set dimension: 3 for a 3D "
+     "case"},
+    {"LatticeLayersIn2d", [](auto& c) { lattice(c).set_layers(2); },
+     "particles[0].lattice.layers: is for 3D cases only (this case is 2D)"},
+    {"PackingZIn2d", [](auto& c) { packing(c).mutable_max()->set_z(0.1); },
+     "particles[2].random_packing.max.z: must be 0 in a 2D case (got 0.1)"},
+    {"ParticleFileWithoutPath", [](auto& c) { new_particle_file(c).clear_path(); },
+     "particles[3].csv_file.path: must name a CSV file of particles (lines of x,y,r), relative to the case file's "
+     "directory"},
+    {"ParticleFileUnknownMaterial", [](auto& c) { new_particle_file(c).set_material("sand"); },
+     "particles[3].csv_file.material: unknown material \"sand\""},
+    {"ParticleFileOffsetZIn2d", [](auto& c) { new_particle_file(c).mutable_offset()->set_z(1); },
+     "particles[3].csv_file.offset.z: must be 0 in a 2D case (got 1)"},
     {"LatticeUnknownMaterial", [](auto& c) { lattice(c).set_material("sand"); },
      "particles[0].lattice.material: unknown material \"sand\""},
     {"LatticeNegativeRadius", [](auto& c) { lattice(c).set_radius(-1); },
@@ -170,6 +234,11 @@ const Mistake kMistakes[] = {
      "wall[0]: has no orientation; set direction"},
     {"WallInfiniteAngle", [](auto& c) { c.mutable_wall(1)->set_angle_deg(kInfinity); },
      "wall[1].angle_deg: must be a finite number (got inf)"},
+    {"WallDirection2In2d", [](auto& c) { c.mutable_wall(0)->mutable_direction2()->set_y(1); },
+     "wall[0].direction2: is for 3D cases only (this case is 2D)"},
+    {"WallK2In2d", [](auto& c) { c.mutable_wall(0)->set_k2(1); }, "wall[0].k2: is for 3D cases only"},
+    {"WallDirectionZIn2d", [](auto& c) { c.mutable_wall(2)->mutable_direction()->set_z(1); },
+     "wall[2].direction.z: must be 0 in a 2D case (got 1)"},
     {"WallUnknownMaterial", [](auto& c) { c.mutable_wall(1)->set_material("iron"); },
      "wall[1].material: unknown material \"iron\""},
     {"WallServoWithoutGain", [](auto& c) { c.mutable_wall(2)->mutable_motion()->mutable_servo()->set_max_speed(1); },
@@ -194,6 +263,12 @@ const Mistake kMistakes[] = {
      "damping.contact_beta: must be >= 0 (got -1e-05)"},
     {"NegativeGlobalDamping", [](auto& c) { c.mutable_damping()->set_global_alpha(-2); },
      "damping.global_alpha: must be >= 0 (got -2)"},
+    {"NegativeRotationalDamping", [](auto& c) { c.mutable_damping()->set_global_alpha_rotation(-1); },
+     "damping.global_alpha_rotation: must be >= 0 (got -1)"},
+    {"LocalDampingOfOne", [](auto& c) { c.mutable_damping()->set_local_alpha(1.0); },
+     "damping.local_alpha: must be in [0, 1) (got 1)"},
+    {"NegativeLocalRotationalDamping", [](auto& c) { c.mutable_damping()->set_local_alpha_rotation(-0.1); },
+     "damping.local_alpha_rotation: must be in [0, 1) (got -0.1)"},
     {"TimeStepFractionAboveOne", [](auto& c) { c.mutable_time_step()->set_fraction(1.5); },
      "time_step.fraction: must be in (0, 1] (got 1.5)"},
     {"NegativeTimeStepFraction", [](auto& c) { c.mutable_time_step()->set_fraction(-0.1); },
@@ -202,6 +277,8 @@ const Mistake kMistakes[] = {
      "time_step.fixed: must be >= 0 (got -1e-06)"},
     {"NaNGravity", [](auto& c) { c.mutable_gravity()->set_x(std::nan("")); },
      "gravity.x: must be a finite number (got nan)"},
+    {"GravityZIn2d", [](auto& c) { c.mutable_gravity()->set_z(-9.81); },
+     "gravity.z: must be 0 in a 2D case (got -9.81); set dimension: 3 for a 3D case"},
     {"NegativeContactTolerance", [](auto& c) { c.mutable_numerics()->set_contact_tolerance(-0.001); },
      "numerics.contact_tolerance: must be >= 0 (got -0.001)"},
     {"TooManyThreads", [](auto& c) { c.mutable_numerics()->set_threads(3'000'000'000u); },
@@ -220,6 +297,9 @@ const Mistake kMistakes[] = {
      "stage[1].wall[0].motion.servo.max_speed: must be > 0 (got 0)"},
     {"StageServoInfiniteTarget", [](auto& c) { command(c).mutable_servo()->set_target_force(kInfinity); },
      "stage[1].wall[0].motion.servo.target_force: must be a finite number (got inf)"},
+    {"StageSpinVectorIn2d",
+     [](auto& c) { c.mutable_stage(2)->mutable_wall(0)->mutable_motion()->mutable_angular_velocity_3d()->set_z(1); },
+     "stage[2].wall[0].motion.angular_velocity_3d: is for 3D cases only"},
     {"StageWithoutCycles", [](auto& c) { c.mutable_stage(2)->clear_cycles(); }, "stage[2].cycles: must be > 0"},
     {"StageNegativeDamping", [](auto& c) { c.mutable_stage(1)->mutable_damping()->set_global_alpha(-1); },
      "stage[1].damping.global_alpha: must be >= 0 (got -1)"},
@@ -251,6 +331,99 @@ const Mistake kMistakes[] = {
 
 INSTANTIATE_TEST_SUITE_P(CaseValidation, CaseMistake, ::testing::ValuesIn(kMistakes),
                          [](const auto& test) { return test.param.name; });
+
+// The same, starting from the valid 3D case.
+class CaseMistake3d : public ::testing::TestWithParam<Mistake> {};
+
+TEST_P(CaseMistake3d, IsReportedWithItsField) {
+  proto::Case c = test::valid_3d_case().message;
+  GetParam().make(c);
+  EXPECT_THAT(test::problem_text(c), HasSubstr(GetParam().expected));
+  EXPECT_THROW(validate_case(c), CaseError);
+}
+
+proto::Particle& sphere(proto::Case& c) { return *c.mutable_particles(0)->mutable_particle(); }
+
+const Mistake kMistakes3d[] = {
+    {"PlanarSphereIn3d", [](auto& c) { c.set_planar_particle(proto::Case::SPHERE); },
+     "planar_particle: is for 2D cases only (this case is 3D); 3D particles are spheres"},
+    {"ScalarSpinIn3d", [](auto& c) { sphere(c).set_angular_velocity(1); },
+     "particles[0].particle.angular_velocity: is for 2D cases only (this case is 3D); set angular_velocity_3d { x: "
+     "... y: ... z: ... }"},
+    {"NaNSpinVector", [](auto& c) { sphere(c).mutable_angular_velocity_3d()->set_z(std::nan("")); },
+     "particles[0].particle.angular_velocity_3d.z: must be a finite number (got nan)"},
+    {"InfiniteZ", [](auto& c) { sphere(c).mutable_position()->set_z(kInfinity); },
+     "particles[0].particle.position.z: must be a finite number (got inf)"},
+    {"PackingFlatBox", [](auto& c) { c.mutable_particles(2)->mutable_random_packing()->mutable_max()->set_z(0.006); },
+     "particles[2].random_packing.max: must exceed min along x, y and z (min (0, 0, 0.006), max (0.01, 0.01, "
+     "0.006))"},
+    {"PackingSphereTooBig",
+     [](auto& c) { c.mutable_particles(2)->mutable_random_packing()->mutable_size(0)->set_radius(0.003); },
+     "particles[2].random_packing.size[0].radius: spheres of radius 0.003 do not fit in the box (0.01 x 0.01 x "},
+    {"AngleDegIn3d", [](auto& c) { c.mutable_wall(0)->set_angle_deg(0); },
+     "wall[0].angle_deg: is for 2D cases only (this case is 3D); set direction { x: ... y: ... z: ... } and "
+     "direction2"},
+    {"WallWithoutOrientation3d", [](auto& c) { c.mutable_wall(0)->clear_direction(); },
+     "wall[0]: has no orientation; set direction { x: ... y: ... z: ... } and direction2"},
+    {"WallWithoutDirection2", [](auto& c) { c.mutable_wall(3)->clear_direction2(); },
+     "wall[3].direction2: must be set for a 3D wall"},
+    {"WallZeroDirection2", [](auto& c) { c.mutable_wall(3)->mutable_direction2()->Clear(); },
+     "wall[3].direction2: must not be zero-length"},
+    {"WallSidesNotPerpendicular", [](auto& c) { c.mutable_wall(0)->mutable_direction2()->set_x(1); },
+     "wall[0].direction2: must be perpendicular to direction (they are 45 degrees apart)"},
+    {"WallK2BelowK1", [](auto& c) { c.mutable_wall(1)->set_k2(0); }, "wall[1].k2: must be greater than k1 (0 <= 0)"},
+    {"WallInfiniteK1", [](auto& c) { c.mutable_wall(1)->set_k1(-kInfinity); },
+     "wall[1].k1: must be a finite number (got -inf)"},
+    {"StageScalarSpinIn3d",
+     [](auto& c) { c.mutable_stage(1)->mutable_wall(0)->mutable_motion()->set_angular_velocity(1); },
+     "stage[1].wall[0].motion.angular_velocity: is for 2D cases only (this case is 3D)"},
+    {"ServoAndSpinVector",
+     [](auto& c) {
+       auto& motion = *c.mutable_wall(5)->mutable_motion();
+       motion.mutable_servo()->set_gain(1e-3);
+       motion.mutable_servo()->set_max_speed(1);
+       motion.mutable_angular_velocity_3d()->set_x(1);
+     },
+     "wall[5].motion: sets both servo and velocity/angular_velocity"},
+    {"HertzParticleWithoutYoungsModulus", [](auto& c) { c.mutable_material(1)->clear_youngs_modulus(); },
+     "material[1].youngs_modulus: must be > 0 for a material particles are made of, as a Hertz law serves its "
+     "contacts (got 0)"},
+    {"LinearWallLawAmongHertz",
+     [](auto& c) {
+       auto& law = *c.mutable_contact_model(2)->mutable_linear();
+       law.set_normal_stiffness(1e6);
+     },
+     "contact_model[2]: uses linear for \"glass\" and \"wall\", but contact_model[1] uses hertz_mindlin for "
+     "\"steel\" and \"wall\"; one law must serve every particle-wall contact (particle-particle and particle-wall "
+     "laws may differ)"},
+    {"ParticleFileWithoutPath3d", [](auto& c) { c.mutable_particles(3)->mutable_csv_file()->clear_path(); },
+     "particles[3].csv_file.path: must name a CSV file of particles (lines of x,y,z,r)"},
+};
+
+INSTANTIATE_TEST_SUITE_P(CaseValidation, CaseMistake3d, ::testing::ValuesIn(kMistakes3d),
+                         [](const auto& test) { return test.param.name; });
+
+TEST(CaseValidation, TheValid3dCaseHasNoProblems) { EXPECT_EQ(test::problem_text(test::valid_3d_case().message), ""); }
+
+TEST(CaseValidation, ARigidWallMaterialNeedsNoYoungsModulus) {
+  const proto::Case c = test::valid_3d_case().message;
+  ASSERT_EQ(c.material(2).youngs_modulus(), 0);  // "wall" is only used by walls
+  EXPECT_EQ(test::problem_text(c), "");
+}
+
+TEST(CaseValidation, SidesPerpendicularToAFewDigitsAreAccepted) {
+  proto::Case c = test::valid_3d_case().message;
+  c.mutable_wall(0)->mutable_direction2()->set_x(1e-7);
+  EXPECT_EQ(test::problem_text(c), "");
+}
+
+// Particle files are read at conversion: until then their size is unknown,
+// so probe ids beyond the other sources are not refused here.
+TEST(CaseValidation, ProbeIdsBeyondAParticleFileWaitForConversion) {
+  proto::Case c = test::valid_3d_case().message;
+  c.mutable_output()->mutable_probe(0)->set_second(20);
+  EXPECT_EQ(test::problem_text(c), "");
+}
 
 TEST(CaseValidation, AWallOnlyMaterialNeedsNoDensity) {
   proto::Case c = test::valid_case();

@@ -1,6 +1,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <charconv>
 #include <fstream>
 #include <sstream>
@@ -175,6 +176,112 @@ TEST_F(CsvWriters, AnUnwritableFileIsNamed) {
   } catch (const std::runtime_error& error) {
     EXPECT_THAT(error.what(), HasSubstr("cannot write " + (directory_ / "particles.csv").string()));
   }
+}
+
+// The 3D counterpart: two overlapping spheres resting on a floor rectangle,
+// a third apart from both, cycled once.
+class CsvWriters3d : public ::testing::Test {
+ protected:
+  CsvWriters3d() : world_(make_world()) { world_.cycle(1); }
+  ~CsvWriters3d() override { std::filesystem::remove_all(directory_); }
+
+  static WorldDef3 make_world() {
+    WorldDef3 def;
+    def.materials.push_back({"sphere", 1000, 0.5, 0});
+    def.contact_models.push_back({});
+    def.particles.push_back({Vec3(0.0, 0.0, 0.0099), 0.01, 0, Vec3(0.1 / 3, 0, 0), Vec3(0, 0, 0.5)});
+    def.particles.push_back({Vec3(0.0199, 0.0, 0.0099), 0.01, 0, Vec3::Zero(), Vec3::Zero()});
+    def.particles.push_back({Vec3(0.1, 0.05, 0.05), 0.01, 0, Vec3::Zero(), Vec3::Zero()});
+    WallDef3 floor;
+    floor.name = "floor";
+    floor.point = Vec3(-0.05, -0.05, 0);
+    floor.h2 = 0.2;
+    floor.k2 = 0.1;
+    def.walls.push_back(floor);
+    def.fixed_time_step = 1e-6;
+    return def;
+  }
+
+  std::filesystem::path directory_ =
+      test::fresh_directory(std::string("3d_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  World3 world_;
+};
+
+TEST_F(CsvWriters3d, WallsHaveThreeComponentsAndTwoEccentricities) {
+  WallsCsv3 walls(directory_);
+  walls.write(world_);
+  const auto rows = read_csv(directory_ / "walls.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0], (Row{"cycle", "time", "wall", "fx", "fy", "fz", "moment_x", "moment_y", "moment_z", "normal_force",
+                          "contacts", "eccentricity_u", "eccentricity_v", "x", "y", "z", "dx", "dy", "dz"}));
+  const WallMeasure3 measure = world_.wall_measures()[0];
+  const Row& row = rows[1];
+  EXPECT_EQ(row[2], "floor");
+  EXPECT_EQ(number(row[5]), measure.force.z());
+  EXPECT_EQ(number(row[6]), measure.moment.x());
+  EXPECT_EQ(number(row[8]), measure.moment.z());
+  EXPECT_EQ(number(row[9]), measure.normal_force);
+  EXPECT_EQ(row[10], "2");
+  EXPECT_EQ(number(row[11]), measure.eccentricity.x());
+  EXPECT_EQ(number(row[12]), measure.eccentricity.y());
+  EXPECT_EQ(number(row[13]), -0.05);
+  EXPECT_EQ(number(row[18]), measure.displacement.z());
+  EXPECT_GT(measure.normal_force, 0);
+}
+
+TEST_F(CsvWriters3d, AssemblyAndProbesKeepTheir2dColumns) {
+  AssemblyCsv assembly(directory_);
+  assembly.write(world_);
+  ProbesCsv probes(directory_, {{"pair", 0, 1}});
+  probes.write(world_);
+  const auto assembly_rows = read_csv(directory_ / "assembly.csv");
+  ASSERT_EQ(assembly_rows.size(), 2u);
+  EXPECT_EQ(number(assembly_rows[1][2]), world_.assembly_measures().kinetic_energy);
+  const auto probe_rows = read_csv(directory_ / "probes.csv");
+  ASSERT_EQ(probe_rows.size(), 2u);
+  EXPECT_EQ(number(probe_rows[1][3]), world_.contact_between(0, 1)->normal_force);
+  EXPECT_EQ(probe_rows[1][5], "1");
+}
+
+TEST_F(CsvWriters3d, ContactsHaveAPointANormalAndTheTangentialForce) {
+  write_contacts_csv(directory_, world_);
+  const auto rows = read_csv(directory_ / "contacts.csv");
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(rows[0], (Row{"first", "second_kind", "second", "x", "y", "z", "nx", "ny", "nz", "overlap", "normal_force",
+                          "shear_force", "tangential_x", "tangential_y", "tangential_z", "normal_damping",
+                          "shear_damping", "sliding"}));
+  for (const ContactRecord3& contact : world_.contacts()) {
+    const auto row = std::find_if(rows.begin() + 1, rows.end(), [&](const Row& r) {
+      return r[0] == std::to_string(contact.first) && r[1] == (contact.second_wall != kInvalidId ? "wall" : "particle");
+    });
+    ASSERT_NE(row, rows.end());
+    EXPECT_EQ(number((*row)[5]), contact.point.z());
+    EXPECT_EQ(number((*row)[8]), contact.normal.z());
+    EXPECT_EQ(number((*row)[10]), contact.normal_force);
+    EXPECT_EQ(number((*row)[12]), contact.tangential_force.x());
+    EXPECT_EQ(number((*row)[14]), contact.tangential_force.z());
+  }
+  EXPECT_EQ(rows[3][2], "floor");
+}
+
+TEST_F(CsvWriters3d, ParticlesHaveVectorsAndQuaternions) {
+  world_.cycle(10);
+  write_particles_csv(directory_, world_);
+  const auto rows = read_csv(directory_ / "particles.csv");
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(rows[0], (Row{"id", "x", "y", "z", "radius", "vx", "vy", "vz", "angular_velocity_x", "angular_velocity_y",
+                          "angular_velocity_z", "rotation_w", "rotation_x", "rotation_y", "rotation_z"}));
+  const ParticleViewT<3> particles = world_.particles();
+  for (int id = 0; id < 3; ++id) {
+    const Row& row = rows[id + 1];
+    EXPECT_EQ(number(row[3]), particles.position[id].z());
+    EXPECT_EQ(number(row[4]), particles.radius[id]);
+    EXPECT_EQ(number(row[7]), particles.velocity[id].z());
+    EXPECT_EQ(number(row[10]), particles.angular_velocity[id].z());
+    EXPECT_EQ(number(row[11]), particles.rotation[id].w());
+    EXPECT_EQ(number(row[14]), particles.rotation[id].z());
+  }
+  EXPECT_NE(number(rows[1][14]), 0);  // the first sphere spins about z
 }
 
 std::string field(const auto& value) {

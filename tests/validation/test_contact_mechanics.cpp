@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "box_settle.h"
 #include "contact_mechanics.h"
 #include "impact.h"
 #include "mindlin_loading.h"
@@ -114,6 +115,21 @@ TEST(ObliqueImpact, Randall5_4ThreeRegimesOfMaw) {
   EXPECT_GE(psi1_at_min, boundary);
   EXPECT_LE(psi1_at_min, 2.0 * boundary);
   EXPECT_LT(min_restitution, 0.95);
+}
+
+TEST(BoxSettle, FloorCarriesTheWeightAndTheEnergyBudgetCloses) {
+  const BoxSettleResult r = box_settle(DEM_CASES_DIR "/validation/box_settle.case.txtpb");
+  const EnergyBudget& e = r.energy;
+  std::printf("%d spheres at rest after %llu cycles: floor %.6e N of weight %.6e N (%+.4f%%); energy residual %+.4f%% "
+              "of the potential energy drop %.4e J (dashpots %.3e, friction %.3e, local damping %.3e, strain %.2e)\n",
+              r.particles, static_cast<unsigned long long>(r.cycles), r.floor_force, r.weight,
+              100.0 * (r.floor_force / r.weight - 1.0), 100.0 * e.residual() / e.gravity_work, e.gravity_work,
+              e.contact_damping, e.friction, e.local_damping, e.strain);
+  EXPECT_EQ(r.particles, 2000);
+  EXPECT_TRUE(r.at_rest);
+  EXPECT_NEAR(r.floor_force / r.weight, 1.0, 0.005);
+  EXPECT_LT(std::abs(e.residual()), 0.01 * e.gravity_work);
+  EXPECT_LT(e.kinetic, 1e-6 * e.gravity_work);
 }
 
 }  // namespace

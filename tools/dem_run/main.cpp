@@ -1,4 +1,4 @@
-// dem_run CASE --out DIR [--threads N] [--quiet]
+// dem_run CASE --out DIR [--threads N] [--quiet]: runs a 2D or 3D case.
 // Exit codes: 0 done; 1 any other failure (for example an unwritable output
 // directory); 2 bad command-line arguments; 3 a case that cannot be read,
 // parsed, validated or built (the message names the file and the field).

@@ -10,8 +10,9 @@ constexpr auto kRedrawInterval = std::chrono::milliseconds(200);
 
 }  // namespace
 
-void ProgressLine::show(int stage_index, int stage_count, const StageDef& stage, std::uint64_t stage_cycles,
-                        const World& world) {
+template <int Dim>
+void ProgressLine::show(int stage_index, int stage_count, const StageDefT<Dim>& stage, std::uint64_t stage_cycles,
+                        const BasicWorld<Dim>& world) {
   if (!enabled_) return;
   const auto now = std::chrono::steady_clock::now();
   if (now - last_shown_ < kRedrawInterval) return;
@@ -31,6 +32,9 @@ void ProgressLine::show(int stage_index, int stage_count, const StageDef& stage,
   std::fflush(stderr);
   width_ = text.size();
 }
+
+template void ProgressLine::show(int, int, const StageDef&, std::uint64_t, const World&);
+template void ProgressLine::show(int, int, const StageDef3&, std::uint64_t, const World3&);
 
 void ProgressLine::clear() {
   if (!enabled_ || width_ == 0) return;

@@ -18,7 +18,9 @@ class ProgressLine {
 
   // Redraws at most a few times a second: output intervals can be far
   // shorter than a terminal needs.
-  void show(int stage_index, int stage_count, const StageDef& stage, std::uint64_t stage_cycles, const World& world);
+  template <int Dim>
+  void show(int stage_index, int stage_count, const StageDefT<Dim>& stage, std::uint64_t stage_cycles,
+            const BasicWorld<Dim>& world);
 
   // Blanks the line so the summary that follows starts clean.
   void clear();
@@ -28,5 +30,8 @@ class ProgressLine {
   std::size_t width_ = 0;  // of the line on screen, to blank it
   std::chrono::steady_clock::time_point last_shown_{};
 };
+
+extern template void ProgressLine::show(int, int, const StageDef&, std::uint64_t, const World&);
+extern template void ProgressLine::show(int, int, const StageDef3&, std::uint64_t, const World3&);
 
 }  // namespace dem::run

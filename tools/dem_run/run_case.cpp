@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 #include <string>
+#include <variant>
 
 #include "dem/io/case_conversion.h"
 #include "dem/io/case_loader.h"
@@ -15,18 +16,19 @@
 #include "run_summary.h"
 
 namespace dem::run {
+namespace {
 
-void run_case(const RunOptions& options) {
-  const io::LoadedCase loaded = io::load_case_file(options.case_path);
-  io::CaseDefinition definition = io::convert_case(loaded.message, loaded.source);
+// The run itself, once per dimension.
+template <int Dim>
+void run_definition(io::CaseDefinitionT<Dim>& definition, const io::CaseSource& source, const RunOptions& options) {
   if (definition.stages.empty()) {
     throw io::CaseError(
-        io::describe_problem(loaded.source, "stage", "the case defines no stages, so there is nothing to run"));
+        io::describe_problem(source, "stage", "the case defines no stages, so there is nothing to run"));
   }
   if (options.threads) definition.world.threads = *options.threads;
 
-  World world(definition.world);
-  RunRecorder recorder(options.output_directory, definition.output);
+  BasicWorld<Dim> world(definition.world);
+  RunRecorder<Dim> recorder(options.output_directory, definition.output);
   ProgressLine progress(!options.quiet && isatty(fileno(stderr)) == 1);
   const bool summary = !options.quiet;
   if (summary) print_case_header(std::cout, definition, world);
@@ -34,9 +36,9 @@ void run_case(const RunOptions& options) {
   recorder.record(world);
   const auto stage_count = static_cast<int>(definition.stages.size());
   for (int i = 0; i < stage_count; ++i) {
-    const StageDef& stage = definition.stages[i];
+    const StageDefT<Dim>& stage = definition.stages[i];
     const std::uint64_t start = world.cycle_count();
-    const StageResult result = run_stage(world, stage, definition.output.interval, [&](const World& w) {
+    const StageResult result = run_stage(world, stage, definition.output.interval, [&](const BasicWorld<Dim>& w) {
       recorder.record(w);
       progress.show(i, stage_count, stage, w.cycle_count() - start, w);
       return true;
@@ -47,6 +49,14 @@ void run_case(const RunOptions& options) {
   }
   recorder.finish(world);
   if (summary) print_final_state(std::cout, world, recorder.files());
+}
+
+}  // namespace
+
+void run_case(const RunOptions& options) {
+  const io::LoadedCase loaded = io::load_case_file(options.case_path);
+  io::AnyCaseDefinition definition = io::convert_any_case(loaded.message, loaded.source);
+  std::visit([&](auto& def) { run_definition(def, loaded.source, options); }, definition);
 }
 
 }  // namespace dem::run

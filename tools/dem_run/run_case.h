@@ -13,8 +13,8 @@ struct RunOptions {
   bool quiet = false;          // no progress line and no summary
 };
 
-// Loads, validates and converts the case, builds the world and runs every
-// stage, writing the time series each output interval and the snapshots at
+// Loads, validates and converts the case, builds the world (2D or 3D, as
+// the case declares) and runs every stage, writing the time series each output interval and the snapshots at
 // the end. Throws io::CaseError for a bad case, DefinitionError when the
 // engine rejects it, std::runtime_error when an output cannot be written.
 void run_case(const RunOptions& options);

@@ -2,7 +2,8 @@
 
 namespace dem::run {
 
-RunRecorder::RunRecorder(const std::filesystem::path& directory, const io::OutputSettings& output)
+template <int Dim>
+RunRecorder<Dim>::RunRecorder(const std::filesystem::path& directory, const io::OutputSettings& output)
     : directory_(directory), contacts_file_(output.contacts_file), walls_(directory), assembly_(directory) {
   files_ = {walls_.path(), assembly_.path()};
   if (!output.probes.empty()) {
@@ -11,7 +12,8 @@ RunRecorder::RunRecorder(const std::filesystem::path& directory, const io::Outpu
   }
 }
 
-void RunRecorder::record(const World& world) {
+template <int Dim>
+void RunRecorder<Dim>::record(const BasicWorld<Dim>& world) {
   if (last_cycle_ == world.cycle_count()) return;
   last_cycle_ = world.cycle_count();
   walls_.write(world);
@@ -19,7 +21,8 @@ void RunRecorder::record(const World& world) {
   if (probes_) probes_->write(world);
 }
 
-void RunRecorder::finish(const World& world) {
+template <int Dim>
+void RunRecorder<Dim>::finish(const BasicWorld<Dim>& world) {
   if (contacts_file_) {
     io::write_contacts_csv(directory_, world);
     files_.push_back(directory_ / "contacts.csv");
@@ -27,5 +30,8 @@ void RunRecorder::finish(const World& world) {
   io::write_particles_csv(directory_, world);
   files_.push_back(directory_ / "particles.csv");
 }
+
+template class RunRecorder<2>;
+template class RunRecorder<3>;
 
 }  // namespace dem::run

@@ -1,5 +1,6 @@
 // The CSV tables of one run: the time series (walls, assembly, probes) as the
-// run goes, and the contact and particle snapshots at its end.
+// run goes, and the contact and particle snapshots at its end, with the
+// columns of the run's dimension.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +14,7 @@
 
 namespace dem::run {
 
+template <int Dim>
 class RunRecorder {
  public:
   // Creates the directory and the time-series files (probes.csv only when
@@ -21,10 +23,10 @@ class RunRecorder {
 
   // Writes a row for the world's current cycle unless one was written
   // already, so a stage's last cycle and the next stage's first are one row.
-  void record(const World& world);
+  void record(const BasicWorld<Dim>& world);
 
   // Writes contacts.csv (unless the case turned it off) and particles.csv.
-  void finish(const World& world);
+  void finish(const BasicWorld<Dim>& world);
 
   // Every file written so far, for the summary.
   const std::vector<std::filesystem::path>& files() const { return files_; }
@@ -32,11 +34,14 @@ class RunRecorder {
  private:
   std::filesystem::path directory_;
   bool contacts_file_;
-  io::WallsCsv walls_;
+  io::WallsCsvT<Dim> walls_;
   io::AssemblyCsv assembly_;
   std::optional<io::ProbesCsv> probes_;
   std::optional<std::uint64_t> last_cycle_;
   std::vector<std::filesystem::path> files_;
 };
+
+extern template class RunRecorder<2>;
+extern template class RunRecorder<3>;
 
 }  // namespace dem::run

@@ -19,19 +19,52 @@ bool has_condition(const StopConditions& until) {
   return until.kinetic_energy_below || until.out_of_balance_below || until.servo_tolerance;
 }
 
+// What the particles are, for the header line.
+template <int Dim>
+const char* particle_kind(const WorldDefT<Dim>& world) {
+  if (Dim == 3) return "spheres";
+  return world.planar_particle == PlanarParticle::kSphere ? "spheres in a plane" : "discs";
+}
+
+// Wall resultants: the 2D table has the in-plane moment and the
+// eccentricity along the wall; the 3D one the force's three components.
+void print_wall_table(std::ostream& out, const World& world, int name_width) {
+  out << "  " << std::left << std::setw(name_width) << "wall" << std::right << std::setw(14) << "fx" << std::setw(14)
+      << "fy" << std::setw(14) << "normal_force" << std::setw(14) << "moment" << std::setw(10) << "contacts"
+      << std::setw(14) << "eccentricity" << '\n';
+  for (const WallMeasure& m : world.wall_measures()) {
+    out << "  " << std::left << std::setw(name_width) << world.wall(m.wall).name << std::right << std::setw(14)
+        << brief(m.force.x()) << std::setw(14) << brief(m.force.y()) << std::setw(14) << brief(m.normal_force)
+        << std::setw(14) << brief(m.moment) << std::setw(10) << m.contacts << std::setw(14) << brief(m.eccentricity)
+        << '\n';
+  }
+}
+
+void print_wall_table(std::ostream& out, const World3& world, int name_width) {
+  out << "  " << std::left << std::setw(name_width) << "wall" << std::right << std::setw(14) << "fx" << std::setw(14)
+      << "fy" << std::setw(14) << "fz" << std::setw(14) << "normal_force" << std::setw(10) << "contacts" << '\n';
+  for (const WallMeasure3& m : world.wall_measures()) {
+    out << "  " << std::left << std::setw(name_width) << world.wall(m.wall).name << std::right << std::setw(14)
+        << brief(m.force.x()) << std::setw(14) << brief(m.force.y()) << std::setw(14) << brief(m.force.z())
+        << std::setw(14) << brief(m.normal_force) << std::setw(10) << m.contacts << '\n';
+  }
+}
+
 }  // namespace
 
-void print_case_header(std::ostream& out, const io::CaseDefinition& definition, const World& world) {
+template <int Dim>
+void print_case_header(std::ostream& out, const io::CaseDefinitionT<Dim>& definition, const BasicWorld<Dim>& world) {
   out << "case " << (definition.name.empty() ? "(unnamed)" : definition.name);
   if (!definition.description.empty()) out << ": " << definition.description;
   out << '\n'
-      << world.particle_count() << " particles, " << world.wall_count() << " walls, " << definition.stages.size()
-      << " stages\n"
+      << Dim << "D: " << world.particle_count() << ' ' << particle_kind(definition.world) << ", " << world.wall_count()
+      << " walls, " << definition.stages.size() << " stages\n"
       << "time step " << brief(world.time_step()) << " s (critical " << brief(world.critical_time_step())
       << " s), threads " << world.threads() << '\n';
 }
 
-void print_stage_result(std::ostream& out, int stage_index, int stage_count, const StageDef& stage,
+template <int Dim>
+void print_stage_result(std::ostream& out, int stage_index, int stage_count, const StageDefT<Dim>& stage,
                         const StageResult& result) {
   out << "stage " << stage_index + 1 << '/' << stage_count;
   if (!stage.name.empty()) out << ' ' << stage.name;
@@ -42,23 +75,16 @@ void print_stage_result(std::ostream& out, int stage_index, int stage_count, con
   out << '\n';
 }
 
-void print_final_state(std::ostream& out, const World& world, const std::vector<std::filesystem::path>& files) {
-  const std::vector<WallMeasure> measures = world.wall_measures();
-  if (!measures.empty()) {
+template <int Dim>
+void print_final_state(std::ostream& out, const BasicWorld<Dim>& world,
+                       const std::vector<std::filesystem::path>& files) {
+  if (world.wall_count() > 0) {
     int name_width = 4;
-    for (const WallMeasure& m : measures) {
-      name_width = std::max(name_width, static_cast<int>(world.wall(m.wall).name.size()));
+    for (WallId id = 0; id < world.wall_count(); ++id) {
+      name_width = std::max(name_width, static_cast<int>(world.wall(id).name.size()));
     }
-    out << "final wall forces (N):\n"
-        << "  " << std::left << std::setw(name_width) << "wall" << std::right << std::setw(14) << "fx" << std::setw(14)
-        << "fy" << std::setw(14) << "normal_force" << std::setw(14) << "moment" << std::setw(10) << "contacts"
-        << std::setw(14) << "eccentricity" << '\n';
-    for (const WallMeasure& m : measures) {
-      out << "  " << std::left << std::setw(name_width) << world.wall(m.wall).name << std::right << std::setw(14)
-          << brief(m.force.x()) << std::setw(14) << brief(m.force.y()) << std::setw(14) << brief(m.normal_force)
-          << std::setw(14) << brief(m.moment) << std::setw(10) << m.contacts << std::setw(14) << brief(m.eccentricity)
-          << '\n';
-    }
+    out << "final wall forces (N):\n";
+    print_wall_table(out, world, name_width);
   }
   const AssemblyMeasures assembly = world.assembly_measures();
   out << "after " << world.cycle_count() << " cycles (" << brief(world.time()) << " s): kinetic energy "
@@ -68,5 +94,12 @@ void print_final_state(std::ostream& out, const World& world, const std::vector<
   for (const auto& file : files) out << ' ' << file.string();
   out << '\n';
 }
+
+template void print_case_header(std::ostream&, const io::CaseDefinition&, const World&);
+template void print_case_header(std::ostream&, const io::CaseDefinition3&, const World3&);
+template void print_stage_result(std::ostream&, int, int, const StageDef&, const StageResult&);
+template void print_stage_result(std::ostream&, int, int, const StageDef3&, const StageResult&);
+template void print_final_state(std::ostream&, const World&, const std::vector<std::filesystem::path>&);
+template void print_final_state(std::ostream&, const World3&, const std::vector<std::filesystem::path>&);
 
 }  // namespace dem::run

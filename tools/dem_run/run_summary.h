@@ -12,9 +12,13 @@
 
 namespace dem::run {
 
-void print_case_header(std::ostream& out, const io::CaseDefinition& definition, const World& world);
-void print_stage_result(std::ostream& out, int stage_index, int stage_count, const StageDef& stage,
+template <int Dim>
+void print_case_header(std::ostream& out, const io::CaseDefinitionT<Dim>& definition, const BasicWorld<Dim>& world);
+template <int Dim>
+void print_stage_result(std::ostream& out, int stage_index, int stage_count, const StageDefT<Dim>& stage,
                         const StageResult& result);
-void print_final_state(std::ostream& out, const World& world, const std::vector<std::filesystem::path>& files);
+template <int Dim>
+void print_final_state(std::ostream& out, const BasicWorld<Dim>& world,
+                       const std::vector<std::filesystem::path>& files);
 
 }  // namespace dem::run

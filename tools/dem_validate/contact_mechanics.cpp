@@ -6,6 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "box_settle.h"
 #include "mindlin_loading.h"
 
 namespace dem::validation {
@@ -137,6 +138,26 @@ void report_mindlin_loading(const std::filesystem::path& out) {
   std::printf("  varying N: largest |T|/(mu N) = %.6f, %d sliding steps, %d lagging steps with theta = 1 "
               "(largest error %.2e)\n",
               v.largest_ratio, v.sliding_steps, v.lagging_checks, v.largest_lag_error);
+}
+
+void report_box_settle(const std::filesystem::path& case_file, const std::filesystem::path& out) {
+  const BoxSettleResult r = box_settle(case_file);
+  const EnergyBudget& e = r.energy;
+  auto csv = open_csv(out / "box_settle.csv");
+  csv << "particles,cycles,at_rest,weight,floor_force,side_walls_vertical,gravity_work,kinetic,strain,contact_damping,"
+         "friction,global_damping,local_damping,residual\n";
+  csv << r.particles << ',' << r.cycles << ',' << r.at_rest << ',' << r.weight << ',' << r.floor_force << ','
+      << r.side_walls_vertical << ',' << e.gravity_work << ',' << e.kinetic << ',' << e.strain << ','
+      << e.contact_damping << ',' << e.friction << ',' << e.global_damping << ',' << e.local_damping << ','
+      << e.residual() << '\n';
+  std::printf("Box settle: %d spheres, %llu cycles, %s\n", r.particles, static_cast<unsigned long long>(r.cycles),
+              r.at_rest ? "at rest" : "NOT at rest within the stage's cycles");
+  std::printf("  weight %.6e N, floor carries %.6e N (%+.4f%%), side walls %.2e N\n", r.weight, r.floor_force,
+              100.0 * (r.floor_force / r.weight - 1.0), r.side_walls_vertical);
+  std::printf("  energy: gravity work %.6e J = kinetic %.3e + strain %.3e + dashpots %.6e + friction %.6e + "
+              "local damping %.6e + global damping %.3e; residual %+.3e J (%+.4f%% of the potential energy drop)\n",
+              e.gravity_work, e.kinetic, e.strain, e.contact_damping, e.friction, e.local_damping, e.global_damping,
+              e.residual(), 100.0 * e.residual() / e.gravity_work);
 }
 
 }  // namespace dem::validation

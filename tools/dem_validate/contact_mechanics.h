@@ -19,6 +19,7 @@ void report_hertz_impact(const std::filesystem::path& out);
 void report_oblique_impact(const std::filesystem::path& out);
 void report_restitution(const std::filesystem::path& out);
 void report_mindlin_loading(const std::filesystem::path& out);
+void report_box_settle(const std::filesystem::path& case_file, const std::filesystem::path& out);
 
 // The time-step fraction (of the Rayleigh step) the impact runs use: about
 // 400 steps per contact at 0.4 m/s.

@@ -4,6 +4,7 @@
 //   dem_validate oblique-impact --out DIR   (Randall 1989, 5.4)
 //   dem_validate restitution --out DIR      (Miyata et al. 2002, eq. 17)
 //   dem_validate mindlin-loading --out DIR  (Randall 1989, 5.2)
+//   dem_validate box-settle --out DIR       (3D settling: weight on the floor, energy budget)
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -51,13 +52,16 @@ int main(int argc, char** argv) {
   auto* oblique = app.add_subcommand("oblique-impact", "oblique impact sweep 0-90 degrees (Randall 5.4, Maw et al.)");
   auto* restitution = app.add_subcommand("restitution", "linear spring-dashpot restitution (Miyata eq. 17)");
   auto* mindlin = app.add_subcommand("mindlin-loading", "Mindlin-Deresiewicz loading history (Randall 5.2)");
-  for (auto* sub : {hertz, oblique, restitution, mindlin}) sub->add_option("--out", out, "directory for the CSV files");
+  auto* box = app.add_subcommand("box-settle", "spheres settle in a 3D box: weight on the floor, energy budget");
+  for (auto* sub : {hertz, oblique, restitution, mindlin, box}) sub->add_option("--out", out, "directory for the CSV files");
+  box->add_option("--cases", cases, "directory holding cases/validation")->check(CLI::ExistingDirectory);
   CLI11_PARSE(app, argc, argv);
   try {
     if (*hertz) dem::validation::report_hertz_impact(out);
     if (*oblique) dem::validation::report_oblique_impact(out);
     if (*restitution) dem::validation::report_restitution(out);
     if (*mindlin) dem::validation::report_mindlin_loading(out);
+    if (*box) dem::validation::report_box_settle(cases / "validation" / "box_settle.case.txtpb", out);
     if (*nine) {
       const auto compression = dem::validation::run_compression(cases / "ball");
       const auto distortion = dem::validation::run_distortion(cases / "ball");

@@ -84,11 +84,19 @@ struct ContactModelDef {
   HertzDampingDef hertz;     // kHertzMindlin and kHertzLinearTangential
 };
 
-// Contact damping c = beta * k (Cundall & Strack eq. 28) and global damping
-// C = alpha * m, C* = alpha * I (eq. 34).
+// Damping options. Contact damping c = beta * k (Cundall & Strack eq. 28)
+// for the BALL law (the other laws carry their own dashpots). Global
+// damping C = alpha m, C* = alpha I (Cundall & Strack eq. 34; Miyata eq. 32
+// with its own rotational constant). Local non-viscous damping (Miyata eq.
+// 33, as PFC does it): each component of the resultant force is reduced by
+// alpha' times its magnitude against the velocity component, so the
+// damping does not depend on the velocity's size and vanishes at rest.
 struct DampingDef {
-  double contact_beta = 0.0;  // s
-  double global_alpha = 0.0;  // 1/s
+  double contact_beta = 0.0;                   // s
+  double global_alpha = 0.0;                   // 1/s, translation (and rotation unless set below)
+  std::optional<double> global_alpha_rotation;  // 1/s
+  double local_alpha = 0.0;                    // dimensionless, in [0, 1)
+  std::optional<double> local_alpha_rotation;   // dimensionless, in [0, 1)
 };
 
 template <int Dim>

@@ -42,6 +42,27 @@ struct WallMeasureT {
   Vec<Dim> displacement = Vec<Dim>::Zero();  // P's displacement since the world was built, m
 };
 
+// Where the energy went since the world was built, J (per unit depth for 2D
+// discs). What came in (the initial kinetic energy, the work of gravity and
+// of moving walls) equals what is held (kinetic and elastic strain energy)
+// plus what was dissipated, up to the residual, which measures the
+// integration and contact-law errors.
+struct EnergyBudget {
+  double initial_kinetic = 0.0;
+  double gravity_work = 0.0;
+  double wall_work = 0.0;        // work of the walls' motion on the particles
+  double kinetic = 0.0;          // translation + rotation, at the last half step
+  double strain = 0.0;           // elastic energy held in the contact springs now
+  double contact_damping = 0.0;  // dissipated by contact dashpots
+  double friction = 0.0;         // lost to sliding and micro-slip: work done on the tangential springs they do not hold
+  double global_damping = 0.0;   // dissipated by global (mass-proportional) damping
+  double local_damping = 0.0;    // dissipated by local non-viscous damping
+  double residual() const {
+    return initial_kinetic + gravity_work + wall_work -
+           (kinetic + strain + contact_damping + friction + global_damping + local_damping);
+  }
+};
+
 struct AssemblyMeasures {
   double kinetic_energy = 0.0;  // J (per unit depth for 2D discs): translation + rotation
   // Largest resultant force on any particle over the largest contact force,
@@ -50,6 +71,11 @@ struct AssemblyMeasures {
   double max_contact_force = 0.0;  // N
   int contacts = 0;                // touching particle-particle and particle-wall pairs
   int sliding_contacts = 0;        // those at the Coulomb limit (eq. 19)
+  // Randall (1989) 4.35-4.40: the time step over the smallest particle-wise
+  // critical step 2 (m dx / d|sum F|)^(1/2) seen in the last cycle. Above
+  // 0.3 the step is too large for the stiffness the particles meet.
+  double time_step_ratio = 0.0;
+  EnergyBudget energy;
 };
 
 // One touching contact. For a particle-wall contact, second_wall is set and

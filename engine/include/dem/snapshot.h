@@ -72,6 +72,8 @@ struct WorldSnapshotT {
   std::vector<Spin<Dim>> moment;           // per particle
   std::vector<WallSnapshotT<Dim>> walls;   // per wall
   std::vector<ContactSnapshotT<Dim>> contacts;
+  EnergyBudget energy;              // the accumulated terms since the world was first built
+  double tangential_work = 0.0;     // J, done on the tangential springs since then
   std::uint64_t cycle = 0;
   double time = 0.0;
   double time_step = 0.0;           // s, as in use (not re-estimated on restore)

@@ -11,9 +11,22 @@
 
 namespace dem::io {
 
-// Validates the case first (validate_case), so every caller gets the same
-// checks; throws CaseError listing every problem, or naming the particle
-// source the generators could not place.
-CaseDefinition convert_case(const proto::Case& message, const CaseSource& source = {});
+// The dimension a case declares: 2 (also when it leaves dimension out) or 3.
+int case_dimension(const proto::Case& message);
+
+// Converts a case of dimension Dim: convert_case(message) reads a 2D case,
+// convert_case<3>(message) a 3D one. Validates the case first
+// (validate_case), so every caller gets the same checks; throws CaseError
+// listing every problem, naming the particle source the generators could
+// not place or the particle file that could not be read, or naming
+// `dimension` when the case declares the other one.
+template <int Dim = 2>
+CaseDefinitionT<Dim> convert_case(const proto::Case& message, const CaseSource& source = {});
+
+extern template CaseDefinitionT<2> convert_case<2>(const proto::Case&, const CaseSource&);
+extern template CaseDefinitionT<3> convert_case<3>(const proto::Case&, const CaseSource&);
+
+// Converts a case in the dimension it declares.
+AnyCaseDefinition convert_any_case(const proto::Case& message, const CaseSource& source = {});
 
 }  // namespace dem::io

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "dem/definitions.h"
@@ -25,12 +26,22 @@ struct OutputSettings {
   std::vector<Probe> probes;
 };
 
-struct CaseDefinition {
+// Written once over the dimension, like the engine's definitions: the 2D
+// name is the Dim = 2 instance, the 3D one ends in 3.
+template <int Dim>
+struct CaseDefinitionT {
   std::string name;
   std::string description;
-  WorldDef world;
-  std::vector<StageDef> stages;
+  WorldDefT<Dim> world;
+  std::vector<StageDefT<Dim>> stages;
   OutputSettings output;
 };
+
+using CaseDefinition = CaseDefinitionT<2>;
+using CaseDefinition3 = CaseDefinitionT<3>;
+
+// A case in whichever dimension it declares; a program that runs both
+// visits it once and goes on in templates.
+using AnyCaseDefinition = std::variant<CaseDefinition, CaseDefinition3>;
 
 }  // namespace dem::io

@@ -21,11 +21,13 @@ struct LoadedCase {
 
 // Throws CaseError naming the file when it cannot be read, and
 // "FILE:LINE:COLUMN: message" followed by the offending line for a syntax
-// error or an unknown field.
+// error or an unknown field. Files the case names by a relative path
+// (csv_file.path) are found beside it.
 LoadedCase load_case_file(const std::filesystem::path& path);
 
 // As load_case_file, for text already in memory; source_name stands in for
-// the file name in messages.
+// the file name in messages, and relative paths start from the current
+// directory unless the caller sets source.directory.
 LoadedCase parse_case_text(std::string_view text, std::string source_name = "<text>");
 
 // A serialized dem.proto.Case. Throws CaseError when the bytes are not one.

@@ -4,6 +4,7 @@
 
 #include <google/protobuf/text_format.h>
 
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -14,6 +15,9 @@ struct CaseSource {
   std::string name;  // the file path, or a label such as "<text>"; empty when unknown
   // Where each field was written in the text; null for binary cases.
   std::shared_ptr<const google::protobuf::TextFormat::ParseInfoTree> locations;
+  // Where the files a case names (csv_file.path) are found when their paths
+  // are relative: the case file's directory; empty for the current directory.
+  std::filesystem::path directory;
 };
 
 // "NAME:LINE:COLUMN: PATH: MESSAGE", leaving out what is unknown. PATH is a

@@ -1,22 +1,39 @@
 // The tables a run writes, one file each, in CSV with a header row (see
 // csv_file.h for number formats). Each writer creates its directory if it is
 // missing and throws std::runtime_error naming the file when it cannot write.
+// A 2D run writes the 2D columns; a 3D run adds z components, writes
+// moments and angular velocities as vectors and rotations as quaternions.
 //
 // Time series, one row per call (dem_run calls them every output interval):
-//   walls.csv     cycle,time,wall,fx,fy,moment,normal_force,contacts,
-//                 eccentricity,x,y,dx,dy
+//   walls.csv     2D: cycle,time,wall,fx,fy,moment,normal_force,contacts,
+//                     eccentricity,x,y,dx,dy
+//                 3D: cycle,time,wall,fx,fy,fz,moment_x,moment_y,moment_z,
+//                     normal_force,contacts,eccentricity_u,eccentricity_v,
+//                     x,y,z,dx,dy,dz
 //                 long format: one row per wall; wall is the wall's name,
-//                 x,y its reference point P and dx,dy P's displacement.
+//                 x,y(,z) its reference point P and dx,dy(,dz) P's
+//                 displacement; the 3D eccentricities are along the wall's
+//                 two sides, u (direction) and v (direction2).
 //   assembly.csv  cycle,time,kinetic_energy,out_of_balance,max_contact_force,
 //                 contacts,sliding_contacts
 //   probes.csv    cycle,time,probe,normal_force,shear_force,touching
-//                 one row per probe; forces are 0 while the pair is apart.
+//                 one row per probe; forces are 0 while the pair is apart;
+//                 shear_force is signed in 2D, the magnitude in 3D.
 // Snapshots, written once (at the end of a run):
-//   contacts.csv  first,second_kind,second,x,y,nx,ny,overlap,normal_force,
-//                 shear_force,normal_damping,shear_damping,sliding
+//   contacts.csv  2D: first,second_kind,second,x,y,nx,ny,overlap,normal_force,
+//                     shear_force,normal_damping,shear_damping,sliding
+//                 3D: first,second_kind,second,x,y,z,nx,ny,nz,overlap,
+//                     normal_force,shear_force,tangential_x,tangential_y,
+//                     tangential_z,normal_damping,shear_damping,sliding
 //                 second_kind is "particle" (second is its id) or "wall"
-//                 (second is the wall's name, as in walls.csv).
-//   particles.csv id,x,y,radius,vx,vy,angular_velocity,rotation
+//                 (second is the wall's name, as in walls.csv). In 3D the
+//                 shear force and damping are magnitudes and tangential_* is
+//                 the shear spring's force on the first particle.
+//   particles.csv 2D: id,x,y,radius,vx,vy,angular_velocity,rotation
+//                 3D: id,x,y,z,radius,vx,vy,vz,angular_velocity_x,
+//                     angular_velocity_y,angular_velocity_z,rotation_w,
+//                     rotation_x,rotation_y,rotation_z
+//                 (the 3D rotation is a unit quaternion).
 // Units are the engine's (SI); booleans (touching, sliding) are 0 or 1.
 #pragma once
 
@@ -29,20 +46,25 @@
 
 namespace dem::io {
 
-class WallsCsv {
+template <int Dim>
+class WallsCsvT {
  public:
-  explicit WallsCsv(const std::filesystem::path& directory);
-  void write(const World& world);
+  explicit WallsCsvT(const std::filesystem::path& directory);
+  void write(const BasicWorld<Dim>& world);
   const std::filesystem::path& path() const { return file_.path(); }
 
  private:
   CsvFile file_;
 };
 
+using WallsCsv = WallsCsvT<2>;
+using WallsCsv3 = WallsCsvT<3>;
+
 class AssemblyCsv {
  public:
   explicit AssemblyCsv(const std::filesystem::path& directory);
-  void write(const World& world);
+  template <int Dim>
+  void write(const BasicWorld<Dim>& world);
   const std::filesystem::path& path() const { return file_.path(); }
 
  private:
@@ -52,7 +74,8 @@ class AssemblyCsv {
 class ProbesCsv {
  public:
   ProbesCsv(const std::filesystem::path& directory, std::vector<Probe> probes);
-  void write(const World& world);
+  template <int Dim>
+  void write(const BasicWorld<Dim>& world);
   const std::filesystem::path& path() const { return file_.path(); }
 
  private:
@@ -60,7 +83,20 @@ class ProbesCsv {
   std::vector<Probe> probes_;
 };
 
-void write_contacts_csv(const std::filesystem::path& directory, const World& world);
-void write_particles_csv(const std::filesystem::path& directory, const World& world);
+template <int Dim>
+void write_contacts_csv(const std::filesystem::path& directory, const BasicWorld<Dim>& world);
+template <int Dim>
+void write_particles_csv(const std::filesystem::path& directory, const BasicWorld<Dim>& world);
+
+extern template class WallsCsvT<2>;
+extern template class WallsCsvT<3>;
+extern template void AssemblyCsv::write(const World&);
+extern template void AssemblyCsv::write(const World3&);
+extern template void ProbesCsv::write(const World&);
+extern template void ProbesCsv::write(const World3&);
+extern template void write_contacts_csv(const std::filesystem::path&, const World&);
+extern template void write_contacts_csv(const std::filesystem::path&, const World3&);
+extern template void write_particles_csv(const std::filesystem::path&, const World&);
+extern template void write_particles_csv(const std::filesystem::path&, const World3&);
 
 }  // namespace dem::io
