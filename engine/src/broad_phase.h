@@ -6,13 +6,16 @@
 
 #include "contact_table.h"
 #include "particles.h"
+#include "periodic.h"
 #include "walls.h"
 
 namespace dem {
 
-// Sorted (first < second) particle pairs with gap < tolerance.
+// Sorted (first < second) particle pairs with gap < tolerance, across
+// periodic boundaries through the nearest image.
 template <int Dim>
-std::vector<Candidate> find_pair_candidates(const Particles<Dim>& particles, double tolerance, int threads);
+std::vector<Candidate> find_pair_candidates(const Particles<Dim>& particles, const Periodic<Dim>& periodic,
+                                            double tolerance, int threads);
 
 // Sorted (particle, wall) pairs whose gap to the wall is < tolerance.
 template <int Dim>

@@ -47,7 +47,8 @@ ContactEnergy total(const std::vector<ContactEnergy>& partials) {
 }
 
 template <int Dim, typename Law>
-ContactEnergy pair_pass(const Particles<Dim>& particles, std::vector<PairContact<Dim>>& pairs,
+ContactEnergy pair_pass(const Particles<Dim>& particles, const Periodic<Dim>& periodic,
+                        std::vector<PairContact<Dim>>& pairs,
                         std::vector<ContactForce<Dim>>& forces, const ContactParamTable& params, double dt,
                         int threads) {
   const auto n = static_cast<std::int64_t>(pairs.size());
@@ -56,7 +57,7 @@ ContactEnergy pair_pass(const Particles<Dim>& particles, std::vector<PairContact
     PairContact<Dim>& contact = pairs[c];
     ContactState<Dim>& s = contact.state;
     const ParticleId x = contact.first, y = contact.second;
-    const Vec<Dim> d = particles.position[y] - particles.position[x];
+    const Vec<Dim> d = periodic.separation(particles.position[x], particles.position[y]);
     const double distance = d.norm();
     const double rx = particles.radius[x], ry = particles.radius[y];
     const double overlap = rx + ry - distance;
@@ -135,11 +136,13 @@ ContactEnergy wall_pass(const Particles<Dim>& particles, const Walls<Dim>& walls
 }  // namespace
 
 template <int Dim>
-ContactEnergy compute_pair_forces(ContactLaw law, const Particles<Dim>& particles,
+ContactEnergy compute_pair_forces(ContactLaw law, const Particles<Dim>& particles, const Periodic<Dim>& periodic,
                                   std::vector<PairContact<Dim>>& pairs, std::vector<ContactForce<Dim>>& forces,
                                   const ContactParamTable& params, double dt, int threads) {
   ContactEnergy energy;
-  with_law(law, [&]<typename Law>() { energy = pair_pass<Dim, Law>(particles, pairs, forces, params, dt, threads); });
+  with_law(law, [&]<typename Law>() {
+    energy = pair_pass<Dim, Law>(particles, periodic, pairs, forces, params, dt, threads);
+  });
   return energy;
 }
 
@@ -154,9 +157,11 @@ ContactEnergy compute_wall_forces(ContactLaw law, const Particles<Dim>& particle
   return energy;
 }
 
-template ContactEnergy compute_pair_forces(ContactLaw, const Particles<2>&, std::vector<PairContact<2>>&,
+template ContactEnergy compute_pair_forces(ContactLaw, const Particles<2>&, const Periodic<2>&,
+                                           std::vector<PairContact<2>>&,
                                   std::vector<ContactForce<2>>&, const ContactParamTable&, double, int);
-template ContactEnergy compute_pair_forces(ContactLaw, const Particles<3>&, std::vector<PairContact<3>>&,
+template ContactEnergy compute_pair_forces(ContactLaw, const Particles<3>&, const Periodic<3>&,
+                                           std::vector<PairContact<3>>&,
                                   std::vector<ContactForce<3>>&, const ContactParamTable&, double, int);
 template ContactEnergy compute_wall_forces(ContactLaw, const Particles<2>&, const Walls<2>&, std::vector<WallContact<2>>&,
                                   std::vector<ContactForce<2>>&, const ContactParamTable&, double, int);

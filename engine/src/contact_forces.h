@@ -7,6 +7,7 @@
 #include "contact_params.h"
 #include "contact_table.h"
 #include "particles.h"
+#include "periodic.h"
 #include "walls.h"
 
 namespace dem {
@@ -27,9 +28,9 @@ struct ContactEnergy {
 };
 
 template <int Dim>
-ContactEnergy compute_pair_forces(ContactLaw law, const Particles<Dim>& particles, std::vector<PairContact<Dim>>& pairs,
-                         std::vector<ContactForce<Dim>>& forces, const ContactParamTable& params, double dt,
-                         int threads);
+ContactEnergy compute_pair_forces(ContactLaw law, const Particles<Dim>& particles, const Periodic<Dim>& periodic,
+                                  std::vector<PairContact<Dim>>& pairs, std::vector<ContactForce<Dim>>& forces,
+                                  const ContactParamTable& params, double dt, int threads);
 
 template <int Dim>
 ContactEnergy compute_wall_forces(ContactLaw law, const Particles<Dim>& particles, const Walls<Dim>& walls,

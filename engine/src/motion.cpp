@@ -107,7 +107,9 @@ MotionStep& operator+=(MotionStep& a, const MotionStep& b) {
 
 template <int Dim>
 MotionStep integrate_motion(Particles<Dim>& particles, const std::vector<Vec<Dim>>& reference,
-                            const Vec<Dim>& gravity, const DampingDef& damping, double dt, int threads) {
+                            const Periodic<Dim>& periodic, const Vec<Dim>& gravity, const DampingDef& damping,
+                            double dt, int threads) {
+  const bool wraps = periodic.any();
   const auto n = static_cast<std::int64_t>(particles.size());
   // Global damping C = alpha m, C* = alpha I (eq. 34) in the central
   // difference form of eqs. 35-36; Miyata eq. 32 lets rotation have its own constant.
@@ -134,7 +136,8 @@ MotionStep integrate_motion(Particles<Dim>& particles, const std::vector<Vec<Dim
       const Spin<Dim>& w1 = particles.angular_velocity[i];
       particles.position[i] += v1 * dt;                        // eq. 22a
       turn(particles.rotation[i], w1, dt);                     // eq. 23a
-      step.max_travel = std::max(step.max_travel, (particles.position[i] - reference[i]).norm());
+      if (wraps) periodic.wrap(particles.position[i]);
+      step.max_travel = std::max(step.max_travel, periodic.separation(reference[i], particles.position[i]).norm());
 
       // Energy over the step, at the mid-step velocity the scheme is centred on.
       const Vec<Dim> v_mid = 0.5 * (v0 + v1);
@@ -163,7 +166,9 @@ template void sum_particle_forces(Particles<2>&, const ContactTable<2>&, int);
 template void sum_particle_forces(Particles<3>&, const ContactTable<3>&, int);
 template void sum_wall_forces(Walls<2>&, const std::vector<WallContact<2>>&, const std::vector<ContactForce<2>>&);
 template void sum_wall_forces(Walls<3>&, const std::vector<WallContact<3>>&, const std::vector<ContactForce<3>>&);
-template MotionStep integrate_motion(Particles<2>&, const std::vector<Vec2>&, const Vec2&, const DampingDef&, double, int);
-template MotionStep integrate_motion(Particles<3>&, const std::vector<Vec3>&, const Vec3&, const DampingDef&, double, int);
+template MotionStep integrate_motion(Particles<2>&, const std::vector<Vec2>&, const Periodic<2>&, const Vec2&,
+                                     const DampingDef&, double, int);
+template MotionStep integrate_motion(Particles<3>&, const std::vector<Vec3>&, const Periodic<3>&, const Vec3&,
+                                     const DampingDef&, double, int);
 
 }  // namespace dem

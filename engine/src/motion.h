@@ -4,6 +4,7 @@
 
 #include "contact_table.h"
 #include "particles.h"
+#include "periodic.h"
 #include "walls.h"
 
 namespace dem {
@@ -30,8 +31,10 @@ struct MotionStep {
 // Time-centred central differences (Cundall & Strack eqs. 35-36, then
 // 22a-23a) with the body force, global damping (eq. 34; Miyata eq. 32) and
 // local non-viscous damping (Miyata eq. 33).
+// Positions that leave a periodic cell enter it on the other side.
 template <int Dim>
 MotionStep integrate_motion(Particles<Dim>& particles, const std::vector<Vec<Dim>>& reference,
-                            const Vec<Dim>& gravity, const DampingDef& damping, double dt, int threads);
+                            const Periodic<Dim>& periodic, const Vec<Dim>& gravity, const DampingDef& damping,
+                            double dt, int threads);
 
 }  // namespace dem

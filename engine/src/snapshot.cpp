@@ -67,6 +67,7 @@ WorldSnapshotT<Dim> save_snapshot(const WorldState<Dim>& s) {
   def.damping = s.damping;
   def.gravity = s.gravity;
   def.planar_particle = s.planar_particle;
+  def.periodic = s.periodic_def;
   def.contact_tolerance = s.contact_tolerance;
   def.threads = s.threads;
   def.fixed_time_step = s.fixed_time_step;

@@ -25,8 +25,28 @@ Eccentricity<2> wall_half_size(const WallDefT<2>& wall) { return 0.5 * (wall.h2 
 Eccentricity<3> wall_half_size(const WallDefT<3>& wall) {
   return {0.5 * (wall.h2 - wall.h1), 0.5 * (wall.k2 - wall.k1)};
 }
-double wall_extent(const WallDefT<2>& wall) { return wall.h2 - wall.h1; }
-double wall_extent(const WallDefT<3>& wall) { return (wall.h2 - wall.h1) * (wall.k2 - wall.k1); }
+namespace {
+
+// The wall's length along a unit direction, clipped to the period of the
+// axis it runs along (if it runs along one).
+template <int Dim>
+double clipped(double length, const Vec<Dim>& direction, const Periodic<Dim>& periodic) {
+  for (int d = 0; d < Dim; ++d) {
+    if (periodic.repeats(d) && std::abs(std::abs(direction[d]) - 1.0) < 1e-12) {
+      return std::min(length, periodic.length[d]);
+    }
+  }
+  return length;
+}
+
+}  // namespace
+
+double wall_extent(const WallDefT<2>& wall, const Periodic<2>& periodic) {
+  return clipped(wall.h2 - wall.h1, wall.direction, periodic);
+}
+double wall_extent(const WallDefT<3>& wall, const Periodic<3>& periodic) {
+  return clipped(wall.h2 - wall.h1, wall.direction, periodic) * clipped(wall.k2 - wall.k1, wall.direction2, periodic);
+}
 
 namespace {
 

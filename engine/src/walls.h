@@ -6,6 +6,7 @@
 
 #include "dem/definitions.h"
 #include "dem/measures.h"
+#include "periodic.h"
 
 namespace dem {
 
@@ -48,9 +49,10 @@ Eccentricity<3> wall_centre(const WallDefT<3>& wall);
 Eccentricity<2> wall_half_size(const WallDefT<2>& wall);
 Eccentricity<3> wall_half_size(const WallDefT<3>& wall);
 
-// Length (2D) or area (3D) of the wall.
-double wall_extent(const WallDefT<2>& wall);
-double wall_extent(const WallDefT<3>& wall);
+// Length (2D) or area (3D) of the wall; along a direction that runs along a
+// periodic axis, at most one period (a plate across a periodic cell).
+double wall_extent(const WallDefT<2>& wall, const Periodic<2>& periodic);
+double wall_extent(const WallDefT<3>& wall, const Periodic<3>& periodic);
 
 // Velocity of a point q attached to a wall moving with (velocity, omega) about P.
 template <int Dim>

@@ -45,8 +45,8 @@ void step(WorldState<Dim>& s) {
     timer.lap(s.profile.find_contacts);
   }
   ContactTable<Dim>& c = s.contacts;
-  ContactEnergy contact_energy =
-      compute_pair_forces(s.pair_law, s.particles, c.pairs, c.pair_forces, s.params, s.time_step, s.threads);
+  ContactEnergy contact_energy = compute_pair_forces(s.pair_law, s.particles, s.periodic, c.pairs, c.pair_forces,
+                                                     s.params, s.time_step, s.threads);
   contact_energy +=
       compute_wall_forces(s.wall_law, s.particles, s.walls, c.walls, c.wall_forces, s.params, s.time_step, s.threads);
   s.energy.contact_damping += contact_energy.damping;
@@ -56,8 +56,8 @@ void step(WorldState<Dim>& s) {
   sum_particle_forces(s.particles, c, s.threads);
   sum_wall_forces(s.walls, c.walls, c.wall_forces);
   timer.lap(s.profile.force_sums);
-  const MotionStep motion =
-      integrate_motion(s.particles, s.reference_positions, s.gravity, s.damping, s.time_step, s.threads);
+  const MotionStep motion = integrate_motion(s.particles, s.reference_positions, s.periodic, s.gravity, s.damping,
+                                            s.time_step, s.threads);
   s.particle_travel = motion.max_travel;
   s.energy.gravity_work += motion.gravity_work;
   s.energy.global_damping += motion.global_damping;
@@ -77,7 +77,8 @@ void step(WorldState<Dim>& s) {
 }
 // ---------------------------------------------------------------------------
 
-int resolve_threads(int threads) { return threads > 0 ? threads : std::max(1, omp_get_num_procs()); }
+// 0 means what OpenMP would use: OMP_NUM_THREADS if set, else every core.
+int resolve_threads(int threads) { return threads > 0 ? threads : std::max(1, omp_get_max_threads()); }
 
 void check(bool ok, const std::string& message) {
   if (!ok) throw DefinitionError(message);
@@ -158,6 +159,11 @@ void validate(const WorldDefT<Dim>& def) {
       check(wall.motion.servo->gain > 0.0, where + ": servo gain must be > 0");
       check(wall.motion.servo->max_speed > 0.0, where + ": servo max_speed must be > 0");
     }
+  }
+  for (int d = 0; d < Dim; ++d) {
+    if (!def.periodic.axes[d]) continue;
+    check(def.periodic.max[d] > def.periodic.min[d],
+          "periodic: max must exceed min along axis " + std::to_string(d));
   }
   check(def.time_step_fraction > 0.0 && def.time_step_fraction <= 1.0,
         "world: time_step_fraction must be in (0, 1]");
@@ -249,7 +255,7 @@ MassProperties mass_properties(double density, double radius, bool disc) {
 template <int Dim>
 void find_contacts(WorldState<Dim>& s) {
   const auto n = static_cast<int>(s.particles.size());
-  rebuild_contacts(s.contacts, find_pair_candidates(s.particles, s.contact_tolerance, s.threads),
+  rebuild_contacts(s.contacts, find_pair_candidates(s.particles, s.periodic, s.contact_tolerance, s.threads),
                    find_wall_candidates(s.particles, s.walls, s.contact_tolerance), n);
   s.reference_positions = s.particles.position;
   s.particle_travel = 0.0;
@@ -289,6 +295,9 @@ BasicWorld<Dim>::BasicWorld(const Def& def) : state_(std::make_unique<WorldState
   p.force.assign(n, Vec<Dim>::Zero());
   p.moment.assign(n, Space<Dim>::zero_spin());
   p.previous_force.assign(n, 0.0);
+  s.periodic_def = def.periodic;
+  s.periodic = Periodic<Dim>::from(def.periodic);
+  for (Vec<Dim>& x : p.position) s.periodic.wrap(x);
   // Stresses on 2D walls: discs have unit thickness; spheres in the plane
   // are taken as a layer one mean diameter deep (Randall 1989, 4.4).
   s.depth = discs || Dim == 3 ? 1.0 : 2.0 * radius_sum / static_cast<double>(n);
@@ -308,6 +317,13 @@ BasicWorld<Dim>::BasicWorld(const Def& def) : state_(std::make_unique<WorldState
   resolve_contact_laws(s);
   s.contact_tolerance =
       def.contact_tolerance > 0.0 ? def.contact_tolerance : 0.1 * radius_sum / static_cast<double>(n);
+  // Nearest images are unique only while a period holds two interaction ranges.
+  const double reach = 2.0 * *std::max_element(p.radius.begin(), p.radius.end()) + s.contact_tolerance;
+  for (int d = 0; d < Dim; ++d) {
+    check(!s.periodic.repeats(d) || s.periodic.length[d] > 2.0 * reach,
+          "periodic: the period along axis " + std::to_string(d) + " must exceed twice the largest diameter plus "
+          "the contact tolerance (" + std::to_string(2.0 * reach) + ")");
+  }
   s.critical_time_step = estimate_critical_time_step(s);
   s.time_step_fraction = def.time_step_fraction;
   s.fixed_time_step = def.fixed_time_step;
@@ -380,7 +396,7 @@ void BasicWorld<Dim>::set_wall_motion(WallId id, const Motion& motion) {
 template <int Dim>
 double BasicWorld<Dim>::wall_area(WallId id) const {
   assert(id >= 0 && id < wall_count());
-  return wall_extent(state_->walls.def[id]) * (Dim == 2 ? state_->depth : 1.0);
+  return wall_extent(state_->walls.def[id], state_->periodic) * (Dim == 2 ? state_->depth : 1.0);
 }
 
 template <int Dim>

@@ -12,6 +12,7 @@
 #include "dem/profile.h"
 #include "dem/snapshot.h"
 #include "particles.h"
+#include "periodic.h"
 #include "walls.h"
 
 namespace dem {
@@ -22,6 +23,8 @@ struct WorldState {
   std::vector<ContactModelDef> contact_models;
   Particles<Dim> particles;
   Walls<Dim> walls;
+  PeriodicDefT<Dim> periodic_def;
+  Periodic<Dim> periodic;
   ContactTable<Dim> contacts;
   ContactParamTable params;
   ContactLaw pair_law = ContactLaw::kLinear;  // the law of every particle-particle contact

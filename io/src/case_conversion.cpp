@@ -93,6 +93,14 @@ class Converter {
     add_walls(def.world);
     def.world.damping = to_damping(case_.damping());
     def.world.gravity = to_vec<Dim>(case_.gravity());
+    if (case_.has_periodic()) {
+      const proto::Periodic& p = case_.periodic();
+      def.world.periodic.axes[0] = p.x();
+      def.world.periodic.axes[1] = p.y();
+      if constexpr (Dim == 3) def.world.periodic.axes[2] = p.z();
+      def.world.periodic.min = to_vec<Dim>(p.min());
+      def.world.periodic.max = to_vec<Dim>(p.max());
+    }
     if (case_.planar_particle() == proto::Case::SPHERE) def.world.planar_particle = PlanarParticle::kSphere;
     // proto3 cannot tell an unset number from 0, so 0 keeps the engine's default.
     if (case_.time_step().fraction() > 0) def.world.time_step_fraction = case_.time_step().fraction();

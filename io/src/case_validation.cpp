@@ -42,6 +42,7 @@ class CaseChecker {
     check_particle_sources();
     check_walls();
     check_damping("damping", case_.damping());
+    check_periodic();
     check_time_step();
     vector("gravity", case_.gravity());
     check_stages();
@@ -460,6 +461,23 @@ class CaseChecker {
       check_id(path + ".second", probe.second());
       if (probe.first() == probe.second()) {
         problems_.add(path + ".second", "must differ from first (both are " + std::to_string(probe.first()) + ")");
+      }
+    }
+  }
+
+  void check_periodic() {
+    if (!case_.has_periodic()) return;
+    const proto::Periodic& p = case_.periodic();
+    only_in_3d("periodic.z", p.z());
+    if (!vector("periodic.min", p.min()) || !vector("periodic.max", p.max())) return;
+    if (!p.x() && !p.y() && !p.z()) problems_.add("periodic", "names no periodic axis; set x, y or z to true");
+    const std::pair<bool, const char*> axes[] = {{p.x(), "x"}, {p.y(), "y"}, {p.z(), "z"}};
+    const double lo[] = {p.min().x(), p.min().y(), p.min().z()}, hi[] = {p.max().x(), p.max().y(), p.max().z()};
+    for (int d = 0; d < 3; ++d) {
+      if (axes[d].first && !(hi[d] > lo[d])) {
+        problems_.add(std::string("periodic.max.") + axes[d].second,
+                      "must exceed periodic.min." + std::string(axes[d].second) + " (" + format_number(hi[d]) +
+                          " <= " + format_number(lo[d]) + ")");
       }
     }
   }

@@ -44,14 +44,18 @@ void WallsCsvT<Dim>::write(const BasicWorld<Dim>& world) {
 
 AssemblyCsv::AssemblyCsv(const std::filesystem::path& directory)
     : file_(directory, "assembly.csv",
-            "cycle,time,kinetic_energy,out_of_balance,max_contact_force,contacts,sliding_contacts") {}
+            "cycle,time,kinetic_energy,out_of_balance,max_contact_force,contacts,sliding_contacts,time_step_ratio,gravity_work,wall_work,strain_energy,contact_damping,friction,global_damping,local_damping,energy_residual") {}
 
 template <int Dim>
-void AssemblyCsv::write(const BasicWorld<Dim>& world) {
+AssemblyMeasures AssemblyCsv::write(const BasicWorld<Dim>& world) {
   const AssemblyMeasures measures = world.assembly_measures();
+  const EnergyBudget& e = measures.energy;
   file_.write_row(world.cycle_count(), world.time(), measures.kinetic_energy, measures.out_of_balance,
-                  measures.max_contact_force, measures.contacts, measures.sliding_contacts);
+                  measures.max_contact_force, measures.contacts, measures.sliding_contacts, measures.time_step_ratio,
+                  e.gravity_work, e.wall_work, e.strain, e.contact_damping, e.friction, e.global_damping,
+                  e.local_damping, e.residual());
   file_.flush();
+  return measures;
 }
 
 ProbesCsv::ProbesCsv(const std::filesystem::path& directory, std::vector<Probe> probes)
@@ -113,8 +117,8 @@ void write_particles_csv(const std::filesystem::path& directory, const BasicWorl
 
 template class WallsCsvT<2>;
 template class WallsCsvT<3>;
-template void AssemblyCsv::write(const World&);
-template void AssemblyCsv::write(const World3&);
+template AssemblyMeasures AssemblyCsv::write(const World&);
+template AssemblyMeasures AssemblyCsv::write(const World3&);
 template void ProbesCsv::write(const World&);
 template void ProbesCsv::write(const World3&);
 template void write_contacts_csv(const std::filesystem::path&, const World&);

@@ -140,6 +140,17 @@ TEST_F(CaseConversion, WallMotionAndServo) {
   EXPECT_EQ(walls[0].motion.servo->max_speed, 0.5);
 }
 
+TEST_F(CaseConversion, PeriodicCell) {
+  case_.mutable_periodic()->set_x(true);
+  case_.mutable_periodic()->mutable_min()->set_x(-0.1);
+  case_.mutable_periodic()->mutable_max()->set_x(0.2);
+  const WorldDef world = convert_case(case_).world;
+  EXPECT_TRUE(world.periodic.axes[0]);
+  EXPECT_FALSE(world.periodic.axes[1]);
+  EXPECT_EQ(world.periodic.min.x(), -0.1);
+  EXPECT_EQ(world.periodic.max.x(), 0.2);
+}
+
 TEST_F(CaseConversion, MiyataDampingForms) {
   case_.mutable_damping()->set_global_alpha_rotation(3.0);  // Miyata eq. 32
   case_.mutable_damping()->set_local_alpha(0.7);            // Miyata eq. 33

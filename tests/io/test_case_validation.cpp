@@ -263,6 +263,16 @@ const Mistake kMistakes[] = {
      "damping.contact_beta: must be >= 0 (got -1e-05)"},
     {"NegativeGlobalDamping", [](auto& c) { c.mutable_damping()->set_global_alpha(-2); },
      "damping.global_alpha: must be >= 0 (got -2)"},
+    {"PeriodicWithoutAxis", [](auto& c) { c.mutable_periodic()->mutable_max()->set_x(1); },
+     "periodic: names no periodic axis; set x, y or z to true"},
+    {"PeriodicEmptyCell",
+     [](auto& c) {
+       c.mutable_periodic()->set_x(true);
+       c.mutable_periodic()->mutable_min()->set_x(0.1);
+     },
+     "periodic.max.x: must exceed periodic.min.x (0 <= 0.1)"},
+    {"PeriodicZIn2d", [](auto& c) { c.mutable_periodic()->set_z(true); },
+     "periodic.z: is for 3D cases only (this case is 2D); set dimension: 3 for a 3D case"},
     {"NegativeRotationalDamping", [](auto& c) { c.mutable_damping()->set_global_alpha_rotation(-1); },
      "damping.global_alpha_rotation: must be >= 0 (got -1)"},
     {"LocalDampingOfOne", [](auto& c) { c.mutable_damping()->set_local_alpha(1.0); },

@@ -97,7 +97,8 @@ TEST_F(CsvWriters, AssemblyRoundTripsEveryDigit) {
   const auto rows = read_csv(directory_ / "assembly.csv");
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[0], (Row{"cycle", "time", "kinetic_energy", "out_of_balance", "max_contact_force", "contacts",
-                          "sliding_contacts"}));
+                          "sliding_contacts", "time_step_ratio", "gravity_work", "wall_work", "strain_energy",
+                          "contact_damping", "friction", "global_damping", "local_damping", "energy_residual"}));
   const AssemblyMeasures measures = world_.assembly_measures();
   EXPECT_EQ(number(rows[1][1]), world_.time());
   EXPECT_EQ(number(rows[1][2]), measures.kinetic_energy);
@@ -105,6 +106,9 @@ TEST_F(CsvWriters, AssemblyRoundTripsEveryDigit) {
   EXPECT_EQ(number(rows[1][4]), measures.max_contact_force);
   EXPECT_EQ(rows[1][5], std::to_string(measures.contacts));
   EXPECT_EQ(rows[1][5], "3");
+  EXPECT_EQ(number(rows[1][8]), measures.energy.gravity_work);
+  EXPECT_EQ(number(rows[1][11]), measures.energy.contact_damping);
+  EXPECT_EQ(number(rows[1][15]), measures.energy.residual());
 }
 
 TEST_F(CsvWriters, ProbesReportTouchingAndApartPairs) {

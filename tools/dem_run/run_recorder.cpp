@@ -1,5 +1,7 @@
 #include "run_recorder.h"
 
+#include <cstdio>
+
 namespace dem::run {
 
 template <int Dim>
@@ -17,8 +19,17 @@ void RunRecorder<Dim>::record(const BasicWorld<Dim>& world) {
   if (last_cycle_ == world.cycle_count()) return;
   last_cycle_ = world.cycle_count();
   walls_.write(world);
-  assembly_.write(world);
+  const AssemblyMeasures measures = assembly_.write(world);
   if (probes_) probes_->write(world);
+  // Randall (1989) 4.35-4.40: above 0.3 of the particle-wise critical step
+  // the step is too large for the stiffness the particles meet. Said once.
+  if (measures.time_step_ratio > 0.3 && !warned_time_step_) {
+    warned_time_step_ = true;
+    std::fprintf(stderr,
+                 "warning: at cycle %llu the time step is %.2f of the smallest particle-wise critical step "
+                 "(Randall 1989, 4.35-4.40; keep it below 0.3): reduce time_step.fraction\n",
+                 static_cast<unsigned long long>(world.cycle_count()), measures.time_step_ratio);
+  }
 }
 
 template <int Dim>

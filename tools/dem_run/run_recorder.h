@@ -39,6 +39,7 @@ class RunRecorder {
   std::optional<io::ProbesCsv> probes_;
   std::optional<std::uint64_t> last_cycle_;
   std::vector<std::filesystem::path> files_;
+  bool warned_time_step_ = false;
 };
 
 extern template class RunRecorder<2>;

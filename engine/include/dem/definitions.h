@@ -9,6 +9,7 @@
 // unit depth (Cundall & Strack 1979).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -161,6 +162,24 @@ struct WallDefT<3> {
   WallMotionT<3> motion;
 };
 
+// Periodic boundaries (Miyata et al. 2002; Cundall's periodic cell): along
+// each axis that is periodic, the domain [min, max) repeats, particles that
+// leave one side enter the other, and pairs interact across the boundary
+// through their nearest images. Walls do not repeat; a wall that spans a
+// periodic axis has its stress taken over the period along it.
+template <int Dim>
+struct PeriodicDefT {
+  std::array<bool, Dim> axes{};        // which axes repeat
+  Vec<Dim> min = Vec<Dim>::Zero();     // m, the periodic cell along those axes
+  Vec<Dim> max = Vec<Dim>::Zero();     // m
+  bool any() const {
+    for (bool a : axes) {
+      if (a) return true;
+    }
+    return false;
+  }
+};
+
 // What a particle is in the plane: a disc of unit thickness (Cundall &
 // Strack) or a sphere whose centre lies in the plane (Randall 1989, 4.4).
 enum class PlanarParticle { kDisc, kSphere };
@@ -171,6 +190,7 @@ struct WorldDefT {
   std::vector<ContactModelDef> contact_models;
   std::vector<ParticleDefT<Dim>> particles;
   std::vector<WallDefT<Dim>> walls;
+  PeriodicDefT<Dim> periodic;
   DampingDef damping;
   Vec<Dim> gravity = Vec<Dim>::Zero();  // m/s^2, body force per unit mass
   // 2D only: discs or spheres in the plane (3D particles are spheres).
@@ -183,7 +203,7 @@ struct WorldDefT {
   // the neighbour search only runs when something moved more than half of it.
   // 0 = a tenth of the mean particle radius.
   double contact_tolerance = 0.0;  // m
-  int threads = 0;                 // 0 = all the machine's cores
+  int threads = 0;                 // 0 = OMP_NUM_THREADS if set, else all the machine's cores
 };
 
 using ParticleDef = ParticleDefT<2>;
@@ -194,6 +214,8 @@ using WallDef = WallDefT<2>;
 using WallDef3 = WallDefT<3>;
 using WorldDef = WorldDefT<2>;
 using WorldDef3 = WorldDefT<3>;
+using PeriodicDef = PeriodicDefT<2>;
+using PeriodicDef3 = PeriodicDefT<3>;
 
 // A definition with one "default" material and a default contact model for
 // every pair, for programs that build worlds in code. Case conversion starts

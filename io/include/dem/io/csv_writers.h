@@ -15,7 +15,13 @@
 //                 displacement; the 3D eccentricities are along the wall's
 //                 two sides, u (direction) and v (direction2).
 //   assembly.csv  cycle,time,kinetic_energy,out_of_balance,max_contact_force,
-//                 contacts,sliding_contacts
+//                 contacts,sliding_contacts,time_step_ratio,gravity_work,
+//                 wall_work,strain_energy,contact_damping,friction,
+//                 global_damping,local_damping,energy_residual
+//                 the energy budget since the start (J; dem/measures.h):
+//                 initial kinetic + gravity_work + wall_work = kinetic +
+//                 strain + the dissipated terms + energy_residual;
+//                 time_step_ratio is Randall's particle-wise check (> 0.3: too large)
 //   probes.csv    cycle,time,probe,normal_force,shear_force,touching
 //                 one row per probe; forces are 0 while the pair is apart;
 //                 shear_force is signed in 2D, the magnitude in 3D.
@@ -63,8 +69,9 @@ using WallsCsv3 = WallsCsvT<3>;
 class AssemblyCsv {
  public:
   explicit AssemblyCsv(const std::filesystem::path& directory);
+  // Writes a row and returns the measures it wrote.
   template <int Dim>
-  void write(const BasicWorld<Dim>& world);
+  AssemblyMeasures write(const BasicWorld<Dim>& world);
   const std::filesystem::path& path() const { return file_.path(); }
 
  private:
@@ -90,8 +97,8 @@ void write_particles_csv(const std::filesystem::path& directory, const BasicWorl
 
 extern template class WallsCsvT<2>;
 extern template class WallsCsvT<3>;
-extern template void AssemblyCsv::write(const World&);
-extern template void AssemblyCsv::write(const World3&);
+extern template AssemblyMeasures AssemblyCsv::write(const World&);
+extern template AssemblyMeasures AssemblyCsv::write(const World3&);
 extern template void ProbesCsv::write(const World&);
 extern template void ProbesCsv::write(const World3&);
 extern template void write_contacts_csv(const std::filesystem::path&, const World&);

@@ -1,0 +1,98 @@
+// The shared "plate compression" benchmark (../shared/bench/README.md, v1):
+// loads the case, runs the 200 warm-up steps, times the 2000 steps after
+// them, and prints the README's metrics beside the reference values.
+//   bench_plate_compression [--case FILE] [--threads N ...]
+// Figures are printed, not asserted.
+#include <sys/resource.h>
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <vector>
+
+#include "dem/io/case_conversion.h"
+#include "dem/io/case_loader.h"
+#include "dem/programme.h"
+#include "dem/world.h"
+
+namespace {
+
+struct Metrics {
+  double timed_seconds = 0.0;
+  double contacts_per_particle = 0.0;
+  double plate_force = 0.0;
+  int plate_contacts = 0;
+  double kinetic_energy = 0.0;
+  dem::StepProfile profile;
+};
+
+Metrics run(const dem::io::CaseDefinition3& def, int threads) {
+  dem::WorldDef3 world_def = def.world;
+  world_def.threads = threads;
+  dem::World3 world(world_def);
+  dem::run_stage(world, def.stages.at(0));  // warm-up, untimed
+  const auto start = std::chrono::steady_clock::now();
+  dem::run_stage(world, def.stages.at(1));  // the 2000 timed steps
+  Metrics m;
+  m.timed_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  m.profile = world.profile();
+  // README metrics at step 2200.
+  int pairs = 0;
+  for (const dem::ContactRecord3& c : world.contacts()) pairs += c.second_particle != dem::kInvalidId && c.overlap > 0.0;
+  m.contacts_per_particle = 2.0 * pairs / world.particle_count();
+  const dem::WallId plate = world.find_wall("plate");
+  m.plate_force = world.wall_measures()[plate].force.z();  // on the plate, positive upward
+  const double plate_z = world.wall(plate).point.z();
+  const auto p = world.particles();
+  for (int i = 0; i < world.particle_count(); ++i) m.plate_contacts += p.position[i].z() + p.radius[i] > plate_z;
+  m.kinetic_energy = world.assembly_measures().kinetic_energy;
+  return m;
+}
+
+double peak_rss_mib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"The shared plate-compression benchmark"};
+  std::filesystem::path case_file = DEM_CASES_DIR "/bench/plate_compression_10k.case.txtpb";
+  std::vector<int> threads{1, 2};
+  app.add_option("--case", case_file, "a plate-compression case (cases/bench/)")->check(CLI::ExistingFile);
+  app.add_option("--threads", threads, "thread counts to time, one run each");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    const auto total_start = std::chrono::steady_clock::now();
+    const dem::io::LoadedCase loaded = dem::io::load_case_file(case_file);
+    const dem::io::CaseDefinition3 def = dem::io::convert_case<3>(loaded.message, loaded.source);
+    const double n = static_cast<double>(def.world.particles.size());
+    const bool big = def.world.particles.size() > 50000;
+    std::printf("plate compression, %.0f spheres (%s)\n", n, case_file.c_str());
+    for (int t : threads) {
+      const Metrics m = run(def, t);
+      const dem::StepProfile& p = m.profile;
+      std::printf("  %d thread%s: timed %.3f s, %.3e particle-steps/s; contacts/particle %.4f (reference %.2f, %+.2f%%), "
+                  "plate Fz %.5f N (reference %.4f, %+.1f%%), plate contacts %d, KE %.3e J\n",
+                  t, t == 1 ? "" : "s", m.timed_seconds, n * 2000.0 / m.timed_seconds, m.contacts_per_particle,
+                  big ? 5.02 : 4.78, 100.0 * (m.contacts_per_particle / (big ? 5.02 : 4.78) - 1.0), m.plate_force,
+                  big ? 0.0147 : 0.0119, 100.0 * (m.plate_force / (big ? 0.0147 : 0.0119) - 1.0), m.plate_contacts,
+                  m.kinetic_energy);
+      const double per_step = 1e6 / static_cast<double>(p.cycles);
+      std::printf("    per step (all 2200): find %.1f us, forces %.1f us, sums %.1f us, motion %.1f us; %llu rebuilds\n",
+                  per_step * p.find_contacts, per_step * p.contact_forces, per_step * p.force_sums,
+                  per_step * p.motion, static_cast<unsigned long long>(p.contact_rebuilds));
+    }
+    std::printf("  total wall time %.1f s, peak RSS %.1f MiB\n",
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - total_start).count(), peak_rss_mib());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
