@@ -1,0 +1,165 @@
+#include "superquadric.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace dem {
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+Vec2 rotate(const Vec2& v, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
+}
+
+// |t|^p with the sign of t.
+double signed_power(double t, double p) { return std::copysign(std::pow(std::abs(t), p), t); }
+
+// Brent's minimisation (Brent 1973, the golden section with parabolic
+// steps) of f on [lo, hi], starting from x inside it.
+template <typename F>
+double brent_minimise(F f, double lo, double hi, double x, double tolerance) {
+  constexpr double kGolden = 0.3819660112501051;
+  double w = x, v = x, fx = f(x), fw = fx, fv = fx;
+  double d = 0.0, e = 0.0;
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const double middle = 0.5 * (lo + hi);
+    const double tol1 = tolerance * std::abs(x) + 1e-12, tol2 = 2.0 * tol1;
+    if (std::abs(x - middle) <= tol2 - 0.5 * (hi - lo)) break;
+    bool golden = true;
+    if (std::abs(e) > tol1) {
+      // Try a parabola through x, w, v.
+      double r = (x - w) * (fx - fv), q = (x - v) * (fx - fw), p = (x - v) * q - (x - w) * r;
+      q = 2.0 * (q - r);
+      if (q > 0.0) p = -p;
+      q = std::abs(q);
+      const double previous = e;
+      e = d;
+      if (std::abs(p) < std::abs(0.5 * q * previous) && p > q * (lo - x) && p < q * (hi - x)) {
+        d = p / q;
+        const double u = x + d;
+        if (u - lo < tol2 || hi - u < tol2) d = std::copysign(tol1, middle - x);
+        golden = false;
+      }
+    }
+    if (golden) {
+      e = (x >= middle ? lo : hi) - x;
+      d = kGolden * e;
+    }
+    const double u = std::abs(d) >= tol1 ? x + d : x + std::copysign(tol1, d);
+    const double fu = f(u);
+    if (fu <= fx) {
+      (u >= x ? lo : hi) = x;
+      v = w, fv = fw, w = x, fw = fx, x = u, fx = fu;
+    } else {
+      (u < x ? lo : hi) = u;
+      if (fu <= fw || w == x) {
+        v = w, fv = fw, w = u, fw = fu;
+      } else if (fu <= fv || v == x || v == w) {
+        v = u, fv = fu;
+      }
+    }
+  }
+  return x;
+}
+
+// The parametric angle of body i's boundary that minimises body j's
+// function (eqs. 36-37): a coarse scan (or the previous cycle's answer)
+// brackets the minimum, Brent's method refines it.
+double minimise_potential(const PlacedSuperquadric& i, const PlacedSuperquadric& j, double hint, bool use_hint) {
+  // j's frame: rotate by -(theta_j), about j's centre.
+  const double relative = i.angle - j.angle;
+  const Vec2 offset = rotate(i.centre - j.centre, -j.angle);
+  auto potential = [&](double alpha) {
+    return superquadric_function(j.shape, rotate(superquadric_point(i.shape, alpha), relative) + offset);
+  };
+  constexpr int kSamples = 24;
+  constexpr double kStep = kTwoPi / kSamples;
+  double best = hint;
+  if (!use_hint) {
+    double best_value = potential(0.0);
+    best = 0.0;
+    for (int k = 1; k < kSamples; ++k) {
+      const double value = potential(k * kStep);
+      if (value < best_value) best_value = value, best = k * kStep;
+    }
+  }
+  const double alpha = brent_minimise(potential, best - kStep, best + kStep, best, 1e-10);
+  return std::fmod(std::fmod(alpha, kTwoPi) + kTwoPi, kTwoPi);
+}
+
+}  // namespace
+
+double superquadric_function(const Superquadric& s, const Vec2& p) {
+  return std::pow(std::abs(p.x()) / s.a, s.n) + std::pow(std::abs(p.y()) / s.b, s.n) - 1.0;
+}
+
+Vec2 superquadric_point(const Superquadric& s, double alpha) {
+  const double e = 2.0 / s.n;
+  return {s.a * signed_power(std::cos(alpha), e), s.b * signed_power(std::sin(alpha), e)};
+}
+
+Curvature superquadric_curvature(const Superquadric& s, const Vec2& p) {
+  // Derivatives of f (eq. 34) at p; eq. 39 with them, eq. 40 for the normal.
+  const double n = s.n;
+  const double x = std::abs(p.x()), y = std::abs(p.y());
+  const double fx = std::copysign(n / s.a * std::pow(x / s.a, n - 1.0), p.x());
+  const double fy = std::copysign(n / s.b * std::pow(y / s.b, n - 1.0), p.y());
+  const double fxx = n * (n - 1.0) / (s.a * s.a) * std::pow(x / s.a, n - 2.0);
+  const double fyy = n * (n - 1.0) / (s.b * s.b) * std::pow(y / s.b, n - 2.0);
+  const double gradient = std::hypot(fx, fy);
+  const double denominator = fxx * fy * fy + fyy * fx * fx;  // f_xy = 0 for eq. 34
+  const double cap = 1e3 * std::max(s.a, s.b);
+  const double radius = denominator > 0.0 ? std::min(cap, gradient * gradient * gradient / denominator) : cap;
+  return {radius, Vec2(fx, fy) / gradient};
+}
+
+SuperquadricContact superquadric_contact(const PlacedSuperquadric& i, const PlacedSuperquadric& j,
+                                         double alpha_i_hint, double alpha_j_hint, bool use_hints) {
+  SuperquadricContact c;
+  c.alpha_i = minimise_potential(i, j, alpha_i_hint, use_hints);
+  c.alpha_j = minimise_potential(j, i, alpha_j_hint, use_hints);
+  // Circles of curvature at P_i and P_j (eqs. 38-41), in the plane.
+  const Vec2 pi = superquadric_point(i.shape, c.alpha_i), pj = superquadric_point(j.shape, c.alpha_j);
+  const Curvature ki = superquadric_curvature(i.shape, pi), kj = superquadric_curvature(j.shape, pj);
+  const Vec2 ci = i.centre + rotate(pi - ki.radius * ki.normal, i.angle);
+  const Vec2 cj = j.centre + rotate(pj - kj.radius * kj.normal, j.angle);
+  const Vec2 between = cj - ci;
+  const double d = between.norm();
+  c.overlap = ki.radius + kj.radius - d;  // eq. 42
+  c.normal = d > 0.0 ? Vec2(between / d) : Vec2(rotate(ki.normal, i.angle));
+  c.point = ci + (ki.radius - 0.5 * c.overlap) * c.normal;
+  return c;
+}
+
+SupportContact superquadric_line_contact(const PlacedSuperquadric& body, const Vec2& on_line, const Vec2& outward) {
+  // The support point in direction u = outward (the boundary point that
+  // reaches furthest past the line), local frame: where the boundary's
+  // normal is u, x = a sgn(u_x) |a u_x|^(1/(n-1)) / S and likewise y, with
+  // S making f = 0.
+  const Superquadric& s = body.shape;
+  const Vec2 u = rotate(outward, -body.angle);
+  const double q = 1.0 / (s.n - 1.0);
+  const double px = std::pow(std::abs(s.a * u.x()), q), py = std::pow(std::abs(s.b * u.y()), q);
+  const double scale = std::pow(std::pow(px, s.n) + std::pow(py, s.n), 1.0 / s.n);
+  const Vec2 local(std::copysign(s.a * px / scale, u.x()), std::copysign(s.b * py / scale, u.y()));
+  const Vec2 point = body.centre + rotate(local, body.angle);
+  return {(point - on_line).dot(outward), point};
+}
+
+SuperquadricMass superquadric_mass(const Superquadric& s) {
+  // Dirichlet's integral over a quadrant of (x/a)^n + (y/b)^n <= 1:
+  //   integral of x^p y^q dA = a^(p+1) b^(q+1) / n^2 G((p+1)/n) G((q+1)/n) / G((p+q+2)/n + 1).
+  const double n = s.n;
+  const double g1 = std::tgamma(1.0 / n), g3 = std::tgamma(3.0 / n);
+  const double area = 4.0 * s.a * s.b / (n * n) * g1 * g1 / std::tgamma(2.0 / n + 1.0);
+  const double polar = 4.0 * (s.a * s.a * s.a * s.b + s.a * s.b * s.b * s.b) / (n * n) * g1 * g3 /
+                       std::tgamma(4.0 / n + 1.0);
+  return {area, polar};
+}
+
+}  // namespace dem

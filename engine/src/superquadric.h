@@ -1,0 +1,72 @@
+// Contact geometry of 2D superquadrics (Miyata et al. 2002, section 2.3):
+//   f(x, y) = (|x|/a)^n + (|y|/b)^n - 1   (eq. 34), 1 < n <= 10,
+// with the boundary point P(alpha) = (a sgn(cos) |cos|^(2/n), b sgn(sin) |sin|^(2/n))
+// (eq. 35). Contact between bodies i and j: the point of i's boundary that
+// minimises j's function (Brent's method, eqs. 36-37) and the point of j's
+// boundary that minimises i's; their circles of curvature (eqs. 38-41) then
+// overlap by rho_i + rho_j - |C_j - C_i| along the line C_i -> C_j (eq. 42).
+#pragma once
+
+#include "dem/math.h"
+
+namespace dem {
+
+struct Superquadric {
+  double a = 1.0;  // semi-axis along the body's local x, m
+  double b = 1.0;  // semi-axis along the body's local y, m
+  double n = 2.0;  // shape exponent, 1 < n <= 10 (2 with a = b: a disc)
+};
+
+// A superquadric placed in the plane: centre and the angle of its local x axis.
+struct PlacedSuperquadric {
+  Superquadric shape;
+  Vec2 centre = Vec2::Zero();
+  double angle = 0.0;
+};
+
+// f of eq. 34 at a point in the body's local frame.
+double superquadric_function(const Superquadric& s, const Vec2& local);
+
+// The boundary point of eq. 35 for the parametric angle alpha.
+Vec2 superquadric_point(const Superquadric& s, double alpha);
+
+// Radius of curvature (eq. 39) and outward unit normal (eq. 40) at a
+// boundary point given in the local frame. The radius is capped at 1e3
+// times the larger semi-axis: at the tip of a flat side (n > 2) the
+// boundary is straight and the radius infinite.
+struct Curvature {
+  double radius;
+  Vec2 normal;
+};
+Curvature superquadric_curvature(const Superquadric& s, const Vec2& local);
+
+// The contact of eq. 42 between two placed superquadrics. The parametric
+// angles that minimised the potentials are returned, and may be passed
+// back in (alpha_i, alpha_j) to start the next search near them.
+struct SuperquadricContact {
+  double overlap;       // delta_n = rho_i + rho_j - d; > 0 in contact
+  Vec2 normal;          // from C_i towards C_j
+  Vec2 point;           // halfway through the overlap on the line of centres of curvature
+  double alpha_i, alpha_j;
+};
+SuperquadricContact superquadric_contact(const PlacedSuperquadric& i, const PlacedSuperquadric& j,
+                                         double alpha_i_hint, double alpha_j_hint, bool use_hints);
+
+// The point of a placed superquadric deepest past a line whose unit normal
+// `outward` points away from the body's side: its support point in the
+// direction `outward`, and how far it lies past the line through `on_line`.
+struct SupportContact {
+  double overlap;  // > 0 when the body crosses the line
+  Vec2 point;      // on the body's boundary
+};
+SupportContact superquadric_line_contact(const PlacedSuperquadric& body, const Vec2& on_line, const Vec2& outward);
+
+// Area and polar moment of inertia per unit density (unit thickness) of a
+// superquadric, integrated numerically once per particle.
+struct SuperquadricMass {
+  double area;
+  double polar_moment;  // integral of (x^2 + y^2) dA
+};
+SuperquadricMass superquadric_mass(const Superquadric& s);
+
+}  // namespace dem

@@ -1,0 +1,103 @@
+// 2D superquadric contact geometry (Miyata et al. 2002, section 2.3) on
+// configurations with known answers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "superquadric.h"
+
+namespace dem {
+namespace {
+
+TEST(Superquadric, BoundaryPointsLieOnTheSurface) {
+  const Superquadric s{0.195, 0.0976, 4.0};  // Miyata's Table 1 particle
+  for (double alpha = 0.0; alpha < 6.3; alpha += 0.1) {
+    EXPECT_NEAR(superquadric_function(s, superquadric_point(s, alpha)), 0.0, 1e-12);  // eqs. 34-35
+  }
+}
+
+TEST(Superquadric, CircleHasItsRadiusAsCurvatureAndAreaPiR2) {
+  const Superquadric circle{0.15, 0.15, 2.0};
+  const Curvature k = superquadric_curvature(circle, superquadric_point(circle, 0.7));
+  EXPECT_NEAR(k.radius, 0.15, 1e-12);
+  const SuperquadricMass m = superquadric_mass(circle);
+  EXPECT_NEAR(m.area, std::numbers::pi * 0.0225, 1e-12);
+  EXPECT_NEAR(m.polar_moment, 0.5 * std::numbers::pi * std::pow(0.15, 4), 1e-14);  // pi R^4 / 2
+}
+
+TEST(Superquadric, EllipseCurvatureAtTheEndsOfItsAxes) {
+  // For n = 2 the radius of curvature is b^2/a at (a, 0) and a^2/b at (0, b).
+  const Superquadric ellipse{0.3, 0.1, 2.0};
+  EXPECT_NEAR(superquadric_curvature(ellipse, {0.3, 0.0}).radius, 0.01 / 0.3, 1e-12);
+  EXPECT_NEAR(superquadric_curvature(ellipse, {0.0, 0.1}).radius, 0.09 / 0.1, 1e-12);
+  EXPECT_NEAR(superquadric_mass(ellipse).area, std::numbers::pi * 0.03, 1e-12);
+}
+
+TEST(Superquadric, DiscsOverlapByTheSumOfRadiiLessTheDistance) {
+  const PlacedSuperquadric i{{0.15, 0.15, 2.0}, {0.0, 0.0}, 0.3};
+  const PlacedSuperquadric j{{0.10, 0.10, 2.0}, {0.2, 0.1}, -1.1};
+  const SuperquadricContact c = superquadric_contact(i, j, 0.0, 0.0, false);
+  const double d = std::hypot(0.2, 0.1);
+  EXPECT_NEAR(c.overlap, 0.25 - d, 1e-9);
+  EXPECT_NEAR(c.normal.x(), 0.2 / d, 1e-6);
+  EXPECT_NEAR(c.normal.y(), 0.1 / d, 1e-6);
+}
+
+TEST(Superquadric, FlatSidesFaceToFaceAlongTheAxes) {
+  // Two n = 4 particles side by side along x, axes aligned: the flat tips
+  // overlap by 2a - D; side by side along y, by 2b - D.
+  const Superquadric s{0.195, 0.0976, 4.0};
+  for (double gap : {-0.002, -0.0005}) {
+    const PlacedSuperquadric i{s, {0.0, 0.0}, 0.0}, j{s, {2 * s.a + gap, 0.0}, 0.0};
+    const SuperquadricContact c = superquadric_contact(i, j, 0.0, 0.0, false);
+    EXPECT_NEAR(c.overlap, -gap, 1e-7) << "along x, gap " << gap;
+    EXPECT_NEAR(c.normal.x(), 1.0, 1e-6);
+    const PlacedSuperquadric k{s, {0.0, 2 * s.b + gap}, 0.0};
+    const SuperquadricContact cy = superquadric_contact(i, k, 0.0, 0.0, false);
+    EXPECT_NEAR(cy.overlap, -gap, 1e-7) << "along y, gap " << gap;
+    EXPECT_NEAR(cy.normal.y(), 1.0, 1e-6);
+  }
+  // Apart: a negative overlap.
+  const PlacedSuperquadric far{s, {2 * s.a + 0.01, 0.0}, 0.0};
+  EXPECT_LT(superquadric_contact({s, {0, 0}, 0}, far, 0, 0, false).overlap, 0.0);
+}
+
+TEST(Superquadric, TurnedParticlesMeetOnTheirLongSides) {
+  // Turned by 90 degrees, the long axis stands along y: two such particles
+  // side by side along x touch with their b sides.
+  const Superquadric s{0.195, 0.0976, 4.0};
+  const double half = 0.5 * std::numbers::pi;
+  const PlacedSuperquadric i{s, {0.0, 0.0}, half}, j{s, {2 * s.b - 0.001, 0.0}, half};
+  EXPECT_NEAR(superquadric_contact(i, j, 0, 0, false).overlap, 0.001, 1e-7);
+}
+
+TEST(Superquadric, LineContactUsesTheSupportPoint) {
+  const Superquadric s{0.195, 0.0976, 4.0};
+  // A floor y = 0 below a particle at height b - 0.001: overlap 0.001 at the bottom.
+  const SupportContact flat = superquadric_line_contact({s, {0.0, s.b - 0.001}, 0.0}, {0.0, 0.0}, {0.0, -1.0});
+  EXPECT_NEAR(flat.overlap, 0.001, 1e-12);
+  // Turned 45 degrees, the lowest point is where the normal points down.
+  const PlacedSuperquadric turned{s, {0.0, 0.0}, 0.25 * std::numbers::pi};
+  double lowest = 0.0;
+  for (double alpha = 0.0; alpha < 2 * std::numbers::pi; alpha += 1e-4) {
+    const Vec2 p = superquadric_point(s, alpha);
+    const double c = std::cos(turned.angle), sn = std::sin(turned.angle);
+    lowest = std::min(lowest, sn * p.x() + c * p.y());
+  }
+  const SupportContact tilted = superquadric_line_contact(turned, {0.0, lowest + 0.001}, {0.0, -1.0});
+  EXPECT_NEAR(tilted.overlap, 0.001, 1e-6);
+}
+
+TEST(Superquadric, WarmStartFindsTheSameContact) {
+  const Superquadric s{0.195, 0.0976, 4.0};
+  const PlacedSuperquadric i{s, {0.0, 0.0}, 0.2}, j{s, {0.3, 0.12}, -0.4};
+  const SuperquadricContact cold = superquadric_contact(i, j, 0.0, 0.0, false);
+  const PlacedSuperquadric j2{s, {0.3005, 0.1201}, -0.401};  // a cycle later
+  const SuperquadricContact warm = superquadric_contact(i, j2, cold.alpha_i, cold.alpha_j, true);
+  const SuperquadricContact fresh = superquadric_contact(i, j2, 0.0, 0.0, false);
+  EXPECT_NEAR(warm.overlap, fresh.overlap, 1e-9);
+}
+
+}  // namespace
+}  // namespace dem
