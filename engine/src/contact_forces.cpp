@@ -1,5 +1,6 @@
 #include "contact_forces.h"
 
+#include "contact_geometry.h"
 #include "law_dispatch.h"
 #include "parallel.h"
 
@@ -46,126 +47,156 @@ ContactEnergy total(const std::vector<ContactEnergy>& partials) {
   return sum;
 }
 
-template <int Dim, typename Law>
+// Relative velocity of the first body's contact point with respect to the
+// second's (Cundall & Strack eq. 11): round bodies in BALL's form, other
+// shapes through their lever arms.
+template <typename Shape, int Dim>
+Vec<Dim> contact_velocity(const Particles<Dim>& p, ParticleId x, const Vec<Dim>& second_velocity,
+                          const Spin<Dim>& second_spin, double second_radius, const ContactGeometry<Dim>& g) {
+  if constexpr (Shape::round) {
+    return relative_contact_velocity(p.velocity[x], p.angular_velocity[x], p.radius[x], second_velocity,
+                                     second_spin, second_radius, g.normal);
+  } else {
+    return (p.velocity[x] + cross(p.angular_velocity[x], g.arm_first)) -
+           (second_velocity + cross(second_spin, g.arm_second));
+  }
+}
+
+// The contact's force on the first body and its moments on both: F_s R for
+// round bodies (Cundall & Strack, resultant moments), arm x F otherwise.
+template <typename Shape, int Dim>
+ContactForce<Dim> contact_force(const ContactState<Dim>& s, const ContactGeometry<Dim>& g, double r_first,
+                                double r_second) {
+  const Vec<Dim> force = resolve_force(s, g.normal);
+  if constexpr (Shape::round) {
+    const ShearForce<Dim> shear = s.shear + s.shear_damping;
+    return {force, shear_moment(shear, r_first, g.normal), shear_moment(shear, r_second, g.normal)};
+  } else {
+    return {force, cross(g.arm_first, force), cross(g.arm_second, Vec<Dim>(-force))};
+  }
+}
+
+template <int Dim, typename Law, typename Shape>
 ContactEnergy pair_pass(const Particles<Dim>& particles, const Periodic<Dim>& periodic,
-                        std::vector<PairContact<Dim>>& pairs,
-                        std::vector<ContactForce<Dim>>& forces, const ContactParamTable& params, double dt,
-                        int threads) {
+                        std::vector<PairContact<Dim>>& pairs, std::vector<ContactForce<Dim>>& forces,
+                        const ContactParamTable& params, double dt, int threads) {
   const auto n = static_cast<std::int64_t>(pairs.size());
   return total(for_blocks<ContactEnergy>(n, threads, [&](std::int64_t begin, std::int64_t end, ContactEnergy& energy) {
-  for (std::int64_t c = begin; c < end; ++c) {
-    PairContact<Dim>& contact = pairs[c];
-    ContactState<Dim>& s = contact.state;
-    const ParticleId x = contact.first, y = contact.second;
-    const Vec<Dim> d = periodic.separation(particles.position[x], particles.position[y]);
-    const double distance = d.norm();
-    const double rx = particles.radius[x], ry = particles.radius[y];
-    const double overlap = rx + ry - distance;
-    const Vec<Dim> e = distance > 0.0 ? Vec<Dim>(d / distance) : Vec<Dim>::UnitX();  // eq. 9
-    const Vec<Dim> relative =
-        relative_contact_velocity(particles.velocity[x], particles.angular_velocity[x], rx, particles.velocity[y],
-                                  particles.angular_velocity[y], ry, e);  // eq. 11
-    if (s.touching) settle_contact_work(s, relative, dt, energy);
-    if (overlap <= 0.0 || distance == 0.0) {  // eq. 8
-      separate(s);
-      forces[c] = ContactForce<Dim>{};
-      continue;
+    for (std::int64_t c = begin; c < end; ++c) {
+      PairContact<Dim>& contact = pairs[c];
+      ContactState<Dim>& s = contact.state;
+      const ParticleId x = contact.first, y = contact.second;
+      const ContactGeometry<Dim> g = Shape::pair(particles, periodic, x, y, s);
+      const Vec<Dim> relative = contact_velocity<Shape>(particles, x, particles.velocity[y],
+                                                        particles.angular_velocity[y], particles.radius[y], g);
+      if (s.touching) settle_contact_work(s, relative, dt, energy);
+      if (g.overlap <= 0.0) {  // eq. 8
+        separate(s);
+        forces[c] = ContactForce<Dim>{};
+        continue;
+      }
+      if (s.touching) carry_shear(s.shear, g.normal);
+      const double mx = particles.mass[x], my = particles.mass[y];
+      const PairProperties pair{g.effective_radius, mx * my / (mx + my)};  // Randall 4.5-4.6
+      const ContactKinematics<Dim> k = kinematics(g.overlap, relative, g.normal);
+      Law::apply(s, k, pair, params(particles.material[x], particles.material[y]), dt);
+      remember_dashpot(s, g.normal, relative);
+      s.normal = g.normal;
+      s.point = g.point;
+      forces[c] = contact_force<Shape>(s, g, particles.radius[x], particles.radius[y]);
     }
-    if (s.touching) carry_shear(s.shear, e);
-    const double mx = particles.mass[x], my = particles.mass[y];
-    const PairProperties pair{rx * ry / (rx + ry), mx * my / (mx + my)};  // Randall 4.5-4.6
-    const ContactKinematics<Dim> k = kinematics(overlap, relative, e);
-    Law::apply(s, k, pair, params(particles.material[x], particles.material[y]), dt);
-    remember_dashpot(s, e, relative);
-    s.normal = e;
-    s.point = particles.position[x] + (rx - 0.5 * overlap) * e;
-    // Sum M = F_s R for each body (Cundall & Strack, resultant moments).
-    const ShearForce<Dim> shear = s.shear + s.shear_damping;
-    forces[c] = ContactForce<Dim>{resolve_force(s, e), shear_moment(shear, rx, e), shear_moment(shear, ry, e)};
-  }
   }));
 }
 
-template <int Dim, typename Law>
+template <int Dim, typename Law, typename Shape>
 ContactEnergy wall_pass(const Particles<Dim>& particles, const Walls<Dim>& walls,
                         std::vector<WallContact<Dim>>& contacts, std::vector<ContactForce<Dim>>& forces,
                         const ContactParamTable& params, double dt, int threads) {
   const auto n = static_cast<std::int64_t>(contacts.size());
   return total(for_blocks<ContactEnergy>(n, threads, [&](std::int64_t begin, std::int64_t end, ContactEnergy& energy) {
-  for (std::int64_t c = begin; c < end; ++c) {
-    WallContact<Dim>& contact = contacts[c];
-    ContactState<Dim>& s = contact.state;
-    const ParticleId x = contact.particle;
-    const WallDefT<Dim>& wall = walls.def[contact.wall];
-    const Vec<Dim>& centre = particles.position[x];
-    const double r = particles.radius[x];
-    // The wall point A_(w) on the perpendicular through the particle centre (Fig. 1).
-    const Vec<Dim> q = closest_point(wall, centre).point;
-    const Vec<Dim> d = q - centre;
-    const double distance = d.norm();
-    const double overlap = r - distance;
-    // e points from the particle to the wall; a centre exactly on the wall
-    // takes the wall's normal towards the particle side, reversed.
-    const Vec<Dim> e = distance > 0.0 ? Vec<Dim>(d / distance) : Vec<Dim>(-wall_normal(wall));
-    const Vec<Dim> wall_velocity = wall_point_velocity(wall, walls.last_velocity[contact.wall],
-                                                       walls.last_angular_velocity[contact.wall], q);
-    const Vec<Dim> relative =
-        relative_contact_velocity(particles.velocity[x], particles.angular_velocity[x], r, wall_velocity,
-                                  Space<Dim>::zero_spin(), 0.0, e);
-    if (s.touching) settle_contact_work(s, relative, dt, energy);
-    if (overlap <= 0.0) {
-      separate(s);
-      forces[c] = ContactForce<Dim>{};
-      continue;
+    for (std::int64_t c = begin; c < end; ++c) {
+      WallContact<Dim>& contact = contacts[c];
+      ContactState<Dim>& s = contact.state;
+      const ParticleId x = contact.particle;
+      const WallDefT<Dim>& wall = walls.def[contact.wall];
+      const ContactGeometry<Dim> g = Shape::wall(particles, wall, x);
+      // The wall's velocity at the contact point.
+      const Vec<Dim> wall_velocity = wall_point_velocity(wall, walls.last_velocity[contact.wall],
+                                                         walls.last_angular_velocity[contact.wall], g.point);
+      const Vec<Dim> relative =
+          contact_velocity<Shape>(particles, x, wall_velocity, Space<Dim>::zero_spin(), 0.0, g);
+      if (s.touching) settle_contact_work(s, relative, dt, energy);
+      if (g.overlap <= 0.0) {
+        separate(s);
+        forces[c] = ContactForce<Dim>{};
+        continue;
+      }
+      if (s.touching) carry_shear(s.shear, g.normal);
+      const PairProperties pair{g.effective_radius, particles.mass[x]};
+      const ContactKinematics<Dim> k = kinematics(g.overlap, relative, g.normal);
+      Law::apply(s, k, pair, params(particles.material[x], wall.material), dt);
+      remember_dashpot(s, g.normal, relative);
+      s.normal = g.normal;
+      s.point = g.point;
+      forces[c] = contact_force<Shape>(s, g, particles.radius[x], 0.0);
+      forces[c].moment_second = Space<Dim>::zero_spin();
+      // The wall's motion does work on the particle through this contact.
+      energy.wall_work += forces[c].force.dot(wall_velocity) * dt;
     }
-    if (s.touching) carry_shear(s.shear, e);
-    const PairProperties pair{r, particles.mass[x]};
-    const ContactKinematics<Dim> k = kinematics(overlap, relative, e);
-    Law::apply(s, k, pair, params(particles.material[x], wall.material), dt);
-    remember_dashpot(s, e, relative);
-    s.normal = e;
-    s.point = centre + (r - 0.5 * overlap) * e;  // halfway between A_(D) and A_(w)
-    forces[c] = ContactForce<Dim>{resolve_force(s, e), shear_moment(ShearForce<Dim>(s.shear + s.shear_damping), r, e),
-                                  Space<Dim>::zero_spin()};
-    // The wall's motion does work on the particle through this contact.
-    energy.wall_work += forces[c].force.dot(wall_velocity) * dt;
-  }
   }));
+}
+
+// Calls pass.template operator()<Shape>() with the particles' shape policy.
+template <int Dim, typename Pass>
+void with_shape(ShapeKind shape, Pass&& pass) {
+  if constexpr (Dim == 2) {
+    if (shape == ShapeKind::kSuperquadric) {
+      pass.template operator()<SuperquadricShape>();
+      return;
+    }
+  }
+  pass.template operator()<RoundShape>();
 }
 
 }  // namespace
 
 template <int Dim>
-ContactEnergy compute_pair_forces(ContactLaw law, const Particles<Dim>& particles, const Periodic<Dim>& periodic,
-                                  std::vector<PairContact<Dim>>& pairs, std::vector<ContactForce<Dim>>& forces,
-                                  const ContactParamTable& params, double dt, int threads) {
+ContactEnergy compute_pair_forces(ContactLaw law, ShapeKind shape, const Particles<Dim>& particles,
+                                  const Periodic<Dim>& periodic, std::vector<PairContact<Dim>>& pairs,
+                                  std::vector<ContactForce<Dim>>& forces, const ContactParamTable& params, double dt,
+                                  int threads) {
   ContactEnergy energy;
   with_law(law, [&]<typename Law>() {
-    energy = pair_pass<Dim, Law>(particles, periodic, pairs, forces, params, dt, threads);
+    with_shape<Dim>(shape, [&]<typename Shape>() {
+      energy = pair_pass<Dim, Law, Shape>(particles, periodic, pairs, forces, params, dt, threads);
+    });
   });
   return energy;
 }
 
 template <int Dim>
-ContactEnergy compute_wall_forces(ContactLaw law, const Particles<Dim>& particles, const Walls<Dim>& walls,
-                                  std::vector<WallContact<Dim>>& contacts, std::vector<ContactForce<Dim>>& forces,
-                                  const ContactParamTable& params, double dt, int threads) {
+ContactEnergy compute_wall_forces(ContactLaw law, ShapeKind shape, const Particles<Dim>& particles,
+                                  const Walls<Dim>& walls, std::vector<WallContact<Dim>>& contacts,
+                                  std::vector<ContactForce<Dim>>& forces, const ContactParamTable& params, double dt,
+                                  int threads) {
   ContactEnergy energy;
   with_law(law, [&]<typename Law>() {
-    energy = wall_pass<Dim, Law>(particles, walls, contacts, forces, params, dt, threads);
+    with_shape<Dim>(shape, [&]<typename Shape>() {
+      energy = wall_pass<Dim, Law, Shape>(particles, walls, contacts, forces, params, dt, threads);
+    });
   });
   return energy;
 }
 
-template ContactEnergy compute_pair_forces(ContactLaw, const Particles<2>&, const Periodic<2>&,
+template ContactEnergy compute_pair_forces(ContactLaw, ShapeKind, const Particles<2>&, const Periodic<2>&,
                                            std::vector<PairContact<2>>&,
                                   std::vector<ContactForce<2>>&, const ContactParamTable&, double, int);
-template ContactEnergy compute_pair_forces(ContactLaw, const Particles<3>&, const Periodic<3>&,
+template ContactEnergy compute_pair_forces(ContactLaw, ShapeKind, const Particles<3>&, const Periodic<3>&,
                                            std::vector<PairContact<3>>&,
                                   std::vector<ContactForce<3>>&, const ContactParamTable&, double, int);
-template ContactEnergy compute_wall_forces(ContactLaw, const Particles<2>&, const Walls<2>&, std::vector<WallContact<2>>&,
+template ContactEnergy compute_wall_forces(ContactLaw, ShapeKind, const Particles<2>&, const Walls<2>&, std::vector<WallContact<2>>&,
                                   std::vector<ContactForce<2>>&, const ContactParamTable&, double, int);
-template ContactEnergy compute_wall_forces(ContactLaw, const Particles<3>&, const Walls<3>&, std::vector<WallContact<3>>&,
+template ContactEnergy compute_wall_forces(ContactLaw, ShapeKind, const Particles<3>&, const Walls<3>&, std::vector<WallContact<3>>&,
                                   std::vector<ContactForce<3>>&, const ContactParamTable&, double, int);
 
 }  // namespace dem

@@ -37,6 +37,10 @@ struct ContactState {
   // central differences centre on (see contact_forces.cpp).
   Vec<Dim> dashpot_force = Vec<Dim>::Zero();
   Vec<Dim> relative_velocity = Vec<Dim>::Zero();
+  // Superquadrics: the parametric angles that minimised the two potentials
+  // last cycle, to start this cycle's search near them (Miyata 2.3).
+  double alpha_first = 0.0, alpha_second = 0.0;
+  bool has_alphas = false;
 };
 
 // What a contact exerts this cycle (springs + dashpots), zero when it does

@@ -36,10 +36,15 @@ struct LinearLaw {
   }
 };
 
-// A pair that no longer overlaps carries no force and loses its history.
+// A pair that no longer overlaps carries no force and loses its history
+// (a superquadric pair keeps where its contact search ended, to start there).
 template <int Dim>
 void separate(ContactState<Dim>& s) {
-  s = ContactState<Dim>{};
+  ContactState<Dim> fresh;
+  fresh.alpha_first = s.alpha_first;
+  fresh.alpha_second = s.alpha_second;
+  fresh.has_alphas = s.has_alphas;
+  s = fresh;
 }
 
 }  // namespace dem

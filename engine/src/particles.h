@@ -7,9 +7,14 @@
 #include <vector>
 
 #include "dem/ids.h"
+#include "dem/definitions.h"
 #include "dem/math.h"
 
 namespace dem {
+
+// The particles' shape, one for the whole world so the contact passes
+// choose their geometry once, like the law.
+enum class ShapeKind { kRound, kSuperquadric };
 
 template <int Dim>
 struct Particles {
@@ -26,8 +31,9 @@ struct Particles {
   // constant properties
   std::vector<double> radius;
   std::vector<double> mass;
-  std::vector<double> inertia;  // about any axis through the centre (discs and spheres)
+  std::vector<double> inertia;  // about the centre (discs, spheres, superquadrics in the plane)
   std::vector<MaterialId> material;
+  std::vector<ShapeDefT<Dim>> shape;  // 2D superquadric axes and exponent (the angle lives in rotation)
 
   std::size_t size() const { return position.size(); }
 };

@@ -74,8 +74,8 @@ WorldSnapshotT<Dim> save_snapshot(const WorldState<Dim>& s) {
   def.time_step_fraction = s.time_step_fraction;
   const Particles<Dim>& p = s.particles;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    def.particles.push_back(
-        ParticleDefT<Dim>{p.position[i], p.radius[i], p.material[i], p.velocity[i], p.angular_velocity[i]});
+    def.particles.push_back(ParticleDefT<Dim>{p.position[i], p.radius[i], p.material[i], p.velocity[i],
+                                              p.angular_velocity[i], p.shape[i]});
   }
   snap.rotation = p.rotation;
   snap.force = p.force;

@@ -131,6 +131,8 @@ SuperquadricContact superquadric_contact(const PlacedSuperquadric& i, const Plac
   const Vec2 between = cj - ci;
   const double d = between.norm();
   c.overlap = ki.radius + kj.radius - d;  // eq. 42
+  c.radius_i = ki.radius;
+  c.radius_j = kj.radius;
   c.normal = d > 0.0 ? Vec2(between / d) : Vec2(rotate(ki.normal, i.angle));
   c.point = ci + (ki.radius - 0.5 * c.overlap) * c.normal;
   return c;
@@ -148,7 +150,7 @@ SupportContact superquadric_line_contact(const PlacedSuperquadric& body, const V
   const double scale = std::pow(std::pow(px, s.n) + std::pow(py, s.n), 1.0 / s.n);
   const Vec2 local(std::copysign(s.a * px / scale, u.x()), std::copysign(s.b * py / scale, u.y()));
   const Vec2 point = body.centre + rotate(local, body.angle);
-  return {(point - on_line).dot(outward), point};
+  return {(point - on_line).dot(outward), point, superquadric_curvature(s, local).radius};
 }
 
 SuperquadricMass superquadric_mass(const Superquadric& s) {

@@ -48,6 +48,7 @@ struct SuperquadricContact {
   Vec2 normal;          // from C_i towards C_j
   Vec2 point;           // halfway through the overlap on the line of centres of curvature
   double alpha_i, alpha_j;
+  double radius_i, radius_j;  // the radii of curvature rho_i, rho_j
 };
 SuperquadricContact superquadric_contact(const PlacedSuperquadric& i, const PlacedSuperquadric& j,
                                          double alpha_i_hint, double alpha_j_hint, bool use_hints);
@@ -58,6 +59,7 @@ SuperquadricContact superquadric_contact(const PlacedSuperquadric& i, const Plac
 struct SupportContact {
   double overlap;  // > 0 when the body crosses the line
   Vec2 point;      // on the body's boundary
+  double radius;   // its radius of curvature there
 };
 SupportContact superquadric_line_contact(const PlacedSuperquadric& body, const Vec2& on_line, const Vec2& outward);
 

@@ -13,6 +13,7 @@
 #include "contact_forces.h"
 #include "dem/error.h"
 #include "motion.h"
+#include "superquadric.h"
 #include "world_state.h"
 
 namespace dem {
@@ -45,10 +46,10 @@ void step(WorldState<Dim>& s) {
     timer.lap(s.profile.find_contacts);
   }
   ContactTable<Dim>& c = s.contacts;
-  ContactEnergy contact_energy = compute_pair_forces(s.pair_law, s.particles, s.periodic, c.pairs, c.pair_forces,
-                                                     s.params, s.time_step, s.threads);
-  contact_energy +=
-      compute_wall_forces(s.wall_law, s.particles, s.walls, c.walls, c.wall_forces, s.params, s.time_step, s.threads);
+  ContactEnergy contact_energy = compute_pair_forces(s.pair_law, s.shape, s.particles, s.periodic, c.pairs,
+                                                     c.pair_forces, s.params, s.time_step, s.threads);
+  contact_energy += compute_wall_forces(s.wall_law, s.shape, s.particles, s.walls, c.walls, c.wall_forces, s.params,
+                                        s.time_step, s.threads);
   s.energy.contact_damping += contact_energy.damping;
   s.tangential_work += contact_energy.tangential_work;
   s.energy.wall_work += contact_energy.wall_work;
@@ -144,6 +145,17 @@ void validate(const WorldDefT<Dim>& def) {
   for (std::size_t i = 0; i < def.particles.size(); ++i) {
     const ParticleDefT<Dim>& p = def.particles[i];
     const std::string where = "particle " + std::to_string(i);
+    if constexpr (Dim == 2) {
+      const ShapeDefT<2>& shape = p.shape;
+      check(shape.superquadric() == def.particles[0].shape.superquadric(),
+            where + ": the particles must be all discs or all superquadrics");
+      if (shape.superquadric()) {
+        check(shape.b > 0.0, where + ": superquadric semi-axis b must be > 0");
+        check(shape.n > 1.0 && shape.n <= 10.0, where + ": superquadric exponent n must be in (1, 10]");
+        check(def.planar_particle == PlanarParticle::kDisc, where + ": superquadrics have unit thickness, not spheres");
+        continue;  // a superquadric's radius comes from its axes
+      }
+    }
     check(p.radius > 0.0 && std::isfinite(p.radius), where + ": radius must be > 0");
     check(p.material >= 0 && p.material < materials, where + ": unknown material id");
     const MaterialDef& mat = def.materials[p.material];
@@ -281,16 +293,30 @@ BasicWorld<Dim>::BasicWorld(const Def& def) : state_(std::make_unique<WorldState
   const bool discs = Dim == 2 && def.planar_particle == PlanarParticle::kDisc;
   double radius_sum = 0.0;
   for (const ParticleDefT<Dim>& d : def.particles) {
-    const MassProperties mp = mass_properties(s.materials[d.material].density, d.radius, discs);
+    const double density = s.materials[d.material].density;
+    MassProperties mp = mass_properties(density, d.radius, discs);
+    double radius = d.radius;
+    Orientation<Dim> rotation = Space<Dim>::identity();
+    if constexpr (Dim == 2) {
+      if (d.shape.superquadric()) {
+        // Unit thickness; the bounding circle serves the broad phase.
+        const SuperquadricMass m = superquadric_mass({d.shape.a, d.shape.b, d.shape.n});
+        mp = {density * m.area, density * m.polar_moment};
+        radius = std::max(d.shape.a, d.shape.b);
+        rotation = d.shape.angle;
+        s.shape = ShapeKind::kSuperquadric;
+      }
+    }
     p.position.push_back(d.position);
     p.velocity.push_back(d.velocity);
     p.angular_velocity.push_back(d.angular_velocity);
-    p.rotation.push_back(Space<Dim>::identity());
-    p.radius.push_back(d.radius);
+    p.rotation.push_back(rotation);
+    p.radius.push_back(radius);
     p.mass.push_back(mp.mass);
     p.inertia.push_back(mp.inertia);
     p.material.push_back(d.material);
-    radius_sum += d.radius;
+    p.shape.push_back(d.shape);
+    radius_sum += radius;
   }
   p.force.assign(n, Vec<Dim>::Zero());
   p.moment.assign(n, Space<Dim>::zero_spin());

@@ -27,6 +27,7 @@ struct WorldState {
   Periodic<Dim> periodic;
   ContactTable<Dim> contacts;
   ContactParamTable params;
+  ShapeKind shape = ShapeKind::kRound;
   ContactLaw pair_law = ContactLaw::kLinear;  // the law of every particle-particle contact
   ContactLaw wall_law = ContactLaw::kLinear;  // the law of every particle-wall contact
   DampingDef damping;

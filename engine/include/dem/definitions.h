@@ -100,13 +100,35 @@ struct DampingDef {
   std::optional<double> local_alpha_rotation;   // dimensionless, in [0, 1)
 };
 
+// A particle's shape beyond its radius.
+template <int Dim>
+struct ShapeDefT;
+
+// In 2D, a superquadric (Miyata et al. 2002, eq. 34): |x/a|^n + |y/b|^n = 1
+// in the particle's own frame, turned by `angle`; 1 < n <= 10. With a = 0
+// (the default) the particle is a disc (or a sphere in the plane) of its
+// radius. A world's particles are all discs or all superquadrics.
+template <>
+struct ShapeDefT<2> {
+  double a = 0.0;      // m, semi-axis along the local x axis
+  double b = 0.0;      // m, semi-axis along the local y axis
+  double n = 2.0;      // shape exponent
+  double angle = 0.0;  // rad, of the local x axis, counter-clockwise
+  bool superquadric() const { return a > 0.0; }
+};
+
+// In 3D, particles are spheres of their radius.
+template <>
+struct ShapeDefT<3> {};
+
 template <int Dim>
 struct ParticleDefT {
   Vec<Dim> position = Vec<Dim>::Zero();  // m
-  double radius = 1.0;                   // m
+  double radius = 1.0;                   // m; a superquadric's is its larger semi-axis, set from the shape
   MaterialId material = 0;
   Vec<Dim> velocity = Vec<Dim>::Zero();  // m/s
   Spin<Dim> angular_velocity = Space<Dim>::zero_spin();  // rad/s (2D: counter-clockwise positive)
+  ShapeDefT<Dim> shape;
 };
 
 // A servo holds the normal force a wall carries at a target: the wall moves

@@ -1,0 +1,111 @@
+// Where two bodies touch: the overlap, the normal e_i, the contact point and
+// the lever arms from each centre, for round particles (Cundall & Strack
+// eqs. 8-10) and for 2D superquadrics (Miyata et al. 2002, eqs. 34-42).
+// A shape policy is chosen once per pass, like the contact law.
+#pragma once
+
+#include <cmath>
+
+#include "contact_table.h"
+#include "particles.h"
+#include "periodic.h"
+#include "superquadric.h"
+#include "walls.h"
+
+namespace dem {
+
+template <int Dim>
+struct ContactGeometry {
+  double overlap = 0.0;               // > 0 in contact
+  Vec<Dim> normal = Vec<Dim>::Zero(); // e_i, from the first body towards the second
+  Vec<Dim> point = Vec<Dim>::Zero();  // halfway through the overlap
+  Vec<Dim> arm_first = Vec<Dim>::Zero();   // contact point - first centre
+  Vec<Dim> arm_second = Vec<Dim>::Zero();  // contact point - second centre (0 for a wall)
+  double effective_radius = 0.0;      // R* for the Hertz laws
+};
+
+// Discs and spheres: the line of centres (eqs. 8-10). Their moments keep
+// BALL's form F_s R (tangential.h), so `round` tells the passes which.
+struct RoundShape {
+  static constexpr bool round = true;
+
+  template <int Dim>
+  static ContactGeometry<Dim> pair(const Particles<Dim>& p, const Periodic<Dim>& periodic, ParticleId x, ParticleId y,
+                                   ContactState<Dim>&) {
+    ContactGeometry<Dim> g;
+    const Vec<Dim> d = periodic.separation(p.position[x], p.position[y]);
+    const double distance = d.norm(), rx = p.radius[x], ry = p.radius[y];
+    g.overlap = distance > 0.0 ? rx + ry - distance : -1.0;  // eq. 8
+    g.normal = distance > 0.0 ? Vec<Dim>(d / distance) : Vec<Dim>::UnitX();  // eq. 9
+    g.point = p.position[x] + (rx - 0.5 * g.overlap) * g.normal;
+    g.arm_first = rx * g.normal;
+    g.arm_second = -ry * g.normal;
+    g.effective_radius = rx * ry / (rx + ry);  // Randall 4.5
+    return g;
+  }
+
+  template <int Dim>
+  static ContactGeometry<Dim> wall(const Particles<Dim>& p, const WallDefT<Dim>& wall, ParticleId x) {
+    ContactGeometry<Dim> g;
+    const Vec<Dim>& centre = p.position[x];
+    const double r = p.radius[x];
+    // The wall point A_(w) on the perpendicular through the particle centre (Fig. 1).
+    const Vec<Dim> q = closest_point(wall, centre).point;
+    const Vec<Dim> d = q - centre;
+    const double distance = d.norm();
+    g.overlap = r - distance;
+    // e points from the particle to the wall; a centre exactly on the wall
+    // takes the wall's normal towards the particle side, reversed.
+    g.normal = distance > 0.0 ? Vec<Dim>(d / distance) : Vec<Dim>(-wall_normal(wall));
+    g.point = centre + (r - 0.5 * g.overlap) * g.normal;  // halfway between A_(D) and A_(w)
+    g.arm_first = r * g.normal;
+    g.effective_radius = r;
+    return g;
+  }
+};
+
+// 2D superquadrics: the circles of curvature at the points that minimise
+// each other's potential (eqs. 34-42), warm-started from the last cycle.
+struct SuperquadricShape {
+  static constexpr bool round = false;
+
+  static PlacedSuperquadric placed(const Particles<2>& p, ParticleId i, const Vec2& centre) {
+    const ShapeDefT<2>& s = p.shape[i];
+    return {{s.a, s.b, s.n}, centre, p.rotation[i]};
+  }
+
+  static ContactGeometry<2> pair(const Particles<2>& p, const Periodic<2>& periodic, ParticleId x, ParticleId y,
+                                 ContactState<2>& state) {
+    const Vec2& cx = p.position[x];
+    const Vec2 cy = cx + periodic.separation(cx, p.position[y]);  // the nearest image of y
+    const SuperquadricContact c = superquadric_contact(placed(p, x, cx), placed(p, y, cy), state.alpha_first,
+                                                       state.alpha_second, state.has_alphas);
+    state.alpha_first = c.alpha_i;
+    state.alpha_second = c.alpha_j;
+    state.has_alphas = true;
+    ContactGeometry<2> g;
+    g.overlap = c.overlap;
+    g.normal = c.normal;
+    g.point = c.point;
+    g.arm_first = c.point - cx;
+    g.arm_second = c.point - cy;
+    g.effective_radius = c.radius_i * c.radius_j / (c.radius_i + c.radius_j);
+    return g;
+  }
+
+  static ContactGeometry<2> wall(const Particles<2>& p, const WallDefT<2>& wall, ParticleId x) {
+    ContactGeometry<2> g;
+    const Vec2 towards_particles = wall_normal(wall);
+    const SupportContact s = superquadric_line_contact(placed(p, x, p.position[x]), wall.point, -towards_particles);
+    // The deepest point must lie along the segment; past its ends there is no contact.
+    const double along = (s.point - wall.point).dot(wall.direction);
+    g.overlap = along >= wall.h1 && along <= wall.h2 ? s.overlap : -1.0;
+    g.normal = -towards_particles;
+    g.point = s.point + 0.5 * s.overlap * towards_particles;
+    g.arm_first = g.point - p.position[x];
+    g.effective_radius = s.radius;
+    return g;
+  }
+};
+
+}  // namespace dem
