@@ -77,7 +77,7 @@ ContactForce<Dim> contact_force(const ContactState<Dim>& s, const ContactGeometr
 }
 
 template <int Dim, typename Law, typename Shape>
-ContactEnergy pair_pass(const Particles<Dim>& particles, const Periodic<Dim>& periodic,
+ContactEnergy pair_pass(std::uint64_t cycle, const Particles<Dim>& particles, const Periodic<Dim>& periodic,
                         std::vector<PairContact<Dim>>& pairs, std::vector<ContactForce<Dim>>& forces,
                         const ContactParamTable& params, double dt, int threads) {
   const auto n = static_cast<std::int64_t>(pairs.size());
@@ -96,6 +96,7 @@ ContactEnergy pair_pass(const Particles<Dim>& particles, const Periodic<Dim>& pe
         continue;
       }
       if (s.touching) carry_shear(s.shear, g.normal);
+      if (!s.touching) s.formed_cycle = cycle;
       const double mx = particles.mass[x], my = particles.mass[y];
       const PairProperties pair{g.effective_radius, mx * my / (mx + my)};  // Randall 4.5-4.6
       const ContactKinematics<Dim> k = kinematics(g.overlap, relative, g.normal);
@@ -109,7 +110,7 @@ ContactEnergy pair_pass(const Particles<Dim>& particles, const Periodic<Dim>& pe
 }
 
 template <int Dim, typename Law, typename Shape>
-ContactEnergy wall_pass(const Particles<Dim>& particles, const Walls<Dim>& walls,
+ContactEnergy wall_pass(std::uint64_t cycle, const Particles<Dim>& particles, const Walls<Dim>& walls,
                         std::vector<WallContact<Dim>>& contacts, std::vector<ContactForce<Dim>>& forces,
                         const ContactParamTable& params, double dt, int threads) {
   const auto n = static_cast<std::int64_t>(contacts.size());
@@ -132,6 +133,7 @@ ContactEnergy wall_pass(const Particles<Dim>& particles, const Walls<Dim>& walls
         continue;
       }
       if (s.touching) carry_shear(s.shear, g.normal);
+      if (!s.touching) s.formed_cycle = cycle;
       const PairProperties pair{g.effective_radius, particles.mass[x]};
       const ContactKinematics<Dim> k = kinematics(g.overlap, relative, g.normal);
       Law::apply(s, k, pair, params(particles.material[x], wall.material), dt);
@@ -161,42 +163,42 @@ void with_shape(ShapeKind shape, Pass&& pass) {
 }  // namespace
 
 template <int Dim>
-ContactEnergy compute_pair_forces(ContactLaw law, ShapeKind shape, const Particles<Dim>& particles,
-                                  const Periodic<Dim>& periodic, std::vector<PairContact<Dim>>& pairs,
+ContactEnergy compute_pair_forces(ContactLaw law, ShapeKind shape, std::uint64_t cycle,
+                                  const Particles<Dim>& particles, const Periodic<Dim>& periodic, std::vector<PairContact<Dim>>& pairs,
                                   std::vector<ContactForce<Dim>>& forces, const ContactParamTable& params, double dt,
                                   int threads) {
   ContactEnergy energy;
   with_law(law, [&]<typename Law>() {
     with_shape<Dim>(shape, [&]<typename Shape>() {
-      energy = pair_pass<Dim, Law, Shape>(particles, periodic, pairs, forces, params, dt, threads);
+      energy = pair_pass<Dim, Law, Shape>(cycle, particles, periodic, pairs, forces, params, dt, threads);
     });
   });
   return energy;
 }
 
 template <int Dim>
-ContactEnergy compute_wall_forces(ContactLaw law, ShapeKind shape, const Particles<Dim>& particles,
-                                  const Walls<Dim>& walls, std::vector<WallContact<Dim>>& contacts,
+ContactEnergy compute_wall_forces(ContactLaw law, ShapeKind shape, std::uint64_t cycle,
+                                  const Particles<Dim>& particles, const Walls<Dim>& walls, std::vector<WallContact<Dim>>& contacts,
                                   std::vector<ContactForce<Dim>>& forces, const ContactParamTable& params, double dt,
                                   int threads) {
   ContactEnergy energy;
   with_law(law, [&]<typename Law>() {
     with_shape<Dim>(shape, [&]<typename Shape>() {
-      energy = wall_pass<Dim, Law, Shape>(particles, walls, contacts, forces, params, dt, threads);
+      energy = wall_pass<Dim, Law, Shape>(cycle, particles, walls, contacts, forces, params, dt, threads);
     });
   });
   return energy;
 }
 
-template ContactEnergy compute_pair_forces(ContactLaw, ShapeKind, const Particles<2>&, const Periodic<2>&,
+template ContactEnergy compute_pair_forces(ContactLaw, ShapeKind, std::uint64_t, const Particles<2>&, const Periodic<2>&,
                                            std::vector<PairContact<2>>&,
                                   std::vector<ContactForce<2>>&, const ContactParamTable&, double, int);
-template ContactEnergy compute_pair_forces(ContactLaw, ShapeKind, const Particles<3>&, const Periodic<3>&,
+template ContactEnergy compute_pair_forces(ContactLaw, ShapeKind, std::uint64_t, const Particles<3>&, const Periodic<3>&,
                                            std::vector<PairContact<3>>&,
                                   std::vector<ContactForce<3>>&, const ContactParamTable&, double, int);
-template ContactEnergy compute_wall_forces(ContactLaw, ShapeKind, const Particles<2>&, const Walls<2>&, std::vector<WallContact<2>>&,
+template ContactEnergy compute_wall_forces(ContactLaw, ShapeKind, std::uint64_t, const Particles<2>&, const Walls<2>&, std::vector<WallContact<2>>&,
                                   std::vector<ContactForce<2>>&, const ContactParamTable&, double, int);
-template ContactEnergy compute_wall_forces(ContactLaw, ShapeKind, const Particles<3>&, const Walls<3>&, std::vector<WallContact<3>>&,
+template ContactEnergy compute_wall_forces(ContactLaw, ShapeKind, std::uint64_t, const Particles<3>&, const Walls<3>&, std::vector<WallContact<3>>&,
                                   std::vector<ContactForce<3>>&, const ContactParamTable&, double, int);
 
 }  // namespace dem

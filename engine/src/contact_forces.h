@@ -28,14 +28,14 @@ struct ContactEnergy {
 };
 
 template <int Dim>
-ContactEnergy compute_pair_forces(ContactLaw law, ShapeKind shape, const Particles<Dim>& particles,
-                                  const Periodic<Dim>& periodic,
+ContactEnergy compute_pair_forces(ContactLaw law, ShapeKind shape, std::uint64_t cycle,
+                                  const Particles<Dim>& particles, const Periodic<Dim>& periodic,
                                   std::vector<PairContact<Dim>>& pairs, std::vector<ContactForce<Dim>>& forces,
                                   const ContactParamTable& params, double dt, int threads);
 
 template <int Dim>
-ContactEnergy compute_wall_forces(ContactLaw law, ShapeKind shape, const Particles<Dim>& particles,
-                                  const Walls<Dim>& walls,
+ContactEnergy compute_wall_forces(ContactLaw law, ShapeKind shape, std::uint64_t cycle,
+                                  const Particles<Dim>& particles, const Walls<Dim>& walls,
                          std::vector<WallContact<Dim>>& contacts, std::vector<ContactForce<Dim>>& forces,
                          const ContactParamTable& params, double dt, int threads);
 

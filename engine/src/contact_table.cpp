@@ -84,7 +84,11 @@ void rebuild_contacts(ContactTable<Dim>& table, const std::vector<Candidate>& pa
   // Outputs of the next force pass; every entry is rewritten there.
   table.pair_forces.assign(table.pairs.size(), ContactForce<Dim>{});
   table.wall_forces.assign(table.walls.size(), ContactForce<Dim>{});
+  reindex_contacts(table, particle_count);
+}
 
+template <int Dim>
+void reindex_contacts(ContactTable<Dim>& table, int particle_count) {
   std::vector<std::int32_t> firsts(table.pairs.size()), seconds(table.pairs.size());
   for (std::size_t c = 0; c < table.pairs.size(); ++c) {
     assert(table.pairs[c].first < table.pairs[c].second);
@@ -97,6 +101,8 @@ void rebuild_contacts(ContactTable<Dim>& table, const std::vector<Candidate>& pa
   build_index(owners, nullptr, particle_count, table.index.wall_offsets, table.index.wall_entries);
 }
 
+template void reindex_contacts(ContactTable<2>&, int);
+template void reindex_contacts(ContactTable<3>&, int);
 template void rebuild_contacts(ContactTable<2>&, const std::vector<Candidate>&, const std::vector<Candidate>&, int);
 template void rebuild_contacts(ContactTable<3>&, const std::vector<Candidate>&, const std::vector<Candidate>&, int);
 

@@ -41,6 +41,7 @@ struct ContactState {
   // last cycle, to start this cycle's search near them (Miyata 2.3).
   double alpha_first = 0.0, alpha_second = 0.0;
   bool has_alphas = false;
+  std::uint64_t formed_cycle = 0;  // the cycle the contact began touching
 };
 
 // What a contact exerts this cycle (springs + dashpots), zero when it does
@@ -89,6 +90,10 @@ struct Candidate {
   ParticleId first;
   std::int32_t second;  // a particle (pairs) or a wall
 };
+
+// Rebuilds the per-particle index after rows were dropped or renumbered.
+template <int Dim>
+void reindex_contacts(ContactTable<Dim>& table, int particle_count);
 
 // Replaces the table's entries with the new candidate lists (both sorted),
 // carrying over the history of every pair present in both.

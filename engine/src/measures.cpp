@@ -21,6 +21,7 @@ ContactRecordT<Dim> to_record(const ContactState<Dim>& s, ParticleId first) {
   r.normal_damping = s.normal_damping;
   r.shear_damping = reported_shear(s.shear_damping);
   r.sliding = s.sliding;
+  r.formed_cycle = s.formed_cycle;
   return r;
 }
 

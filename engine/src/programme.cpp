@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 
 namespace dem {
 
@@ -20,17 +22,62 @@ bool servos_settled(const BasicWorld<Dim>& world, double tolerance) {
 }
 
 template <int Dim>
+double wall_stress(const BasicWorld<Dim>& world, WallId wall) {
+  return world.wall_measures()[wall].normal_force / world.wall_area(wall);
+}
+
+template <int Dim>
 bool conditions_hold(const BasicWorld<Dim>& world, const StopConditions& until) {
   const bool needs_assembly = until.kinetic_energy_below || until.out_of_balance_below;
   const AssemblyMeasures a = needs_assembly ? world.assembly_measures() : AssemblyMeasures{};
   if (until.kinetic_energy_below && !(a.kinetic_energy < *until.kinetic_energy_below)) return false;
   if (until.out_of_balance_below && !(a.contacts > 0 && a.out_of_balance < *until.out_of_balance_below)) return false;
   if (until.servo_tolerance && !servos_settled(world, *until.servo_tolerance)) return false;
+  if (until.wall_stress_above && wall_stress(world, until.wall_stress_above->wall) < until.wall_stress_above->value) {
+    return false;
+  }
+  if (until.wall_settlement_above &&
+      world.wall_settlement(until.wall_settlement_above->wall) < until.wall_settlement_above->value) {
+    return false;
+  }
   return true;
 }
 
 bool has_condition(const StopConditions& until) {
-  return until.kinetic_energy_below || until.out_of_balance_below || until.servo_tolerance;
+  return until.kinetic_energy_below || until.out_of_balance_below || until.servo_tolerance ||
+         until.wall_stress_above || until.wall_settlement_above;
+}
+
+// Miyata et al. (2002) 3.1, eq. 60: remove the particles whose centres lie
+// above height + amplitude sin(2 pi x / wavelength).
+template <int Dim>
+void trim(BasicWorld<Dim>& world, const TrimDef& t) {
+  const auto p = world.particles();
+  std::vector<ParticleId> above;
+  for (ParticleId i = 0; i < world.particle_count(); ++i) {
+    const Vec<Dim>& x = p.position[i];
+    const double surface = t.height + t.amplitude * std::sin(2.0 * std::numbers::pi * x[0] / t.wavelength);
+    if (x[Dim - 1] > surface) above.push_back(i);
+  }
+  world.remove_particles(above);
+}
+
+// Sets a wall on the sample: along its normal, `clearance` beyond the
+// particle that reaches furthest towards it (by its bounding radius).
+template <int Dim>
+void place_on_sample(BasicWorld<Dim>& world, const PlaceWallDef& place) {
+  const auto& wall = world.wall(place.wall);
+  Vec<Dim> normal;  // towards the particles
+  if constexpr (Dim == 2) {
+    normal = counter_clockwise_perpendicular(wall.direction);
+  } else {
+    normal = wall.direction.cross(wall.direction2);
+  }
+  const auto p = world.particles();
+  double reach = -std::numeric_limits<double>::infinity();
+  for (ParticleId i = 0; i < world.particle_count(); ++i) reach = std::max(reach, -p.position[i].dot(normal) + p.radius[i]);
+  const double shift = -wall.point.dot(normal) - (reach + place.clearance);
+  world.place_wall(place.wall, Vec<Dim>(wall.point + shift * normal));
 }
 
 }  // namespace
@@ -38,6 +85,8 @@ bool has_condition(const StopConditions& until) {
 template <int Dim>
 StageResult run_stage(BasicWorld<Dim>& world, const StageDefT<Dim>& stage, std::uint64_t interval,
                       const std::type_identity_t<StageObserverT<Dim>>& observer) {
+  if (stage.trim) trim(world, *stage.trim);
+  if (stage.place_wall) place_on_sample(world, *stage.place_wall);
   for (const auto& [wall, motion] : stage.wall_motions) world.set_wall_motion(wall, motion);
   if (stage.damping) world.set_damping(*stage.damping);
 

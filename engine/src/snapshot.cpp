@@ -22,6 +22,7 @@ ContactSnapshotT<Dim> save_contact(const ContactState<Dim>& s, const ContactForc
   c.force = f.force;
   c.moment_first = f.moment_first;
   c.moment_second = f.moment_second;
+  c.formed_cycle = s.formed_cycle;
   return c;
 }
 
@@ -36,6 +37,7 @@ void restore_contact(const ContactSnapshotT<Dim>& c, ContactState<Dim>& s, Conta
   s.shear_damping = c.shear_damping;
   s.normal = c.normal;
   s.point = c.point;
+  s.formed_cycle = c.formed_cycle;
   f = ContactForce<Dim>{c.force, c.moment_first, c.moment_second};
 }
 

@@ -46,10 +46,10 @@ void step(WorldState<Dim>& s) {
     timer.lap(s.profile.find_contacts);
   }
   ContactTable<Dim>& c = s.contacts;
-  ContactEnergy contact_energy = compute_pair_forces(s.pair_law, s.shape, s.particles, s.periodic, c.pairs,
-                                                     c.pair_forces, s.params, s.time_step, s.threads);
-  contact_energy += compute_wall_forces(s.wall_law, s.shape, s.particles, s.walls, c.walls, c.wall_forces, s.params,
-                                        s.time_step, s.threads);
+  ContactEnergy contact_energy = compute_pair_forces(s.pair_law, s.shape, s.cycle, s.particles, s.periodic,
+                                                     c.pairs, c.pair_forces, s.params, s.time_step, s.threads);
+  contact_energy += compute_wall_forces(s.wall_law, s.shape, s.cycle, s.particles, s.walls, c.walls, c.wall_forces,
+                                        s.params, s.time_step, s.threads);
   s.energy.contact_damping += contact_energy.damping;
   s.tangential_work += contact_energy.tangential_work;
   s.energy.wall_work += contact_energy.wall_work;

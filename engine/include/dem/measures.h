@@ -57,9 +57,10 @@ struct EnergyBudget {
   double friction = 0.0;         // lost to sliding and micro-slip: work done on the tangential springs they do not hold
   double global_damping = 0.0;   // dissipated by global (mass-proportional) damping
   double local_damping = 0.0;    // dissipated by local non-viscous damping
+  double removed = 0.0;          // held by particles and contacts when they were removed
   double residual() const {
     return initial_kinetic + gravity_work + wall_work -
-           (kinetic + strain + contact_damping + friction + global_damping + local_damping);
+           (kinetic + strain + contact_damping + friction + global_damping + local_damping + removed);
   }
 };
 
@@ -98,6 +99,7 @@ struct ContactRecordT {
   double normal_damping = 0.0;         // D_n, N (eq. 26)
   double shear_damping = 0.0;          // D_s, N (eq. 27): signed in 2D, the magnitude in 3D
   bool sliding = false;                // |F_s| reached (F_s)max
+  std::uint64_t formed_cycle = 0;      // the cycle the contact began touching
 };
 
 using WallMeasure = WallMeasureT<2>;

@@ -15,6 +15,12 @@
 
 namespace dem {
 
+// A threshold on one wall.
+struct WallThreshold {
+  WallId wall = kInvalidId;
+  double value = 0.0;
+};
+
 // Conditions that end a stage early: the stage ends when every condition
 // that is set holds at once. They are checked every check_interval cycles,
 // never before min_cycles.
@@ -23,13 +29,36 @@ struct StopConditions {
   std::optional<double> out_of_balance_below;  // Delta F / F
   // Every servo-controlled wall carries its target within this relative error.
   std::optional<double> servo_tolerance;
+  std::optional<WallThreshold> wall_stress_above;      // Pa: normal force over wall_area
+  std::optional<WallThreshold> wall_settlement_above;  // m: wall_settlement
   std::uint64_t min_cycles = 0;
   std::uint64_t check_interval = 10;
+};
+
+// Trimming a sample's surface (Miyata et al. 2002, 3.1): particles whose
+// centres lie above height + amplitude sin(2 pi x / wavelength) are
+// removed, "above" along the last axis (y in 2D, z in 3D), x along the
+// first. Amplitude 0 is a smooth surface; eq. 60 the rough one.
+struct TrimDef {
+  double height = 0.0;      // m
+  double amplitude = 0.0;   // m
+  double wavelength = 1.0;  // m, > 0
+};
+
+// Placing a wall on a sample: the wall moves along its normal until it
+// stands `clearance` beyond the furthest particle on its side (a loading
+// plate set on the sample's top, Miyata et al. 2002, 3.1).
+struct PlaceWallDef {
+  WallId wall = kInvalidId;
+  double clearance = 0.0;  // m
 };
 
 template <int Dim>
 struct StageDefT {
   std::string name;
+  // Done when the stage starts, in this order, before the wall motions.
+  std::optional<TrimDef> trim;
+  std::optional<PlaceWallDef> place_wall;
   std::vector<std::pair<WallId, WallMotionT<Dim>>> wall_motions;  // applied when the stage starts
   std::optional<DampingDef> damping;                              // applied when the stage starts
   std::uint64_t cycles = 0;  // the stage's length, or its cap when conditions are set

@@ -46,6 +46,7 @@ struct ContactSnapshotT {
   Vec<Dim> force = Vec<Dim>::Zero();  // on the first particle
   Spin<Dim> moment_first = Space<Dim>::zero_spin();
   Spin<Dim> moment_second = Space<Dim>::zero_spin();
+  std::uint64_t formed_cycle = 0;
 };
 
 template <int Dim>

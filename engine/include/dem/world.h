@@ -72,6 +72,18 @@ class BasicWorld {
   // Length (2D, times the out-of-plane depth) or area (3D) that turns a
   // wall's normal force into a normal stress.
   double wall_area(WallId id) const;
+  // Moves a wall's reference point there at once (placing a loading plate
+  // on a sample); its contacts start afresh and its displacement
+  // (settlement) counts from here.
+  void place_wall(WallId id, const Vec<Dim>& point);
+  // How far a wall has moved along its normal, towards the particles, since
+  // it was built or placed: a loading plate's settlement.
+  double wall_settlement(WallId id) const;
+
+  // Removes particles (trimming a sample's surface). The others keep their
+  // order and are renumbered densely; contacts between them keep their
+  // history. The energy they held is booked as removed.
+  void remove_particles(std::span<const ParticleId> ids);
 
   std::vector<Measure> wall_measures() const;
   AssemblyMeasures assembly_measures() const;

@@ -1,0 +1,137 @@
+// Sample preparation (Miyata et al. 2002, 3.1): trimming the surface,
+// placing a loading plate on the sample, loading it to a stress.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "dem/error.h"
+#include "dem/packing.h"
+#include "dem/programme.h"
+#include "dem/world.h"
+#include "model_builders.h"
+
+namespace dem {
+namespace {
+
+// Discs settled under gravity in a box 1 m wide; a plate waits above.
+World settled_box() {
+  WorldDef def;
+  def.materials = {MaterialDef{"rock", 1650.0, 0.51, 0.0}};
+  ContactModelDef model = testing::linear_model(1e7, 1e7);
+  model.law = ContactLaw::kLinearRestitution;
+  model.restitution = 0.3;
+  def.contact_models = {model};
+  RandomPackingDef packing;
+  packing.min = {0.0, 0.0};
+  packing.max = {1.0, 1.8};
+  packing.sizes = {{0.03, 150}, {0.02, 150}};
+  packing.seed = 5;
+  def.particles = generate_random_packing(packing);
+  def.walls = {WallDef{"bottom", {0.5, 0.0}, {1, 0}, -0.5, 0.5, 0, {}},
+               WallDef{"right", {1.0, 0.0}, {0, 1}, 0.0, 3.0, 0, {}},
+               WallDef{"left", {0.0, 3.0}, {0, -1}, 0.0, 3.0, 0, {}},
+               WallDef{"plate", {0.5, 2.5}, {-1, 0}, -0.5, 0.5, 0, {}}};
+  def.gravity = {0.0, -9.81};
+  def.damping.local_alpha = 0.3;
+  World world(def);
+  StageDef settle;
+  settle.cycles = 200000;
+  settle.until.kinetic_energy_below = 1e-6;
+  settle.until.check_interval = 500;
+  EXPECT_TRUE(run_stage(world, settle).condition_met);
+  return world;
+}
+
+TEST(WorldEdits, TrimmingRemovesTheTopAndKeepsTheRest) {
+  World world = settled_box();
+  const int before = world.particle_count();
+  // Pick a surviving contact to follow through the renumbering.
+  const auto contacts = world.contacts();
+  ContactRecord kept{};
+  for (const ContactRecord& c : contacts) {
+    if (c.second_particle != kInvalidId && world.particles().position[c.first].y() < 0.2 &&
+        world.particles().position[c.second_particle].y() < 0.2) {
+      kept = c;
+      break;
+    }
+  }
+  ASSERT_NE(kept.first, kInvalidId);
+  const Vec2 kept_first = world.particles().position[kept.first];
+  const Vec2 kept_second = world.particles().position[kept.second_particle];
+
+  StageDef trim;
+  trim.trim = TrimDef{0.4, 0.05, 0.5};  // a rough surface, Miyata eq. 60
+  trim.cycles = 0;
+  run_stage(world, trim);
+  const auto p = world.particles();
+  for (int i = 0; i < world.particle_count(); ++i) {
+    EXPECT_LE(p.position[i].y(), 0.4 + 0.05 * std::sin(2.0 * std::numbers::pi * p.position[i].x() / 0.5) + 1e-15);
+  }
+  std::printf("trimmed %d of %d particles\n", before - world.particle_count(), before);
+  EXPECT_LT(world.particle_count(), before);
+  // The followed contact survives with its history under the new ids.
+  bool found = false;
+  for (const ContactRecord& c : world.contacts()) {
+    if (c.second_particle == kInvalidId || (p.position[c.first] - kept_first).norm() > 1e-15 ||
+        (p.position[c.second_particle] - kept_second).norm() > 1e-15) {
+      continue;
+    }
+    EXPECT_EQ(c.normal_force, kept.normal_force);
+    EXPECT_EQ(c.shear_force, kept.shear_force);
+    EXPECT_EQ(c.formed_cycle, kept.formed_cycle);
+    found = true;
+  }
+  EXPECT_TRUE(found);
+  world.cycle(2000);
+  const EnergyBudget e = world.assembly_measures().energy;
+  std::printf("energy: gravity %.4e, removed %.3e, residual %.2e (%.3f%%)\n", e.gravity_work, e.removed, e.residual(),
+              100.0 * e.residual() / e.gravity_work);
+  EXPECT_GT(e.removed, 0.0);
+  EXPECT_LT(std::abs(e.residual()), 0.01 * e.gravity_work);
+}
+
+TEST(WorldEdits, PlateIsPlacedOnTheSampleAndLoadedToAStress) {
+  World world = settled_box();
+  const WallId plate = world.find_wall("plate");
+  StageDef place;
+  place.place_wall = PlaceWallDef{plate, 0.001};
+  place.cycles = 0;
+  run_stage(world, place);
+  double top = 0.0;
+  const auto p = world.particles();
+  for (int i = 0; i < world.particle_count(); ++i) top = std::max(top, p.position[i].y() + p.radius[i]);
+  EXPECT_NEAR(world.wall(plate).point.y(), top + 0.001, 1e-12);
+  EXPECT_EQ(world.wall_settlement(plate), 0.0);
+
+  StageDef load;
+  WallMotion down;
+  down.velocity = {0.0, -0.01};
+  load.wall_motions = {{plate, down}};
+  load.cycles = 2000000;
+  load.until.wall_stress_above = WallThreshold{plate, 20e3};  // 20 kPa over the plate's 1 m (unit depth)
+  load.until.check_interval = 10;
+  const StageResult result = run_stage(world, load);
+  const double stress = world.wall_measures()[plate].normal_force / world.wall_area(plate);
+  std::printf("20 kPa reached after %llu cycles: stress %.1f Pa, settlement %.5f m\n",
+              static_cast<unsigned long long>(result.cycles_run), stress, world.wall_settlement(plate));
+  EXPECT_TRUE(result.condition_met);
+  EXPECT_GE(stress, 20e3);
+  EXPECT_NEAR(world.wall_settlement(plate), 0.01 * world.time_step() * static_cast<double>(result.cycles_run), 1e-12);
+  // Contacts on the plate formed after it was placed.
+  for (const ContactRecord& c : world.contacts()) {
+    if (c.second_wall == plate) {
+      EXPECT_GT(c.formed_cycle, world.cycle_count() - result.cycles_run);
+    }
+  }
+}
+
+TEST(WorldEdits, BadIdsAreRefused) {
+  World world = settled_box();
+  const std::vector<ParticleId> bad{world.particle_count()};
+  EXPECT_THROW(world.remove_particles(bad), DefinitionError);
+  EXPECT_THROW(world.place_wall(9, Vec2::Zero()), DefinitionError);
+}
+
+}  // namespace
+}  // namespace dem
