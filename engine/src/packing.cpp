@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "dem/error.h"
@@ -126,20 +127,24 @@ std::vector<ParticleDefT<Dim>> generate_random_packing(const RandomPackingDefT<D
     throw DefinitionError("random packing: max must exceed min along every axis");
   }
   if (def.sizes.empty()) throw DefinitionError("random packing: no size classes");
-  std::vector<SizeClass> sizes = def.sizes;
+  std::vector<SizeClassT<Dim>> sizes = def.sizes;
   double largest = 0.0;
-  for (const SizeClass& s : sizes) {
+  for (SizeClassT<Dim>& s : sizes) {
+    if constexpr (Dim == 2) {
+      if (s.shape.superquadric()) s.radius = std::max(s.shape.a, s.shape.b);
+    }
     if (s.radius <= 0.0) throw DefinitionError("random packing: size class radius must be > 0");
     if (s.count < 0) throw DefinitionError("random packing: size class count must be >= 0");
     largest = std::max(largest, s.radius);
   }
   // Largest first: the big particles find room before the box fills up.
-  std::stable_sort(sizes.begin(), sizes.end(), [](const SizeClass& a, const SizeClass& b) { return a.radius > b.radius; });
+  std::stable_sort(sizes.begin(), sizes.end(),
+                   [](const SizeClassT<Dim>& a, const SizeClassT<Dim>& b) { return a.radius > b.radius; });
 
   Random random(def.seed);
   PlacementGrid<Dim> grid(def.min, def.max, 2.0 * largest);
   std::vector<ParticleDefT<Dim>> placed;
-  for (const SizeClass& size : sizes) {
+  for (const SizeClassT<Dim>& size : sizes) {
     const Vec<Dim> lo = def.min + Vec<Dim>::Constant(size.radius);
     const Vec<Dim> span = (def.max - def.min) - Vec<Dim>::Constant(2.0 * size.radius);
     if ((span.array() < 0.0).any()) {
@@ -156,6 +161,10 @@ std::vector<ParticleDefT<Dim>> generate_random_packing(const RandomPackingDefT<D
         p.position = x;
         p.radius = size.radius;
         p.material = def.material;
+        p.shape = size.shape;
+        if constexpr (Dim == 2) {
+          if (p.shape.superquadric()) p.shape.angle = 2.0 * std::numbers::pi * random.uniform();
+        }
         placed.push_back(p);
         done = true;
       }

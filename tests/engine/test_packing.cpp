@@ -52,6 +52,26 @@ TEST(Packing, SeedDecidesThePacking) {
   EXPECT_NE(a[100].position, c[100].position);
 }
 
+TEST(Packing, SuperquadricsArePlacedByTheirBoundingCircleAtRandomAngles) {
+  RandomPackingDef def;
+  def.max = {4.0, 3.0};
+  SizeClass rock;
+  rock.count = 30;
+  rock.shape = ShapeDefT<2>{0.195, 0.0976, 4.0, 0.0};  // Miyata's Table 1 particle
+  def.sizes = {rock};
+  const auto p = generate_random_packing(def);
+  ASSERT_EQ(p.size(), 30u);
+  double first_angle = p[0].shape.angle;
+  bool varied = false;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    EXPECT_EQ(p[i].radius, 0.195);
+    EXPECT_EQ(p[i].shape.n, 4.0);
+    varied = varied || p[i].shape.angle != first_angle;
+    for (std::size_t j = i + 1; j < p.size(); ++j) EXPECT_GE((p[i].position - p[j].position).norm(), 0.39);
+  }
+  EXPECT_TRUE(varied);
+}
+
 TEST(Packing, ImpossiblePackingIsAnErrorNamingTheSize) {
   RandomPackingDef def;
   def.max = {10.0, 10.0};

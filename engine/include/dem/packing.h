@@ -27,23 +27,32 @@ struct LatticeDefT {
   LatticeArrangement arrangement = LatticeArrangement::kSquare;
 };
 
-struct SizeClass {
+// A class of equal particles: discs or spheres of a radius, or (2D) a
+// superquadric shape, whose bounding radius max(a, b) is then its radius.
+template <int Dim>
+struct SizeClassT {
   double radius = 1.0;  // m
   int count = 0;
+  ShapeDefT<Dim> shape;
 };
 
 // Random sequential placement inside [min, max] (centres keep a radius from
-// the faces), largest sizes first; a particle that finds no free place after
-// max_attempts tries is an error (DefinitionError) naming its size class.
+// the faces), largest sizes first, no two bounding circles or spheres
+// overlapping; superquadrics are turned at random (seeded) angles. A
+// particle that finds no free place after max_attempts tries is an error
+// (DefinitionError) naming its size class.
 template <int Dim>
 struct RandomPackingDefT {
   MaterialId material = 0;
   Vec<Dim> min = Vec<Dim>::Zero();
   Vec<Dim> max = Vec<Dim>::Ones();
-  std::vector<SizeClass> sizes;
+  std::vector<SizeClassT<Dim>> sizes;
   std::uint64_t seed = 1;
   int max_attempts = 100000;
 };
+
+using SizeClass = SizeClassT<2>;
+using SizeClass3 = SizeClassT<3>;
 
 template <int Dim>
 std::vector<ParticleDefT<Dim>> generate_lattice(const LatticeDefT<Dim>& def);
