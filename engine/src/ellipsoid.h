@@ -1,0 +1,58 @@
+// Contact geometry of ellipsoids (Miyata et al. 2002, section 2.4; Lin &
+// Ng 1995): f(x) = (x1/a1)^2 + (x2/a2)^2 + (x3/a3)^2 - 1 in the body's
+// principal axes (eqs. 43-44). Between two bodies, the point of each
+// surface that minimises the other's potential; the overlap is their
+// distance along the contact normal, and the equivalent radius R_e comes
+// from the principal curvatures of both surfaces there (eqs. 45-48). A
+// face meets an ellipsoid at its support point (eqs. 50-56).
+#pragma once
+
+#include "dem/math.h"
+
+namespace dem {
+
+struct PlacedEllipsoid {
+  Vec3 axes = Vec3::Ones();  // semi-axes a1, a2, a3, m
+  Vec3 centre = Vec3::Zero();
+  Quaternion orientation = Quaternion::Identity();  // body axes -> world
+};
+
+struct EllipsoidContact {
+  double overlap;            // > 0 in contact
+  Vec3 normal;               // from the first body towards the second
+  Vec3 point;                // halfway between the two surface points
+  double effective_radius;   // R_e (see ellipsoid.cpp)
+  Vec3 first_point, second_point;  // P_i on i (deepest in j's potential), P_j on j
+  double multiplier_i, multiplier_j;  // where the searches ended: pass them back next cycle
+};
+
+// The contact between two ellipsoids; mu_i, mu_j start the searches (0:
+// no previous value).
+EllipsoidContact ellipsoid_contact(const PlacedEllipsoid& i, const PlacedEllipsoid& j, double mu_i = 0.0,
+                                   double mu_j = 0.0);
+
+// The contact of an ellipsoid with a plane through `on_plane` whose unit
+// normal `towards` points to the ellipsoid's side: the support point P
+// (eq. 54), its depth past the plane (eq. 55) and the projected point Q
+// (eq. 56) to test against a face's outline.
+struct EllipsoidFaceContact {
+  double overlap;           // > 0 when P lies past the plane
+  Vec3 support;             // P, on the ellipsoid
+  Vec3 projected;           // Q, on the plane
+  double effective_radius;  // sqrt(R' R'') of the ellipsoid at P
+};
+EllipsoidFaceContact ellipsoid_plane_contact(const PlacedEllipsoid& body, const Vec3& on_plane,
+                                             const Vec3& towards);
+
+// Principal curvatures (1/m) of an ellipsoid's surface at a point on it.
+Eigen::Vector2d ellipsoid_principal_curvatures(const PlacedEllipsoid& body, const Vec3& point);
+
+// Mass per unit density and principal moments of inertia per unit density
+// of a solid ellipsoid.
+struct EllipsoidMass {
+  double volume;
+  Vec3 principal_moments;  // about a1, a2, a3: V/5 (a2^2 + a3^2), ...
+};
+EllipsoidMass ellipsoid_mass(const Vec3& axes);
+
+}  // namespace dem

@@ -1,0 +1,98 @@
+// Ellipsoid contact geometry (Miyata et al. 2002, section 2.4) on
+// configurations with known answers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "ellipsoid.h"
+
+namespace dem {
+namespace {
+
+const Vec3 kAxes{0.371, 0.260, 0.182};  // Miyata's section 3.3 particle
+
+TEST(Ellipsoid, SpheresOverlapAsSpheresWithHertzRadius) {
+  const PlacedEllipsoid i{Vec3::Constant(0.15), Vec3::Zero(), Quaternion::Identity()};
+  const PlacedEllipsoid j{Vec3::Constant(0.10), Vec3(0.2, 0.1, -0.05), Quaternion(Eigen::AngleAxisd(1.0, Vec3::UnitY()))};
+  const EllipsoidContact c = ellipsoid_contact(i, j);
+  const double d = j.centre.norm();
+  EXPECT_NEAR(c.overlap, 0.25 - d, 1e-12);
+  EXPECT_NEAR((c.normal - j.centre / d).norm(), 0.0, 1e-12);
+  EXPECT_NEAR(c.effective_radius, 0.15 * 0.10 / 0.25, 1e-12);  // R* of Hertz
+}
+
+TEST(Ellipsoid, AlignedPairsTouchAlongEachAxis) {
+  for (int axis = 0; axis < 3; ++axis) {
+    Vec3 offset = Vec3::Zero();
+    offset[axis] = 2.0 * kAxes[axis] - 0.003;
+    const PlacedEllipsoid i{kAxes, Vec3::Zero(), Quaternion::Identity()}, j{kAxes, offset, Quaternion::Identity()};
+    const EllipsoidContact c = ellipsoid_contact(i, j);
+    EXPECT_NEAR(c.overlap, 0.003, 1e-9) << "axis " << axis;
+    EXPECT_NEAR(std::abs(c.normal[axis]), 1.0, 1e-9);
+    // Two equal tips: the relative curvatures are twice each surface's
+    // principal curvatures there, a_axis / a_other^2.
+    double k[2];
+    for (int other = 0, o = 0; other < 3; ++other) {
+      if (other != axis) k[o++] = 2.0 * kAxes[axis] / (kAxes[other] * kAxes[other]);
+    }
+    EXPECT_NEAR(c.effective_radius, 1.0 / std::sqrt(k[0] * k[1]), 1e-6 * c.effective_radius) << "axis " << axis;
+  }
+}
+
+TEST(Ellipsoid, PlaneDistanceAndSupportPoint) {
+  // Turned 40 degrees about y, centred 0.3 above the plane z = 0: the
+  // lowest point is at depth sqrt(n^T M^-1 n) below the centre.
+  const Quaternion q(Eigen::AngleAxisd(40.0 * std::numbers::pi / 180.0, Vec3::UnitY()));
+  const PlacedEllipsoid e{kAxes, Vec3(0.0, 0.0, 0.3), q};
+  const Eigen::Matrix3d r = q.toRotationMatrix();
+  const Vec3 axis_z = r.transpose() * Vec3::UnitZ();  // the plane normal in body axes
+  const double reach = std::sqrt((kAxes.cwiseAbs2().array() * axis_z.cwiseAbs2().array()).sum());
+  const EllipsoidFaceContact c = ellipsoid_plane_contact(e, Vec3::Zero(), Vec3::UnitZ());
+  EXPECT_NEAR(c.overlap, reach - 0.3, 1e-12);
+  EXPECT_NEAR(c.projected.z(), 0.0, 1e-12);
+  const Vec3 local = r.transpose() * (c.support - e.centre);
+  EXPECT_NEAR((local.array() / kAxes.array()).matrix().squaredNorm(), 1.0, 1e-12);  // on the surface
+  // Resting on its flattest side: R_e is sqrt(R' R'') at the end of a3.
+  const PlacedEllipsoid flat{kAxes, Vec3(0.0, 0.0, 0.18), Quaternion::Identity()};
+  const EllipsoidFaceContact f = ellipsoid_plane_contact(flat, Vec3::Zero(), Vec3::UnitZ());
+  EXPECT_NEAR(f.overlap, 0.002, 1e-12);
+  const double r1 = kAxes.x() * kAxes.x() / kAxes.z(), r2 = kAxes.y() * kAxes.y() / kAxes.z();
+  EXPECT_NEAR(f.effective_radius, std::sqrt(r1 * r2), 1e-9);
+}
+
+TEST(Ellipsoid, TurnedPairMatchesAFineSearch) {
+  const PlacedEllipsoid i{kAxes, Vec3::Zero(), Quaternion(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()))};
+  const PlacedEllipsoid j{kAxes, Vec3(0.55, 0.25, 0.1), Quaternion(Eigen::AngleAxisd(-1.2, Vec3(0, 1, 1).normalized()))};
+  const EllipsoidContact c = ellipsoid_contact(i, j);
+  // The minimum of j's potential over i's surface, by brute force on a fine grid.
+  const Eigen::Matrix3d ri = i.orientation.toRotationMatrix(), rj = j.orientation.toRotationMatrix();
+  double best = 1e300;
+  for (double t = 0.0; t < std::numbers::pi; t += 0.002) {
+    for (double p = 0.0; p < 2.0 * std::numbers::pi; p += 0.002) {
+      const Vec3 local(kAxes.x() * std::sin(t) * std::cos(p), kAxes.y() * std::sin(t) * std::sin(p),
+                       kAxes.z() * std::cos(t));
+      const Vec3 in_j = rj.transpose() * (i.centre + ri * local - j.centre);
+      best = std::min(best, (in_j.array() / kAxes.array()).matrix().squaredNorm() - 1.0);
+    }
+  }
+  const Vec3 in_i = ri.transpose() * (c.first_point - i.centre);
+  EXPECT_NEAR((in_i.array() / kAxes.array()).matrix().squaredNorm(), 1.0, 1e-12);  // P_i lies on i
+  const Vec3 in_j = rj.transpose() * (c.first_point - j.centre);
+  const double found = (in_j.array() / kAxes.array()).matrix().squaredNorm() - 1.0;
+  std::printf("overlap %.6f, min f_j over i's surface: Newton %.8f, grid %.8f\n", c.overlap, found, best);
+  EXPECT_LE(found, best + 1e-9);
+  EXPECT_NEAR(found, best, 1e-4);
+  // Warm start gives the same answer.
+  const EllipsoidContact warm = ellipsoid_contact(i, j, c.multiplier_i, c.multiplier_j);
+  EXPECT_NEAR(warm.overlap, c.overlap, 1e-12);
+}
+
+TEST(Ellipsoid, MassAndInertiaOfASphere) {
+  const EllipsoidMass m = ellipsoid_mass(Vec3::Constant(0.1));
+  EXPECT_NEAR(m.volume, 4.0 / 3.0 * std::numbers::pi * 1e-3, 1e-15);
+  EXPECT_NEAR(m.principal_moments.x(), 0.4 * m.volume * 0.01, 1e-15);  // 2/5 m r^2 per unit density
+}
+
+}  // namespace
+}  // namespace dem
