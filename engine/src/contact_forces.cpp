@@ -156,6 +156,11 @@ void with_shape(ShapeKind shape, Pass&& pass) {
       pass.template operator()<SuperquadricShape>();
       return;
     }
+  } else {
+    if (shape == ShapeKind::kEllipsoid) {
+      pass.template operator()<EllipsoidShape>();
+      return;
+    }
   }
   pass.template operator()<RoundShape>();
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "contact_table.h"
+#include "ellipsoid.h"
 #include "particles.h"
 #include "periodic.h"
 #include "superquadric.h"
@@ -19,8 +20,10 @@ struct ContactGeometry {
   double overlap = 0.0;               // > 0 in contact
   Vec<Dim> normal = Vec<Dim>::Zero(); // e_i, from the first body towards the second
   Vec<Dim> point = Vec<Dim>::Zero();  // halfway through the overlap
-  Vec<Dim> arm_first = Vec<Dim>::Zero();   // contact point - first centre
-  Vec<Dim> arm_second = Vec<Dim>::Zero();  // contact point - second centre (0 for a wall)
+  // From each centre to its own surface point of the contact: the lever of
+  // the contact force, as BALL takes it (Sum M = F_s R for a disc).
+  Vec<Dim> arm_first = Vec<Dim>::Zero();
+  Vec<Dim> arm_second = Vec<Dim>::Zero();  // 0 for a wall
   double effective_radius = 0.0;      // R* for the Hertz laws
 };
 
@@ -78,17 +81,17 @@ struct SuperquadricShape {
                                  ContactState<2>& state) {
     const Vec2& cx = p.position[x];
     const Vec2 cy = cx + periodic.separation(cx, p.position[y]);  // the nearest image of y
-    const SuperquadricContact c = superquadric_contact(placed(p, x, cx), placed(p, y, cy), state.alpha_first,
-                                                       state.alpha_second, state.has_alphas);
-    state.alpha_first = c.alpha_i;
-    state.alpha_second = c.alpha_j;
-    state.has_alphas = true;
+    const SuperquadricContact c = superquadric_contact(placed(p, x, cx), placed(p, y, cy), state.search_first,
+                                                       state.search_second, state.has_search);
+    state.search_first = c.alpha_i;
+    state.search_second = c.alpha_j;
+    state.has_search = true;
     ContactGeometry<2> g;
     g.overlap = c.overlap;
     g.normal = c.normal;
     g.point = c.point;
-    g.arm_first = c.point - cx;
-    g.arm_second = c.point - cy;
+    g.arm_first = c.first_point - cx;
+    g.arm_second = c.second_point - cy;
     g.effective_radius = c.radius_i * c.radius_j / (c.radius_i + c.radius_j);
     return g;
   }
@@ -102,8 +105,56 @@ struct SuperquadricShape {
     g.overlap = along >= wall.h1 && along <= wall.h2 ? s.overlap : -1.0;
     g.normal = -towards_particles;
     g.point = s.point + 0.5 * s.overlap * towards_particles;
-    g.arm_first = g.point - p.position[x];
+    g.arm_first = s.point - p.position[x];
     g.effective_radius = s.radius;
+    return g;
+  }
+};
+
+// Ellipsoids: the points of each surface deepest in the other's potential,
+// warm-started from the last cycle (Miyata 2.4), and the support point
+// against a rectangular wall, which must fall inside it (eqs. 51-59).
+struct EllipsoidShape {
+  static constexpr bool round = false;
+
+  static PlacedEllipsoid placed(const Particles<3>& p, ParticleId i, const Vec3& centre) {
+    return {p.shape[i].axes, centre, p.rotation[i]};
+  }
+
+  static ContactGeometry<3> pair(const Particles<3>& p, const Periodic<3>& periodic, ParticleId x, ParticleId y,
+                                 ContactState<3>& state) {
+    const Vec3& cx = p.position[x];
+    const Vec3 cy = cx + periodic.separation(cx, p.position[y]);  // the nearest image of y
+    const EllipsoidContact c = ellipsoid_contact(placed(p, x, cx), placed(p, y, cy),
+                                                 state.has_search ? state.search_first : 0.0,
+                                                 state.has_search ? state.search_second : 0.0);
+    state.search_first = c.multiplier_i;
+    state.search_second = c.multiplier_j;
+    state.has_search = true;
+    ContactGeometry<3> g;
+    g.overlap = c.overlap;
+    g.normal = c.normal;
+    g.point = c.point;
+    g.arm_first = c.first_point - cx;
+    g.arm_second = c.second_point - cy;
+    g.effective_radius = c.effective_radius;
+    return g;
+  }
+
+  static ContactGeometry<3> wall(const Particles<3>& p, const WallDefT<3>& wall, ParticleId x) {
+    ContactGeometry<3> g;
+    const Vec3 towards_particles = wall_normal(wall);
+    const EllipsoidFaceContact c = ellipsoid_plane_contact(placed(p, x, p.position[x]), wall.point, towards_particles);
+    // The projected point must fall inside the rectangle (eqs. 57-59 for a
+    // triangle; its two coordinates here); past its edges there is no contact.
+    const Vec3 d = c.projected - wall.point;
+    const double s = d.dot(wall.direction), t = d.dot(wall.direction2);
+    const bool inside = s >= wall.h1 && s <= wall.h2 && t >= wall.k1 && t <= wall.k2;
+    g.overlap = inside ? c.overlap : -1.0;
+    g.normal = -towards_particles;
+    g.point = c.support + 0.5 * c.overlap * towards_particles;
+    g.arm_first = c.support - p.position[x];
+    g.effective_radius = c.effective_radius;
     return g;
   }
 };

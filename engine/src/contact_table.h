@@ -37,10 +37,11 @@ struct ContactState {
   // central differences centre on (see contact_forces.cpp).
   Vec<Dim> dashpot_force = Vec<Dim>::Zero();
   Vec<Dim> relative_velocity = Vec<Dim>::Zero();
-  // Superquadrics: the parametric angles that minimised the two potentials
-  // last cycle, to start this cycle's search near them (Miyata 2.3).
-  double alpha_first = 0.0, alpha_second = 0.0;
-  bool has_alphas = false;
+  // Superquadrics and ellipsoids: where last cycle's two contact searches
+  // ended (parametric angles, Miyata 2.3; Lagrange multipliers, 2.4), to
+  // start this cycle's near them.
+  double search_first = 0.0, search_second = 0.0;
+  bool has_search = false;
   std::uint64_t formed_cycle = 0;  // the cycle the contact began touching
 };
 

@@ -41,9 +41,9 @@ struct LinearLaw {
 template <int Dim>
 void separate(ContactState<Dim>& s) {
   ContactState<Dim> fresh;
-  fresh.alpha_first = s.alpha_first;
-  fresh.alpha_second = s.alpha_second;
-  fresh.has_alphas = s.has_alphas;
+  fresh.search_first = s.search_first;
+  fresh.search_second = s.search_second;
+  fresh.has_search = s.has_search;
   s = fresh;
 }
 

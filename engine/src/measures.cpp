@@ -58,7 +58,7 @@ AssemblyMeasures measure_assembly(const WorldState<Dim>& s) {
   double max_resultant = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     m.kinetic_energy += 0.5 * p.mass[i] * p.velocity[i].squaredNorm() +
-                        0.5 * p.inertia[i] * squared_magnitude(p.angular_velocity[i]);
+                        0.5 * p.spin_energy_product(i, p.angular_velocity[i]);
     max_resultant = std::max(max_resultant, (p.force[i] + p.mass[i] * s.gravity).norm());
   }
   auto count = [&](const ContactState<Dim>& c) {

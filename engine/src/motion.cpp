@@ -105,10 +105,20 @@ MotionStep& operator+=(MotionStep& a, const MotionStep& b) {
 
 }  // namespace
 
+// Euler's equations for a body with principal moments I_b (in its axes),
+// turned by q: the angular acceleration I^-1 (M - omega x I omega), with I
+// in world axes.
+Vec3 angular_acceleration(const Quaternion& q, const Vec3& principal, const Vec3& moment, const Vec3& omega) {
+  const Vec3 body_omega = q.conjugate() * omega;
+  const Vec3 body_momentum = principal.cwiseProduct(body_omega);
+  const Vec3 body_moment = q.conjugate() * moment - body_omega.cross(body_momentum);
+  return q * body_moment.cwiseQuotient(principal);
+}
+
 template <int Dim>
 MotionStep integrate_motion(Particles<Dim>& particles, const std::vector<Vec<Dim>>& reference,
                             const Periodic<Dim>& periodic, const Vec<Dim>& gravity, const DampingDef& damping,
-                            double dt, int threads) {
+                            bool tensor_rotation, double dt, int threads) {
   const bool wraps = periodic.any();
   const auto n = static_cast<std::int64_t>(particles.size());
   // Global damping C = alpha m, C* = alpha I (eq. 34) in the central
@@ -130,8 +140,14 @@ MotionStep integrate_motion(Particles<Dim>& particles, const std::vector<Vec<Dim
       const Vec<Dim> local_force = local_damping(resultant, v0, local);
       const Spin<Dim> local_moment = local_damping(particles.moment[i], w0, local_rotation);
       particles.velocity[i] = (v0 * keep + (resultant + local_force) * (dt / m)) * scale;  // eq. 35
-      particles.angular_velocity[i] =
-          (w0 * keep_rotation + (particles.moment[i] + local_moment) * (dt / inertia)) * scale_rotation;  // eq. 36
+      Spin<Dim> spin_rate = (particles.moment[i] + local_moment) / inertia;
+      if constexpr (Dim == 3) {
+        if (tensor_rotation) {
+          spin_rate = angular_acceleration(particles.rotation[i], particles.principal_inertia[i],
+                                           particles.moment[i] + local_moment, w0);
+        }
+      }
+      particles.angular_velocity[i] = (w0 * keep_rotation + spin_rate * dt) * scale_rotation;  // eq. 36
       const Vec<Dim>& v1 = particles.velocity[i];
       const Spin<Dim>& w1 = particles.angular_velocity[i];
       particles.position[i] += v1 * dt;                        // eq. 22a
@@ -143,7 +159,8 @@ MotionStep integrate_motion(Particles<Dim>& particles, const std::vector<Vec<Dim
       const Vec<Dim> v_mid = 0.5 * (v0 + v1);
       const Spin<Dim> w_mid = 0.5 * (w0 + w1);
       step.gravity_work += m * gravity.dot(v1) * dt;
-      step.global_damping += (alpha * m * v_mid.squaredNorm() + alpha_rotation * inertia * dot(w_mid, w_mid)) * dt;
+      step.global_damping +=
+          (alpha * m * v_mid.squaredNorm() + alpha_rotation * particles.spin_energy_product(i, w_mid)) * dt;
       step.local_damping -= (local_force.dot(v_mid) + dot(local_moment, w_mid)) * dt;
 
       // Randall 4.35-4.40: the stiffness the particle meets, K = d|sum F| / dx,
@@ -167,8 +184,8 @@ template void sum_particle_forces(Particles<3>&, const ContactTable<3>&, int);
 template void sum_wall_forces(Walls<2>&, const std::vector<WallContact<2>>&, const std::vector<ContactForce<2>>&);
 template void sum_wall_forces(Walls<3>&, const std::vector<WallContact<3>>&, const std::vector<ContactForce<3>>&);
 template MotionStep integrate_motion(Particles<2>&, const std::vector<Vec2>&, const Periodic<2>&, const Vec2&,
-                                     const DampingDef&, double, int);
+                                     const DampingDef&, bool, double, int);
 template MotionStep integrate_motion(Particles<3>&, const std::vector<Vec3>&, const Periodic<3>&, const Vec3&,
-                                     const DampingDef&, double, int);
+                                     const DampingDef&, bool, double, int);
 
 }  // namespace dem

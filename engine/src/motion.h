@@ -32,9 +32,10 @@ struct MotionStep {
 // 22a-23a) with the body force, global damping (eq. 34; Miyata eq. 32) and
 // local non-viscous damping (Miyata eq. 33).
 // Positions that leave a periodic cell enter it on the other side.
+// Ellipsoids (`tensor_rotation`) turn by Euler's equations with their inertia tensor.
 template <int Dim>
 MotionStep integrate_motion(Particles<Dim>& particles, const std::vector<Vec<Dim>>& reference,
                             const Periodic<Dim>& periodic, const Vec<Dim>& gravity, const DampingDef& damping,
-                            double dt, int threads);
+                            bool tensor_rotation, double dt, int threads);
 
 }  // namespace dem

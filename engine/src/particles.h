@@ -14,7 +14,7 @@ namespace dem {
 
 // The particles' shape, one for the whole world so the contact passes
 // choose their geometry once, like the law.
-enum class ShapeKind { kRound, kSuperquadric };
+enum class ShapeKind { kRound, kSuperquadric, kEllipsoid };
 
 template <int Dim>
 struct Particles {
@@ -33,9 +33,24 @@ struct Particles {
   std::vector<double> mass;
   std::vector<double> inertia;  // about the centre (discs, spheres, superquadrics in the plane)
   std::vector<MaterialId> material;
-  std::vector<ShapeDefT<Dim>> shape;  // 2D superquadric axes and exponent (the angle lives in rotation)
+  std::vector<ShapeDefT<Dim>> shape;  // superquadric or ellipsoid axes (the orientation lives in rotation)
+  std::vector<Vec3> principal_inertia;  // ellipsoids: about their own axes (inertia holds the smallest)
 
   std::size_t size() const { return position.size(); }
+
+  // omega^T I omega: with the scalar inertia for discs, spheres and
+  // superquadrics, with the inertia tensor for ellipsoids.
+  double spin_energy_product(std::size_t i, const Spin<Dim>& w) const {
+    if constexpr (Dim == 3) {
+      if (shape[i].ellipsoid()) {
+        const Vec3 body = rotation[i].conjugate() * w;
+        return body.dot(principal_inertia[i].cwiseProduct(body));
+      }
+      return inertia[i] * w.squaredNorm();
+    } else {
+      return inertia[i] * w * w;
+    }
+  }
 };
 
 }  // namespace dem

@@ -133,6 +133,8 @@ SuperquadricContact superquadric_contact(const PlacedSuperquadric& i, const Plac
   c.overlap = ki.radius + kj.radius - d;  // eq. 42
   c.radius_i = ki.radius;
   c.radius_j = kj.radius;
+  c.first_point = i.centre + rotate(pi, i.angle);
+  c.second_point = j.centre + rotate(pj, j.angle);
   c.normal = d > 0.0 ? Vec2(between / d) : Vec2(rotate(ki.normal, i.angle));
   c.point = ci + (ki.radius - 0.5 * c.overlap) * c.normal;
   return c;

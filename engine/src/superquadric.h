@@ -48,7 +48,8 @@ struct SuperquadricContact {
   Vec2 normal;          // from C_i towards C_j
   Vec2 point;           // halfway through the overlap on the line of centres of curvature
   double alpha_i, alpha_j;
-  double radius_i, radius_j;  // the radii of curvature rho_i, rho_j
+  double radius_i, radius_j;       // the radii of curvature rho_i, rho_j
+  Vec2 first_point, second_point;  // P_i and P_j in the plane
 };
 SuperquadricContact superquadric_contact(const PlacedSuperquadric& i, const PlacedSuperquadric& j,
                                          double alpha_i_hint, double alpha_j_hint, bool use_hints);

@@ -13,6 +13,7 @@
 #include "contact_forces.h"
 #include "dem/error.h"
 #include "motion.h"
+#include "ellipsoid.h"
 #include "superquadric.h"
 #include "world_state.h"
 
@@ -58,7 +59,7 @@ void step(WorldState<Dim>& s) {
   sum_wall_forces(s.walls, c.walls, c.wall_forces);
   timer.lap(s.profile.force_sums);
   const MotionStep motion = integrate_motion(s.particles, s.reference_positions, s.periodic, s.gravity, s.damping,
-                                            s.time_step, s.threads);
+                                            s.shape == ShapeKind::kEllipsoid, s.time_step, s.threads);
   s.particle_travel = motion.max_travel;
   s.energy.gravity_work += motion.gravity_work;
   s.energy.global_damping += motion.global_damping;
@@ -145,6 +146,16 @@ void validate(const WorldDefT<Dim>& def) {
   for (std::size_t i = 0; i < def.particles.size(); ++i) {
     const ParticleDefT<Dim>& p = def.particles[i];
     const std::string where = "particle " + std::to_string(i);
+    if constexpr (Dim == 3) {
+      const ShapeDefT<3>& shape = p.shape;
+      check(shape.ellipsoid() == def.particles[0].shape.ellipsoid(),
+            where + ": the particles must be all spheres or all ellipsoids");
+      if (shape.ellipsoid()) {
+        check((shape.axes.array() > 0.0).all() && shape.axes.allFinite(), where + ": ellipsoid axes must be > 0");
+        check(shape.orientation.norm() > 0.0, where + ": ellipsoid orientation must be a rotation");
+        continue;  // an ellipsoid's radius comes from its axes
+      }
+    }
     if constexpr (Dim == 2) {
       const ShapeDefT<2>& shape = p.shape;
       check(shape.superquadric() == def.particles[0].shape.superquadric(),
@@ -306,6 +317,19 @@ BasicWorld<Dim>::BasicWorld(const Def& def) : state_(std::make_unique<WorldState
         rotation = d.shape.angle;
         s.shape = ShapeKind::kSuperquadric;
       }
+    } else {
+      Vec3 principal = Vec3::Constant(mp.inertia);
+      if (d.shape.ellipsoid()) {
+        // The bounding sphere serves the broad phase; the smallest principal
+        // moment the time-step estimate.
+        const EllipsoidMass m = ellipsoid_mass(d.shape.axes);
+        principal = density * m.principal_moments;
+        mp = {density * m.volume, principal.minCoeff()};
+        radius = d.shape.axes.maxCoeff();
+        rotation = d.shape.orientation.normalized();
+        s.shape = ShapeKind::kEllipsoid;
+      }
+      p.principal_inertia.push_back(principal);
     }
     p.position.push_back(d.position);
     p.velocity.push_back(d.velocity);

@@ -60,6 +60,7 @@ void BasicWorld<Dim>::remove_particles(std::span<const ParticleId> ids) {
   compact(p.inertia, keep);
   compact(p.material, keep);
   compact(p.shape, keep);
+  compact(p.principal_inertia, keep);
   compact(s.reference_positions, keep);
 
   // Contacts between kept particles keep their history; the renumbering

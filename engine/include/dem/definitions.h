@@ -117,9 +117,16 @@ struct ShapeDefT<2> {
   bool superquadric() const { return a > 0.0; }
 };
 
-// In 3D, particles are spheres of their radius.
+// In 3D, an ellipsoid (Miyata et al. 2002, eq. 43) with semi-axes a1, a2,
+// a3 along its own axes, turned by `orientation`; with a1 = 0 (the default)
+// the particle is a sphere of its radius. A world's particles are all
+// spheres or all ellipsoids.
 template <>
-struct ShapeDefT<3> {};
+struct ShapeDefT<3> {
+  Vec3 axes = Vec3::Zero();  // m
+  Quaternion orientation = Quaternion::Identity();
+  bool ellipsoid() const { return axes.x() > 0.0; }
+};
 
 template <int Dim>
 struct ParticleDefT {
