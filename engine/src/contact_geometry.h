@@ -142,6 +142,7 @@ struct EllipsoidShape {
   }
 
   static ContactGeometry<3> wall(const Particles<3>& p, const WallDefT<3>& wall, ParticleId x) {
+    if (!wall.triangles.empty()) return faces(p, wall, x);
     ContactGeometry<3> g;
     const Vec3 towards_particles = wall_normal(wall);
     const EllipsoidFaceContact c = ellipsoid_plane_contact(placed(p, x, p.position[x]), wall.point, towards_particles);
@@ -155,6 +156,28 @@ struct EllipsoidShape {
     g.point = c.support + 0.5 * c.overlap * towards_particles;
     g.arm_first = c.support - p.position[x];
     g.effective_radius = c.effective_radius;
+    return g;
+  }
+
+  // A wall of triangle faces: each face's plane, turned towards the
+  // particle, gives a support point; the contact holds when its projection
+  // falls inside the face (all triangular coordinates > 0, eq. 59), and
+  // the deepest such face is the contact.
+  static ContactGeometry<3> faces(const Particles<3>& p, const WallDefT<3>& wall, ParticleId x) {
+    ContactGeometry<3> g;
+    g.overlap = -1.0;
+    const PlacedEllipsoid body = placed(p, x, p.position[x]);
+    for (const auto& t : wall.triangles) {
+      Vec3 towards = (t[1] - t[0]).cross(t[2] - t[0]).normalized();
+      if ((p.position[x] - t[0]).dot(towards) < 0.0) towards = -towards;
+      const EllipsoidFaceContact c = ellipsoid_plane_contact(body, t[0], towards);
+      if (c.overlap <= g.overlap || (triangular_coordinates(t, c.projected).array() <= 0.0).any()) continue;
+      g.overlap = c.overlap;
+      g.normal = -towards;
+      g.point = c.support + 0.5 * c.overlap * towards;
+      g.arm_first = c.support - p.position[x];
+      g.effective_radius = c.effective_radius;
+    }
     return g;
   }
 };

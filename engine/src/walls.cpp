@@ -10,7 +10,47 @@ WallPoint<2> closest_point(const WallDefT<2>& wall, const Vec2& x) {
   return {wall.point + s * wall.direction, s};
 }
 
+Vec3 closest_point_on_triangle(const std::array<Vec3, 3>& t, const Vec3& x) {
+  // Ericson (2005), Real-Time Collision Detection 5.1.5: by the Voronoi
+  // region of x among the corners, edges and face.
+  const Vec3 &a = t[0], &b = t[1], &c = t[2];
+  const Vec3 ab = b - a, ac = c - a, ax = x - a;
+  const double d1 = ab.dot(ax), d2 = ac.dot(ax);
+  if (d1 <= 0.0 && d2 <= 0.0) return a;
+  const Vec3 bx = x - b;
+  const double d3 = ab.dot(bx), d4 = ac.dot(bx);
+  if (d3 >= 0.0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + d1 / (d1 - d3) * ab;
+  const Vec3 cx = x - c;
+  const double d5 = ab.dot(cx), d6 = ac.dot(cx);
+  if (d6 >= 0.0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + d2 / (d2 - d6) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+  const double denominator = 1.0 / (va + vb + vc);
+  return a + ab * (vb * denominator) + ac * (vc * denominator);
+}
+
+Vec3 triangular_coordinates(const std::array<Vec3, 3>& t, const Vec3& q) {
+  // Areas of the sub-triangles over the whole (eqs. 57-59), signed by the face's normal.
+  const Vec3 normal = (t[1] - t[0]).cross(t[2] - t[0]);
+  const double whole = normal.squaredNorm();
+  return {(t[1] - q).cross(t[2] - q).dot(normal) / whole, (t[2] - q).cross(t[0] - q).dot(normal) / whole,
+          (t[0] - q).cross(t[1] - q).dot(normal) / whole};
+}
+
 WallPoint<3> closest_point(const WallDefT<3>& wall, const Vec3& x) {
+  if (!wall.triangles.empty()) {
+    Vec3 best = closest_point_on_triangle(wall.triangles[0], x);
+    for (std::size_t k = 1; k < wall.triangles.size(); ++k) {
+      const Vec3 q = closest_point_on_triangle(wall.triangles[k], x);
+      if ((q - x).squaredNorm() < (best - x).squaredNorm()) best = q;
+    }
+    const Vec3 d = best - wall.point;
+    return {best, Eigen::Vector2d(d.dot(wall.direction), d.dot(wall.direction2))};
+  }
   const Vec3 d = x - wall.point;
   const double s = std::clamp(d.dot(wall.direction), wall.h1, wall.h2);
   const double t = std::clamp(d.dot(wall.direction2), wall.k1, wall.k2);
@@ -45,7 +85,20 @@ double wall_extent(const WallDefT<2>& wall, const Periodic<2>& periodic) {
   return clipped(wall.h2 - wall.h1, wall.direction, periodic);
 }
 double wall_extent(const WallDefT<3>& wall, const Periodic<3>& periodic) {
+  if (!wall.triangles.empty()) {
+    double area = 0.0;  // of all the faces
+    for (const auto& t : wall.triangles) area += 0.5 * (t[1] - t[0]).cross(t[2] - t[0]).norm();
+    return area;
+  }
   return clipped(wall.h2 - wall.h1, wall.direction, periodic) * clipped(wall.k2 - wall.k1, wall.direction2, periodic);
+}
+
+void translate(WallDefT<2>& wall, const Vec2& shift) { wall.point += shift; }
+void translate(WallDefT<3>& wall, const Vec3& shift) {
+  wall.point += shift;
+  for (auto& t : wall.triangles) {
+    for (Vec3& corner : t) corner += shift;
+  }
 }
 
 namespace {
@@ -72,6 +125,9 @@ void rotate(WallDefT<3>& wall, const Vec3& omega, double dt) {
   const double angle = omega.norm() * dt;
   if (angle == 0.0) return;
   const Eigen::AngleAxisd turn(angle, omega.normalized());
+  for (auto& t : wall.triangles) {
+    for (Vec3& corner : t) corner = wall.point + turn * (corner - wall.point);
+  }
   wall.direction = (turn * wall.direction).normalized();
   // Keep u and v orthonormal against round-off.
   const Vec3 v = turn * wall.direction2;
@@ -80,6 +136,13 @@ void rotate(WallDefT<3>& wall, const Vec3& omega, double dt) {
 
 double reach(const WallDefT<2>& wall) { return std::max(std::abs(wall.h1), std::abs(wall.h2)); }
 double reach(const WallDefT<3>& wall) {
+  if (!wall.triangles.empty()) {
+    double r = 0.0;
+    for (const auto& t : wall.triangles) {
+      for (const Vec3& corner : t) r = std::max(r, (corner - wall.point).norm());
+    }
+    return r;
+  }
   return std::hypot(std::max(std::abs(wall.h1), std::abs(wall.h2)), std::max(std::abs(wall.k1), std::abs(wall.k2)));
 }
 
@@ -92,7 +155,7 @@ void move_walls(Walls<Dim>& walls, double dt) {
     const bool servo = wall.motion.servo.has_value();
     const Vec<Dim> velocity = servo ? servo_velocity(wall, walls.normal_force[w]) : wall.motion.velocity;
     const Spin<Dim> omega = servo ? Space<Dim>::zero_spin() : wall.motion.angular_velocity;
-    wall.point += velocity * dt;
+    translate(wall, velocity * dt);
     rotate(wall, omega, dt);
     walls.last_velocity[w] = velocity;
     walls.last_angular_velocity[w] = omega;

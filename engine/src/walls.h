@@ -43,6 +43,17 @@ struct WallPoint {
 WallPoint<2> closest_point(const WallDefT<2>& wall, const Vec2& x);
 WallPoint<3> closest_point(const WallDefT<3>& wall, const Vec3& x);
 
+// The point of a triangle nearest to x (faces, edges and corners).
+Vec3 closest_point_on_triangle(const std::array<Vec3, 3>& t, const Vec3& x);
+
+// Triangular coordinates (L_I, L_J, L_K) of a point of the triangle's
+// plane (Miyata et al. 2002, eqs. 57-59); all > 0 inside the face.
+Vec3 triangular_coordinates(const std::array<Vec3, 3>& t, const Vec3& q);
+
+// Moves the wall (its reference point and any faces) by shift.
+void translate(WallDefT<2>& wall, const Vec2& shift);
+void translate(WallDefT<3>& wall, const Vec3& shift);
+
 // Position of the wall's centre in its own coordinates, and its half size.
 Eccentricity<2> wall_centre(const WallDefT<2>& wall);
 Eccentricity<3> wall_centre(const WallDefT<3>& wall);

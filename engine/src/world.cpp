@@ -99,6 +99,13 @@ void validate_wall(const WallDefT<3>& wall, const std::string& where) {
   check(std::abs(wall.direction.dot(wall.direction2)) < 1e-9, where + ": direction2 must be perpendicular to direction");
   check(wall.h2 > wall.h1, where + ": h2 must be greater than h1");
   check(wall.k2 > wall.k1, where + ": k2 must be greater than k1");
+  for (std::size_t k = 0; k < wall.triangles.size(); ++k) {
+    const auto& t = wall.triangles[k];
+    const double scale = std::max({(t[1] - t[0]).squaredNorm(), (t[2] - t[0]).squaredNorm(), 1e-300});
+    check((t[1] - t[0]).cross(t[2] - t[0]).norm() > 1e-9 * scale && t[0].allFinite() && t[1].allFinite() &&
+              t[2].allFinite(),
+          where + ": triangle " + std::to_string(k) + " is degenerate (its corners are on one line)");
+  }
 }
 
 void check_damping(const DampingDef& d) {

@@ -5,6 +5,7 @@
 
 #include "dem/error.h"
 #include "dem/world.h"
+#include "walls.h"
 #include "world_state.h"
 
 namespace dem {
@@ -88,7 +89,7 @@ void BasicWorld<Dim>::place_wall(WallId id, const Vec<Dim>& point) {
   if (id < 0 || id >= wall_count()) throw DefinitionError("place wall: no wall " + std::to_string(id));
   if (!point.allFinite()) throw DefinitionError("place wall: the point must be finite");
   WorldState<Dim>& s = *state_;
-  s.walls.def[id].point = point;
+  translate(s.walls.def[id], point - s.walls.def[id].point);  // faces and all
   s.walls.initial_point[id] = point;
   s.walls.last_velocity[id] = Vec<Dim>::Zero();
   s.walls.last_angular_velocity[id] = Space<Dim>::zero_spin();

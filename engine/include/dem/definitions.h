@@ -176,7 +176,11 @@ struct WallDefT<2> {
 
 // A 3D wall is the rectangle P + s u + t v, h1 <= s <= h2, k1 <= t <= k2,
 // with u and v orthonormal. Its normal is u x v: particles are expected on
-// that side.
+// that side. Or it is built of triangle faces (Miyata et al. 2002, 2.4),
+// which then replace the rectangle and move with the wall; P, u and v still
+// give its frame, normal and eccentricities. A particle touches such a wall
+// at one point, its nearest (deepest) face: faces should form a convex
+// surface (a plate, a footing); a box is built of separate walls.
 template <>
 struct WallDefT<3> {
   std::string name;
@@ -189,6 +193,7 @@ struct WallDefT<3> {
   double k2 = 1.0;
   MaterialId material = 0;
   WallMotionT<3> motion;
+  std::vector<std::array<Vec3, 3>> triangles;  // m, vertices where they stand now
 };
 
 // Periodic boundaries (Miyata et al. 2002; Cundall's periodic cell): along
