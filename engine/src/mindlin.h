@@ -8,16 +8,10 @@
 // T and ds are signed along one tangential axis.
 #pragma once
 
+#include "dem/snapshot.h"  // MindlinHistory
+
 namespace dem {
 
-struct MindlinHistory {
-  double direction = 0.0;   // CDF: +1 or -1 along the axis; 0 before any tangential loading
-  bool unloading = false;   // T* holds the force where unloading began
-  bool reloading = false;   // T** holds the force where reloading began
-  double t_star = 0.0;      // T*
-  double t_star2 = 0.0;     // T**
-  double lag = 0.0;         // DD (4.17-4.18)
-};
 
 // Advances the tangential force T over one step in which the normal force
 // went to N (by dN), the contact radius is a and the tangential

@@ -119,6 +119,15 @@ class PlacementGrid {
   std::vector<std::vector<int>> cells_;
 };
 
+// A rotation drawn uniformly over all orientations (Shoemake 1992,
+// "Uniform random rotations", Graphics Gems III).
+Quaternion uniform_rotation(Random& random) {
+  const double u1 = random.uniform(), u2 = 2.0 * std::numbers::pi * random.uniform(),
+               u3 = 2.0 * std::numbers::pi * random.uniform();
+  const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1);
+  return Quaternion(b * std::cos(u3), a * std::sin(u2), a * std::cos(u2), b * std::sin(u3));
+}
+
 }  // namespace
 
 template <int Dim>
@@ -132,6 +141,8 @@ std::vector<ParticleDefT<Dim>> generate_random_packing(const RandomPackingDefT<D
   for (SizeClassT<Dim>& s : sizes) {
     if constexpr (Dim == 2) {
       if (s.shape.superquadric()) s.radius = std::max(s.shape.a, s.shape.b);
+    } else {
+      if (s.shape.ellipsoid()) s.radius = s.shape.axes.maxCoeff();
     }
     if (s.radius <= 0.0) throw DefinitionError("random packing: size class radius must be > 0");
     if (s.count < 0) throw DefinitionError("random packing: size class count must be >= 0");
@@ -164,6 +175,8 @@ std::vector<ParticleDefT<Dim>> generate_random_packing(const RandomPackingDefT<D
         p.shape = size.shape;
         if constexpr (Dim == 2) {
           if (p.shape.superquadric()) p.shape.angle = 2.0 * std::numbers::pi * random.uniform();
+        } else {
+          if (p.shape.ellipsoid()) p.shape.orientation = uniform_rotation(random);
         }
         placed.push_back(p);
         done = true;

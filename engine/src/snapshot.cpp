@@ -23,6 +23,14 @@ ContactSnapshotT<Dim> save_contact(const ContactState<Dim>& s, const ContactForc
   c.moment_first = f.moment_first;
   c.moment_second = f.moment_second;
   c.formed_cycle = s.formed_cycle;
+  c.touching = s.touching;
+  c.mindlin = s.mindlin;
+  c.mindlin_axis = s.mindlin_axis;
+  c.dashpot_force = s.dashpot_force;
+  c.relative_velocity = s.relative_velocity;
+  c.search_first = s.search_first;
+  c.search_second = s.search_second;
+  c.has_search = s.has_search;
   return c;
 }
 
@@ -30,7 +38,7 @@ template <int Dim>
 void restore_contact(const ContactSnapshotT<Dim>& c, ContactState<Dim>& s, ContactForce<Dim>& f) {
   s.normal_force = c.normal_force;
   s.shear = c.shear_force;
-  s.touching = true;
+  s.touching = c.touching;
   s.sliding = c.sliding;
   s.overlap = c.overlap;
   s.normal_damping = c.normal_damping;
@@ -38,6 +46,13 @@ void restore_contact(const ContactSnapshotT<Dim>& c, ContactState<Dim>& s, Conta
   s.normal = c.normal;
   s.point = c.point;
   s.formed_cycle = c.formed_cycle;
+  s.mindlin = c.mindlin;
+  s.mindlin_axis = c.mindlin_axis;
+  s.dashpot_force = c.dashpot_force;
+  s.relative_velocity = c.relative_velocity;
+  s.search_first = c.search_first;
+  s.search_second = c.search_second;
+  s.has_search = c.has_search;
   f = ContactForce<Dim>{c.force, c.moment_first, c.moment_second};
 }
 
@@ -56,6 +71,58 @@ std::size_t find_row(const std::vector<Contact>& rows, ParticleId first, std::in
   check(it != rows.end() && key(*it) == std::pair{first, second},
         "contact (" + std::to_string(first) + ", " + std::to_string(second) + ") does not touch");
   return static_cast<std::size_t>(it - rows.begin());
+}
+
+// The table's rows as saved, so the contact search and the next rebuild
+// happen as they would have. A snapshot without the bookkeeping (written by
+// hand or by another tool) gets a table rebuilt from the current positions,
+// which every touching contact must be in.
+template <int Dim>
+void restore_contact_table(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) {
+  const auto n = static_cast<ParticleId>(s.particles.size());
+  for (const ContactSnapshotT<Dim>& c : snap.contacts) {
+    check(c.first >= 0 && c.first < n, "contact names particle " + std::to_string(c.first));
+    if (c.with_wall) {
+      check(c.second >= 0 && c.second < s.walls.size(), "contact names wall " + std::to_string(c.second));
+    } else {
+      check(c.second > c.first && c.second < n, "contact names particle " + std::to_string(c.second));
+    }
+  }
+  const bool saved_rows = !snap.reference_positions.empty();
+  ContactTable<Dim>& t = s.contacts;
+  if (saved_rows) {
+    check(snap.reference_positions.size() == s.particles.size(),
+          "reference positions do not match the " + std::to_string(n) + " particles");
+    std::vector<Candidate> pairs, walls;
+    for (const ContactSnapshotT<Dim>& c : snap.contacts) (c.with_wall ? walls : pairs).push_back({c.first, c.second});
+    auto key = [](const Candidate& c) { return std::pair{c.first, c.second}; };
+    for (auto* keys : {&pairs, &walls}) {
+      std::sort(keys->begin(), keys->end(), [&](const Candidate& a, const Candidate& b) { return key(a) < key(b); });
+      for (std::size_t k = 1; k < keys->size(); ++k) {
+        check(key((*keys)[k]) != key((*keys)[k - 1]), "contact (" + std::to_string((*keys)[k].first) + ", " +
+                                                          std::to_string((*keys)[k].second) + ") appears twice");
+      }
+    }
+    rebuild_contacts(t, pairs, walls, static_cast<int>(n));
+    s.reference_positions = snap.reference_positions;
+    s.particle_travel = snap.particle_travel;
+    s.wall_travel = snap.wall_travel;
+    s.contacts_stale = snap.contacts_stale;
+  } else {
+    find_contacts(s);
+  }
+  for (const ContactSnapshotT<Dim>& c : snap.contacts) {
+    if (!saved_rows && !c.touching) continue;  // only history matters in a rebuilt table
+    if (c.with_wall) {
+      const std::size_t k =
+          find_row(t.walls, c.first, c.second, [](const WallContact<Dim>& w) { return std::pair{w.particle, w.wall}; });
+      restore_contact(c, t.walls[k].state, t.wall_forces[k]);
+    } else {
+      const std::size_t k =
+          find_row(t.pairs, c.first, c.second, [](const PairContact<Dim>& p) { return std::pair{p.first, p.second}; });
+      restore_contact(c, t.pairs[k].state, t.pair_forces[k]);
+    }
+  }
 }
 
 }  // namespace
@@ -91,20 +158,22 @@ WorldSnapshotT<Dim> save_snapshot(const WorldState<Dim>& s) {
   }
   const ContactTable<Dim>& t = s.contacts;
   for (std::size_t k = 0; k < t.pairs.size(); ++k) {
-    if (!t.pairs[k].state.touching) continue;
     ContactSnapshotT<Dim> c = save_contact(t.pairs[k].state, t.pair_forces[k]);
     c.first = t.pairs[k].first;
     c.second = t.pairs[k].second;
     snap.contacts.push_back(c);
   }
   for (std::size_t k = 0; k < t.walls.size(); ++k) {
-    if (!t.walls[k].state.touching) continue;
     ContactSnapshotT<Dim> c = save_contact(t.walls[k].state, t.wall_forces[k]);
     c.first = t.walls[k].particle;
     c.second = t.walls[k].wall;
     c.with_wall = true;
     snap.contacts.push_back(c);
   }
+  snap.reference_positions = s.reference_positions;
+  snap.particle_travel = s.particle_travel;
+  snap.wall_travel = s.wall_travel;
+  snap.contacts_stale = s.contacts_stale;
   snap.energy = s.energy;
   snap.tangential_work = s.tangential_work;
   snap.cycle = s.cycle;
@@ -142,23 +211,7 @@ void restore_snapshot(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) {
   s.time_step = snap.time_step;
   s.critical_time_step = snap.critical_time_step;
 
-  find_contacts(s);
-  ContactTable<Dim>& t = s.contacts;
-  for (const ContactSnapshotT<Dim>& c : snap.contacts) {
-    check(c.first >= 0 && c.first < static_cast<ParticleId>(n), "contact names particle " + std::to_string(c.first));
-    if (c.with_wall) {
-      check(c.second >= 0 && c.second < s.walls.size(), "contact names wall " + std::to_string(c.second));
-      const std::size_t k =
-          find_row(t.walls, c.first, c.second, [](const WallContact<Dim>& w) { return std::pair{w.particle, w.wall}; });
-      restore_contact(c, t.walls[k].state, t.wall_forces[k]);
-    } else {
-      check(c.second > c.first && c.second < static_cast<ParticleId>(n),
-            "contact names particle " + std::to_string(c.second));
-      const std::size_t k =
-          find_row(t.pairs, c.first, c.second, [](const PairContact<Dim>& p) { return std::pair{p.first, p.second}; });
-      restore_contact(c, t.pairs[k].state, t.pair_forces[k]);
-    }
-  }
+  restore_contact_table(s, snap);
 }
 
 template WorldSnapshotT<2> save_snapshot(const WorldState<2>&);

@@ -42,6 +42,9 @@ void add_contact(Hasher& h, const ContactState<Dim>& s, const ContactForce<Dim>&
   h.add(s.normal_force);
   h.add(s.shear);
   h.add(f.force);
+  h.add(s.mindlin.t_star);
+  h.add(s.mindlin.t_star2);
+  h.add(s.mindlin.lag);
 }
 
 }  // namespace

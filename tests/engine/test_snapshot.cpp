@@ -51,6 +51,90 @@ TEST(Snapshot, ContinuationIsBitIdentical) {
   EXPECT_EQ(restored.state_hash(), original.state_hash());
 }
 
+// Runs a world, restores its snapshot and runs both on past several
+// rebuilds of the contact table: every history (shear springs, Mindlin
+// reversal points, dashpot work, where each contact search ended) must
+// carry over for the states to stay equal bit for bit.
+template <int Dim>
+void expect_exact_continuation(const WorldDefT<Dim>& def, int before, int after, const char* what) {
+  BasicWorld<Dim> original(def);
+  original.cycle(before);
+  BasicWorld<Dim> restored(original.snapshot());
+  EXPECT_EQ(restored.state_hash(), original.state_hash());
+  const std::uint64_t rebuilds_before = restored.profile().contact_rebuilds;
+  original.cycle(after);
+  restored.cycle(after);
+  const EnergyBudget a = original.assembly_measures().energy, b = restored.assembly_measures().energy;
+  const std::uint64_t rebuilds = restored.profile().contact_rebuilds - rebuilds_before;
+  std::printf("%s after %d + %d cycles (%llu table rebuilds): %zu contacts, original %016llx, restored %016llx, damping %.9e vs %.9e J\n",
+              what, before, after, static_cast<unsigned long long>(rebuilds), original.contacts().size(), static_cast<unsigned long long>(original.state_hash()),
+              static_cast<unsigned long long>(restored.state_hash()), a.contact_damping, b.contact_damping);
+  EXPECT_GT(original.contacts().size(), 20u);
+  EXPECT_EQ(restored.state_hash(), original.state_hash());
+  EXPECT_EQ(a.contact_damping, b.contact_damping);
+  EXPECT_EQ(a.friction, b.friction);
+  EXPECT_GT(rebuilds, 0u);
+}
+
+ContactModelDef hertz(ContactLaw law) {
+  ContactModelDef m;
+  m.law = law;
+  m.hertz.restitution = 0.4;
+  return m;
+}
+
+TEST(Snapshot, HertzMindlinHistoryCarriesOver) {
+  WorldDef def = settling_box();
+  for (MaterialDef& m : def.materials) {
+    m.youngs_modulus = 1e8;
+    m.poisson_ratio = 0.25;
+  }
+  def.contact_models = {hertz(ContactLaw::kHertzMindlin)};
+  expect_exact_continuation(def, 3000, 3000, "discs, Hertz-Mindlin");
+}
+
+TEST(Snapshot, SuperquadricSearchesCarryOver) {
+  WorldDef def = settling_box();
+  def.particles.clear();
+  RandomPackingDef packing;
+  packing.min = {0.0, 0.0};
+  packing.max = {0.3, 0.3};
+  packing.sizes = {{0.0, 40, ShapeDefT<2>{0.014, 0.008, 3.0, 0.0}}, {0.0, 50, ShapeDefT<2>{0.009, 0.006, 2.5, 0.0}}};
+  packing.seed = 5;
+  def.particles = generate_random_packing(packing);
+  expect_exact_continuation(def, 1500, 1500, "superquadrics");
+}
+
+TEST(Snapshot, EllipsoidSearchesCarryOver) {
+  WorldDef3 def;
+  def.materials = {MaterialDef{"rock", 2650.0, 0.6, 0.0, 1e8, 0.2}};
+  def.contact_models = {hertz(ContactLaw::kHertzLinearTangential)};
+  RandomPackingDef3 packing;
+  packing.min = {0.0, 0.0, 0.0};
+  packing.max = {0.2, 0.2, 0.5};
+  packing.sizes = {{0.0, 30, ShapeDefT<3>{{0.03, 0.021, 0.015}, Quaternion::Identity()}}};
+  packing.seed = 3;
+  def.particles = generate_random_packing(packing);
+  auto wall = [](const char* name, Vec3 point, Vec3 u, Vec3 v) {
+    WallDef3 w;
+    w.name = name;
+    w.point = point;
+    w.direction = u;
+    w.direction2 = v;
+    w.h1 = w.k1 = -0.2;
+    w.h2 = w.k2 = 0.4;
+    return w;
+  };
+  def.walls = {wall("floor", {0.0, 0.0, 0.0}, Vec3::UnitX(), Vec3::UnitY()),
+               wall("x0", {0.0, 0.0, 0.0}, Vec3::UnitY(), Vec3::UnitZ()),
+               wall("x1", {0.2, 0.0, 0.0}, Vec3::UnitZ(), Vec3::UnitY()),
+               wall("y0", {0.0, 0.0, 0.0}, Vec3::UnitZ(), Vec3::UnitX()),
+               wall("y1", {0.0, 0.2, 0.0}, Vec3::UnitX(), Vec3::UnitZ())};
+  def.gravity = {0.0, 0.0, -9.81};
+  def.time_step_fraction = 0.2;
+  expect_exact_continuation(def, 3000, 2000, "ellipsoids");
+}
+
 TEST(Snapshot, InconsistentSnapshotIsRefused) {
   World world(settling_box());
   world.cycle(500);
@@ -63,6 +147,12 @@ TEST(Snapshot, InconsistentSnapshotIsRefused) {
   EXPECT_THROW(World{snap}, DefinitionError);
   snap = world.snapshot();
   snap.contacts[0].second = snap.contacts[0].first;  // a contact with itself
+  EXPECT_THROW(World{snap}, DefinitionError);
+  snap = world.snapshot();
+  snap.contacts.push_back(snap.contacts[0]);
+  EXPECT_THROW(World{snap}, DefinitionError);
+  snap = world.snapshot();
+  snap.reference_positions.pop_back();
   EXPECT_THROW(World{snap}, DefinitionError);
 }
 

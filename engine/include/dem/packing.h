@@ -27,8 +27,9 @@ struct LatticeDefT {
   LatticeArrangement arrangement = LatticeArrangement::kSquare;
 };
 
-// A class of equal particles: discs or spheres of a radius, or (2D) a
-// superquadric shape, whose bounding radius max(a, b) is then its radius.
+// A class of equal particles: discs or spheres of a radius, or a shape (a
+// 2D superquadric, a 3D ellipsoid) whose bounding radius, its largest
+// semi-axis, is then its radius.
 template <int Dim>
 struct SizeClassT {
   double radius = 1.0;  // m
@@ -38,7 +39,8 @@ struct SizeClassT {
 
 // Random sequential placement inside [min, max] (centres keep a radius from
 // the faces), largest sizes first, no two bounding circles or spheres
-// overlapping; superquadrics are turned at random (seeded) angles. A
+// overlapping; superquadrics are turned at random (seeded) angles and
+// ellipsoids to random orientations, uniform over all rotations. A
 // particle that finds no free place after max_attempts tries is an error
 // (DefinitionError) naming its size class.
 template <int Dim>

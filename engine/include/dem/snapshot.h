@@ -27,9 +27,21 @@ ShearForce<Dim> zero_shear() {
   }
 }
 
-// One touching contact: its history (Cundall & Strack eq. 18) and what the
-// last force pass made of it. Contacts that do not touch carry no history,
-// so only touching ones are stored.
+// The loading history of a Mindlin-Deresiewicz tangential law (Randall
+// 1989, 4.3: BALL's CDF, T*, T** and DD).
+struct MindlinHistory {
+  double direction = 0.0;   // CDF: +1 or -1 along the axis; 0 before any tangential loading
+  bool unloading = false;   // T* holds the force where unloading began
+  bool reloading = false;   // T** holds the force where reloading began
+  double t_star = 0.0;      // T*
+  double t_star2 = 0.0;     // T**
+  double lag = 0.0;         // DD (4.17-4.18)
+};
+
+// One row of the contact table: its history (Cundall & Strack eq. 18) and
+// what the last force pass made of it. Rows that do not touch carry no
+// force history; they are stored for the contact search of non-round
+// particles, which starts where the last cycle's ended.
 template <int Dim>
 struct ContactSnapshotT {
   ParticleId first = kInvalidId;
@@ -47,6 +59,18 @@ struct ContactSnapshotT {
   Spin<Dim> moment_first = Space<Dim>::zero_spin();
   Spin<Dim> moment_second = Space<Dim>::zero_spin();
   std::uint64_t formed_cycle = 0;
+  bool touching = true;
+  MindlinHistory mindlin;                     // Hertz-Mindlin law only
+  Vec<Dim> mindlin_axis = Vec<Dim>::Zero();   // its loading axis in the tangent plane
+  // The dashpot force of the last cycle and the relative velocity it came
+  // from: their work is booked in the next cycle (energy budget).
+  Vec<Dim> dashpot_force = Vec<Dim>::Zero();
+  Vec<Dim> relative_velocity = Vec<Dim>::Zero();
+  // Where the last contact search ended (superquadric parametric angles,
+  // ellipsoid Lagrange multipliers), if there was one.
+  double search_first = 0.0;
+  double search_second = 0.0;
+  bool has_search = false;
 };
 
 template <int Dim>
@@ -72,7 +96,14 @@ struct WorldSnapshotT {
   std::vector<Vec<Dim>> force;             // per particle, last force sums
   std::vector<Spin<Dim>> moment;           // per particle
   std::vector<WallSnapshotT<Dim>> walls;   // per wall
-  std::vector<ContactSnapshotT<Dim>> contacts;
+  std::vector<ContactSnapshotT<Dim>> contacts;  // every row of the contact table
+  // Neighbour-list bookkeeping, so the table is rebuilt on the same cycle
+  // as it would have been: positions at the last rebuild (empty: rebuild
+  // at once from the current positions) and the travel since.
+  std::vector<Vec<Dim>> reference_positions;
+  double particle_travel = 0.0;
+  double wall_travel = 0.0;
+  bool contacts_stale = false;
   EnergyBudget energy;              // the accumulated terms since the world was first built
   double tangential_work = 0.0;     // J, done on the tangential springs since then
   std::uint64_t cycle = 0;
