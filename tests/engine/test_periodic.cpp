@@ -91,6 +91,80 @@ TEST(Periodic, TooSmallAPeriodIsRefused) {
   EXPECT_THROW(World{def}, DefinitionError);
 }
 
+// Two bodies thrown at each other, once through the periodic boundary and
+// once in the middle of the cell: the same collision, to round-off.
+template <int Dim>
+void expect_same_collision(WorldDefT<Dim> through, const Vec<Dim>& shift, int cycles, const char* what) {
+  WorldDefT<Dim> inside = through;
+  for (ParticleDefT<Dim>& p : inside.particles) {
+    p.position += shift;
+    for (int d = 0; d < Dim; ++d) {
+      if (!through.periodic.axes[d]) continue;
+      const double period = through.periodic.max[d] - through.periodic.min[d];
+      p.position[d] -= period * std::floor((p.position[d] - through.periodic.min[d]) / period);
+    }
+  }
+  BasicWorld<Dim> a(through), b(inside);
+  int touching = 0;
+  for (int k = 0; k < cycles; ++k) {
+    a.cycle();
+    b.cycle();
+    touching += !a.contacts().empty();
+  }
+  const auto pa = a.particles(), pb = b.particles();
+  double gap = 0.0;
+  for (int i = 0; i < 2; ++i) {
+    double spin_gap = 0.0;
+    if constexpr (Dim == 2) {
+      spin_gap = std::abs(pa.angular_velocity[i] - pb.angular_velocity[i]);
+    } else {
+      spin_gap = (pa.angular_velocity[i] - pb.angular_velocity[i]).norm();
+    }
+    gap = std::max({gap, (pa.velocity[i] - pb.velocity[i]).norm(), spin_gap});
+  }
+  std::printf("%s: %d cycles in contact, velocities after (%.6f, %.6f), largest difference %.2e\n", what, touching,
+              pa.velocity[0].x(), pa.velocity[1].x(), gap);
+  EXPECT_GT(touching, 10);
+  EXPECT_TRUE(a.contacts().empty());  // the collision is over
+  // They did collide: the first body's velocity changed by a good part of itself.
+  EXPECT_GT((pa.velocity[0] - through.particles[0].velocity).norm(), 0.5 * through.particles[0].velocity.norm());
+  EXPECT_LT(gap, 1e-8);  // m/s and rad/s: the positions differ in their last bits
+}
+
+TEST(Periodic, SuperquadricsCollideThroughTheBoundaryAsInside) {
+  WorldDef def;
+  def.materials = {MaterialDef{"rock", 1650.0, 0.5, 0.0}};
+  def.contact_models = {testing::linear_model(1e7, 1e7)};
+  const ShapeDefT<2> rock{0.195, 0.0976, 4.0, 0.4};  // Miyata's Table 1 particle
+  def.particles = {ParticleDef{{0.25, 1.0}, 0.195, 0, {-1.0, 0.05}, 0.0, rock},
+                   ParticleDef{{4.78, 1.1}, 0.195, 0, {1.0, 0.0}, 0.0, ShapeDefT<2>{0.195, 0.0976, 4.0, -0.3}}};
+  def.periodic.axes = {true, false};
+  def.periodic.max = {5.0, 0.0};
+  def.fixed_time_step = 1.7078e-4;  // Table 2
+  expect_same_collision<2>(def, {2.5, 0.0}, 3000, "superquadrics through x");
+}
+
+TEST(Periodic, EllipsoidsCollideThroughACornerAsInside) {
+  WorldDef3 def;
+  def.materials = {MaterialDef{"rock", 2650.0, 0.6, 0.0, 70e9, 0.2}};
+  ContactModelDef model;
+  model.law = ContactLaw::kHertzLinearTangential;
+  model.hertz.restitution = 0.5;
+  def.contact_models = {model};
+  ParticleDef3 a, b;
+  a.position = {0.3, 0.25, 1.0};
+  a.velocity = {-0.5, -0.5, 0.0};
+  a.shape = {{0.371, 0.260, 0.182}, Quaternion(Eigen::AngleAxisd(0.6, Vec3(1.0, 2.0, 0.5).normalized()))};
+  b.position = {9.75, 9.72, 1.05};
+  b.velocity = {0.5, 0.5, 0.0};
+  b.shape = {{0.371, 0.260, 0.182}, Quaternion(Eigen::AngleAxisd(-1.1, Vec3(0.2, 1.0, 1.0).normalized()))};
+  def.particles = {a, b};
+  def.periodic.axes = {true, true, false};
+  def.periodic.max = {10.0, 10.0, 0.0};  // section 3.3's 10 m x 10 m box
+  def.fixed_time_step = 6.86e-6;
+  expect_same_collision<3>(def, {5.0, 5.0, 0.0}, 40000, "ellipsoids through the x-y corner");
+}
+
 WorldDef3 periodic_bed(int threads) {
   WorldDef3 def;
   def.materials = {MaterialDef{"glass", 2500.0, 0.5, 0.0, 1e7, 0.3}};
