@@ -1,0 +1,53 @@
+// demctl's subcommands, each a function of the parsed command line that
+// returns an exit code (exit_codes.h); errors travel as exceptions to main.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "dem/client/client.h"
+
+namespace demctl {
+
+// A command line that parses but makes no sense (exit code 2).
+class BadArguments : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Options every subcommand takes.
+struct Global {
+  std::string server = "dem";
+  std::uint32_t domain = 0;
+  std::string dds_config;
+  double timeout = 5.0;  // s, to find the server and for each reply
+  bool quiet = false;    // no progress bar
+};
+
+dem::client::ConnectOptions connect_options(const Global& global);
+
+int servers(const Global& global, double discovery);
+int status(const Global& global);
+int load(const Global& global, const std::string& file, bool on_server, bool binary);
+int wall_velocity(const Global& global, const std::string& wall, const std::vector<double>& values);
+int servo(const Global& global, const std::string& wall, double stress, double gain, double max_speed);
+int cycle(const Global& global, std::int64_t cycles, bool wait);
+int run_until(const Global& global, const dem::protocol::RunUntilArgs& args, bool wait);
+int stop(const Global& global);
+int contacts(const Global& global, const dem::protocol::ContactQueryArgs& query, const std::string& csv, int limit);
+int snapshot_save(const Global& global, const std::string& file, bool on_server);
+int snapshot_load(const Global& global, const std::string& file, bool on_server);
+int set(const Global& global, const std::string& parameter, const std::string& value);
+int shutdown(const Global& global, bool wait);
+
+struct MonitorOptions {
+  std::optional<std::uint64_t> samples;  // stop after this many rows; default: until Ctrl-C
+  std::string csv;                       // record the rows here too
+  std::vector<std::string> walls;        // the plates to show; default: every wall
+};
+int monitor(const Global& global, const MonitorOptions& options);
+
+}  // namespace demctl

@@ -1,0 +1,141 @@
+// A connection to one dem_server (docs/SERVICE.md): send a command, await
+// its reply, read the server's status. Thread-safe; replies and status are
+// received on a thread of the client's own.
+//
+//   dem::client::Client server({.server = "a", .domain = 42});
+//   server.load_case_file("cases/ball/nine_disc_damped.case.txtpb");
+//   server.cycle(1000);
+//   auto state = server.get_state();
+#pragma once
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "dem/client/errors.h"
+#include "dem/dds/participant.h"
+#include "dem/dds/topic.h"
+#include "dem/dds/waitset.h"
+#include "dem/protocol/messages.h"
+#include "dem/protocol/type_support.h"
+
+namespace dem::client {
+
+using namespace std::chrono_literals;
+
+struct ConnectOptions {
+  std::string server = "dem";
+  std::uint32_t domain = 0;
+  std::string dds_config;  // empty: $CYCLONEDDS_URI, else the repository's loopback-only file
+  std::chrono::milliseconds timeout = 5s;       // to find the server
+  std::chrono::milliseconds reply_timeout = 60s;  // default wait for a reply (not for cycle, which waits as asked)
+  std::string client_id;  // empty: "<host>-<pid>-<n>"
+};
+
+class Client {
+ public:
+  // Finds the server (its status) and makes one round trip with it, so the
+  // first command cannot be lost to discovery; throws NoSuchServer.
+  explicit Client(ConnectOptions options);
+  ~Client();
+  Client(const Client&) = delete;
+  Client& operator=(const Client&) = delete;
+
+  const std::string& server() const { return options_.server; }
+  const std::string& client_id() const { return options_.client_id; }
+  const ConnectOptions& options() const { return options_; }
+  const dds::Participant& participant() const { return participant_; }
+
+  // Addresses a command (server, client id, a new request id, stamp) and
+  // sends it; returns its request id.
+  std::uint64_t send(protocol::Command command);
+  // The complete reply to a request (chunks joined); nothing on timeout.
+  std::optional<protocol::Reply> await(std::uint64_t request_id, std::chrono::milliseconds timeout);
+  // send and await. Throws ReplyTimeout, and ServerError for any status
+  // but OK (and CANCELLED when `cancelled_is_ok`).
+  protocol::Reply call(protocol::Command command, std::optional<std::chrono::milliseconds> timeout = std::nullopt,
+                       bool cancelled_is_ok = false);
+
+  // The server's latest status.
+  protocol::Status status() const;
+  // Waits until the status satisfies `condition`; the status, or nothing on timeout.
+  std::optional<protocol::Status> wait_for_status(const std::function<bool(const protocol::Status&)>& condition,
+                                                  std::chrono::milliseconds timeout) const;
+  // Whether the server is still there (its status writer is matched).
+  bool server_alive() const;
+
+  // One call per command; each throws as call() does.
+  protocol::Reply load_case_file(const std::filesystem::path& local_file);  // sends the text, named by the file
+  protocol::Reply load_case_text(std::string text, std::string source_name = "<text>");
+  protocol::Reply load_case_binary(std::string bytes, std::string source_name = "<binary>");
+  protocol::Reply load_case_on_server(std::string path);
+  protocol::Reply set_wall_velocity(std::string wall, protocol::Vector3 velocity,
+                                    protocol::Vector3 angular_velocity = {});
+  protocol::Reply set_wall_servo(std::string wall, double target_stress, double gain = 0.0, double max_speed = 0.0);
+  // Runs `cycles` cycles and waits for the end (timeout: as long as it takes).
+  protocol::Reply cycle(std::int64_t cycles, std::chrono::milliseconds timeout = std::chrono::hours(24));
+  std::uint64_t start_cycle(std::int64_t cycles);  // returns at once; await(id) for the end
+  protocol::Reply run_until(const protocol::RunUntilArgs& args,
+                            std::chrono::milliseconds timeout = std::chrono::hours(24));
+  std::uint64_t start_run_until(const protocol::RunUntilArgs& args);
+  protocol::Reply stop();
+  protocol::Reply get_state();
+  protocol::Reply shutdown();
+  protocol::Reply query_contacts(const protocol::ContactQueryArgs& args = {});
+  // On the server: a file in its output directory. transfer: the bytes come back in the reply's data.
+  protocol::Reply save_snapshot(std::string server_path, bool transfer = false);
+  protocol::Reply load_snapshot_on_server(std::string server_path);
+  protocol::Reply load_snapshot_bytes(std::string bytes);
+  protocol::Reply set_parameter(std::string name, double value, std::string material = {});
+  protocol::Reply set_gravity(protocol::Vector3 gravity);
+
+ private:
+  static protocol::Command command(protocol::CommandKind kind);
+  void receive_loop();
+  void take_replies();
+  void take_status();
+  void connect();
+
+  ConnectOptions options_;
+  dds::Participant participant_;
+  dds::Topic<protocol::Command> command_topic_;
+  dds::Topic<protocol::Reply> reply_topic_;
+  dds::Topic<protocol::Status> status_topic_;
+  dds::Writer<protocol::Command> command_writer_;
+  dds::Reader<protocol::Reply> reply_reader_;
+  dds::Reader<protocol::Status> status_reader_;
+  dds::ReadCondition reply_data_;
+  dds::ReadCondition status_data_;
+  dds::GuardCondition wake_;
+  dds::WaitSet waitset_;
+
+  mutable std::mutex mutex_;
+  mutable std::condition_variable changed_;
+  std::map<std::uint64_t, protocol::Reply> partial_;   // replies whose last chunk has not come
+  std::map<std::uint64_t, protocol::Reply> complete_;  // replies nobody has awaited yet
+  std::optional<protocol::Status> status_;
+  std::uint64_t next_request_ = 1;
+  bool stopping_ = false;
+  std::thread receiver_;
+};
+
+struct ServerInfo {
+  std::string name;
+  std::optional<protocol::Status> status;  // nothing when it did not arrive in time
+};
+
+// The servers alive on a domain: those whose status topic has a writer,
+// found through DDS discovery within `discovery` and read from their
+// (durable) status topic.
+std::vector<ServerInfo> list_servers(std::uint32_t domain, const std::string& dds_config = {},
+                                     std::chrono::milliseconds discovery = 1500ms);
+
+}  // namespace dem::client

@@ -1,0 +1,385 @@
+#include "dem/client/client.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "dem/dds/discovery.h"
+#include "dem/protocol/qos.h"
+#include "dem/protocol/topics.h"
+
+namespace dem::client {
+
+using protocol::CommandKind;
+using protocol::TopicKind;
+
+namespace {
+
+constexpr std::intptr_t kReplies = 1;
+constexpr std::intptr_t kStatus = 2;
+constexpr std::intptr_t kWake = 3;
+
+std::string seconds(std::chrono::milliseconds duration) {
+  std::ostringstream out;
+  out << std::chrono::duration<double>(duration).count() << " s";
+  return out.str();
+}
+
+// "<host>-<pid>-<n>": unique among the clients of a domain.
+std::string make_client_id() {
+  static std::atomic<int> counter{0};
+  char host[64] = {};
+  gethostname(host, sizeof host - 1);
+  std::string id;
+  for (const char* c = host; *c != '\0'; ++c) id += std::isalnum(static_cast<unsigned char>(*c)) ? *c : '_';
+  return id + "-" + std::to_string(getpid()) + "-" + std::to_string(++counter);
+}
+
+ConnectOptions checked(ConnectOptions options) {
+  if (!protocol::valid_server_name(options.server)) {
+    throw std::invalid_argument("\"" + options.server +
+                                "\" is not a server name (a letter, then letters, digits or underscores)");
+  }
+  if (options.client_id.empty()) options.client_id = make_client_id();
+  return options;
+}
+
+}  // namespace
+
+Client::Client(ConnectOptions options)
+    : options_(checked(std::move(options))),
+      participant_(options_.domain, options_.dds_config),
+      command_topic_(participant_, protocol::topic_name(options_.server, TopicKind::kCommand)),
+      reply_topic_(participant_, protocol::topic_name(options_.server, TopicKind::kReply)),
+      status_topic_(participant_, protocol::topic_name(options_.server, TopicKind::kStatus)),
+      command_writer_(participant_, command_topic_, protocol::command_qos()),
+      reply_reader_(participant_, reply_topic_, protocol::reply_qos()),
+      status_reader_(participant_, status_topic_, protocol::status_qos()),
+      reply_data_(reply_reader_.handle()),
+      status_data_(status_reader_.handle()),
+      wake_(participant_),
+      waitset_(participant_) {
+  waitset_.attach(reply_data_, kReplies);
+  waitset_.attach(status_data_, kStatus);
+  waitset_.attach(wake_, kWake);
+  receiver_ = std::thread([this] { receive_loop(); });
+  try {
+    connect();
+  } catch (...) {
+    {
+      std::lock_guard lock(mutex_);
+      stopping_ = true;
+    }
+    wake_.trigger();
+    receiver_.join();
+    throw;
+  }
+}
+
+Client::~Client() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  wake_.trigger();
+  if (receiver_.joinable()) receiver_.join();
+}
+
+void Client::connect() {
+  const auto deadline = std::chrono::steady_clock::now() + options_.timeout;
+  const auto remaining = [&] {
+    return std::max(0ms, std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()));
+  };
+  const std::string where = "server \"" + options_.server + "\" on DDS domain " + std::to_string(options_.domain);
+  // The server's durable status says it is there.
+  const auto status = wait_for_status([](const protocol::Status&) { return true; }, remaining());
+  if (!status) throw NoSuchServer("no " + where + " within " + seconds(options_.timeout));
+  if (status->state == protocol::ServerState::kShutdown) throw NoSuchServer(where + " is shutting down");
+  // One round trip: the server has then matched this client both ways, so
+  // no later command or reply is lost to discovery. A ping sent before the
+  // server's reader matched this writer is lost; send another, with more
+  // patience each time, and take the first answer.
+  std::set<std::uint64_t> pings;
+  for (auto patience = 100ms; remaining() > 0ms; patience = std::min(patience * 2, 2000ms)) {
+    if (command_writer_.matched_readers() > 0) pings.insert(send(command(CommandKind::kGetState)));
+    std::unique_lock lock(mutex_);
+    const bool answered = changed_.wait_for(lock, std::min(patience, remaining()), [&] {
+      return std::any_of(pings.begin(), pings.end(), [&](std::uint64_t id) { return complete_.count(id) > 0; });
+    });
+    if (answered) {
+      for (const std::uint64_t id : pings) complete_.erase(id);
+      return;
+    }
+  }
+  throw NoSuchServer(where + " was found but did not answer within " + seconds(options_.timeout));
+}
+
+// --- receiving -----------------------------------------------------------
+
+void Client::receive_loop() {
+  for (;;) {
+    {
+      std::lock_guard lock(mutex_);
+      if (stopping_) return;
+    }
+    try {
+      waitset_.wait(std::chrono::seconds(1));
+      take_replies();
+      take_status();
+    } catch (const std::exception&) {
+      // A DDS error while receiving surfaces to callers as a reply timeout;
+      // keep receiving rather than end the client's thread.
+      std::this_thread::sleep_for(50ms);
+    }
+  }
+}
+
+void Client::take_replies() {
+  std::vector<protocol::Reply> replies = reply_reader_.take();
+  if (replies.empty()) return;
+  {
+    std::lock_guard lock(mutex_);
+    for (protocol::Reply& chunk : replies) {
+      if (chunk.client_id != options_.client_id) continue;  // another client's reply
+      const std::uint64_t id = chunk.request_id;
+      if (chunk.chunk == 0) {
+        partial_[id] = std::move(chunk);
+      } else if (auto found = partial_.find(id); found != partial_.end() && !found->second.last) {
+        protocol::Reply& reply = found->second;
+        reply.contacts.insert(reply.contacts.end(), std::make_move_iterator(chunk.contacts.begin()),
+                              std::make_move_iterator(chunk.contacts.end()));
+        reply.data += chunk.data;
+        reply.chunk = chunk.chunk;
+        reply.last = chunk.last;
+        reply.duration = chunk.duration;
+        reply.state = std::move(chunk.state);
+      }
+      if (auto found = partial_.find(id); found != partial_.end() && found->second.last) {
+        complete_[id] = std::move(found->second);
+        partial_.erase(found);
+      }
+    }
+  }
+  changed_.notify_all();
+}
+
+void Client::take_status() {
+  std::vector<protocol::Status> statuses = status_reader_.take();
+  if (statuses.empty()) return;
+  {
+    std::lock_guard lock(mutex_);
+    status_ = std::move(statuses.back());
+  }
+  changed_.notify_all();
+}
+
+// --- requests ------------------------------------------------------------
+
+protocol::Command Client::command(CommandKind kind) {
+  protocol::Command command;
+  command.kind = static_cast<std::uint8_t>(kind);
+  return command;
+}
+
+std::uint64_t Client::send(protocol::Command command) {
+  {
+    std::lock_guard lock(mutex_);
+    command.request_id = next_request_++;
+  }
+  command.server = options_.server;
+  command.client_id = options_.client_id;
+  command.stamp = protocol::now_stamp();
+  command_writer_.write(command);
+  return command.request_id;
+}
+
+std::optional<protocol::Reply> Client::await(std::uint64_t request_id, std::chrono::milliseconds timeout) {
+  std::unique_lock lock(mutex_);
+  if (!changed_.wait_for(lock, timeout, [&] { return complete_.count(request_id) > 0; })) return std::nullopt;
+  protocol::Reply reply = std::move(complete_.at(request_id));
+  complete_.erase(request_id);
+  return reply;
+}
+
+protocol::Reply Client::call(protocol::Command command, std::optional<std::chrono::milliseconds> timeout,
+                             bool cancelled_is_ok) {
+  const auto kind = protocol::command_kind(command.kind);
+  const std::string what = kind ? std::string(protocol::to_string(*kind)) : "command";
+  const std::chrono::milliseconds wait = timeout.value_or(options_.reply_timeout);
+  const std::uint64_t id = send(std::move(command));
+  std::optional<protocol::Reply> reply = await(id, wait);
+  if (!reply) {
+    throw ReplyTimeout("no reply from server \"" + options_.server + "\" to " + what + " within " + seconds(wait) +
+                       (server_alive() ? "" : " (the server is gone)"));
+  }
+  if (!reply->ok() && !(cancelled_is_ok && reply->status == protocol::ReplyStatus::kCancelled)) {
+    throw ServerError(std::move(*reply));
+  }
+  return std::move(*reply);
+}
+
+protocol::Status Client::status() const {
+  std::lock_guard lock(mutex_);
+  return status_.value_or(protocol::Status{});
+}
+
+std::optional<protocol::Status> Client::wait_for_status(const std::function<bool(const protocol::Status&)>& condition,
+                                                        std::chrono::milliseconds timeout) const {
+  std::unique_lock lock(mutex_);
+  if (!changed_.wait_for(lock, timeout, [&] { return status_ && condition(*status_); })) return std::nullopt;
+  return status_;
+}
+
+bool Client::server_alive() const { return status_reader_.matched_writers() > 0; }
+
+// --- one call per command --------------------------------------------------
+
+protocol::Reply Client::load_case_file(const std::filesystem::path& local_file) {
+  std::ifstream in(local_file, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + local_file.string());
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return load_case_text(std::move(text), local_file.string());
+}
+
+protocol::Reply Client::load_case_text(std::string text, std::string source_name) {
+  protocol::Command c = command(CommandKind::kLoadCase);
+  c.load_case.text = std::move(text);
+  c.load_case.source_name = std::move(source_name);
+  return call(std::move(c));
+}
+
+protocol::Reply Client::load_case_binary(std::string bytes, std::string source_name) {
+  protocol::Command c = command(CommandKind::kLoadCase);
+  c.load_case.binary = std::move(bytes);
+  c.load_case.source_name = std::move(source_name);
+  return call(std::move(c));
+}
+
+protocol::Reply Client::load_case_on_server(std::string path) {
+  protocol::Command c = command(CommandKind::kLoadCase);
+  c.load_case.path = std::move(path);
+  return call(std::move(c));
+}
+
+protocol::Reply Client::set_wall_velocity(std::string wall, protocol::Vector3 velocity,
+                                          protocol::Vector3 angular_velocity) {
+  protocol::Command c = command(CommandKind::kSetWallVelocity);
+  c.wall_velocity.wall = std::move(wall);
+  c.wall_velocity.velocity = velocity;
+  c.wall_velocity.angular_velocity = angular_velocity;
+  return call(std::move(c));
+}
+
+protocol::Reply Client::set_wall_servo(std::string wall, double target_stress, double gain, double max_speed) {
+  protocol::Command c = command(CommandKind::kSetWallServo);
+  c.wall_servo.wall = std::move(wall);
+  c.wall_servo.target_stress = target_stress;
+  c.wall_servo.gain = gain;
+  c.wall_servo.max_speed = max_speed;
+  return call(std::move(c));
+}
+
+std::uint64_t Client::start_cycle(std::int64_t cycles) {
+  protocol::Command c = command(CommandKind::kCycle);
+  c.cycle.cycles = cycles;
+  return send(std::move(c));
+}
+
+protocol::Reply Client::cycle(std::int64_t cycles, std::chrono::milliseconds timeout) {
+  protocol::Command c = command(CommandKind::kCycle);
+  c.cycle.cycles = cycles;
+  return call(std::move(c), timeout);
+}
+
+std::uint64_t Client::start_run_until(const protocol::RunUntilArgs& args) {
+  protocol::Command c = command(CommandKind::kRunUntil);
+  c.run_until = args;
+  return send(std::move(c));
+}
+
+protocol::Reply Client::run_until(const protocol::RunUntilArgs& args, std::chrono::milliseconds timeout) {
+  protocol::Command c = command(CommandKind::kRunUntil);
+  c.run_until = args;
+  return call(std::move(c), timeout);
+}
+
+protocol::Reply Client::stop() { return call(command(CommandKind::kStop)); }
+protocol::Reply Client::get_state() { return call(command(CommandKind::kGetState)); }
+protocol::Reply Client::shutdown() { return call(command(CommandKind::kShutdown)); }
+
+protocol::Reply Client::query_contacts(const protocol::ContactQueryArgs& args) {
+  protocol::Command c = command(CommandKind::kQueryContacts);
+  c.query = args;
+  return call(std::move(c));
+}
+
+protocol::Reply Client::save_snapshot(std::string server_path, bool transfer) {
+  protocol::Command c = command(CommandKind::kSaveSnapshot);
+  c.snapshot.path = std::move(server_path);
+  c.snapshot.transfer = transfer;
+  return call(std::move(c));
+}
+
+protocol::Reply Client::load_snapshot_on_server(std::string server_path) {
+  protocol::Command c = command(CommandKind::kLoadSnapshot);
+  c.snapshot.path = std::move(server_path);
+  return call(std::move(c));
+}
+
+protocol::Reply Client::load_snapshot_bytes(std::string bytes) {
+  protocol::Command c = command(CommandKind::kLoadSnapshot);
+  c.snapshot.transfer = true;
+  c.snapshot.data = std::move(bytes);
+  return call(std::move(c));
+}
+
+protocol::Reply Client::set_parameter(std::string name, double value, std::string material) {
+  protocol::Command c = command(CommandKind::kSetParameter);
+  c.parameter.name = std::move(name);
+  c.parameter.value = value;
+  c.parameter.material = std::move(material);
+  return call(std::move(c));
+}
+
+protocol::Reply Client::set_gravity(protocol::Vector3 gravity) {
+  protocol::Command c = command(CommandKind::kSetParameter);
+  c.parameter.name = "gravity";
+  c.parameter.vector = gravity;
+  return call(std::move(c));
+}
+
+// --- discovery -------------------------------------------------------------
+
+std::vector<ServerInfo> list_servers(std::uint32_t domain, const std::string& dds_config,
+                                     std::chrono::milliseconds discovery) {
+  dds::Participant participant(domain, dds_config);
+  dds::PublicationMonitor publications(participant);
+  std::this_thread::sleep_for(discovery);
+  std::set<std::string> names;
+  for (const dds::Publication& publication : publications.alive()) {
+    if (publication.type_name != protocol::kStatusTypeName) continue;
+    if (auto name = protocol::server_of_status_topic(publication.topic_name)) names.insert(*name);
+  }
+  std::vector<ServerInfo> servers;
+  for (const std::string& name : names) {
+    dds::Topic<protocol::Status> topic(participant, protocol::topic_name(name, TopicKind::kStatus));
+    dds::Reader<protocol::Status> reader(participant, topic, protocol::status_qos());
+    ServerInfo info{name, std::nullopt};
+    // The status is durable: it arrives as soon as the reader matches.
+    for (auto waited = 0ms; waited < 1000ms && !info.status; waited += 20ms) {
+      std::vector<protocol::Status> statuses = reader.take();
+      if (!statuses.empty()) info.status = std::move(statuses.back());
+      else std::this_thread::sleep_for(20ms);
+    }
+    if (!info.status || info.status->state != protocol::ServerState::kShutdown) servers.push_back(std::move(info));
+  }
+  return servers;
+}
+
+}  // namespace dem::client

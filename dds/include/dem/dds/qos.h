@@ -1,0 +1,41 @@
+// Quality-of-service policies, built fluently and owned (RAII over
+// dds_qos_t):  Qos().reliable(1s).keep_all().transient_local()
+#pragma once
+
+#include <dds/dds.h>
+
+#include <chrono>
+#include <cstdint>
+
+namespace dem::dds {
+
+// A DDS duration from a std::chrono one; nanoseconds::max() is infinity.
+dds_duration_t to_duration(std::chrono::nanoseconds duration);
+
+class Qos {
+ public:
+  Qos();
+  ~Qos();
+  Qos(const Qos& other);
+  Qos& operator=(const Qos& other);
+  Qos(Qos&& other) noexcept;
+  Qos& operator=(Qos&& other) noexcept;
+
+  // Reliable delivery; a write waits at most max_blocking for room in the
+  // writer's history (then reports a timeout) - 0 never waits.
+  Qos& reliable(std::chrono::nanoseconds max_blocking);
+  Qos& best_effort();
+  Qos& keep_last(std::int32_t depth);
+  Qos& keep_all();
+  Qos& volatile_durability();
+  // Late-joining readers receive the writer's history (its KEEP_LAST depth).
+  Qos& transient_local();
+  Qos& resource_limits(std::int32_t max_samples, std::int32_t max_instances, std::int32_t max_samples_per_instance);
+
+  const dds_qos_t* get() const { return qos_; }
+
+ private:
+  dds_qos_t* qos_;
+};
+
+}  // namespace dem::dds

@@ -1,0 +1,130 @@
+// Topics, writers and readers of one message type:
+//   Topic<Status> topic(participant, "rt/dem/a/status");
+//   Writer<Status> writer(participant, topic, qos);
+//   writer.write(status);
+#pragma once
+
+#include <dds/dds.h>
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "dem/dds/entity.h"
+#include "dem/dds/error.h"
+#include "dem/dds/participant.h"
+#include "dem/dds/qos.h"
+#include "dem/dds/type_support.h"
+
+namespace dem::dds {
+
+template <SupportedType T>
+class Topic {
+ public:
+  Topic(const Participant& participant, std::string name)
+      : name_(std::move(name)),
+        entity_(check(dds_create_topic(participant.handle(), TypeSupport<T>::descriptor(), name_.c_str(), nullptr,
+                                       nullptr),
+                      "creating topic " + name_)) {}
+
+  dds_entity_t handle() const { return entity_.handle(); }
+  const std::string& name() const { return name_; }
+
+ private:
+  std::string name_;
+  Entity entity_;
+};
+
+// Counts of the remote (and local) endpoints an endpoint is matched with.
+std::uint32_t matched_readers(dds_entity_t writer);
+std::uint32_t matched_writers(dds_entity_t reader);
+
+template <SupportedType T>
+class Writer {
+ public:
+  Writer(const Participant& participant, const Topic<T>& topic, const Qos& qos)
+      : topic_name_(topic.name()),
+        entity_(check(dds_create_writer(participant.handle(), topic.handle(), qos.get(), nullptr),
+                      "creating a writer for " + topic_name_)) {}
+
+  // False when the writer's history stayed full for the QoS's max blocking
+  // time (a reader is not acknowledging): the sample is not sent. Any other
+  // failure throws DdsError.
+  bool write(const T& value) {
+    const dds_return_t result = TypeSupport<T>::write(entity_.handle(), value);
+    if (result == DDS_RETCODE_TIMEOUT) return false;
+    check(result, "writing to " + topic_name_);
+    return true;
+  }
+
+  // Waits until every matched reader acknowledged all samples written;
+  // false when the timeout passed first.
+  bool wait_for_acks(std::chrono::nanoseconds timeout) {
+    const dds_return_t result = dds_wait_for_acks(entity_.handle(), to_duration(timeout));
+    if (result == DDS_RETCODE_TIMEOUT) return false;
+    check(result, "waiting for acknowledgements on " + topic_name_);
+    return true;
+  }
+
+  std::uint32_t matched_readers() const { return dds::matched_readers(entity_.handle()); }
+  dds_entity_t handle() const { return entity_.handle(); }
+  const std::string& topic_name() const { return topic_name_; }
+
+ private:
+  std::string topic_name_;
+  Entity entity_;
+};
+
+// Returns a loan of received samples when it goes out of scope.
+class Loan {
+ public:
+  Loan(dds_entity_t reader, std::vector<void*>& samples, std::int32_t count)
+      : reader_(reader), samples_(samples), count_(count) {}
+  ~Loan() {
+    if (count_ > 0) dds_return_loan(reader_, samples_.data(), count_);
+  }
+  Loan(const Loan&) = delete;
+  Loan& operator=(const Loan&) = delete;
+
+ private:
+  dds_entity_t reader_;
+  std::vector<void*>& samples_;
+  std::int32_t count_;
+};
+
+template <SupportedType T>
+class Reader {
+ public:
+  Reader(const Participant& participant, const Topic<T>& topic, const Qos& qos)
+      : topic_name_(topic.name()),
+        entity_(check(dds_create_reader(participant.handle(), topic.handle(), qos.get(), nullptr),
+                      "creating a reader for " + topic_name_)) {}
+
+  // Removes up to `max` samples from the reader's history and returns those
+  // that carry data (not the notices that a writer went away), oldest first.
+  std::vector<T> take(std::size_t max = 256) {
+    std::vector<void*> samples(max, nullptr);  // null: Cyclone lends its own buffers
+    std::vector<dds_sample_info_t> infos(max);
+    const auto count = check(dds_take(entity_.handle(), samples.data(), infos.data(), max,
+                                      static_cast<std::uint32_t>(max)),
+                             "taking from " + topic_name_);
+    Loan loan(entity_.handle(), samples, count);
+    std::vector<T> values;
+    values.reserve(static_cast<std::size_t>(count));
+    for (std::int32_t i = 0; i < count; ++i) {
+      if (infos[i].valid_data) values.push_back(TypeSupport<T>::from_sample(samples[i]));
+    }
+    return values;
+  }
+
+  std::uint32_t matched_writers() const { return dds::matched_writers(entity_.handle()); }
+  dds_entity_t handle() const { return entity_.handle(); }
+  const std::string& topic_name() const { return topic_name_; }
+
+ private:
+  std::string topic_name_;
+  Entity entity_;
+};
+
+}  // namespace dem::dds

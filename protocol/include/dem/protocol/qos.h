@@ -1,0 +1,20 @@
+// The QoS of each topic, chosen on purpose (docs/DDS.md explains why):
+//   command, reply     reliable, keep all, volatile: nothing is lost, nothing replayed
+//   status             reliable, transient-local, keep last 1: a late joiner sees the state now
+//   plate_forces,      reliable, keep last, volatile; the server's writes never block
+//   contact_stats      (max blocking time 0): a stalled subscriber costs samples, not cycles
+#pragma once
+
+#include "dem/dds/qos.h"
+
+namespace dem::protocol {
+
+dds::Qos command_qos();
+dds::Qos reply_qos();
+dds::Qos status_qos();
+dds::Qos telemetry_writer_qos();
+// Readers keep a generous history so a monitor that falls behind for a
+// while loses nothing, without ever holding the server up.
+dds::Qos telemetry_reader_qos();
+
+}  // namespace dem::protocol

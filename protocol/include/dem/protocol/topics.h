@@ -1,0 +1,26 @@
+// Topic and type names on the wire, in ROS 2's conventions (docs/DDS.md):
+// topics "rt/dem/<server>/<name>" (the ROS 2 topic /dem/<server>/<name>),
+// types "dem_interfaces::msg::dds_::<Type>_".
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace dem::protocol {
+
+enum class TopicKind { kCommand, kReply, kStatus, kPlateForces, kContactStats };
+
+// "rt/dem/<server>/command", ".../reply", ".../status", ".../plate_forces", ".../contact_stats".
+std::string topic_name(std::string_view server, TopicKind kind);
+
+// A server name is one ROS 2 name token: a letter, then letters, digits and
+// underscores (at most 64 characters), so every topic name is a valid ROS 2 name.
+bool valid_server_name(std::string_view name);
+
+// The server whose status topic this is, if it is one.
+std::optional<std::string> server_of_status_topic(std::string_view topic_name);
+
+inline constexpr std::string_view kStatusTypeName = "dem_interfaces::msg::dds_::Status_";
+
+}  // namespace dem::protocol

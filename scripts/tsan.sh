@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# ThreadSanitizer run of the service: builds dem_server, demctl and the
+# service tests with -fsanitize=thread in build-tsan/ (only what they need)
+# and runs the service tests there. A data race fails the run. Part of
+# scripts/test.sh.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${DEM_TSAN_BUILD:-$root/build-tsan}"
+bash "$root/scripts/install_deps.sh"
+# -O1 with line tables only: quick to build, and reports still name the lines.
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDEM_SANITIZE=thread \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1" \
+  -DDEM_BUILD_TOOLS=OFF -DDEM_BUILD_BENCH=OFF -DDEM_BUILD_PYTHON=OFF >/dev/null
+cmake --build "$build" -j"$(nproc)" --target dem_service_tests dem_server demctl
+export CYCLONEDDS_URI="file://$root/config/cyclonedds-loopback.xml"
+export OMP_WAIT_POLICY=passive
+# Any report fails the test. Cyclone DDS is not instrumented: the
+# suppressions ignore the libc calls made from inside it (tests/service/tsan.supp).
+export TSAN_OPTIONS="halt_on_error=1 exitcode=66 second_deadlock_stack=1 suppressions=$root/tests/service/tsan.supp"
+cd "$build"
+ctest -L service --output-on-failure -j"$(nproc)"

@@ -1,0 +1,24 @@
+// Why a command cannot be done: a reply status and a message for people.
+// Command handlers throw it; the runner turns it into the command's reply
+// (the one place where failures become replies), leaving the simulation as
+// it was.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "dem/protocol/messages.h"
+
+namespace dem::service {
+
+class CommandError : public std::runtime_error {
+ public:
+  CommandError(protocol::ReplyStatus status, const std::string& message)
+      : std::runtime_error(message), status_(status) {}
+  protocol::ReplyStatus status() const { return status_; }
+
+ private:
+  protocol::ReplyStatus status_;
+};
+
+}  // namespace dem::service

@@ -1,0 +1,33 @@
+// What a dem_server is told at start (its command-line options, docs/SERVICE.md).
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace dem::service {
+
+struct ServerOptions {
+  std::string name = "dem";  // a ROS 2 name token: the topics are rt/dem/<name>/...
+  std::uint32_t domain = 0;  // DDS domain id
+  std::string dds_config;    // Cyclone configuration; empty: $CYCLONEDDS_URI, else the repository's loopback file
+  // Telemetry is published every `telemetry_cycles` cycles and every
+  // `telemetry_seconds` of simulated time, whichever comes first; 0 turns
+  // either off (both 0: telemetry only when a command ends).
+  std::uint64_t telemetry_cycles = 100;
+  double telemetry_seconds = 0.0;
+  std::filesystem::path output_directory = "out/dem_server";  // CSV tables and snapshots
+  std::optional<std::filesystem::path> initial_case;          // loaded at start
+  std::optional<int> threads;                                 // engine threads; overrides the case's
+  bool record_csv = true;  // walls.csv and assembly.csv at the telemetry interval, contacts.csv and particles.csv at the end
+  // The engine thread looks at its command queue between chunks of cycles
+  // sized to take about this long, so commands are answered within it.
+  std::chrono::milliseconds chunk_duration{20};
+  std::chrono::milliseconds progress_interval{250};  // status updates while a command runs
+  std::uint32_t contact_chunk = 4096;                // contacts per reply chunk, by default
+  std::uint32_t snapshot_chunk = 1u << 20;           // bytes per reply chunk of a transferred snapshot
+};
+
+}  // namespace dem::service

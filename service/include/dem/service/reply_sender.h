@@ -1,0 +1,41 @@
+// Replies on rt/dem/<server>/reply: each command gets exactly one, addressed
+// to its client (split into chunks - a sequence number and a last flag -
+// when it carries many contacts or a snapshot's bytes). Every reply is
+// logged with its status and how long the command took.
+#pragma once
+
+#include <chrono>
+#include <string>
+
+#include "dem/dds/topic.h"
+#include "dem/protocol/messages.h"
+#include "dem/protocol/type_support.h"
+#include "dem/service/command_queue.h"
+
+namespace dem::service {
+
+class ReplySender {
+ public:
+  ReplySender(const dds::Participant& participant, std::string server_name, std::uint32_t contact_chunk,
+              std::uint32_t data_chunk);
+
+  // Fills in the addressing (server, client, request id, kind), the duration
+  // since the command arrived and the stamp, and sends the reply; contacts
+  // and data beyond one chunk go out in several samples. A command's
+  // query.chunk_size, when set, replaces the default contact chunk.
+  void send(const ReceivedCommand& command, protocol::Reply reply);
+
+  // Waits until the clients acknowledged every reply (at shutdown).
+  bool flush(std::chrono::milliseconds timeout);
+
+ private:
+  void write(protocol::Reply& reply);
+
+  std::string server_name_;
+  std::uint32_t contact_chunk_;
+  std::uint32_t data_chunk_;
+  dds::Topic<protocol::Reply> topic_;
+  dds::Writer<protocol::Reply> writer_;
+};
+
+}  // namespace dem::service

@@ -1,0 +1,65 @@
+// The simulation a server owns: the world (2D or 3D, behind WorldSession)
+// and what the service knows about it beyond the engine (the case's name
+// and description, its contact models). Every operation a command asks for
+// checks its arguments first and throws CommandError (a reply status and a
+// message) without changing anything; a new world replaces the old one only
+// once it is complete. Used by the engine thread only.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "dem/protocol/messages.h"
+#include "dem/service/world_session.h"
+
+namespace dem::service {
+
+class Simulation {
+ public:
+  explicit Simulation(std::optional<int> threads = std::nullopt) : threads_(threads) {}
+
+  bool loaded() const { return world_ != nullptr; }
+  const WorldSession& world() const { return *world_; }
+  WorldSession& world() { return *world_; }
+  const std::string& case_name() const { return case_name_; }
+  std::uint8_t dimension() const { return loaded() ? world_->dimension() : 0; }
+
+  // A world built and ready to replace the current one.
+  struct Prepared {
+    std::unique_ptr<WorldSession> world;
+    std::string case_name;
+    std::string description;
+    std::vector<ContactModelDef> contact_models;
+    std::string message;  // what was loaded, for the reply
+  };
+  // A case (2D or 3D) from a file the server reads, text or serialized
+  // bytes. INVALID_CASE names the file, line and field of each problem;
+  // NOT_FOUND when the file is missing.
+  Prepared prepare_case(const protocol::LoadCaseArgs& args) const;
+  // A serialized dem.proto.Snapshot of either dimension; INVALID_SNAPSHOT
+  // when it is not one or is inconsistent. `source` names it in messages.
+  Prepared prepare_snapshot(std::string_view bytes, const std::string& source) const;
+  // Makes a prepared world the simulation; returns its message.
+  std::string install(Prepared prepared);
+  std::string snapshot_bytes() const;
+
+  std::string set_wall_velocity(const protocol::WallVelocityArgs& args);
+  std::string set_wall_servo(const protocol::WallServoArgs& args);
+  std::string set_parameter(const protocol::ParameterArgs& args);
+  std::vector<protocol::ContactEntry> query_contacts(const protocol::ContactQueryArgs& args) const;
+
+  // A wall by name, or by id when the name is empty; NOT_FOUND otherwise.
+  WallId find_wall(const std::string& name, std::int32_t id) const;
+
+ private:
+  std::optional<int> threads_;
+  std::unique_ptr<WorldSession> world_;
+  std::string case_name_;
+  std::string description_;
+  std::vector<ContactModelDef> contact_models_;
+};
+
+}  // namespace dem::service

@@ -1,0 +1,80 @@
+// The engine thread: executes commands in arrival order between chunks of
+// cycles, steps the world, and publishes telemetry and status. The only
+// thread that touches the simulation; the reception thread hands it
+// commands through the CommandQueue and nothing else.
+#pragma once
+
+#include <chrono>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "dem/protocol/messages.h"
+#include "dem/service/active_run.h"
+#include "dem/service/command_queue.h"
+#include "dem/service/options.h"
+#include "dem/service/output_recorder.h"
+#include "dem/service/reply_sender.h"
+#include "dem/service/simulation.h"
+#include "dem/service/telemetry_publisher.h"
+#include "dem/service/telemetry_schedule.h"
+
+namespace dem::service {
+
+class SimulationRunner {
+ public:
+  SimulationRunner(const ServerOptions& options, CommandQueue& queue, ReplySender& replies,
+                   TelemetryPublisher& telemetry);
+
+  // Loads the case given at start; throws CommandError when it cannot.
+  void load_initial_case(const std::filesystem::path& path);
+
+  // Runs until a shutdown is requested (signal or command), then returns
+  // between two chunks of cycles.
+  void run();
+  // After run() and once no more commands arrive: stops the running command
+  // (a cancelled reply), answers every command still queued (shutting
+  // down), publishes the final telemetry and status, writes the end-of-run
+  // tables and waits briefly for subscribers to acknowledge.
+  void finish();
+
+ private:
+  void execute(ReceivedCommand received);
+  void start_run(ReceivedCommand& received, protocol::CommandKind kind);
+  void run_chunk();
+  void complete_run();
+  void end_run(protocol::ReplyStatus status, const std::string& message);
+  void fail_run(const std::string& message);
+
+  std::string install(Simulation::Prepared prepared);
+  std::string stop();
+  protocol::Reply get_state() const;
+  protocol::Reply save_snapshot(const protocol::SnapshotArgs& args);
+  std::string load_snapshot(const protocol::SnapshotArgs& args);
+  std::filesystem::path snapshot_path(const std::string& requested) const;
+
+  void send(const ReceivedCommand& received, protocol::Reply reply);
+  protocol::Status status() const;
+  void publish_status();
+  void publish_telemetry();
+
+  const ServerOptions& options_;
+  CommandQueue& queue_;
+  ReplySender& replies_;
+  TelemetryPublisher& telemetry_;
+  Simulation simulation_;
+  OutputRecorder recorder_;
+  TelemetrySchedule schedule_;
+  protocol::ServerState state_ = protocol::ServerState::kIdle;
+  std::optional<ActiveRun> active_;
+  std::vector<ReceivedCommand> unanswered_;  // taken from the queue after a shutdown request
+  std::string message_ = "started";
+  std::uint64_t commands_served_ = 0;
+  std::uint64_t last_telemetry_cycle_ = 0;
+  bool telemetry_published_ = false;
+  // Chunks take about options_.chunk_duration at the measured rate.
+  double cycles_per_second_ = 0.0;
+  std::chrono::steady_clock::time_point last_status_{};
+};
+
+}  // namespace dem::service

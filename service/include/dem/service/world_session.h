@@ -1,0 +1,72 @@
+// The engine behind the service, whatever its dimension: the one interface
+// the runner and the commands use to step, steer and read a 2D World or a
+// 3D World3. WorldSessionT<Dim> implements it over the engine and the
+// readout functions (engine_readout.h); a call per command or per chunk of
+// cycles, never per particle.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "dem/io/snapshot_conversion.h"
+#include "dem/protocol/messages.h"
+#include "dem/service/engine_readout.h"
+#include "dem/world.h"
+
+namespace dem::service {
+
+class OutputRecorder;
+
+class WorldSession {
+ public:
+  virtual ~WorldSession() = default;
+
+  virtual std::uint8_t dimension() const = 0;
+  virtual void cycle(std::uint64_t cycles) = 0;
+  virtual std::uint64_t cycle_count() const = 0;
+  virtual double time() const = 0;       // s
+  virtual double time_step() const = 0;  // s
+  virtual int particle_count() const = 0;
+  virtual int wall_count() const = 0;
+  virtual std::uint64_t state_hash() const = 0;
+  virtual double kinetic_energy() const = 0;  // J
+
+  virtual WallId find_wall(std::string_view name) const = 0;  // kInvalidId when unknown
+  virtual std::string wall_name(WallId wall) const = 0;
+  virtual double wall_area(WallId wall) const = 0;
+  virtual protocol::WallForce read_wall(WallId wall) const = 0;
+  virtual std::vector<protocol::WallForce> read_walls() const = 0;
+  virtual protocol::ContactStats read_contact_stats() const = 0;
+  virtual std::vector<protocol::ContactEntry> query_contacts(const ContactFilter& filter) const = 0;
+  virtual std::optional<ServoLimits> default_servo_limits(WallId wall,
+                                                          const std::vector<ContactModelDef>& models) const = 0;
+
+  // Steering. A 2D world refuses out-of-plane vectors (CommandError); the
+  // engine's own checks throw DefinitionError.
+  virtual void set_wall_velocity(WallId wall, const protocol::Vector3& velocity,
+                                 const protocol::Vector3& angular_velocity) = 0;
+  virtual void set_wall_servo(WallId wall, const ServoDef& servo) = 0;
+  virtual DampingDef damping() const = 0;
+  virtual void set_damping(const DampingDef& damping) = 0;
+  virtual void set_time_step_fraction(double fraction) = 0;
+  virtual const std::vector<MaterialDef>& materials() const = 0;
+  virtual void set_friction(MaterialId material, double friction) = 0;
+  virtual void set_gravity(const protocol::Vector3& gravity) = 0;
+  virtual void set_threads(int threads) = 0;
+
+  virtual std::string snapshot_bytes(const io::SnapshotInfo& info) const = 0;
+
+  // The per-case tables (the recorder writes them for this world's dimension).
+  virtual void start_tables(OutputRecorder& recorder, const std::string& case_name) const = 0;
+  virtual void record_tables(OutputRecorder& recorder) const = 0;
+  virtual void finish_tables(OutputRecorder& recorder) const = 0;
+};
+
+template <int Dim>
+std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world);
+
+}  // namespace dem::service

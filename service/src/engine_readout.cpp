@@ -1,0 +1,166 @@
+#include "dem/service/engine_readout.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dem::service {
+
+namespace {
+
+// Engine quantities as wire vectors: 2D vectors get z = 0, 2D spins
+// (moments, angular velocities) are about z.
+protocol::Vector3 vector3(const Vec2& v) { return {v.x(), v.y(), 0.0}; }
+protocol::Vector3 vector3(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+protocol::Vector3 spin3(double about_z) { return {0.0, 0.0, about_z}; }
+protocol::Vector3 spin3(const Vec3& v) { return vector3(v); }
+
+// The side of the wall the particles are on (Cundall & Strack Fig. 4 in 2D:
+// e rotated counter-clockwise; u x v in 3D).
+Vec2 wall_normal(const WallDefT<2>& wall) { return counter_clockwise_perpendicular(wall.direction); }
+Vec3 wall_normal(const WallDefT<3>& wall) { return wall.direction.cross(wall.direction2); }
+
+template <int Dim>
+protocol::WallForce to_wall_force(const BasicWorld<Dim>& world, const WallMeasureT<Dim>& m) {
+  const WallDefT<Dim>& def = world.wall(m.wall);
+  protocol::WallForce w;
+  w.name = def.name;
+  w.id = m.wall;
+  w.force = vector3(m.force);
+  w.moment = spin3(m.moment);
+  w.normal_force = m.normal_force;
+  w.area = world.wall_area(m.wall);
+  w.normal_stress = w.area > 0.0 ? m.normal_force / w.area : 0.0;
+  w.position = vector3(m.point);
+  w.displacement = vector3(m.displacement);
+  w.settlement = m.displacement.dot(wall_normal(def)) + 0.0;  // + 0.0: no "-0" for a wall at rest
+  w.contacts = m.contacts;
+  return w;
+}
+
+template <int Dim>
+bool inside(const ContactRecordT<Dim>& c, const ContactFilter& filter) {
+  if (filter.wall && c.second_wall != *filter.wall) return false;
+  if (filter.min_normal_force && !(c.normal_force > *filter.min_normal_force)) return false;
+  if (filter.box_min && filter.box_max) {
+    const protocol::Vector3 p = vector3(c.point);
+    const protocol::Vector3& lo = *filter.box_min;
+    const protocol::Vector3& hi = *filter.box_max;
+    if (p.x < lo.x || p.x > hi.x || p.y < lo.y || p.y > hi.y) return false;
+    if (Dim == 3 && (p.z < lo.z || p.z > hi.z)) return false;
+  }
+  return true;
+}
+
+template <int Dim>
+protocol::ContactEntry to_entry(const ContactRecordT<Dim>& c) {
+  protocol::ContactEntry e;
+  e.first = c.first;
+  e.second_particle = c.second_particle;
+  e.second_wall = c.second_wall;
+  e.point = vector3(c.point);
+  e.normal = vector3(c.normal);
+  e.overlap = c.overlap;
+  e.normal_force = c.normal_force;
+  e.shear_force = c.shear_force;
+  e.normal_damping = c.normal_damping;
+  e.shear_damping = c.shear_damping;
+  e.sliding = c.sliding;
+  return e;
+}
+
+}  // namespace
+
+template <int Dim>
+protocol::WallForce read_wall(const BasicWorld<Dim>& world, WallId wall) {
+  // wall_measures() measures every wall; they are few.
+  return to_wall_force(world, world.wall_measures().at(static_cast<std::size_t>(wall)));
+}
+
+template <int Dim>
+std::vector<protocol::WallForce> read_walls(const BasicWorld<Dim>& world) {
+  std::vector<protocol::WallForce> walls;
+  for (const WallMeasureT<Dim>& m : world.wall_measures()) walls.push_back(to_wall_force(world, m));
+  return walls;
+}
+
+template <int Dim>
+protocol::ContactStats read_contact_stats(const BasicWorld<Dim>& world) {
+  protocol::ContactStats s;
+  const std::vector<ContactRecordT<Dim>> contacts = world.contacts();
+  s.particles = world.particle_count();
+  s.contacts = static_cast<std::int32_t>(contacts.size());
+  double sum = 0.0;
+  for (const ContactRecordT<Dim>& c : contacts) {
+    if (c.second_wall != kInvalidId) ++s.wall_contacts;
+    if (c.sliding) ++s.sliding_contacts;
+    sum += c.normal_force;
+    s.max_normal_force = std::max(s.max_normal_force, c.normal_force);
+  }
+  if (s.contacts > 0) {
+    s.sliding_fraction = static_cast<double>(s.sliding_contacts) / s.contacts;
+    s.mean_normal_force = sum / s.contacts;
+  }
+  if (s.particles > 0) {
+    // Each particle-particle contact counts for both particles (Randall 1989).
+    s.coordination_number = (2.0 * (s.contacts - s.wall_contacts) + s.wall_contacts) / s.particles;
+  }
+  s.histogram_bin_width = kHistogramBinWidth;
+  s.histogram.assign(kHistogramBins, 0);
+  if (s.mean_normal_force > 0.0) {
+    for (const ContactRecordT<Dim>& c : contacts) {
+      const double f = c.normal_force / s.mean_normal_force;
+      const int bin = f <= 0.0 ? 0 : std::min(kHistogramBins - 1, static_cast<int>(f / kHistogramBinWidth));
+      ++s.histogram[static_cast<std::size_t>(bin)];
+    }
+  }
+  const AssemblyMeasures assembly = world.assembly_measures();
+  s.kinetic_energy = assembly.kinetic_energy;
+  s.out_of_balance = assembly.out_of_balance;
+  return s;
+}
+
+template <int Dim>
+std::vector<protocol::ContactEntry> query_contacts(const BasicWorld<Dim>& world, const ContactFilter& filter) {
+  std::vector<protocol::ContactEntry> entries;
+  for (const ContactRecordT<Dim>& c : world.contacts()) {
+    if (inside(c, filter)) entries.push_back(to_entry(c));
+  }
+  return entries;
+}
+
+template <int Dim>
+std::optional<ServoLimits> default_servo_limits(const BasicWorld<Dim>& world, WallId wall,
+                                                const std::vector<ContactModelDef>& contact_models) {
+  double stiffness = 0.0;
+  for (const ContactModelDef& model : contact_models) {
+    if (model.law == ContactLaw::kLinear || model.law == ContactLaw::kLinearRestitution) {
+      stiffness = std::max(stiffness, model.linear.normal_stiffness);
+    }
+  }
+  const auto radii = world.particles().radius;
+  if (!(stiffness > 0.0) || radii.empty()) return std::nullopt;
+  double mean_radius = 0.0;
+  for (const double r : radii) mean_radius += r;
+  mean_radius /= static_cast<double>(radii.size());
+  // Discs side by side along a 2D wall; spheres packed on a 3D one.
+  const double area = world.wall_area(wall);
+  const double most_contacts =
+      std::max(1.0, Dim == 2 ? area / (2.0 * mean_radius) : area / (4.0 * mean_radius * mean_radius));
+  const double dt = world.time_step();
+  return ServoLimits{0.5 / (stiffness * most_contacts * dt), 0.05 * mean_radius / dt};
+}
+
+template protocol::WallForce read_wall<2>(const BasicWorld<2>&, WallId);
+template protocol::WallForce read_wall<3>(const BasicWorld<3>&, WallId);
+template std::vector<protocol::WallForce> read_walls<2>(const BasicWorld<2>&);
+template std::vector<protocol::WallForce> read_walls<3>(const BasicWorld<3>&);
+template protocol::ContactStats read_contact_stats<2>(const BasicWorld<2>&);
+template protocol::ContactStats read_contact_stats<3>(const BasicWorld<3>&);
+template std::vector<protocol::ContactEntry> query_contacts<2>(const BasicWorld<2>&, const ContactFilter&);
+template std::vector<protocol::ContactEntry> query_contacts<3>(const BasicWorld<3>&, const ContactFilter&);
+template std::optional<ServoLimits> default_servo_limits<2>(const BasicWorld<2>&, WallId,
+                                                            const std::vector<ContactModelDef>&);
+template std::optional<ServoLimits> default_servo_limits<3>(const BasicWorld<3>&, WallId,
+                                                            const std::vector<ContactModelDef>&);
+
+}  // namespace dem::service

@@ -1,0 +1,85 @@
+#include "dem/service/output_recorder.h"
+
+#include <spdlog/spdlog.h>
+
+namespace dem::service {
+
+namespace {
+
+// A case name as one safe directory name.
+std::string directory_name(const std::string& case_name) {
+  std::string name;
+  for (const char c : case_name) name += std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' ? c : '_';
+  return name.empty() ? "unnamed" : name;
+}
+
+}  // namespace
+
+OutputRecorder::OutputRecorder(std::filesystem::path output_directory, bool enabled)
+    : output_directory_(std::move(output_directory)), enabled_(enabled) {}
+
+template <int Dim>
+void OutputRecorder::start(const std::string& case_name, const BasicWorld<Dim>& world) {
+  close();
+  if (!enabled_) return;
+  directory_ = output_directory_ / directory_name(case_name);
+  try {
+    if constexpr (Dim == 2) {
+      walls2_ = std::make_unique<io::WallsCsvT<2>>(directory_);
+    } else {
+      walls3_ = std::make_unique<io::WallsCsvT<3>>(directory_);
+    }
+    assembly_ = std::make_unique<io::AssemblyCsv>(directory_);
+    record(world);
+  } catch (const std::exception& error) {
+    fail(error);
+  }
+}
+
+template <int Dim>
+void OutputRecorder::record(const BasicWorld<Dim>& world) {
+  if (!assembly_) return;
+  try {
+    if constexpr (Dim == 2) {
+      walls2_->write(world);
+    } else {
+      walls3_->write(world);
+    }
+    assembly_->write(world);
+  } catch (const std::exception& error) {
+    fail(error);
+  }
+}
+
+template <int Dim>
+void OutputRecorder::finish(const BasicWorld<Dim>& world) {
+  if (!assembly_) return;
+  try {
+    io::write_contacts_csv(directory_, world);
+    io::write_particles_csv(directory_, world);
+    spdlog::info("wrote {}/{{walls,assembly,contacts,particles}}.csv", directory_.string());
+  } catch (const std::exception& error) {
+    fail(error);
+  }
+  close();
+}
+
+void OutputRecorder::fail(const std::exception& error) {
+  spdlog::error("output recording stopped: {}", error.what());
+  close();
+}
+
+void OutputRecorder::close() {
+  walls2_.reset();
+  walls3_.reset();
+  assembly_.reset();
+}
+
+template void OutputRecorder::start(const std::string&, const BasicWorld<2>&);
+template void OutputRecorder::start(const std::string&, const BasicWorld<3>&);
+template void OutputRecorder::record(const BasicWorld<2>&);
+template void OutputRecorder::record(const BasicWorld<3>&);
+template void OutputRecorder::finish(const BasicWorld<2>&);
+template void OutputRecorder::finish(const BasicWorld<3>&);
+
+}  // namespace dem::service

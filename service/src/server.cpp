@@ -1,0 +1,56 @@
+#include "dem/service/server.h"
+
+#include <spdlog/spdlog.h>
+
+#include <stdexcept>
+
+#include "dem/protocol/topics.h"
+
+namespace dem::service {
+
+namespace {
+ServerOptions checked(ServerOptions options) {
+  if (!protocol::valid_server_name(options.name)) {
+    throw std::invalid_argument("server name \"" + options.name +
+                                "\" is not a ROS 2 name token (a letter, then letters, digits or underscores)");
+  }
+  return options;
+}
+}  // namespace
+
+Server::Server(ServerOptions options)
+    : options_(checked(std::move(options))),
+      participant_(options_.domain, options_.dds_config),
+      telemetry_(participant_, options_.name),
+      replies_(participant_, options_.name, options_.contact_chunk, options_.snapshot_chunk),
+      runner_(options_, queue_, replies_, telemetry_),
+      receiver_(participant_, options_.name, queue_) {
+  if (options_.initial_case) runner_.load_initial_case(*options_.initial_case);
+}
+
+Server::~Server() {
+  request_shutdown();
+  wait();
+}
+
+void Server::start() {
+  spdlog::info("server {} on DDS domain {} ({}), topics rt/dem/{}/...", options_.name, options_.domain,
+               participant_.config(), options_.name);
+  receiver_.start();
+  engine_thread_ = std::thread([this] { engine_main(); });
+}
+
+void Server::engine_main() {
+  runner_.run();
+  // No more commands from here on; whatever is queued gets its reply in finish().
+  receiver_.stop();
+  runner_.finish();
+}
+
+void Server::request_shutdown() { queue_.request_shutdown(); }
+
+void Server::wait() {
+  if (engine_thread_.joinable()) engine_thread_.join();
+}
+
+}  // namespace dem::service

@@ -1,0 +1,254 @@
+#include "dem/service/simulation.h"
+
+#include <cmath>
+#include <filesystem>
+#include <variant>
+
+#include "dem/error.h"
+#include "dem/io/case_conversion.h"
+#include "dem/io/case_loader.h"
+#include "dem/io/snapshot_file.h"
+#include "dem/service/command_error.h"
+#include "format_value.h"
+
+namespace dem::service {
+
+using protocol::ReplyStatus;
+
+namespace {
+
+bool finite(const protocol::Vector3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+void require(bool condition, const std::string& message) {
+  if (!condition) throw CommandError(ReplyStatus::kBadRequest, message);
+}
+
+std::string join(const std::vector<std::string>& lines) {
+  std::string text;
+  for (const std::string& line : lines) text += (text.empty() ? "" : "\n") + line;
+  return text;
+}
+
+
+// A case's world built, with what the reply says about it.
+template <int Dim>
+Simulation::Prepared prepared_case(const io::CaseDefinitionT<Dim>& definition, const std::string& source) {
+  Simulation::Prepared prepared;
+  prepared.world = make_session(BasicWorld<Dim>(definition.world));
+  prepared.case_name = definition.name.empty() ? std::string("unnamed") : definition.name;
+  prepared.description = definition.description;
+  prepared.contact_models = definition.world.contact_models;
+  const WorldSession& world = *prepared.world;
+  prepared.message = "loaded case " + prepared.case_name + " from " + source + ": " + std::to_string(Dim) + "D, " +
+                     std::to_string(world.particle_count()) + " particles, " + std::to_string(world.wall_count()) +
+                     " walls, time step " + format_value(world.time_step()) + " s";
+  return prepared;
+}
+
+}  // namespace
+
+std::string Simulation::install(Prepared prepared) {
+  if (threads_) prepared.world->set_threads(*threads_);
+  world_ = std::move(prepared.world);
+  case_name_ = std::move(prepared.case_name);
+  description_ = std::move(prepared.description);
+  contact_models_ = std::move(prepared.contact_models);
+  return prepared.message;
+}
+
+Simulation::Prepared Simulation::prepare_case(const protocol::LoadCaseArgs& args) const {
+  const int sources = static_cast<int>(!args.path.empty()) + static_cast<int>(!args.text.empty()) +
+                      static_cast<int>(!args.binary.empty());
+  require(sources == 1, "load_case takes exactly one of a path, a text or a binary case (got " +
+                            std::to_string(sources) + ")");
+  std::string source;
+  try {
+    io::LoadedCase loaded;
+    if (!args.path.empty()) {
+      source = args.path;
+      std::error_code error;
+      if (!std::filesystem::is_regular_file(args.path, error)) {
+        throw CommandError(ReplyStatus::kNotFound, "no case file " + args.path + " on the server");
+      }
+      loaded = io::load_case_file(args.path);
+    } else if (!args.text.empty()) {
+      source = args.source_name.empty() ? "<text>" : args.source_name;
+      loaded = io::parse_case_text(args.text, source);
+    } else {
+      source = args.source_name.empty() ? "<binary>" : args.source_name;
+      loaded = io::parse_case_binary(args.binary, source);
+    }
+    const io::AnyCaseDefinition definition = io::convert_any_case(loaded.message, loaded.source);
+    return std::visit([&](const auto& d) { return prepared_case(d, source); }, definition);
+  } catch (const io::CaseError& error) {
+    throw CommandError(ReplyStatus::kInvalidCase, join(error.problems()));
+  } catch (const DefinitionError& error) {
+    throw CommandError(ReplyStatus::kInvalidCase, source + ": " + error.what());
+  }
+}
+
+Simulation::Prepared Simulation::prepare_snapshot(std::string_view bytes, const std::string& source) const {
+  try {
+    // The dimension the snapshot declares picks the engine.
+    const proto::Snapshot message = io::parse_snapshot_message(bytes, source);
+    const auto restore = [&](auto dimension) {
+      constexpr int kDim = decltype(dimension)::value;
+      io::SnapshotInfo info;
+      WorldSnapshotT<kDim> snapshot;
+      try {
+        snapshot = io::snapshot_from_proto<kDim>(message, &info);
+      } catch (const io::SnapshotError& error) {
+        throw io::SnapshotError(source + ": " + error.what());
+      }
+      Prepared prepared;
+      prepared.contact_models = snapshot.def.contact_models;
+      prepared.world = make_session(BasicWorld<kDim>(snapshot));
+      prepared.case_name = info.case_name;
+      prepared.description = info.description;
+      const WorldSession& world = *prepared.world;
+      prepared.message = "loaded snapshot of " + prepared.case_name + " from " + source + " at cycle " +
+                         std::to_string(world.cycle_count()) + ": " + std::to_string(kDim) + "D, " +
+                         std::to_string(world.particle_count()) + " particles, " + std::to_string(world.wall_count()) +
+                         " walls";
+      return prepared;
+    };
+    if (message.dimension() == 3) return restore(std::integral_constant<int, 3>{});
+    return restore(std::integral_constant<int, 2>{});
+  } catch (const io::SnapshotError& error) {
+    throw CommandError(ReplyStatus::kInvalidSnapshot, error.what());
+  } catch (const DefinitionError& error) {
+    throw CommandError(ReplyStatus::kInvalidSnapshot, source + ": " + error.what());
+  }
+}
+
+std::string Simulation::snapshot_bytes() const {
+  return world().snapshot_bytes(io::SnapshotInfo{case_name_, description_});
+}
+
+WallId Simulation::find_wall(const std::string& name, std::int32_t id) const {
+  const WorldSession& w = world();
+  std::string known;
+  for (WallId i = 0; i < w.wall_count(); ++i) known += (i == 0 ? "" : ", ") + w.wall_name(i);
+  if (!name.empty()) {
+    const WallId found = w.find_wall(name);
+    if (found == kInvalidId) {
+      throw CommandError(ReplyStatus::kNotFound, "no wall \"" + name + "\" (walls: " + known + ")");
+    }
+    return found;
+  }
+  if (id < 0 || id >= w.wall_count()) {
+    throw CommandError(ReplyStatus::kNotFound, id < 0 ? "no wall given (walls: " + known + ")"
+                                                      : "no wall with id " + std::to_string(id) + " (there are " +
+                                                            std::to_string(w.wall_count()) + " walls: " + known + ")");
+  }
+  return id;
+}
+
+std::string Simulation::set_wall_velocity(const protocol::WallVelocityArgs& args) {
+  const WallId wall = find_wall(args.wall, args.wall_id);
+  require(finite(args.velocity) && finite(args.angular_velocity), "the wall velocity must be finite");
+  world().set_wall_velocity(wall, args.velocity, args.angular_velocity);
+  const protocol::Vector3& v = args.velocity;
+  const protocol::Vector3& w = args.angular_velocity;
+  return "wall " + world().wall_name(wall) + " moves at (" + format_value(v.x) + ", " + format_value(v.y) +
+         (dimension() == 3 ? ", " + format_value(v.z) + ") m/s, (" + format_value(w.x) + ", " + format_value(w.y) + ", " + format_value(w.z) + ")"
+                           : ") m/s, " + format_value(w.z)) +
+         " rad/s";
+}
+
+std::string Simulation::set_wall_servo(const protocol::WallServoArgs& args) {
+  const WallId wall = find_wall(args.wall, args.wall_id);
+  require(std::isfinite(args.target_stress), "the target stress must be finite");
+  require(std::isfinite(args.gain) && args.gain >= 0.0, "the servo gain must be >= 0 (0: the server chooses)");
+  require(std::isfinite(args.max_speed) && args.max_speed >= 0.0,
+          "the servo's max speed must be >= 0 (0: the server chooses)");
+  const double area = world().wall_area(wall);
+  const std::optional<ServoLimits> defaults = world().default_servo_limits(wall, contact_models_);
+  if ((args.gain == 0.0 || args.max_speed == 0.0) && !defaults) {
+    throw CommandError(ReplyStatus::kBadRequest,
+                       "give the servo's gain and max speed: the defaults need a linear contact law's stiffness");
+  }
+  ServoDef servo;
+  servo.target_force = args.target_stress * area;
+  // The wall moves at gain * (target - stress) = (gain / area) * (target force - force).
+  servo.gain = args.gain > 0.0 ? args.gain / area : defaults->gain;
+  servo.max_speed = args.max_speed > 0.0 ? args.max_speed : defaults->max_speed;
+  try {
+    world().set_wall_servo(wall, servo);
+  } catch (const DefinitionError& error) {
+    throw CommandError(ReplyStatus::kBadRequest, error.what());
+  }
+  return "wall " + world().wall_name(wall) + " servo-controlled to " + format_value(args.target_stress) + " Pa (gain " +
+         format_value(servo.gain * area) + " m/(Pa s), at most " + format_value(servo.max_speed) + " m/s)";
+}
+
+std::string Simulation::set_parameter(const protocol::ParameterArgs& args) {
+  WorldSession& w = world();
+  const std::string& name = args.name;
+  const bool vector_parameter = name == "gravity";
+  require(vector_parameter ? finite(args.vector) : std::isfinite(args.value), name + ": the value must be finite");
+  try {
+    if (name == "contact_damping" || name == "global_damping") {
+      require(args.value >= 0.0, name + " must be >= 0");
+      DampingDef damping = w.damping();
+      (name == "contact_damping" ? damping.contact_beta : damping.global_alpha) = args.value;
+      w.set_damping(damping);
+      return name + " set to " + format_value(args.value) + (name == "contact_damping" ? " s" : " 1/s");
+    }
+    if (name == "local_damping") {
+      require(args.value >= 0.0 && args.value < 1.0, "local_damping must be in [0, 1)");
+      DampingDef damping = w.damping();
+      damping.local_alpha = args.value;
+      w.set_damping(damping);
+      return "local_damping set to " + format_value(args.value);
+    }
+    if (name == "time_step_fraction") {
+      require(args.value > 0.0 && args.value <= 1.0, "time_step_fraction must be in (0, 1]");
+      w.set_time_step_fraction(args.value);
+      return "time step now " + format_value(w.time_step()) + " s (" + format_value(args.value) + " of the critical step)";
+    }
+    if (name == "friction") {
+      require(args.value >= 0.0, "friction must be >= 0");
+      const auto& materials = w.materials();
+      std::string known;
+      for (std::size_t i = 0; i < materials.size(); ++i) {
+        if (materials[i].name == args.material) {
+          w.set_friction(static_cast<MaterialId>(i), args.value);
+          return "friction of " + args.material + " set to " + format_value(args.value);
+        }
+        known += (i == 0 ? "" : ", ") + materials[i].name;
+      }
+      throw CommandError(ReplyStatus::kNotFound, "no material \"" + args.material + "\" (materials: " + known + ")");
+    }
+    if (name == "gravity") {
+      const protocol::Vector3& g = args.vector;
+      w.set_gravity(g);
+      return "gravity set to (" + format_value(g.x) + ", " + format_value(g.y) + (dimension() == 3 ? ", " + format_value(g.z) : "") +
+             ") m/s^2";
+    }
+  } catch (const DefinitionError& error) {
+    throw CommandError(ReplyStatus::kBadRequest, error.what());
+  }
+  throw CommandError(ReplyStatus::kNotFound, "no parameter \"" + name +
+                                                 "\" (parameters: contact_damping, global_damping, "
+                                                 "local_damping, time_step_fraction, friction, gravity)");
+}
+
+std::vector<protocol::ContactEntry> Simulation::query_contacts(const protocol::ContactQueryArgs& args) const {
+  ContactFilter filter;
+  if (args.wall_set) filter.wall = find_wall(args.wall, args.wall_id);
+  if (args.box_set) {
+    require(finite(args.box_min) && finite(args.box_max), "the box must be finite");
+    require(args.box_min.x <= args.box_max.x && args.box_min.y <= args.box_max.y && args.box_min.z <= args.box_max.z,
+            "the box's minimum corner must not exceed its maximum");
+    filter.box_min = args.box_min;
+    filter.box_max = args.box_max;
+  }
+  if (args.min_normal_force) {
+    require(std::isfinite(*args.min_normal_force), "the force threshold must be finite");
+    filter.min_normal_force = args.min_normal_force;
+  }
+  return world().query_contacts(filter);
+}
+
+}  // namespace dem::service

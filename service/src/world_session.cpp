@@ -1,0 +1,101 @@
+#include "dem/service/world_session.h"
+
+#include "dem/io/snapshot_file.h"
+#include "dem/service/command_error.h"
+#include "dem/service/output_recorder.h"
+
+namespace dem::service {
+
+namespace {
+
+// Wire vectors as engine quantities: a 2D world has no z, and turns about z only.
+Vec2 vector_of(const protocol::Vector3& v, std::integral_constant<int, 2>, const std::string& what) {
+  if (v.z != 0.0) {
+    throw CommandError(protocol::ReplyStatus::kBadRequest, what + " has a z component, but the simulation is 2D");
+  }
+  return {v.x, v.y};
+}
+Vec3 vector_of(const protocol::Vector3& v, std::integral_constant<int, 3>, const std::string&) { return {v.x, v.y, v.z}; }
+double spin_of(const protocol::Vector3& w, std::integral_constant<int, 2>, const std::string& what) {
+  if (w.x != 0.0 || w.y != 0.0) {
+    throw CommandError(protocol::ReplyStatus::kBadRequest, what + ": a 2D wall turns about z only, x and y must be 0");
+  }
+  return w.z;
+}
+Vec3 spin_of(const protocol::Vector3& w, std::integral_constant<int, 3>, const std::string&) { return {w.x, w.y, w.z}; }
+
+template <int Dim>
+class WorldSessionT final : public WorldSession {
+ public:
+  explicit WorldSessionT(BasicWorld<Dim> world) : world_(std::move(world)) {}
+
+  std::uint8_t dimension() const override { return Dim; }
+  void cycle(std::uint64_t cycles) override { world_.cycle(cycles); }
+  std::uint64_t cycle_count() const override { return world_.cycle_count(); }
+  double time() const override { return world_.time(); }
+  double time_step() const override { return world_.time_step(); }
+  int particle_count() const override { return world_.particle_count(); }
+  int wall_count() const override { return world_.wall_count(); }
+  std::uint64_t state_hash() const override { return world_.state_hash(); }
+  double kinetic_energy() const override { return world_.assembly_measures().kinetic_energy; }
+
+  WallId find_wall(std::string_view name) const override { return world_.find_wall(name); }
+  std::string wall_name(WallId wall) const override { return world_.wall(wall).name; }
+  double wall_area(WallId wall) const override { return world_.wall_area(wall); }
+  protocol::WallForce read_wall(WallId wall) const override { return service::read_wall(world_, wall); }
+  std::vector<protocol::WallForce> read_walls() const override { return service::read_walls(world_); }
+  protocol::ContactStats read_contact_stats() const override { return service::read_contact_stats(world_); }
+  std::vector<protocol::ContactEntry> query_contacts(const ContactFilter& filter) const override {
+    return service::query_contacts(world_, filter);
+  }
+  std::optional<ServoLimits> default_servo_limits(WallId wall,
+                                                  const std::vector<ContactModelDef>& models) const override {
+    return service::default_servo_limits(world_, wall, models);
+  }
+
+  void set_wall_velocity(WallId wall, const protocol::Vector3& velocity,
+                         const protocol::Vector3& angular_velocity) override {
+    WallMotionT<Dim> motion;
+    motion.velocity = vector_of(velocity, kDim, "the velocity");
+    motion.angular_velocity = spin_of(angular_velocity, kDim, "the angular velocity");
+    world_.set_wall_motion(wall, motion);
+  }
+  void set_wall_servo(WallId wall, const ServoDef& servo) override {
+    WallMotionT<Dim> motion;
+    motion.servo = servo;
+    world_.set_wall_motion(wall, motion);
+  }
+  DampingDef damping() const override { return world_.damping(); }
+  void set_damping(const DampingDef& damping) override { world_.set_damping(damping); }
+  void set_time_step_fraction(double fraction) override { world_.set_time_step_fraction(fraction); }
+  const std::vector<MaterialDef>& materials() const override { return world_.materials(); }
+  void set_friction(MaterialId material, double friction) override { world_.set_friction(material, friction); }
+  void set_gravity(const protocol::Vector3& gravity) override { world_.set_gravity(vector_of(gravity, kDim, "gravity")); }
+  void set_threads(int threads) override { world_.set_threads(threads); }
+
+  std::string snapshot_bytes(const io::SnapshotInfo& info) const override {
+    return io::serialize_snapshot(world_.snapshot(), info);
+  }
+
+  void start_tables(OutputRecorder& recorder, const std::string& case_name) const override {
+    recorder.start(case_name, world_);
+  }
+  void record_tables(OutputRecorder& recorder) const override { recorder.record(world_); }
+  void finish_tables(OutputRecorder& recorder) const override { recorder.finish(world_); }
+
+ private:
+  static constexpr std::integral_constant<int, Dim> kDim{};
+  BasicWorld<Dim> world_;
+};
+
+}  // namespace
+
+template <int Dim>
+std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world) {
+  return std::make_unique<WorldSessionT<Dim>>(std::move(world));
+}
+
+template std::unique_ptr<WorldSession> make_session<2>(BasicWorld<2> world);
+template std::unique_ptr<WorldSession> make_session<3>(BasicWorld<3> world);
+
+}  // namespace dem::service

@@ -1,0 +1,112 @@
+// Shared by the service tests: a DDS domain per test (so ctest can run them
+// side by side), servers in-process or as dem_server processes, clients.
+// Every DDS entity uses the repository's loopback configuration (ctest sets
+// CYCLONEDDS_URI; the programs default to it too).
+#pragma once
+
+#include <sys/types.h>
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "dem/client/client.h"
+#include "dem/service/server.h"
+
+namespace dem::test {
+
+using namespace std::chrono_literals;
+
+// One domain id per test, distinct across the whole suite by construction.
+// The shell tests (CMakeLists.txt) use 118 and 119.
+enum Domain : std::uint32_t {
+  kDdsTypedRoundTrip = 40,
+  kDdsWaitSet,
+  kDdsDomainConfiguration,
+  kDdsDiscovery,
+  kDdsEntityLifetime,
+  kDdsLargeSamples,
+  kCommandsLoadCase = 50,
+  kCommandsWallMotion,
+  kCommandsCycle,
+  kCommandsRunUntil,
+  kCommandsGetState,
+  kCommandsQueryContacts,
+  kCommandsSetParameter,
+  kCommandsSnapshotPathAndTransfer,
+  kCommandsShutdown,
+  kCommandsTelemetryBySimulatedTime,
+  kCommandsThreeDimensional,
+  kErrorsUnknownWall = 65,
+  kErrorsNegativeCycles,
+  kErrorsMalformedCase,
+  kErrorsInvalidCase,
+  kErrorsGarbageSnapshot,
+  kErrorsOtherServer,
+  kErrorsLifecycle,
+  kErrorsParameters,
+  kErrorsSnapshotPaths,
+  kErrorsUnknownKind,
+  kTopologyTwoServers = 80,
+  kTopologyLateJoiner,
+  kTopologyStopCancels,
+  kTopologyStalledSubscriber,
+  kTopologyListServers,
+  kTopologyNoServer,
+  kSnapshotContinuation = 90,
+  kSnapshotTransfer,
+  kExperimentNineDisc = 100,
+  kExperimentSignals,
+  kLastDomain
+};
+static_assert(kLastDomain <= 118, "the shell tests use domains 118 and 119");
+
+std::filesystem::path case_file(const std::string& name);  // cases/ball/<name>.case.txtpb
+std::string read_text(const std::filesystem::path& path);
+
+// A clean output directory for one test.
+std::filesystem::path output_directory(const std::string& test);
+
+// Options for a test server: one engine thread, telemetry every 10 cycles,
+// its own output directory.
+service::ServerOptions server_options(const std::string& name, std::uint32_t domain);
+
+// A dem_server inside the test process, started at once and shut down
+// (gracefully) with the test.
+class InProcessServer {
+ public:
+  explicit InProcessServer(service::ServerOptions options);
+  ~InProcessServer();
+  service::Server& server() { return server_; }
+
+ private:
+  service::Server server_;
+};
+
+client::ConnectOptions connect_options(const std::string& server, std::uint32_t domain);
+
+// A dem_server process (the real program, talking over loopback). Killed
+// with SIGKILL if the test leaves it running.
+class ServerProcess {
+ public:
+  explicit ServerProcess(const std::vector<std::string>& arguments);
+  ~ServerProcess();
+  pid_t pid() const { return pid_; }
+  void signal(int signal) const;
+  // Waits for the process to end; its exit code, or -1 when it did not end in time.
+  int wait(std::chrono::milliseconds timeout);
+
+ private:
+  pid_t pid_ = -1;
+};
+
+// Spawns a program with arguments, its output to /dev/null when quiet; returns its pid.
+pid_t spawn(const std::string& program, const std::vector<std::string>& arguments, bool quiet = false);
+
+// Polls `condition` every 10 ms until it holds or the timeout passes.
+bool eventually(const std::function<bool()>& condition, std::chrono::milliseconds timeout);
+
+}  // namespace dem::test

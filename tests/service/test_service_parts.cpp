@@ -1,0 +1,227 @@
+// The service's parts that need no DDS: what it reads from the engine, the
+// running command's conditions, the telemetry schedule, the lifecycle, and
+// the simulation's argument checks.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "dem/io/case_conversion.h"
+#include "dem/io/case_loader.h"
+#include "dem/service/active_run.h"
+#include "dem/service/command_error.h"
+#include "dem/service/engine_readout.h"
+#include "dem/service/lifecycle.h"
+#include "dem/service/simulation.h"
+#include "dem/service/telemetry_schedule.h"
+#include "service_test_support.h"
+
+namespace dem::test {
+namespace {
+
+using protocol::CommandKind;
+using protocol::ReplyStatus;
+using protocol::ServerState;
+
+// The nine-disc case compressed for 40 cycles (Cundall & Strack Fig. 5).
+World compressed_nine_discs() {
+  io::CaseDefinition definition = io::convert_case(io::load_case_file(case_file("nine_disc_damped")).message);
+  definition.world.threads = 1;
+  World world(definition.world);
+  for (const auto& [wall, motion] : definition.stages.front().wall_motions) world.set_wall_motion(wall, motion);
+  world.cycle(40);
+  return world;
+}
+
+ReplyStatus status_of(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const service::CommandError& error) {
+    return error.status();
+  }
+  return ReplyStatus::kOk;
+}
+
+TEST(EngineReadout, PlateStressIsNormalForceOverLengthTimesUnitDepth) {
+  const World world = compressed_nine_discs();
+  const auto walls = service::read_walls(world);
+  const auto measures = world.wall_measures();
+  ASSERT_EQ(walls.size(), 4u);
+  for (std::size_t i = 0; i < walls.size(); ++i) {
+    EXPECT_EQ(walls[i].name, world.wall(static_cast<WallId>(i)).name);
+    EXPECT_EQ(walls[i].area, 400.0);  // h2 - h1 = 200 - (-200), depth 1
+    EXPECT_EQ(walls[i].normal_force, measures[i].normal_force);
+    EXPECT_EQ(walls[i].normal_stress, measures[i].normal_force / 400.0);
+    EXPECT_EQ(walls[i].force.x, measures[i].force.x());
+    EXPECT_EQ(walls[i].moment.z, measures[i].moment);
+    EXPECT_EQ(walls[i].contacts, measures[i].contacts);
+  }
+  // Every wall moved 12 per unit time for 40 cycles of 0.01 towards the discs.
+  for (const auto& wall : walls) EXPECT_NEAR(wall.settlement, 12.0 * 0.4, 1e-9) << wall.name;
+  EXPECT_NEAR(walls[2].displacement.y, -12.0 * 0.4, 1e-9);  // the top wall went down
+  EXPECT_GT(walls[2].normal_stress, 0.0);
+}
+
+TEST(EngineReadout, ContactStatisticsFollowTheirDefinitions) {
+  const World world = compressed_nine_discs();
+  const auto stats = service::read_contact_stats(world);
+  const auto contacts = world.contacts();
+  ASSERT_FALSE(contacts.empty());
+  int wall_contacts = 0;
+  int sliding = 0;
+  double sum = 0.0;
+  for (const auto& c : contacts) {
+    wall_contacts += c.second_wall != kInvalidId;
+    sliding += c.sliding;
+    sum += c.normal_force;
+  }
+  EXPECT_EQ(stats.contacts, static_cast<int>(contacts.size()));
+  EXPECT_EQ(stats.wall_contacts, wall_contacts);
+  EXPECT_EQ(stats.sliding_contacts, sliding);
+  EXPECT_DOUBLE_EQ(stats.mean_normal_force, sum / static_cast<double>(contacts.size()));
+  // The square array: 12 disc-disc contacts and 12 disc-wall contacts over 9 discs.
+  EXPECT_EQ(stats.contacts - stats.wall_contacts, 12);
+  EXPECT_EQ(stats.wall_contacts, 12);
+  EXPECT_DOUBLE_EQ(stats.coordination_number, (2.0 * 12 + 12) / 9.0);
+  std::uint32_t counted = 0;
+  for (const auto n : stats.histogram) counted += n;
+  EXPECT_EQ(counted, contacts.size());
+  EXPECT_EQ(stats.histogram.size(), static_cast<std::size_t>(service::kHistogramBins));
+  EXPECT_EQ(stats.kinetic_energy, world.assembly_measures().kinetic_energy);
+}
+
+TEST(EngineReadout, ContactQueriesCombineTheirFilters) {
+  const World world = compressed_nine_discs();
+  const auto all = service::query_contacts(world, {});
+  EXPECT_EQ(all.size(), world.contacts().size());
+  service::ContactFilter on_top;
+  on_top.wall = world.find_wall("top");
+  const auto top = service::query_contacts(world, on_top);
+  EXPECT_EQ(top.size(), 3u);
+  for (const auto& c : top) EXPECT_EQ(c.second_wall, *on_top.wall);
+  service::ContactFilter box;
+  box.box_min = protocol::Vector3{0.0, 0.0, 0.0};
+  box.box_max = protocol::Vector3{110.0, 110.0, 0.0};  // around disc 0 (50, 50)
+  for (const auto& c : service::query_contacts(world, box)) {
+    EXPECT_LE(c.point.x, 110.0);
+    EXPECT_LE(c.point.y, 110.0);
+  }
+  service::ContactFilter strong = on_top;
+  strong.min_normal_force = 1e300;
+  EXPECT_TRUE(service::query_contacts(world, strong).empty());
+}
+
+TEST(EngineReadout, ServoDefaultsKeepTheServoStable) {
+  const World world = compressed_nine_discs();
+  const WallId top = world.find_wall("top");
+  std::vector<ContactModelDef> models(1);
+  models[0].linear.normal_stiffness = 1.35e9;
+  const auto limits = service::default_servo_limits(world, top, models);
+  ASSERT_TRUE(limits);
+  // At most 400 / (2 * 50) = 4 discs along the wall: gain k_n n dt = 0.5.
+  EXPECT_DOUBLE_EQ(limits->gain * 1.35e9 * 4.0 * world.time_step(), 0.5);
+  EXPECT_DOUBLE_EQ(limits->max_speed * world.time_step(), 0.05 * 50.0);
+  models[0].law = ContactLaw::kHertzMindlin;
+  EXPECT_FALSE(service::default_servo_limits(world, top, models));
+}
+
+TEST(ActiveRun, ReachesAStressFromTheSideItStartsOn) {
+  const auto session = service::make_session(compressed_nine_discs());
+  service::WorldSession& world = *session;
+  const WallId top = world.find_wall("top");
+  const double stress = world.read_wall(top).normal_stress;
+  ASSERT_GT(stress, 0.0);
+  service::RunGoal unloading;  // the top wall backs off: its stress falls
+  unloading.max_cycles = 100000;
+  unloading.wall = top;
+  unloading.stress = 0.5 * stress;
+  unloading.check_interval = 5;
+  world.set_wall_velocity(top, {0.0, 2.0, 0.0}, {});
+  service::ActiveRun run(service::ReceivedCommand{}, unloading, world);
+  EXPECT_EQ(run.cycles_to_next_stop(), 5u);
+  bool done = false;
+  while (!done && run.done() < unloading.max_cycles) {
+    const auto n = run.cycles_to_next_stop();
+    world.cycle(n);
+    done = run.advance(n, world);
+  }
+  EXPECT_TRUE(run.condition_met());
+  EXPECT_LE(world.read_wall(top).normal_stress, 0.5 * stress);
+  EXPECT_NE(run.condition().find("the stress on top reached"), std::string::npos) << run.condition();
+  EXPECT_EQ(run.done() % 5, 0u);
+}
+
+TEST(ActiveRun, StopsAtItsCapWithoutConditions) {
+  const auto world = service::make_session(compressed_nine_discs());
+  service::RunGoal goal;
+  goal.max_cycles = 25;
+  service::ActiveRun run(service::ReceivedCommand{}, goal, *world);
+  EXPECT_EQ(run.cycles_to_next_stop(), 25u);
+  EXPECT_FALSE(run.advance(20, *world));
+  EXPECT_EQ(run.cycles_to_next_stop(), 5u);
+  EXPECT_TRUE(run.advance(5, *world));
+  EXPECT_FALSE(run.condition_met());
+}
+
+TEST(TelemetrySchedule, CountsCyclesAndSimulatedTime) {
+  service::TelemetrySchedule cycles(10, 0.0);
+  cycles.published(0, 0.0);
+  EXPECT_EQ(cycles.cycles_until_due(3, 0.0, 1.0), 7u);
+  EXPECT_FALSE(cycles.due(9, 0.0));
+  EXPECT_TRUE(cycles.due(10, 0.0));
+  service::TelemetrySchedule time(0, 0.5);
+  time.published(0, 0.0);
+  EXPECT_EQ(time.cycles_until_due(0, 0.0, 0.1), 5u);
+  double t = 0.0;
+  for (int i = 0; i < 5; ++i) t += 0.1;  // 0.49999999999999994: due up to rounding
+  EXPECT_TRUE(time.due(5, t));
+  service::TelemetrySchedule off(0, 0.0);
+  EXPECT_FALSE(off.due(1000000, 1e9));
+  EXPECT_EQ(off.cycles_until_due(0, 0.0, 1.0), std::numeric_limits<std::uint64_t>::max());
+}
+
+TEST(Lifecycle, EachStateAcceptsItsCommands) {
+  EXPECT_FALSE(service::refusal(ServerState::kIdle, CommandKind::kLoadCase));
+  EXPECT_FALSE(service::refusal(ServerState::kIdle, CommandKind::kGetState));
+  EXPECT_TRUE(service::refusal(ServerState::kIdle, CommandKind::kCycle));
+  EXPECT_TRUE(service::refusal(ServerState::kIdle, CommandKind::kQueryContacts));
+  EXPECT_FALSE(service::refusal(ServerState::kLoaded, CommandKind::kSetParameter));
+  EXPECT_FALSE(service::refusal(ServerState::kRunning, CommandKind::kSetWallVelocity));
+  EXPECT_FALSE(service::refusal(ServerState::kRunning, CommandKind::kSaveSnapshot));
+  EXPECT_FALSE(service::refusal(ServerState::kRunning, CommandKind::kStop));
+  EXPECT_TRUE(service::refusal(ServerState::kRunning, CommandKind::kCycle));
+  EXPECT_TRUE(service::refusal(ServerState::kRunning, CommandKind::kLoadCase));
+  EXPECT_TRUE(service::refusal(ServerState::kRunning, CommandKind::kSetParameter));
+  EXPECT_FALSE(service::refusal(ServerState::kError, CommandKind::kLoadSnapshot));
+  EXPECT_TRUE(service::refusal(ServerState::kError, CommandKind::kCycle));
+  EXPECT_FALSE(service::refusal(ServerState::kShutdown, CommandKind::kShutdown));
+}
+
+TEST(Simulation, ChecksArgumentsAndChangesNothingWhenTheyAreWrong) {
+  service::Simulation simulation(1);
+  protocol::LoadCaseArgs args;
+  args.text = read_text(case_file("nine_disc_damped"));
+  simulation.install(simulation.prepare_case(args));
+  service::WorldSession& world = simulation.world();
+  const std::uint64_t hash = world.state_hash();
+  EXPECT_EQ(status_of([&] { simulation.set_wall_velocity({"roof", -1, {}, {}}); }), ReplyStatus::kNotFound);
+  EXPECT_EQ(status_of([&] { simulation.set_wall_velocity({"", 7, {}, {}}); }), ReplyStatus::kNotFound);
+  EXPECT_EQ(status_of([&] { simulation.set_wall_velocity({"top", -1, {0, 0, 1}, {}}); }), ReplyStatus::kBadRequest);
+  EXPECT_EQ(status_of([&] { simulation.set_wall_velocity({"top", -1, {NAN, 0, 0}, {}}); }), ReplyStatus::kBadRequest);
+  EXPECT_EQ(status_of([&] { simulation.set_wall_servo({"top", -1, 1e6, -1.0, 0.0}); }), ReplyStatus::kBadRequest);
+  EXPECT_EQ(status_of([&] { simulation.set_parameter({"contact_damping", "", -1.0, {}}); }), ReplyStatus::kBadRequest);
+  EXPECT_EQ(status_of([&] { simulation.set_parameter({"time_step_fraction", "", 1.5, {}}); }), ReplyStatus::kBadRequest);
+  EXPECT_EQ(status_of([&] { simulation.set_parameter({"friction", "sand", 0.3, {}}); }), ReplyStatus::kNotFound);
+  EXPECT_EQ(status_of([&] { simulation.set_parameter({"gravity", "", 0.0, {0, -9.81, 1}}); }), ReplyStatus::kBadRequest);
+  EXPECT_EQ(status_of([&] { simulation.set_parameter({"viscosity", "", 1.0, {}}); }), ReplyStatus::kNotFound);
+  EXPECT_EQ(world.state_hash(), hash);
+  EXPECT_EQ(world.damping().contact_beta, 0.01);
+  EXPECT_EQ(status_of([&] { simulation.set_parameter({"global_damping", "", 3.0, {}}); }), ReplyStatus::kOk);
+  EXPECT_EQ(world.damping().global_alpha, 3.0);
+  EXPECT_EQ(status_of([&] { simulation.set_wall_servo({"top", -1, 1e6, 0.0, 0.0}); }), ReplyStatus::kOk);
+  // The servo holds the top wall at 1e6 Pa over its 400 length: it moves in until it does.
+  world.cycle(2000);
+  EXPECT_GT(world.read_wall(world.find_wall("top")).normal_stress, 0.5e6);
+}
+
+}  // namespace
+}  // namespace dem::test
