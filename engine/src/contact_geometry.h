@@ -67,6 +67,29 @@ struct RoundShape {
   }
 };
 
+// Most rows of the contact table are neighbours within the tolerance that do
+// not touch. A shaped particle lies inside the circle or sphere of its
+// largest semi-axis (its radius), so when those do not meet there is no
+// contact and the iterative search is skipped; it then starts afresh when
+// they meet again, whatever came before.
+template <int Dim>
+bool bounding_circles_meet(const Particles<Dim>& p, ParticleId x, ParticleId y, const Vec<Dim>& d,
+                           ContactState<Dim>& state) {
+  const double reach = p.radius[x] + p.radius[y];
+  if (d.squaredNorm() < reach * reach) return true;
+  state.has_search = false;
+  return false;
+}
+
+// No contact: the gap between the bounding circles, as a negative overlap.
+template <int Dim>
+ContactGeometry<Dim> apart(const Particles<Dim>& p, ParticleId x, ParticleId y, const Vec<Dim>& d) {
+  ContactGeometry<Dim> g;
+  g.overlap = p.radius[x] + p.radius[y] - d.norm();
+  g.normal = d.normalized();
+  return g;
+}
+
 // 2D superquadrics: the circles of curvature at the points that minimise
 // each other's potential (eqs. 34-42), warm-started from the last cycle.
 struct SuperquadricShape {
@@ -80,7 +103,9 @@ struct SuperquadricShape {
   static ContactGeometry<2> pair(const Particles<2>& p, const Periodic<2>& periodic, ParticleId x, ParticleId y,
                                  ContactState<2>& state) {
     const Vec2& cx = p.position[x];
-    const Vec2 cy = cx + periodic.separation(cx, p.position[y]);  // the nearest image of y
+    const Vec2 d = periodic.separation(cx, p.position[y]);
+    if (!bounding_circles_meet(p, x, y, d, state)) return apart(p, x, y, d);
+    const Vec2 cy = cx + d;  // the nearest image of y
     const SuperquadricContact c = superquadric_contact(placed(p, x, cx), placed(p, y, cy), state.search_first,
                                                        state.search_second, state.has_search);
     state.search_first = c.alpha_i;
@@ -124,7 +149,9 @@ struct EllipsoidShape {
   static ContactGeometry<3> pair(const Particles<3>& p, const Periodic<3>& periodic, ParticleId x, ParticleId y,
                                  ContactState<3>& state) {
     const Vec3& cx = p.position[x];
-    const Vec3 cy = cx + periodic.separation(cx, p.position[y]);  // the nearest image of y
+    const Vec3 d = periodic.separation(cx, p.position[y]);
+    if (!bounding_circles_meet(p, x, y, d, state)) return apart(p, x, y, d);
+    const Vec3 cy = cx + d;  // the nearest image of y
     const EllipsoidContact c = ellipsoid_contact(placed(p, x, cx), placed(p, y, cy),
                                                  state.has_search ? state.search_first : 0.0,
                                                  state.has_search ? state.search_second : 0.0);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "dem/error.h"
+#include "superquadric.h"
 
 namespace dem {
 
@@ -140,7 +141,7 @@ std::vector<ParticleDefT<Dim>> generate_random_packing(const RandomPackingDefT<D
   double largest = 0.0;
   for (SizeClassT<Dim>& s : sizes) {
     if constexpr (Dim == 2) {
-      if (s.shape.superquadric()) s.radius = std::max(s.shape.a, s.shape.b);
+      if (s.shape.superquadric()) s.radius = superquadric_bounding_radius({s.shape.a, s.shape.b, s.shape.n});
     } else {
       if (s.shape.ellipsoid()) s.radius = s.shape.axes.maxCoeff();
     }

@@ -155,6 +155,20 @@ SupportContact superquadric_line_contact(const PlacedSuperquadric& body, const V
   return {(point - on_line).dot(outward), point, superquadric_curvature(s, local).radius};
 }
 
+double superquadric_bounding_radius(const Superquadric& s) {
+  const double larger = std::max(s.a, s.b);
+  if (s.n <= 2.0) return larger;  // inside the ellipse of its semi-axes
+  // The farthest boundary point (eq. 35) over a quadrant: sampled finely,
+  // then a margin far above the sampling error of a smooth maximum.
+  constexpr int kSamples = 4096;
+  double farthest = larger;
+  for (int k = 1; k < kSamples; ++k) {
+    const double alpha = 0.5 * std::numbers::pi * k / kSamples;
+    farthest = std::max(farthest, superquadric_point(s, alpha).norm());
+  }
+  return farthest > larger ? farthest * (1.0 + 1e-6) : larger;
+}
+
 SuperquadricMass superquadric_mass(const Superquadric& s) {
   // Dirichlet's integral over a quadrant of (x/a)^n + (y/b)^n <= 1:
   //   integral of x^p y^q dA = a^(p+1) b^(q+1) / n^2 G((p+1)/n) G((q+1)/n) / G((p+q+2)/n + 1).

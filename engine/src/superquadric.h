@@ -24,6 +24,11 @@ struct PlacedSuperquadric {
   double angle = 0.0;
 };
 
+// The radius of the smallest circle about the centre that holds the body:
+// max(a, b) up to n = 2, more for squarer bodies (a square's corners reach
+// a sqrt(2) as n grows). The broad phase and random packings use it.
+double superquadric_bounding_radius(const Superquadric& s);
+
 // f of eq. 34 at a point in the body's local frame.
 double superquadric_function(const Superquadric& s, const Vec2& local);
 

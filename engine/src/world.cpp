@@ -320,7 +320,7 @@ BasicWorld<Dim>::BasicWorld(const Def& def) : state_(std::make_unique<WorldState
         // Unit thickness; the bounding circle serves the broad phase.
         const SuperquadricMass m = superquadric_mass({d.shape.a, d.shape.b, d.shape.n});
         mp = {density * m.area, density * m.polar_moment};
-        radius = std::max(d.shape.a, d.shape.b);
+        radius = superquadric_bounding_radius({d.shape.a, d.shape.b, d.shape.n});
         rotation = d.shape.angle;
         s.shape = ShapeKind::kSuperquadric;
       }

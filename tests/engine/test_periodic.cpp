@@ -92,7 +92,8 @@ TEST(Periodic, TooSmallAPeriodIsRefused) {
 }
 
 // Two bodies thrown at each other, once through the periodic boundary and
-// once in the middle of the cell: the same collision, to round-off.
+// once in the middle of the cell: the same collision, to round-off and
+// the contact search's tolerance.
 template <int Dim>
 void expect_same_collision(WorldDefT<Dim> through, const Vec<Dim>& shift, int cycles, const char* what) {
   WorldDefT<Dim> inside = through;
@@ -128,7 +129,10 @@ void expect_same_collision(WorldDefT<Dim> through, const Vec<Dim>& shift, int cy
   EXPECT_TRUE(a.contacts().empty());  // the collision is over
   // They did collide: the first body's velocity changed by a good part of itself.
   EXPECT_GT((pa.velocity[0] - through.particles[0].velocity).norm(), 0.5 * through.particles[0].velocity.norm());
-  EXPECT_LT(gap, 1e-8);  // m/s and rad/s: the positions differ in their last bits
+  // m/s and rad/s: the positions differ in their last bits, and the
+  // iterative contact searches of shaped particles converge to their own
+  // tolerance from there.
+  EXPECT_LT(gap, 1e-6);
 }
 
 TEST(Periodic, SuperquadricsCollideThroughTheBoundaryAsInside) {

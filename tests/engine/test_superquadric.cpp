@@ -17,6 +17,23 @@ TEST(Superquadric, BoundaryPointsLieOnTheSurface) {
   }
 }
 
+TEST(Superquadric, BoundingRadiusReachesTheCorners) {
+  // An ellipse reaches no farther than its larger semi-axis. With n = 4,
+  // r^2 = a^2 cos(alpha) + b^2 sin(alpha) along the boundary (eq. 35),
+  // largest at tan(alpha) = b^2 / a^2: Miyata's Table 1 rectangle reaches
+  // 0.19799 m, past a = 0.195 m; a square reaches a (1 + 1)^(1/4) = a 2^(1/4)
+  // at its corner.
+  EXPECT_EQ(superquadric_bounding_radius({0.3, 0.2, 2.0}), 0.3);
+  const double a2 = 0.195 * 0.195, b2 = 0.0976 * 0.0976;
+  const double rectangle = std::sqrt(std::hypot(a2, b2));  // max of a2 cos + b2 sin
+  EXPECT_NEAR(superquadric_bounding_radius({0.195, 0.0976, 4.0}), rectangle, 1e-6);
+  EXPECT_GE(superquadric_bounding_radius({0.195, 0.0976, 4.0}), rectangle);
+  const double corner = std::pow(2.0, 0.25);
+  EXPECT_NEAR(superquadric_bounding_radius({1.0, 1.0, 4.0}), corner, 2e-6);
+  EXPECT_GE(superquadric_bounding_radius({1.0, 1.0, 4.0}), corner);
+  EXPECT_GT(superquadric_bounding_radius({1.0, 1.0, 10.0}), 1.3);  // nearly a square
+}
+
 TEST(Superquadric, CircleHasItsRadiusAsCurvatureAndAreaPiR2) {
   const Superquadric circle{0.15, 0.15, 2.0};
   const Curvature k = superquadric_curvature(circle, superquadric_point(circle, 0.7));

@@ -131,7 +131,7 @@ struct ShapeDefT<3> {
 template <int Dim>
 struct ParticleDefT {
   Vec<Dim> position = Vec<Dim>::Zero();  // m
-  double radius = 1.0;                   // m; a superquadric's is its larger semi-axis, set from the shape
+  double radius = 1.0;                   // m; a shaped particle's is its bounding radius, set from the shape
   MaterialId material = 0;
   Vec<Dim> velocity = Vec<Dim>::Zero();  // m/s
   Spin<Dim> angular_velocity = Space<Dim>::zero_spin();  // rad/s (2D: counter-clockwise positive)

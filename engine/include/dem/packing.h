@@ -28,8 +28,8 @@ struct LatticeDefT {
 };
 
 // A class of equal particles: discs or spheres of a radius, or a shape (a
-// 2D superquadric, a 3D ellipsoid) whose bounding radius, its largest
-// semi-axis, is then its radius.
+// 2D superquadric, a 3D ellipsoid) whose bounding radius (the largest
+// semi-axis, or a superquadric's farthest corner) is then its radius.
 template <int Dim>
 struct SizeClassT {
   double radius = 1.0;  // m
