@@ -188,9 +188,12 @@ struct EllipsoidShape {
 
   // A wall of triangle faces: each face's plane, turned towards the
   // particle, gives a support point; the contact holds when its projection
-  // falls inside the face (all triangular coordinates > 0, eq. 59), and
-  // the deepest such face is the contact.
+  // falls inside the face (eq. 59), and the deepest such face is the
+  // contact. A point on the edge two faces share has a zero coordinate (to
+  // round-off) in both, so the edge counts as inside: with eq. 59's strict
+  // > 0 a particle centred over the seam would touch neither face.
   static ContactGeometry<3> faces(const Particles<3>& p, const WallDefT<3>& wall, ParticleId x) {
+    constexpr double kOnTheEdge = 1e-12;  // triangular coordinates are area fractions
     ContactGeometry<3> g;
     g.overlap = -1.0;
     const PlacedEllipsoid body = placed(p, x, p.position[x]);
@@ -198,7 +201,7 @@ struct EllipsoidShape {
       Vec3 towards = (t[1] - t[0]).cross(t[2] - t[0]).normalized();
       if ((p.position[x] - t[0]).dot(towards) < 0.0) towards = -towards;
       const EllipsoidFaceContact c = ellipsoid_plane_contact(body, t[0], towards);
-      if (c.overlap <= g.overlap || (triangular_coordinates(t, c.projected).array() <= 0.0).any()) continue;
+      if (c.overlap <= g.overlap || (triangular_coordinates(t, c.projected).array() < -kOnTheEdge).any()) continue;
       g.overlap = c.overlap;
       g.normal = -towards;
       g.point = c.support + 0.5 * c.overlap * towards;

@@ -132,6 +132,16 @@ TEST(TriangleWalls, EllipsoidBouncingOnFacesSeesOnePlate) {
   expect_same_history(drop_onto(plate(2.0, false), p), drop_onto(plate(2.0, true), p), 30000, "ellipsoid on faces");
 }
 
+TEST(TriangleWalls, EllipsoidCentredOnTheSeamSeesOnePlate) {
+  // Its support point lies exactly on the edge the two faces share: the
+  // edge belongs to both faces, so it neither falls through nor is pushed twice.
+  ParticleDef3 p;
+  p.position = {0.5, 0.5, 0.25};
+  p.shape.axes = {0.371, 0.260, 0.182};
+  p.velocity = {0.0, 0.0, -0.5};
+  expect_same_history(drop_onto(plate(2.0, false), p), drop_onto(plate(2.0, true), p), 30000, "ellipsoid on the seam");
+}
+
 TEST(TriangleWalls, SphereAtACornerIsPushedAwayFromTheCorner) {
   // A sphere beside the plate's corner, below its top: only the corner touches.
   ParticleDef3 p;
