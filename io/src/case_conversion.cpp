@@ -1,6 +1,9 @@
 #include "dem/io/case_conversion.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <filesystem>
 #include <map>
 #include <numbers>
@@ -15,6 +18,8 @@
 
 namespace dem::io {
 namespace {
+
+using WallIndex = std::map<std::string, WallId, std::less<>>;
 
 template <int Dim>
 Vec<Dim> to_vec(const proto::Vector& v) {
@@ -64,13 +69,88 @@ HertzDampingDef to_hertz_damping(const proto::HertzLaw& law) {
   return def;
 }
 
-StopConditions to_stop_conditions(const proto::Until& until) {
+// A particle's shape: a superquadric in 2D, an ellipsoid in 3D (validation
+// refuses the other dimension's); round when it has none. `Source` is a
+// proto::Particle or a proto::SizeClass.
+template <int Dim, typename Source>
+ShapeDefT<Dim> to_shape(const Source& source) {
+  if constexpr (Dim == 2) {
+    if (source.has_superquadric()) {
+      const proto::Superquadric& shape = source.superquadric();
+      return {shape.a(), shape.b(), shape.n(), shape.angle_deg() * std::numbers::pi / 180.0};
+    }
+  } else {
+    if (source.has_ellipsoid()) {
+      const proto::Ellipsoid& shape = source.ellipsoid();
+      ShapeDefT<3> def;
+      def.axes = to_vec<3>(shape.semi_axes());
+      if (shape.has_orientation()) {
+        const proto::Quaternion& q = shape.orientation();
+        def.orientation = Quaternion(q.w(), q.x(), q.y(), q.z()).normalized();
+      }
+      return def;
+    }
+  }
+  return {};
+}
+
+TrimDef to_trim(const proto::Trim& trim) {
+  TrimDef def;
+  def.height = trim.height();
+  def.amplitude = trim.amplitude();
+  // A smooth cut may leave the wavelength out; it then plays no part.
+  if (trim.wavelength() > 0) def.wavelength = trim.wavelength();
+  return def;
+}
+
+StopConditions to_stop_conditions(const proto::Until& until, const WallIndex& walls) {
   StopConditions def;
   if (until.has_kinetic_energy_below()) def.kinetic_energy_below = until.kinetic_energy_below();
   if (until.has_out_of_balance_below()) def.out_of_balance_below = until.out_of_balance_below();
   if (until.has_servo_tolerance()) def.servo_tolerance = until.servo_tolerance();
+  if (until.has_wall_stress_above()) {
+    def.wall_stress_above =
+        WallThreshold{walls.at(until.wall_stress_above().wall()), until.wall_stress_above().value()};
+  }
+  if (until.has_wall_settlement_above()) {
+    def.wall_settlement_above =
+        WallThreshold{walls.at(until.wall_settlement_above().wall()), until.wall_settlement_above().value()};
+  }
   def.min_cycles = until.min_cycles();
   if (until.check_interval() > 0) def.check_interval = until.check_interval();
+  return def;
+}
+
+// The analyses start with the first stage that places the loading plate.
+int loading_stage(const proto::Case& c) {
+  for (int i = 0; i < c.stage_size(); ++i) {
+    const proto::Stage& stage = c.stage(i);
+    if (stage.has_place_wall() && stage.place_wall().wall() == c.output().compression().loading_plate()) return i;
+  }
+  return 0;
+}
+
+CompressionSettings to_compression(const proto::Case& c, const WallIndex& walls) {
+  const proto::CompressionOutput& compression = c.output().compression();
+  CompressionSettings def;
+  def.loading_plate = walls.at(compression.loading_plate());
+  def.bottom_plate = walls.at(compression.bottom_plate());
+  def.loading_stage = loading_stage(c);
+  // proto3 cannot tell an unset number from 0, so 0 keeps the default.
+  if (compression.transition_stress() > 0) def.transition_stress = compression.transition_stress();
+  if (compression.final_stress() > 0) def.final_stress = compression.final_stress();
+  def.contacts_at_stress.assign(compression.contacts_at_stress().begin(), compression.contacts_at_stress().end());
+  if (compression.has_force_distribution()) {
+    const proto::ForceDistributionOutput& d = compression.force_distribution();
+    ForceDistributionSettings f;
+    f.stress_from = d.stress_from();
+    f.stress_to = d.stress_to();
+    if (d.snapshots() > 0) f.snapshots = static_cast<int>(d.snapshots());
+    if (d.bin_width() > 0) f.bin_width = d.bin_width();
+    if (d.tail_from() > 0) f.tail_from = d.tail_from();
+    def.force_distribution = f;
+  }
+  if (compression.stress_drop_fraction() > 0) def.stress_drop_fraction = compression.stress_drop_fraction();
   return def;
 }
 
@@ -211,6 +291,7 @@ class Converter {
     def.material = materials_.at(particle.material());
     def.velocity = to_vec<Dim>(particle.velocity());
     def.angular_velocity = to_spin<Dim>(particle.angular_velocity(), particle.angular_velocity_3d());
+    def.shape = to_shape<Dim>(particle);
     return def;
   }
 
@@ -234,7 +315,7 @@ class Converter {
     def.min = to_vec<Dim>(packing.min());
     def.max = to_vec<Dim>(packing.max());
     for (const proto::SizeClass& size : packing.size()) {
-      def.sizes.push_back({size.radius(), static_cast<int>(size.count())});
+      def.sizes.push_back({size.radius(), static_cast<int>(size.count()), to_shape<Dim>(size)});
     }
     def.seed = packing.seed();
     if (packing.max_attempts() > 0) def.max_attempts = static_cast<int>(packing.max_attempts());
@@ -277,10 +358,31 @@ class Converter {
       }
       def.h1 = wall.h1();
       def.h2 = wall.h2();
+      if constexpr (Dim == 3) {
+        if (wall.face_size() > 0) add_faces(wall, def);
+      }
       def.material = materials_.at(wall.material());
       def.motion = to_motion<Dim>(wall.motion());
       world.walls.push_back(def);
       walls_.emplace(wall.name(), i);
+    }
+  }
+
+  // A wall of triangle faces (Miyata et al. 2002, 2.4(2)): the faces, and
+  // their extent along the wall's sides in place of the rectangle's.
+  static void add_faces(const proto::Wall& wall, WallDefT<3>& def) {
+    def.h1 = def.k1 = std::numeric_limits<double>::infinity();
+    def.h2 = def.k2 = -std::numeric_limits<double>::infinity();
+    for (const proto::Triangle& face : wall.face()) {
+      const std::array<Vec3, 3> corners = {to_vec<3>(face.i()), to_vec<3>(face.j()), to_vec<3>(face.k())};
+      for (const Vec3& corner : corners) {
+        const Vec3 d = corner - def.point;
+        def.h1 = std::min(def.h1, d.dot(def.direction));
+        def.h2 = std::max(def.h2, d.dot(def.direction));
+        def.k1 = std::min(def.k1, d.dot(def.direction2));
+        def.k2 = std::max(def.k2, d.dot(def.direction2));
+      }
+      def.triangles.push_back(corners);
     }
   }
 
@@ -292,8 +394,12 @@ class Converter {
         def.wall_motions.emplace_back(walls_.at(command.wall()), to_motion<Dim>(command.motion()));
       }
       if (stage.has_damping()) def.damping = to_damping(stage.damping());
+      if (stage.has_trim()) def.trim = to_trim(stage.trim());
+      if (stage.has_place_wall()) {
+        def.place_wall = PlaceWallDef{walls_.at(stage.place_wall().wall()), stage.place_wall().clearance()};
+      }
       def.cycles = stage.cycles();
-      if (stage.has_until()) def.until = to_stop_conditions(stage.until());
+      if (stage.has_until()) def.until = to_stop_conditions(stage.until(), walls_);
       stages.push_back(def);
     }
   }
@@ -303,6 +409,7 @@ class Converter {
   void add_output(OutputSettings& output, std::size_t particle_count) const {
     if (case_.output().interval() > 0) output.interval = case_.output().interval();
     output.contacts_file = !case_.output().no_contacts_file();
+    if (case_.output().has_compression()) output.compression = to_compression(case_, walls_);
     std::vector<std::string> problems;
     for (int i = 0; i < case_.output().probe_size(); ++i) {
       const proto::ContactProbe& probe = case_.output().probe(i);
@@ -321,7 +428,7 @@ class Converter {
   const proto::Case& case_;
   const CaseSource& source_;
   std::map<std::string, MaterialId, std::less<>> materials_;
-  std::map<std::string, WallId, std::less<>> walls_;
+  WallIndex walls_;
 };
 
 }  // namespace

@@ -42,4 +42,18 @@ inline int find_material(ProblemList& problems, const NameIndex& materials, cons
   return found->second;
 }
 
+// The wall's index, or -1 after reporting why there is none.
+inline int find_wall(ProblemList& problems, const NameIndex& walls, const std::string& path, const std::string& name) {
+  if (name.empty()) {
+    problems.add(path, "must name a wall " + defined_names(walls));
+    return -1;
+  }
+  const auto found = walls.find(name);
+  if (found == walls.end()) {
+    problems.add(path, "unknown wall " + in_quotes(name) + ' ' + defined_names(walls));
+    return -1;
+  }
+  return found->second;
+}
+
 }  // namespace dem::io

@@ -11,10 +11,13 @@
 #include <utility>
 
 #include "case_names.h"
+#include "compression_output_checks.h"
+#include "dem/math.h"
 #include "contact_model_checks.h"
 #include "field_path.h"
 #include "format_number.h"
 #include "problem_list.h"
+#include "shape_checks.h"
 
 namespace dem::io {
 namespace {
@@ -174,7 +177,21 @@ class CaseChecker {
 
   void check_particle(const std::string& path, const proto::Particle& particle) {
     vector(path + ".position", particle.position());
-    problems_.positive(path + ".radius", particle.radius());
+    if (particle.has_superquadric() && particle.has_ellipsoid()) {
+      problems_.add(path, "sets both superquadric (2D) and ellipsoid (3D); keep the one of the case's dimension");
+    }
+    if (particle.has_superquadric()) {
+      check_shape(path + ".superquadric", particle.superquadric(), false);
+    } else if (particle.has_ellipsoid()) {
+      check_ellipsoid_shape(path + ".ellipsoid", particle.ellipsoid(), false);
+    } else {
+      problems_.positive(path + ".radius", particle.radius());
+    }
+    const bool shaped = particle.has_superquadric() || particle.has_ellipsoid();
+    if (shaped && particle.radius() != 0) {
+      problems_.add(path + ".radius", "is set by the shape (its bounding radius); leave it out");
+    }
+    shapes_.note(problems_, path, shaped, dimension_);
     material_reference(path + ".material", particle.material());
     vector(path + ".velocity", particle.velocity());
     check_spin(path + ".angular_velocity", particle.angular_velocity(), particle.has_angular_velocity_3d(),
@@ -193,7 +210,26 @@ class CaseChecker {
     }
   }
 
+  // A superquadric: 2D only, of unit thickness, with sound numbers.
+  bool check_shape(const std::string& path, const proto::Superquadric& shape, bool random_angle) {
+    only_in_2d(path, true, "3D particles are spheres or ellipsoids (set ellipsoid)");
+    if (case_.planar_particle() == proto::Case::SPHERE) {
+      problems_.add(path, "superquadrics have unit thickness; leave planar_particle out (DISC)");
+    }
+    return check_superquadric(problems_, path, shape, random_angle);
+  }
+
+  // An ellipsoid: 3D only, with sound numbers.
+  bool check_ellipsoid_shape(const std::string& path, const proto::Ellipsoid& shape, bool random_orientation) {
+    if (dimension_ == 2) {
+      problems_.add(path, "is for 3D cases only (this case is 2D); set dimension: 3, or superquadric for a 2D shape");
+      return false;
+    }
+    return check_ellipsoid(problems_, path, shape, random_orientation);
+  }
+
   void check_lattice(const std::string& path, const proto::Lattice& lattice) {
+    shapes_.note(problems_, path, false, dimension_);
     material_reference(path + ".material", lattice.material());
     const bool radius_ok = problems_.positive(path + ".radius", lattice.radius());
     vector(path + ".origin", lattice.origin());
@@ -235,7 +271,36 @@ class CaseChecker {
     for (int j = 0; j < packing.size_size(); ++j) {
       const proto::SizeClass& size = packing.size(j);
       const std::string size_path = indexed(path + ".size", j);
-      if (problems_.positive(size_path + ".radius", size.radius()) && box_ok && 2 * size.radius() > smallest_side) {
+      const bool shaped = size.has_superquadric() || size.has_ellipsoid();
+      shapes_.note(problems_, size_path, shaped, dimension_);
+      if (size.has_superquadric() && size.has_ellipsoid()) {
+        problems_.add(size_path,
+                      "sets both superquadric (2D) and ellipsoid (3D); keep the one of the case's dimension");
+      }
+      if (shaped && size.radius() != 0) {
+        problems_.add(size_path + ".radius", "is set by the shape (its bounding radius); leave it out");
+      }
+      if (size.has_ellipsoid()) {
+        // Placed by its bounding sphere (dem/packing.h), of the largest semi-axis.
+        const proto::Vector& axes = size.ellipsoid().semi_axes();
+        const double largest = std::max({axes.x(), axes.y(), axes.z()});
+        if (check_ellipsoid_shape(size_path + ".ellipsoid", size.ellipsoid(), true) && box_ok &&
+            2 * largest > smallest_side) {
+          problems_.add(size_path + ".ellipsoid", "ellipsoids with a semi-axis of " + format_number(largest) +
+                                                      " do not fit in the box (" + box + ")");
+        }
+      } else if (size.has_superquadric()) {
+        // Placed by its bounding circle (dem/packing.h), at least as large
+        // as the larger semi-axis.
+        const proto::Superquadric& shape = size.superquadric();
+        if (check_shape(size_path + ".superquadric", shape, true) && box_ok &&
+            2 * std::max(shape.a(), shape.b()) > smallest_side) {
+          problems_.add(size_path + ".superquadric", "superquadrics with a semi-axis of " +
+                                                         format_number(std::max(shape.a(), shape.b())) +
+                                                         " do not fit in the box (" + box + ")");
+        }
+      } else if (problems_.positive(size_path + ".radius", size.radius()) && box_ok &&
+                 2 * size.radius() > smallest_side) {
         problems_.add(size_path + ".radius", std::string(three ? "spheres" : "discs") + " of radius " +
                                                  format_number(size.radius()) + " do not fit in the box (" + box + ")");
       }
@@ -250,6 +315,7 @@ class CaseChecker {
   // How many particles the file holds is known only when it is read (at
   // conversion), so checks that count particles stop here.
   void check_particle_file(const std::string& path, const proto::ParticleFile& file) {
+    shapes_.note(problems_, path, false, dimension_);
     if (file.path().empty()) {
       problems_.add(path + ".path", std::string("must name a CSV file of particles (lines of ") +
                                         (dimension_ == 3 ? "x,y,z,r" : "x,y,r") +
@@ -286,10 +352,12 @@ class CaseChecker {
                                               : "has no orientation; set direction { x: ... y: ... } or angle_deg");
           break;
       }
-      check_extent(path, "h1", wall.h1(), "h2", wall.h2());
+      if (wall.face_size() == 0) check_extent(path, "h1", wall.h1(), "h2", wall.h2());
       if (dimension_ == 3) {
         check_rectangle(path, wall, direction_ok);
+        check_faces(path, wall);
       } else {
+        only_in_3d(path + ".face", wall.face_size() > 0);
         only_in_3d(path + ".direction2", wall.has_direction2());
         only_in_3d(path + ".k1", wall.k1() != 0);
         only_in_3d(path + ".k2", wall.k2() != 0);
@@ -338,7 +406,56 @@ class CaseChecker {
                                                 format_number(std::round(degrees * 100.0) / 100.0) + " degrees apart)");
       }
     }
-    check_extent(path, "k1", wall.k1(), "k2", wall.k2());
+    if (wall.face_size() == 0) check_extent(path, "k1", wall.k1(), "k2", wall.k2());
+  }
+
+  // A wall of triangle faces (Miyata et al. 2002, 2.4(2)): each face has
+  // finite corners not on one line; the faces replace the rectangle's extent.
+  void check_faces(const std::string& path, const proto::Wall& wall) {
+    if (wall.face_size() == 0) return;
+    for (const auto& [name, value] : {std::pair{".h1", wall.h1()}, {".h2", wall.h2()}, {".k1", wall.k1()},
+                                      {".k2", wall.k2()}}) {
+      if (value != 0) {
+        problems_.add(path + name, "must be left out for a wall of faces (their extent along direction and "
+                                   "direction2 replaces the rectangle's)");
+      }
+    }
+    for (int k = 0; k < wall.face_size(); ++k) {
+      const proto::Triangle& face = wall.face(k);
+      const std::string face_path = indexed(path + ".face", k);
+      const bool i_ok = problems_.finite(face_path + ".i", face.i());
+      const bool j_ok = problems_.finite(face_path + ".j", face.j());
+      const bool k_ok = problems_.finite(face_path + ".k", face.k());
+      if (!(i_ok && j_ok && k_ok)) continue;
+      const Vec3 a(face.i().x(), face.i().y(), face.i().z());
+      const Vec3 b(face.j().x(), face.j().y(), face.j().z());
+      const Vec3 c(face.k().x(), face.k().y(), face.k().z());
+      // Relative to the face's size, as the engine checks it.
+      const double scale = std::max((b - a).squaredNorm(), (c - a).squaredNorm());
+      if (!((b - a).cross(c - a).norm() > 1e-9 * scale)) {
+        problems_.add(face_path, "is degenerate: its corners i, j, k lie on one line (or coincide)");
+      }
+    }
+    // The faces' extent along direction and direction2 gives the wall's
+    // (its centre and half-sizes for eccentricities): it must not be flat.
+    const Vec3 u(wall.direction().x(), wall.direction().y(), wall.direction().z());
+    const Vec3 v(wall.direction2().x(), wall.direction2().y(), wall.direction2().z());
+    if (!(u.allFinite() && v.allFinite() && u.norm() > 0 && v.norm() > 0)) return;
+    const auto extent = [&](const Vec3& axis) {
+      double low = std::numeric_limits<double>::infinity(), high = -low;
+      for (const proto::Triangle& face : wall.face()) {
+        for (const proto::Vector* corner : {&face.i(), &face.j(), &face.k()}) {
+          const double along = Vec3(corner->x(), corner->y(), corner->z()).dot(axis.normalized());
+          low = std::min(low, along);
+          high = std::max(high, along);
+        }
+      }
+      return high - low;
+    };
+    if (!(extent(u) > 0) || !(extent(v) > 0)) {
+      problems_.add(path + ".face", "span nothing along direction or direction2; those should lie along the faces "
+                                    "(the normal, direction x direction2, faces the particles)");
+    }
   }
 
   void check_motion(const std::string& path, const proto::WallMotion& motion) {
@@ -409,6 +526,11 @@ class CaseChecker {
       if (stage.cycles() == 0) {
         problems_.add(path + ".cycles", "must be > 0 (the stage's length, or its cap when until is set)");
       }
+      if (stage.has_trim()) check_trim(path + ".trim", stage.trim());
+      if (stage.has_place_wall()) {
+        find_wall(problems_, walls_, path + ".place_wall.wall", stage.place_wall().wall());
+        problems_.non_negative(path + ".place_wall.clearance", stage.place_wall().clearance());
+      }
       if (stage.has_damping()) check_damping(path + ".damping", stage.damping());
       if (stage.has_until()) {
         check_until(path, stage, std::ranges::count(servo, true) > 0);
@@ -416,13 +538,39 @@ class CaseChecker {
     }
   }
 
+  // Miyata et al. (2002) eq. 60: a sine of this amplitude and wavelength
+  // about the height; a smooth cut needs no wavelength.
+  void check_trim(const std::string& path, const proto::Trim& trim) {
+    problems_.finite(path + ".height", trim.height());
+    const bool amplitude_ok = problems_.non_negative(path + ".amplitude", trim.amplitude());
+    if (amplitude_ok && trim.amplitude() > 0) {
+      if (problems_.finite(path + ".wavelength", trim.wavelength()) && !(trim.wavelength() > 0)) {
+        problems_.add(path + ".wavelength", "must be > 0 for a rough surface (amplitude " +
+                                                format_number(trim.amplitude()) + "; got " +
+                                                format_number(trim.wavelength()) + ")");
+      }
+    } else {
+      problems_.non_negative(path + ".wavelength", trim.wavelength());
+    }
+  }
+
+  void check_threshold(const std::string& path, const proto::WallThreshold& threshold) {
+    find_wall(problems_, walls_, path + ".wall", threshold.wall());
+    problems_.finite(path + ".value", threshold.value());
+  }
+
   void check_until(const std::string& stage_path, const proto::Stage& stage, bool any_servo) {
     const proto::Until& until = stage.until();
     const std::string path = stage_path + ".until";
-    if (!until.has_kinetic_energy_below() && !until.has_out_of_balance_below() && !until.has_servo_tolerance()) {
+    if (!until.has_kinetic_energy_below() && !until.has_out_of_balance_below() && !until.has_servo_tolerance() &&
+        !until.has_wall_stress_above() && !until.has_wall_settlement_above()) {
       problems_.add(path,
-                    "sets no stop condition; set kinetic_energy_below, out_of_balance_below or "
-                    "servo_tolerance, or leave until out");
+                    "sets no stop condition; set kinetic_energy_below, out_of_balance_below, servo_tolerance, "
+                    "wall_stress_above or wall_settlement_above, or leave until out");
+    }
+    if (until.has_wall_stress_above()) check_threshold(path + ".wall_stress_above", until.wall_stress_above());
+    if (until.has_wall_settlement_above()) {
+      check_threshold(path + ".wall_settlement_above", until.wall_settlement_above());
     }
     if (until.has_kinetic_energy_below()) {
       problems_.positive(path + ".kinetic_energy_below", until.kinetic_energy_below());
@@ -441,6 +589,9 @@ class CaseChecker {
   }
 
   void check_output() {
+    if (case_.output().has_compression()) {
+      check_compression_output(case_.output().compression(), walls_, problems_);
+    }
     const bool count_known =
         count_known_ && particle_count_ <= static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max());
     std::map<std::string, int, std::less<>> names;
@@ -497,6 +648,7 @@ class CaseChecker {
   std::set<std::string> wall_materials_;
   std::uint64_t particle_count_ = 0;
   bool count_known_ = true;  // false once a csv_file source holds an unknown number
+  ShapeMix shapes_;
   int dimension_ = 0;        // 2 or 3; 0 until known (or when the case declares neither)
 };
 

@@ -1,7 +1,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <optional>
 #include <filesystem>
 #include <string>
 #include <variant>
@@ -468,6 +471,168 @@ TEST_F(CaseConversion3d, ProbeIdsAreCheckedOnceTheParticleFilesAreRead) {
   }
 }
 
+class SuperquadricConversion : public ::testing::Test {
+ protected:
+  proto::Case case_ = load_case_file(test::data_path("superquadrics.case.txtpb")).message;
+};
+
+TEST_F(SuperquadricConversion, ExplicitParticlesCarryTheirShapeAndAngle) {
+  const WorldDef world = convert_case(case_).world;
+  ASSERT_EQ(world.particles.size(), 22u);
+  const ShapeDefT<2>& first = world.particles[0].shape;
+  EXPECT_EQ(first.a, 0.05);
+  EXPECT_EQ(first.b, 0.025);
+  EXPECT_EQ(first.n, 4);
+  EXPECT_DOUBLE_EQ(first.angle, std::numbers::pi / 2);
+  EXPECT_EQ(world.particles[1].shape.angle, 0);
+  EXPECT_EQ(world.particles[1].shape.n, 2.5);
+}
+
+TEST_F(SuperquadricConversion, APackedClassTurnsEachParticleAtRandom) {
+  const WorldDef world = convert_case(case_).world;
+  double smallest = 10, largest = -10;
+  for (std::size_t i = 2; i < world.particles.size(); ++i) {
+    const ShapeDefT<2>& s = world.particles[i].shape;
+    EXPECT_EQ(s.a, 0.04);
+    EXPECT_EQ(s.b, 0.02);
+    EXPECT_GE(world.particles[i].radius, 0.04);  // placed by its bounding circle
+    smallest = std::min(smallest, s.angle);
+    largest = std::max(largest, s.angle);
+  }
+  EXPECT_GT(largest - smallest, 1.0);
+  EXPECT_NO_THROW(World{world});
+}
+
+TEST_F(SuperquadricConversion, StagesTrimPlaceAndStopOnThePlate) {
+  const std::vector<StageDef> stages = convert_case(case_).stages;
+  ASSERT_EQ(stages.size(), 3u);
+  EXPECT_FALSE(stages[0].trim);
+  EXPECT_FALSE(stages[0].place_wall);
+  ASSERT_TRUE(stages[1].trim);
+  EXPECT_EQ(stages[1].trim->height, 0.3);
+  EXPECT_EQ(stages[1].trim->amplitude, 0.05);
+  EXPECT_EQ(stages[1].trim->wavelength, 0.5);
+  ASSERT_TRUE(stages[2].place_wall);
+  EXPECT_EQ(stages[2].place_wall->wall, 1);
+  EXPECT_EQ(stages[2].place_wall->clearance, 0.002);
+  ASSERT_TRUE(stages[2].until.wall_settlement_above);
+  EXPECT_EQ(stages[2].until.wall_settlement_above->wall, 1);
+  EXPECT_EQ(stages[2].until.wall_settlement_above->value, 0.005);
+  ASSERT_TRUE(stages[2].until.wall_stress_above);
+  EXPECT_EQ(stages[2].until.wall_stress_above->value, 1e5);
+}
+
+TEST_F(SuperquadricConversion, ASmoothTrimKeepsTheDefaultWavelength) {
+  case_.mutable_stage(1)->mutable_trim()->clear_amplitude();
+  case_.mutable_stage(1)->mutable_trim()->clear_wavelength();
+  const std::optional<TrimDef> trim = convert_case(case_).stages[1].trim;
+  ASSERT_TRUE(trim);
+  EXPECT_EQ(trim->amplitude, 0);
+  EXPECT_EQ(trim->wavelength, TrimDef{}.wavelength);
+}
+
+TEST_F(SuperquadricConversion, CompressionOutputWithItsDefaults) {
+  const std::optional<CompressionSettings> compression = convert_case(case_).output.compression;
+  ASSERT_TRUE(compression);
+  const CompressionSettings defaults;
+  EXPECT_EQ(compression->loading_plate, 1);
+  EXPECT_EQ(compression->bottom_plate, 0);
+  EXPECT_EQ(compression->loading_stage, 2);  // the stage that places the plate
+  EXPECT_EQ(compression->transition_stress, defaults.transition_stress);
+  EXPECT_EQ(compression->final_stress, defaults.final_stress);
+  EXPECT_TRUE(compression->contacts_at_stress.empty());
+  EXPECT_FALSE(compression->force_distribution);
+  EXPECT_EQ(compression->stress_drop_fraction, defaults.stress_drop_fraction);
+}
+
+TEST_F(SuperquadricConversion, CompressionOutputAsTheCaseSetsIt) {
+  proto::CompressionOutput& out = *case_.mutable_output()->mutable_compression();
+  out.set_transition_stress(40e3);
+  out.set_final_stress(300e3);
+  out.add_contacts_at_stress(50e3);
+  out.add_contacts_at_stress(900e3);
+  out.set_stress_drop_fraction(0.05);
+  out.mutable_force_distribution()->set_stress_from(400e3);
+  out.mutable_force_distribution()->set_stress_to(600e3);
+  out.mutable_force_distribution()->set_bin_width(0.2);
+  case_.mutable_stage(2)->clear_place_wall();
+  const CompressionSettings compression = *convert_case(case_).output.compression;
+  EXPECT_EQ(compression.loading_stage, 0);  // no stage places the plate
+  EXPECT_EQ(compression.transition_stress, 40e3);
+  EXPECT_EQ(compression.final_stress, 300e3);
+  EXPECT_EQ(compression.contacts_at_stress, (std::vector<double>{50e3, 900e3}));
+  EXPECT_EQ(compression.stress_drop_fraction, 0.05);
+  ASSERT_TRUE(compression.force_distribution);
+  EXPECT_EQ(compression.force_distribution->stress_from, 400e3);
+  EXPECT_EQ(compression.force_distribution->stress_to, 600e3);
+  EXPECT_EQ(compression.force_distribution->snapshots, 10);  // the seed's
+  EXPECT_EQ(compression.force_distribution->bin_width, 0.2);
+  EXPECT_EQ(compression.force_distribution->tail_from, 1.0);
+}
+
+class EllipsoidConversion : public ::testing::Test {
+ protected:
+  proto::Case case_ = load_case_file(test::data_path("ellipsoids.case.txtpb")).message;
+};
+
+TEST_F(EllipsoidConversion, AnExplicitEllipsoidKeepsItsAxesAndNormalisedOrientation) {
+  const WorldDef3 world = convert_case<3>(case_).world;
+  ASSERT_EQ(world.particles.size(), 13u);
+  const ShapeDefT<3>& first = world.particles[0].shape;
+  EXPECT_TRUE(first.ellipsoid());
+  EXPECT_EQ(first.axes, Vec3(0.1, 0.07, 0.05));
+  // w: 1, z: 1 is a quarter turn about z once normalised.
+  const Vec3 turned = first.orientation * Vec3::UnitX();
+  EXPECT_NEAR(turned.x(), 0.0, 1e-15);
+  EXPECT_NEAR(turned.y(), 1.0, 1e-15);
+  EXPECT_NEAR(first.orientation.norm(), 1.0, 1e-15);
+}
+
+TEST_F(EllipsoidConversion, APackedClassTakesRandomOrientations) {
+  const WorldDef3 world = convert_case<3>(case_).world;
+  double smallest_w = 1.0;
+  for (std::size_t i = 1; i < world.particles.size(); ++i) {
+    const ShapeDefT<3>& s = world.particles[i].shape;
+    EXPECT_EQ(s.axes, Vec3(0.08, 0.06, 0.04));
+    EXPECT_GE(world.particles[i].radius, 0.08);  // placed by its bounding sphere
+    smallest_w = std::min(smallest_w, std::abs(s.orientation.w()));
+  }
+  EXPECT_LT(smallest_w, 0.9);  // not all left at the identity
+}
+
+TEST_F(EllipsoidConversion, AWallOfFacesTakesTheirExtentAndArea) {
+  const WorldDef3 world = convert_case<3>(case_).world;
+  const WallDefT<3>& floor = world.walls[0];
+  ASSERT_EQ(floor.triangles.size(), 2u);
+  EXPECT_EQ(floor.triangles[0][1], Vec3(2, -1, 0));
+  EXPECT_EQ(floor.triangles[1][2], Vec3(-1, 2, 0));
+  EXPECT_EQ(floor.h1, -1.0);
+  EXPECT_EQ(floor.h2, 2.0);
+  EXPECT_EQ(floor.k1, -1.0);
+  EXPECT_EQ(floor.k2, 2.0);
+  EXPECT_TRUE(world.walls[1].triangles.empty());
+  const World3 built(world);
+  EXPECT_DOUBLE_EQ(built.wall_area(0), 9.0);
+}
+
+// The particles fall onto the faces and rest on them: the floor carries
+// their weight once they settle (a short check that faces hold ellipsoids).
+TEST_F(EllipsoidConversion, EllipsoidsComeToRestOnTheFaces) {
+  const CaseDefinition3 def = convert_case<3>(case_);
+  World3 world(def.world);
+  DampingDef damping;
+  damping.local_alpha = 0.5;
+  world.set_damping(damping);
+  world.cycle(250000);
+  double weight = 0.0;
+  for (double mass : world.particles().mass) weight += mass * 9.81;
+  const double floor = world.wall_measures()[0].normal_force;
+  double lowest = 1e9;
+  for (const Vec3& x : world.particles().position) lowest = std::min(lowest, x.z());
+  std::printf("weight %.6g N, floor %.6g N after %.3g s, lowest centre %.4g\n", weight, floor, world.time(), lowest);
+  EXPECT_NEAR(floor, weight, 0.02 * weight);
+}
+
 template <int Dim>
 int built_particles(const CaseDefinitionT<Dim>& def) {
   return BasicWorld<Dim>(def.world).particle_count();
@@ -484,7 +649,7 @@ TEST(ShippedCases, ConvertAndBuild) {
                convert_any_case(loaded.message, loaded.source));
     ++count;
   }
-  EXPECT_GE(count, 12);
+  EXPECT_GE(count, 20);
 }
 
 }  // namespace

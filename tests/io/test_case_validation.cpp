@@ -1,6 +1,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -64,6 +65,28 @@ proto::Particle& disc(proto::Case& c) { return *c.mutable_particles(1)->mutable_
 proto::RandomPacking& packing(proto::Case& c) { return *c.mutable_particles(2)->mutable_random_packing(); }
 proto::Until& until(proto::Case& c, int stage) { return *c.mutable_stage(stage)->mutable_until(); }
 proto::WallMotion& command(proto::Case& c) { return *c.mutable_stage(1)->mutable_wall(0)->mutable_motion(); }
+proto::Superquadric& shape(proto::Case& c) {
+  disc(c).clear_radius();
+  auto& s = *disc(c).mutable_superquadric();
+  s.set_a(0.01);
+  s.set_b(0.005);
+  s.set_n(4);
+  return s;
+}
+proto::Superquadric& packed_shape(proto::Case& c) {
+  packing(c).mutable_size(0)->clear_radius();
+  auto& s = *packing(c).mutable_size(0)->mutable_superquadric();
+  s.set_a(0.005);
+  s.set_b(0.0025);
+  s.set_n(4);
+  return s;
+}
+proto::CompressionOutput& compression(proto::Case& c) {
+  auto& out = *c.mutable_output()->mutable_compression();
+  out.set_loading_plate("top");
+  out.set_bottom_plate("bottom");
+  return out;
+}
 proto::ParticleFile& new_particle_file(proto::Case& c) {
   auto& file = *c.add_particles()->mutable_csv_file();
   file.set_path("more.csv");
@@ -213,6 +236,45 @@ const Mistake kMistakes[] = {
      "particles[2].random_packing.size[0].radius: discs of radius 0.02 do not fit in the box (0.1 x "},
     {"PackingTooManyAttempts", [](auto& c) { packing(c).set_max_attempts(3'000'000'000u); },
      "particles[2].random_packing.max_attempts: must be at most 2147483647"},
+    {"SuperquadricWithoutA", [](auto& c) { shape(c).clear_a(); },
+     "particles[1].particle.superquadric.a: must be > 0 (got 0)"},
+    {"SuperquadricNegativeB", [](auto& c) { shape(c).set_b(-0.005); },
+     "particles[1].particle.superquadric.b: must be > 0 (got -0.005)"},
+    {"SuperquadricExponentOne", [](auto& c) { shape(c).set_n(1); },
+     "particles[1].particle.superquadric.n: must be in (1, 10] (got 1)"},
+    {"SuperquadricExponentAboveTen", [](auto& c) { shape(c).set_n(10.5); },
+     "particles[1].particle.superquadric.n: must be in (1, 10] (got 10.5)"},
+    {"SuperquadricInfiniteAngle", [](auto& c) { shape(c).set_angle_deg(kInfinity); },
+     "particles[1].particle.superquadric.angle_deg: must be a finite number (got inf)"},
+    {"SuperquadricWithRadius",
+     [](auto& c) {
+       shape(c);
+       disc(c).set_radius(0.01);
+     },
+     "particles[1].particle.radius: is set by the shape (its bounding radius); leave it out"},
+    {"SuperquadricAmongDiscs", [](auto& c) { shape(c); },
+     "particles[1].particle: is a superquadric, but particles[0].lattice is a disc; a case's particles are all "
+     "discs or all superquadrics"},
+    {"SuperquadricSpheres",
+     [](auto& c) {
+       shape(c);
+       c.set_planar_particle(proto::Case::SPHERE);
+     },
+     "particles[1].particle.superquadric: superquadrics have unit thickness; leave planar_particle out (DISC)"},
+    {"PackedSuperquadricWithAngle", [](auto& c) { packed_shape(c).set_angle_deg(30); },
+     "particles[2].random_packing.size[0].superquadric.angle_deg: a random packing turns each particle at a "
+     "random seeded angle; leave angle_deg out"},
+    {"PackedSuperquadricWithRadius",
+     [](auto& c) {
+       packed_shape(c);
+       packing(c).mutable_size(0)->set_radius(0.005);
+     },
+     "particles[2].random_packing.size[0].radius: is set by the shape (its bounding radius); leave it out"},
+    {"PackedSuperquadricTooBig", [](auto& c) { packed_shape(c).set_a(0.02); },
+     "particles[2].random_packing.size[0].superquadric: superquadrics with a semi-axis of 0.02 do not fit in the "
+     "box (0.1 x 0.03)"},
+    {"PackedSuperquadricZeroExponent", [](auto& c) { packed_shape(c).clear_n(); },
+     "particles[2].random_packing.size[0].superquadric.n: must be in (1, 10] (got 0)"},
     {"TooManyParticles",
      [](auto& c) {
        lattice(c).set_columns(100'000);
@@ -323,6 +385,38 @@ const Mistake kMistakes[] = {
      "stage[0].until.servo_tolerance: no wall is servo-controlled during this stage"},
     {"UntilServoToleranceAfterServoStopped", [](auto& c) { until(c, 2).set_servo_tolerance(0.01); },
      "stage[2].until.servo_tolerance: no wall is servo-controlled during this stage"},
+    {"UntilStressOfUnknownWall",
+     [](auto& c) { until(c, 0).mutable_wall_stress_above()->set_wall("lid"); },
+     "stage[0].until.wall_stress_above.wall: unknown wall \"lid\" (the case defines \"bottom\", \"left\", "
+     "\"right\", \"top\")"},
+    {"UntilSettlementWithoutWall", [](auto& c) { until(c, 0).mutable_wall_settlement_above()->set_value(0.01); },
+     "stage[0].until.wall_settlement_above.wall: must name a wall"},
+    {"UntilInfiniteStress",
+     [](auto& c) {
+       until(c, 0).mutable_wall_stress_above()->set_wall("top");
+       until(c, 0).mutable_wall_stress_above()->set_value(kInfinity);
+     },
+     "stage[0].until.wall_stress_above.value: must be a finite number (got inf)"},
+    {"TrimRoughWithoutWavelength",
+     [](auto& c) {
+       c.mutable_stage(1)->mutable_trim()->set_height(0.05);
+       c.mutable_stage(1)->mutable_trim()->set_amplitude(0.01);
+     },
+     "stage[1].trim.wavelength: must be > 0 for a rough surface (amplitude 0.01; got 0)"},
+    {"TrimNegativeAmplitude", [](auto& c) { c.mutable_stage(1)->mutable_trim()->set_amplitude(-0.01); },
+     "stage[1].trim.amplitude: must be >= 0 (got -0.01)"},
+    {"TrimNegativeWavelength", [](auto& c) { c.mutable_stage(1)->mutable_trim()->set_wavelength(-1); },
+     "stage[1].trim.wavelength: must be >= 0 (got -1)"},
+    {"TrimNaNHeight", [](auto& c) { c.mutable_stage(1)->mutable_trim()->set_height(std::nan("")); },
+     "stage[1].trim.height: must be a finite number (got nan)"},
+    {"PlaceUnknownWall", [](auto& c) { c.mutable_stage(2)->mutable_place_wall()->set_wall("lid"); },
+     "stage[2].place_wall.wall: unknown wall \"lid\""},
+    {"PlaceWithNegativeClearance",
+     [](auto& c) {
+       c.mutable_stage(2)->mutable_place_wall()->set_wall("top");
+       c.mutable_stage(2)->mutable_place_wall()->set_clearance(-0.001);
+     },
+     "stage[2].place_wall.clearance: must be >= 0 (got -0.001)"},
     {"UntilMinCyclesBeyondCap", [](auto& c) { until(c, 0).set_min_cycles(500); },
      "stage[0].until.min_cycles: must not exceed the stage's cycles (500 > 400)"},
 
@@ -335,6 +429,45 @@ const Mistake kMistakes[] = {
      "output.probe[1].second: must differ from first (both are 4)"},
     {"ProbeWithoutName", [](auto& c) { c.mutable_output()->mutable_probe(0)->clear_name(); },
      "output.probe[0].name: must not be empty"},
+    {"CompressionUnknownPlate", [](auto& c) { compression(c).set_loading_plate("lid"); },
+     "output.compression.loading_plate: unknown wall \"lid\""},
+    {"CompressionWithoutBottom", [](auto& c) { compression(c).clear_bottom_plate(); },
+     "output.compression.bottom_plate: must name a wall"},
+    {"CompressionSamePlates", [](auto& c) { compression(c).set_bottom_plate("top"); },
+     "output.compression.bottom_plate: must differ from loading_plate (both are \"top\")"},
+    {"CompressionStatesOutOfOrder", [](auto& c) { compression(c).set_transition_stress(300e3); },
+     "output.compression.final_stress: must exceed transition_stress (250000 <= 3e+05; 0 stands for the "
+     "defaults, 50000 and 250000)"},
+    {"CompressionNegativeTransition", [](auto& c) { compression(c).set_transition_stress(-1); },
+     "output.compression.transition_stress: must be >= 0 (got -1)"},
+    {"CompressionSnapshotAtZero",
+     [](auto& c) {
+       compression(c).add_contacts_at_stress(50e3);
+       compression(c).add_contacts_at_stress(0);
+     },
+     "output.compression.contacts_at_stress[1]: must be > 0 (got 0)"},
+    {"ForceDistributionEmptyWindow",
+     [](auto& c) {
+       auto& d = *compression(c).mutable_force_distribution();
+       d.set_stress_from(600e3);
+       d.set_stress_to(400e3);
+     },
+     "output.compression.force_distribution.stress_to: must exceed stress_from (4e+05 <= 6e+05)"},
+    {"ForceDistributionWithoutWindow", [](auto& c) { compression(c).mutable_force_distribution(); },
+     "output.compression.force_distribution.stress_from: must be > 0 (got 0)"},
+    {"ForceDistributionOneSnapshot",
+     [](auto& c) {
+       auto& d = *compression(c).mutable_force_distribution();
+       d.set_stress_from(400e3);
+       d.set_stress_to(600e3);
+       d.set_snapshots(1);
+     },
+     "output.compression.force_distribution.snapshots: must be at least 2"},
+    {"ForceDistributionNegativeWidth",
+     [](auto& c) { compression(c).mutable_force_distribution()->set_bin_width(-0.25); },
+     "output.compression.force_distribution.bin_width: must be >= 0 (got -0.25)"},
+    {"StressDropFractionOfOne", [](auto& c) { compression(c).set_stress_drop_fraction(1); },
+     "output.compression.stress_drop_fraction: must be in [0, 1) (got 1); leave it out for 0.02"},
     {"DuplicateProbe", [](auto& c) { c.mutable_output()->mutable_probe(1)->set_name("corner"); },
      "output.probe[1].name: duplicate probe name \"corner\" (output.probe[0] has it too)"},
 };
@@ -353,6 +486,30 @@ TEST_P(CaseMistake3d, IsReportedWithItsField) {
 }
 
 proto::Particle& sphere(proto::Case& c) { return *c.mutable_particles(0)->mutable_particle(); }
+
+// Gives a particle or a size class an ellipsoid's semi-axes.
+template <typename Source>
+proto::Ellipsoid& ellipsoid(Source& source, double a1, double a2, double a3) {
+  proto::Vector& axes = *source.mutable_ellipsoid()->mutable_semi_axes();
+  axes.set_x(a1);
+  axes.set_y(a2);
+  axes.set_z(a3);
+  return *source.mutable_ellipsoid();
+}
+
+void set(proto::Vector& v, const std::array<double, 3>& xyz) {
+  v.set_x(xyz[0]);
+  v.set_y(xyz[1]);
+  v.set_z(xyz[2]);
+}
+
+void face(proto::Wall& wall, const std::array<double, 3>& i, const std::array<double, 3>& j,
+          const std::array<double, 3>& k) {
+  proto::Triangle& t = *wall.add_face();
+  set(*t.mutable_i(), i);
+  set(*t.mutable_j(), j);
+  set(*t.mutable_k(), k);
+}
 
 const Mistake kMistakes3d[] = {
     {"PlanarSphereIn3d", [](auto& c) { c.set_planar_particle(proto::Case::SPHERE); },
@@ -406,12 +563,99 @@ const Mistake kMistakes3d[] = {
      "contact_model[2]: uses linear for \"glass\" and \"wall\", but contact_model[1] uses hertz_mindlin for "
      "\"steel\" and \"wall\"; one law must serve every particle-wall contact (particle-particle and particle-wall "
      "laws may differ)"},
+    {"SuperquadricIn3d",
+     [](auto& c) {
+       sphere(c).clear_radius();
+       auto& s = *sphere(c).mutable_superquadric();
+       s.set_a(0.002);
+       s.set_b(0.001);
+       s.set_n(4);
+     },
+     "particles[0].particle.superquadric: is for 2D cases only (this case is 3D); 3D particles are spheres or "
+     "ellipsoids (set ellipsoid)"},
+    {"EllipsoidWithRadius",
+     [](auto& c) { ellipsoid(sphere(c), 0.002, 0.0015, 0.001); },
+     "particles[0].particle.radius: is set by the shape (its bounding radius); leave it out"},
+    {"EllipsoidWithoutSemiAxes", [](auto& c) { sphere(c).clear_radius(), sphere(c).mutable_ellipsoid(); },
+     "particles[0].particle.ellipsoid.semi_axes: must be set"},
+    {"EllipsoidFlatAxis",
+     [](auto& c) {
+       sphere(c).clear_radius();
+       ellipsoid(sphere(c), 0.002, 0.0015, 0);
+     },
+     "particles[0].particle.ellipsoid.semi_axes.z: must be > 0 (got 0)"},
+    {"EllipsoidZeroQuaternion",
+     [](auto& c) {
+       sphere(c).clear_radius();
+       ellipsoid(sphere(c), 0.002, 0.0015, 0.001).mutable_orientation();
+     },
+     "particles[0].particle.ellipsoid.orientation: must not be zero"},
+    {"EllipsoidAmongSpheres",
+     [](auto& c) {
+       sphere(c).clear_radius();
+       ellipsoid(sphere(c), 0.002, 0.0015, 0.001);
+     },
+     "particles[1].lattice: is a sphere, but particles[0].particle is an ellipsoid; a case's particles are all "
+     "spheres or all ellipsoids"},
+    {"PackedEllipsoidWithOrientation",
+     [](auto& c) {
+       auto& size = *c.mutable_particles(2)->mutable_random_packing()->mutable_size(0);
+       size.clear_radius();
+       ellipsoid(size, 0.001, 0.0008, 0.0005).mutable_orientation()->set_w(1);
+     },
+     "particles[2].random_packing.size[0].ellipsoid.orientation: a random packing turns each particle to a "
+     "uniformly random orientation; leave it out"},
+    {"PackedEllipsoidTooLong",
+     [](auto& c) {
+       auto& size = *c.mutable_particles(2)->mutable_random_packing()->mutable_size(0);
+       size.clear_radius();
+       ellipsoid(size, 0.003, 0.0008, 0.0005);
+     },
+     "particles[2].random_packing.size[0].ellipsoid: ellipsoids with a semi-axis of 0.003 do not fit in the box "
+     "(0.01 x 0.01 x 0.004)"},
+    {"FaceOnALine",
+     [](auto& c) {
+       auto& w = *c.mutable_wall(0);
+       w.clear_h1(), w.clear_h2(), w.clear_k1(), w.clear_k2();
+       face(w, {0, 0, 0}, {0.01, 0, 0}, {0.01, 0.01, 0});
+       face(w, {0, 0, 0}, {0.005, 0.005, 0}, {0.01, 0.01, 0});
+     },
+     "wall[0].face[1]: is degenerate: its corners i, j, k lie on one line (or coincide)"},
+    {"FacesWithExtent",
+     [](auto& c) { face(*c.mutable_wall(0), {0, 0, 0}, {0.01, 0, 0}, {0.01, 0.01, 0}); },
+     "wall[0].h2: must be left out for a wall of faces"},
+    {"FacesAcrossTheFrame",
+     [](auto& c) {
+       auto& w = *c.mutable_wall(0);
+       w.clear_h1(), w.clear_h2(), w.clear_k1(), w.clear_k2();
+       face(w, {0, 0, 0}, {0, 0, 0.01}, {0, 0.01, 0.01});
+     },
+     "wall[0].face: span nothing along direction or direction2"},
     {"ParticleFileWithoutPath3d", [](auto& c) { c.mutable_particles(3)->mutable_csv_file()->clear_path(); },
      "particles[3].csv_file.path: must name a CSV file of particles (lines of x,y,z,r)"},
 };
 
 INSTANTIATE_TEST_SUITE_P(CaseValidation, CaseMistake3d, ::testing::ValuesIn(kMistakes3d),
                          [](const auto& test) { return test.param.name; });
+
+TEST(CaseValidation, EllipsoidsAndFacesHaveNoProblems) {
+  EXPECT_EQ(test::problem_text(load_case_file(test::data_path("ellipsoids.case.txtpb")).message), "");
+}
+
+TEST(CaseValidation, AnEllipsoidIn2dIsRefused) {
+  proto::Case c = load_case_file(test::data_path("superquadrics.case.txtpb")).message;
+  proto::Particle& p = *c.mutable_particles(0)->mutable_particle();
+  p.clear_superquadric();
+  ellipsoid(p, 0.05, 0.03, 0.02);
+  EXPECT_THAT(test::problem_text(c), HasSubstr("particles[0].particle.ellipsoid: is for 3D cases only (this case is "
+                                               "2D); set dimension: 3, or superquadric for a 2D shape"));
+}
+
+TEST(CaseValidation, FacesIn2dAreRefused) {
+  proto::Case c = test::valid_case();
+  face(*c.mutable_wall(0), {0, 0, 0}, {1, 0, 0}, {1, 1, 0});
+  EXPECT_THAT(test::problem_text(c), HasSubstr("wall[0].face: is for 3D cases only (this case is 2D)"));
+}
 
 TEST(CaseValidation, TheValid3dCaseHasNoProblems) { EXPECT_EQ(test::problem_text(test::valid_3d_case().message), ""); }
 

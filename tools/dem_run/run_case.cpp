@@ -28,22 +28,22 @@ void run_definition(io::CaseDefinitionT<Dim>& definition, const io::CaseSource& 
   if (options.threads) definition.world.threads = *options.threads;
 
   BasicWorld<Dim> world(definition.world);
-  RunRecorder<Dim> recorder(options.output_directory, definition.output);
+  RunRecorder<Dim> recorder(options.output_directory, definition.output, world);
   ProgressLine progress(!options.quiet && isatty(fileno(stderr)) == 1);
   const bool summary = !options.quiet;
   if (summary) print_case_header(std::cout, definition, world);
 
-  recorder.record(world);
+  recorder.record(world, 0);
   const auto stage_count = static_cast<int>(definition.stages.size());
   for (int i = 0; i < stage_count; ++i) {
     const StageDefT<Dim>& stage = definition.stages[i];
     const std::uint64_t start = world.cycle_count();
     const StageResult result = run_stage(world, stage, definition.output.interval, [&](const BasicWorld<Dim>& w) {
-      recorder.record(w);
+      recorder.record(w, i);
       progress.show(i, stage_count, stage, w.cycle_count() - start, w);
       return true;
     });
-    recorder.record(world);
+    recorder.record(world, i);
     progress.clear();
     if (summary) print_stage_result(std::cout, i, stage_count, stage, result);
   }

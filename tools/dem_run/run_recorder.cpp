@@ -5,17 +5,24 @@
 namespace dem::run {
 
 template <int Dim>
-RunRecorder<Dim>::RunRecorder(const std::filesystem::path& directory, const io::OutputSettings& output)
+RunRecorder<Dim>::RunRecorder(const std::filesystem::path& directory, const io::OutputSettings& output,
+                              const BasicWorld<Dim>& world)
     : directory_(directory), contacts_file_(output.contacts_file), walls_(directory), assembly_(directory) {
   files_ = {walls_.path(), assembly_.path()};
   if (!output.probes.empty()) {
     probes_.emplace(directory, output.probes);
     files_.push_back(probes_->path());
   }
+  if (output.compression) {
+    compression_.emplace(*output.compression);
+    compression_csv_.emplace(directory, world.wall(output.compression->loading_plate).name,
+                             world.wall(output.compression->bottom_plate).name);
+  }
 }
 
 template <int Dim>
-void RunRecorder<Dim>::record(const BasicWorld<Dim>& world) {
+void RunRecorder<Dim>::record(const BasicWorld<Dim>& world, int stage) {
+  if (compression_) io::record_compression(*compression_, *compression_csv_, world, stage);
   if (last_cycle_ == world.cycle_count()) return;
   last_cycle_ = world.cycle_count();
   walls_.write(world);
@@ -40,6 +47,10 @@ void RunRecorder<Dim>::finish(const BasicWorld<Dim>& world) {
   }
   io::write_particles_csv(directory_, world);
   files_.push_back(directory_ / "particles.csv");
+  if (compression_) {
+    compression_csv_->write_results(compression_->results(world));
+    for (const auto& file : compression_csv_->files()) files_.push_back(file);
+  }
 }
 
 template class RunRecorder<2>;

@@ -1,6 +1,7 @@
 // The CSV tables of one run: the time series (walls, assembly, probes) as the
 // run goes, and the contact and particle snapshots at its end, with the
-// columns of the run's dimension.
+// columns of the run's dimension; and the plate loading analyses when the
+// case asks for them (output.compression).
 #pragma once
 
 #include <cstdint>
@@ -9,6 +10,8 @@
 #include <vector>
 
 #include "dem/io/case_definition.h"
+#include "dem/io/compression_analysis.h"
+#include "dem/io/compression_csv.h"
 #include "dem/io/csv_writers.h"
 #include "dem/world.h"
 
@@ -18,14 +21,16 @@ template <int Dim>
 class RunRecorder {
  public:
   // Creates the directory and the time-series files (probes.csv only when
-  // the case has probes).
-  RunRecorder(const std::filesystem::path& directory, const io::OutputSettings& output);
+  // the case has probes; the compression files only when it asks for them).
+  RunRecorder(const std::filesystem::path& directory, const io::OutputSettings& output, const BasicWorld<Dim>& world);
 
   // Writes a row for the world's current cycle unless one was written
-  // already, so a stage's last cycle and the next stage's first are one row.
-  void record(const BasicWorld<Dim>& world);
+  // already, so a stage's last cycle and the next stage's first are one
+  // row; `stage` is the index of the stage running.
+  void record(const BasicWorld<Dim>& world, int stage);
 
-  // Writes contacts.csv (unless the case turned it off) and particles.csv.
+  // Writes contacts.csv (unless the case turned it off), particles.csv and
+  // the compression summaries.
   void finish(const BasicWorld<Dim>& world);
 
   // Every file written so far, for the summary.
@@ -37,6 +42,8 @@ class RunRecorder {
   io::WallsCsvT<Dim> walls_;
   io::AssemblyCsv assembly_;
   std::optional<io::ProbesCsv> probes_;
+  std::optional<io::CompressionAnalysisT<Dim>> compression_;
+  std::optional<io::CompressionCsvT<Dim>> compression_csv_;
   std::optional<std::uint64_t> last_cycle_;
   std::vector<std::filesystem::path> files_;
   bool warned_time_step_ = false;

@@ -16,13 +16,23 @@ std::string brief(double value) {
 }
 
 bool has_condition(const StopConditions& until) {
-  return until.kinetic_energy_below || until.out_of_balance_below || until.servo_tolerance;
+  return until.kinetic_energy_below || until.out_of_balance_below || until.servo_tolerance ||
+         until.wall_stress_above || until.wall_settlement_above;
 }
 
-// What the particles are, for the header line.
+// What the particles are, for the header line (a world's particles are
+// all round or all shaped).
 template <int Dim>
 const char* particle_kind(const WorldDefT<Dim>& world) {
-  if (Dim == 3) return "spheres";
+  const bool shaped = !world.particles.empty() && [&] {
+    if constexpr (Dim == 3) {
+      return world.particles.front().shape.ellipsoid();
+    } else {
+      return world.particles.front().shape.superquadric();
+    }
+  }();
+  if (Dim == 3) return shaped ? "ellipsoids" : "spheres";
+  if (shaped) return "superquadrics";
   return world.planar_particle == PlanarParticle::kSphere ? "spheres in a plane" : "discs";
 }
 

@@ -5,6 +5,8 @@
 //   dem_validate restitution --out DIR      (Miyata et al. 2002, eq. 17)
 //   dem_validate mindlin-loading --out DIR  (Randall 1989, 5.2)
 //   dem_validate box-settle --out DIR       (3D settling: weight on the floor, energy budget)
+//   dem_validate miyata-compression --case FILE --out DIR
+//                                           (Miyata et al. 2002, 3.2-3.3: plate loading, Figs. 26-37)
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -13,6 +15,7 @@
 #include <filesystem>
 
 #include "contact_mechanics.h"
+#include "miyata_compression.h"
 #include "nine_disc.h"
 
 namespace {
@@ -55,6 +58,14 @@ int main(int argc, char** argv) {
   auto* box = app.add_subcommand("box-settle", "spheres settle in a 3D box: weight on the floor, energy budget");
   for (auto* sub : {hertz, oblique, restitution, mindlin, box}) sub->add_option("--out", out, "directory for the CSV files");
   box->add_option("--cases", cases, "directory holding cases/validation")->check(CLI::ExistingDirectory);
+  std::filesystem::path miyata_case;
+  auto* miyata = app.add_subcommand("miyata-compression",
+                                    "a plate loading case of Miyata et al. (2002) 3.2-3.3 (cases/miyata): three "
+                                    "states, plate contacts, force distribution, stress drops");
+  miyata->add_option("--case", miyata_case, "the case file (it must set output.compression)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  miyata->add_option("--out", out, "directory for the analyses' CSV files and miyata_summary.csv");
   CLI11_PARSE(app, argc, argv);
   try {
     if (*hertz) dem::validation::report_hertz_impact(out);
@@ -62,6 +73,13 @@ int main(int argc, char** argv) {
     if (*restitution) dem::validation::report_restitution(out);
     if (*mindlin) dem::validation::report_mindlin_loading(out);
     if (*box) dem::validation::report_box_settle(cases / "validation" / "box_settle.case.txtpb", out);
+    if (*miyata) {
+      const dem::validation::MiyataRun run = dem::validation::run_miyata_compression(miyata_case, out);
+      const dem::validation::MiyataFigures figures = dem::validation::miyata_figures(run);
+      dem::validation::print_miyata_report(stdout, run, figures);
+      dem::validation::write_miyata_summary(out, run, figures);
+      std::printf("wrote the analyses and miyata_summary.csv to %s\n", out.c_str());
+    }
     if (*nine) {
       const auto compression = dem::validation::run_compression(cases / "ball");
       const auto distortion = dem::validation::run_distortion(cases / "ball");

@@ -3,12 +3,14 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
 #include "dem/definitions.h"
 #include "dem/ids.h"
+#include "dem/io/compression_settings.h"
 #include "dem/programme.h"
 
 namespace dem::io {
@@ -24,6 +26,7 @@ struct OutputSettings {
   std::uint64_t interval = 100;  // cycles between rows of the time series
   bool contacts_file = true;     // write contacts.csv at the end
   std::vector<Probe> probes;
+  std::optional<CompressionSettings> compression;  // the plate loading analyses, when asked for
 };
 
 // Written once over the dimension, like the engine's definitions: the 2D

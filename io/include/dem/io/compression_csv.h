@@ -1,0 +1,92 @@
+// The plate loading analyses as CSV files (output.compression; Miyata et
+// al. 2002, 3.2-3.3), beside a run's other tables (csv_file.h for number
+// formats; docs/CASES.md describes every column):
+//
+// As the loading goes:
+//   compression.csv       stage,cycle,time,settlement,stress,loading_contacts,
+//                         bottom_stress,bottom_contacts,contact_ratio
+//                         one row per output interval from the loading stage
+//                         on (Figs. 26, 29, 32, 33); stresses in Pa,
+//                         settlement in m; contact_ratio = loading_contacts /
+//                         bottom_contacts (0 while the bottom has none).
+//   plate_contacts.csv    2D: snapshot,target_stress,cycle,stress,plate,
+//                             particle,x,y,normal_force,shear_force,f,
+//                             formed_cycle,formed_in
+//                         3D: the same with z after y
+//                         every contact on both plates at each snapshot
+//                         stress (Fig. 34 and the force distribution's);
+//                         f = normal_force over the plate's mean at that
+//                         snapshot; formed_in the state the contact formed in.
+// At the end:
+//   compression_states.csv  state,first_cycle,samples,stress_from,stress_to,
+//                         settlement_from,settlement_to,secant_stiffness,
+//                         tangent_stiffness,r_squared,loading_contacts_from,
+//                         loading_contacts_to,contact_rate
+//   stress_drops.csv      state,peak_cycle,trough_cycle,peak_settlement,
+//                         peak_stress,trough_stress,relative_drop
+//   load_by_state.csv     plate,state,contacts,contact_share,load,
+//                         load_share,stress   (Fig. 30)
+//   force_distribution.csv  plate,f_low,f_high,contacts,
+//                         probability_density,load_share,load_density,
+//                         q_model,mueth       (Figs. 35 and 37)
+//   force_tail.csv        plate,snapshots,contacts,mean_force,tail_from,
+//                         tail_contacts,decay_rate,decay_rate_error,
+//                         excess_cv,q_model_decay_rate,mueth_decay_rate
+// The last two only when the case asks for the force distribution.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "dem/io/compression_analysis.h"
+#include "dem/io/csv_file.h"
+
+namespace dem::io {
+
+// The seed's q-model (Miyata eq. 62) has N = 3 neighbours.
+inline constexpr int kQModelNeighbours = 3;
+
+template <int Dim>
+class CompressionCsvT {
+ public:
+  // Creates compression.csv and plate_contacts.csv; the plates' names label the rows.
+  CompressionCsvT(const std::filesystem::path& directory, std::string loading_plate, std::string bottom_plate);
+
+  void write_sample(const CompressionSample& sample);
+  // `cycles` as known when the snapshot was taken: enough for the contacts
+  // formed by then.
+  void write_snapshot(const PlateSnapshotT<Dim>& snapshot, const StateCycles& cycles);
+  // The summaries at the end of the run.
+  void write_results(const CompressionResults& results);
+
+  // Every file written so far.
+  const std::vector<std::filesystem::path>& files() const { return files_; }
+
+ private:
+  void write_plate_rows(const PlateSnapshotT<Dim>& snapshot, const std::string& plate,
+                        const std::vector<PlateContactT<Dim>>& contacts, const StateCycles& cycles);
+
+  std::filesystem::path directory_;
+  std::string loading_plate_;
+  std::string bottom_plate_;
+  CsvFile samples_;
+  CsvFile contacts_;
+  std::vector<std::filesystem::path> files_;
+};
+
+// Samples the plates into the analysis and writes what it took now: the
+// row of compression.csv and any snapshots.
+template <int Dim>
+void record_compression(CompressionAnalysisT<Dim>& analysis, CompressionCsvT<Dim>& csv, const BasicWorld<Dim>& world,
+                        int stage);
+
+using CompressionCsv = CompressionCsvT<2>;
+using CompressionCsv3 = CompressionCsvT<3>;
+
+extern template class CompressionCsvT<2>;
+extern template class CompressionCsvT<3>;
+extern template void record_compression(CompressionAnalysisT<2>&, CompressionCsvT<2>&, const BasicWorld<2>&, int);
+extern template void record_compression(CompressionAnalysisT<3>&, CompressionCsvT<3>&, const BasicWorld<3>&, int);
+
+}  // namespace dem::io

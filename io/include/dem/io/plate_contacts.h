@@ -1,0 +1,58 @@
+// What a plate carries (Miyata et al. 2002, 3.2-3.3): its stress and
+// settlement, the contacts on it with their positions and normal forces
+// (Fig. 34), and the share of its load carried by the contacts formed in
+// each state of the loading (Fig. 30). Functions over the engine's public
+// measures and contact records, in 2D and 3D.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "dem/io/loading_states.h"
+#include "dem/measures.h"
+#include "dem/world.h"
+
+namespace dem::io {
+
+template <int Dim>
+struct PlateContactT {
+  ParticleId particle = kInvalidId;
+  Vec<Dim> point = Vec<Dim>::Zero();  // m
+  double normal_force = 0.0;          // N: the load the contact puts on the plate (spring part, as contacts.csv)
+  double shear_force = 0.0;           // N: signed in 2D, the magnitude in 3D
+  std::uint64_t formed_cycle = 0;     // the cycle it began touching
+};
+
+// The touching contacts on one wall, in the engine's order.
+template <int Dim>
+std::vector<PlateContactT<Dim>> plate_contacts(std::span<const ContactRecordT<Dim>> contacts, WallId plate);
+
+template <int Dim>
+std::vector<double> normal_forces(std::span<const PlateContactT<Dim>> contacts);
+
+// A plate's normal force, its stress (over World::wall_area) and its
+// settlement (World::wall_settlement).
+struct PlateReading {
+  double normal_force = 0.0;  // N
+  double stress = 0.0;        // Pa
+  double settlement = 0.0;    // m
+  int contacts = 0;
+};
+
+template <int Dim>
+PlateReading read_plate(const BasicWorld<Dim>& world, const std::vector<WallMeasureT<Dim>>& measures, WallId plate);
+
+// The contacts on a plate formed in one state, and the normal force they carry.
+struct StateLoad {
+  LoadingState state = LoadingState::kInitial;
+  int contacts = 0;
+  double load = 0.0;  // N
+};
+
+// Miyata Fig. 30: the contacts grouped by the state they formed in.
+template <int Dim>
+std::array<StateLoad, 3> load_by_state(std::span<const PlateContactT<Dim>> contacts, const StateCycles& cycles);
+
+}  // namespace dem::io

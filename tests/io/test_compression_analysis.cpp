@@ -1,0 +1,253 @@
+// The plate loading analyses (Miyata et al. 2002, 3.2-3.3) on a row of
+// five discs of three heights pressed by a plate: the contacts on the plate
+// form in a known order, at known stresses.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <numbers>
+#include <numeric>
+#include <string>
+
+#include "dem/io/compression_analysis.h"
+#include "dem/io/compression_csv.h"
+#include "dem/programme.h"
+#include "io_test_support.h"
+
+namespace dem::io {
+namespace {
+
+// Discs of radius 0.1, 0.099, 0.1, 0.098, 0.1 m resting on the floor under
+// gravity, k = 1e6 N/m: the plate (1.2 m long) meets the three tallest
+// first; 2 mm later, at 3 x 5e5 N/m x 2 mm / 1.2 m = 2.5 kPa, the fourth;
+// at 5.8 kPa the last.
+WorldDef row_of_discs() {
+  WorldDef def;
+  def.materials.push_back({"disc", 1000, 0.5, 0});
+  ContactModelDef model;
+  model.linear = {1e6, 1e6};
+  def.contact_models.push_back(model);
+  const double radii[] = {0.1, 0.099, 0.1, 0.098, 0.1};
+  for (int i = 0; i < 5; ++i) {
+    ParticleDef disc;
+    // At rest on the floor: pressed into it by their weight.
+    const double weight = 1000 * std::numbers::pi * radii[i] * radii[i] * 9.81;
+    disc.position = {0.1 + 0.2 * i, radii[i] - weight / 1e6};
+    disc.radius = radii[i];
+    def.particles.push_back(disc);
+  }
+  def.walls.push_back(WallDef{"bottom", {0.5, 0.0}, {1.0, 0.0}, -0.6, 0.6, 0, {}});
+  def.walls.push_back(WallDef{"top", {0.5, 1.0}, {-1.0, 0.0}, -0.6, 0.6, 0, {}});
+  def.gravity = {0.0, -9.81};
+  // Local damping stills the discs without touching the contact forces,
+  // so the plate's force is the sum of its springs'.
+  def.damping.local_alpha = 0.7;
+  def.fixed_time_step = 1e-4;
+  def.threads = 1;
+  return def;
+}
+
+CompressionSettings settings() {
+  CompressionSettings s;
+  s.loading_plate = 1;
+  s.bottom_plate = 0;
+  s.loading_stage = 1;
+  s.transition_stress = 2000;
+  s.final_stress = 5000;
+  s.contacts_at_stress = {500, 8000};
+  s.force_distribution = ForceDistributionSettings{7000, 8500, 4, 0.25, 1.0};
+  return s;
+}
+
+class CompressionAnalysisTest : public ::testing::Test {
+ protected:
+  // A first stage of 10 cycles the analyses skip, then the plate placed
+  // 1 cm above the discs and lowered at 0.1 m/s, sampled every 10 cycles.
+  void run() {
+    StageDef rest;
+    rest.cycles = 10;
+    run_stage(world_, rest, 5, [&](const World& w) { return analysis_.add(w, 0), true; });
+    StageDef load;
+    load.place_wall = PlaceWallDef{1, 0.01};
+    load.wall_motions = {{1, WallMotion{{0.0, -0.1}, 0.0, {}}}};
+    load.cycles = 1700;
+    run_stage(world_, load, 10, [&](const World& w) {
+      for (const PlateSnapshot* snapshot : analysis_.add(w, 1)) taken_.push_back(snapshot->index);
+      return true;
+    });
+  }
+
+  using PlateSnapshot = PlateSnapshotT<2>;
+  World world_{row_of_discs()};
+  CompressionAnalysis analysis_{settings()};
+  std::vector<int> taken_;
+};
+
+TEST_F(CompressionAnalysisTest, SamplesThePlatesFromTheLoadingStageOn) {
+  run();
+  const std::vector<CompressionSample>& samples = analysis_.samples();
+  ASSERT_EQ(samples.size(), 170u);
+  EXPECT_EQ(samples.front().stage, 1);
+  EXPECT_EQ(samples.front().cycle, 20u);
+  EXPECT_NEAR(samples.front().settlement, 0.1 * 10 * 1e-4, 1e-12);
+  EXPECT_EQ(samples.front().loading_contacts, 0);
+  EXPECT_EQ(samples.front().bottom_contacts, 5);
+  EXPECT_EQ(samples.back().loading_contacts, 5);
+  // The plate's stress is its force over its length x unit depth.
+  const WallMeasure top = world_.wall_measures()[1];
+  EXPECT_DOUBLE_EQ(samples.back().stress, top.normal_force / 1.2);
+}
+
+TEST_F(CompressionAnalysisTest, ContactsFormInTheirStates) {
+  run();
+  const CompressionResults r = analysis_.results(world_);
+  ASSERT_TRUE(r.state_cycles.transition && r.state_cycles.final);
+  const auto& top = r.load_by_state[0];
+  EXPECT_EQ(top[0].contacts, 3);
+  EXPECT_EQ(top[1].contacts, 1);
+  EXPECT_EQ(top[2].contacts, 1);
+  // Miyata Fig. 30: the loads of the three groups add up to the plate's.
+  const double load = top[0].load + top[1].load + top[2].load;
+  EXPECT_NEAR(load, world_.wall_measures()[1].normal_force, 1e-9 * load);
+  EXPECT_GT(top[0].load / load, 0.6);  // the first contacts carry the most
+  // The bottom's contacts formed before the loading began.
+  EXPECT_EQ(r.load_by_state[1][0].contacts, 5);
+  EXPECT_EQ(r.load_by_state[1][1].contacts + r.load_by_state[1][2].contacts, 0);
+}
+
+TEST_F(CompressionAnalysisTest, SnapshotsAtTheirStresses) {
+  run();
+  const auto& snapshots = analysis_.snapshots();
+  // 500 Pa; 7000 to 8500 Pa in four, whose 8000 Pa serves the contacts too.
+  ASSERT_EQ(snapshots.size(), 5u);
+  EXPECT_EQ(taken_, (std::vector<int>{0, 1, 2, 3, 4}));
+  EXPECT_EQ(snapshots[0].target_stress, 500);
+  EXPECT_GE(snapshots[0].sample.stress, 500);
+  EXPECT_EQ(snapshots[0].loading.size(), 3u);
+  EXPECT_EQ(snapshots[0].bottom.size(), 5u);
+  EXPECT_FALSE(snapshots[0].for_distribution);
+  for (std::size_t k = 1; k < snapshots.size(); ++k) {
+    EXPECT_GE(snapshots[k].sample.stress, snapshots[k].target_stress);
+    EXPECT_EQ(snapshots[k].loading.size(), 5u);
+  }
+  EXPECT_EQ(std::count_if(snapshots.begin(), snapshots.end(), [](const auto& s) { return s.for_distribution; }), 4);
+}
+
+TEST_F(CompressionAnalysisTest, ForceDistributionPoolsTheSnapshots) {
+  run();
+  const CompressionResults r = analysis_.results(world_);
+  ASSERT_TRUE(r.force_distribution);
+  for (const PlateForceDistribution& d : *r.force_distribution) {
+    EXPECT_EQ(d.snapshots, 4);
+    EXPECT_EQ(d.contacts, 20);
+    EXPECT_NEAR(std::accumulate(d.f.begin(), d.f.end(), 0.0) / d.contacts, 1.0, 1e-12);
+    int counted = 0;
+    for (const ForceClass& c : d.classes) counted += c.contacts;
+    EXPECT_EQ(counted, 20);
+  }
+  // The three tall discs carry more than the mean, the two short ones less.
+  EXPECT_EQ((*r.force_distribution)[0].tail.contacts, 12);
+}
+
+TEST_F(CompressionAnalysisTest, WritesTheFilesWithTheirColumns) {
+  const std::filesystem::path directory = test::fresh_directory("compression_csv");
+  {
+    CompressionCsv csv(directory, "top", "bottom");
+    run();
+    for (const CompressionSample& s : analysis_.samples()) csv.write_sample(s);
+    for (const PlateSnapshot& s : analysis_.snapshots()) csv.write_snapshot(s, {});
+    csv.write_results(analysis_.results(world_));
+    EXPECT_EQ(csv.files().size(), 7u);
+  }
+  const auto lines = [&](const std::string& name) {
+    std::ifstream in(directory / name);
+    std::vector<std::string> all;
+    for (std::string line; std::getline(in, line);) all.push_back(line);
+    return all;
+  };
+  const auto samples = lines("compression.csv");
+  ASSERT_EQ(samples.size(), 171u);
+  EXPECT_EQ(samples[0],
+            "stage,cycle,time,settlement,stress,loading_contacts,bottom_stress,bottom_contacts,contact_ratio");
+  EXPECT_EQ(samples.back().substr(samples.back().rfind(',') + 1), "1");  // 5 contacts on each plate
+  EXPECT_EQ(lines("plate_contacts.csv").size(), 1u + 3 + 5 + 4 * (5 + 5));
+  EXPECT_EQ(lines("compression_states.csv").size(), 4u);
+  EXPECT_EQ(lines("load_by_state.csv").size(), 7u);
+  EXPECT_EQ(lines("force_tail.csv")[0],
+            "plate,snapshots,contacts,mean_force,tail_from,tail_contacts,decay_rate,decay_rate_error,excess_cv,"
+            "q_model_decay_rate,mueth_decay_rate");
+  EXPECT_EQ(lines("force_distribution.csv")[0],
+            "plate,f_low,f_high,contacts,probability_density,load_share,load_density,q_model,mueth");
+  EXPECT_EQ(lines("stress_drops.csv").size(), 1u);  // the stress only rises
+  std::filesystem::remove_all(directory);
+}
+
+// In 3D (Miyata 3.3): four ellipsoids resting on a floor, a plate placed
+// 5 mm above them and lowered until it carries 1 kPa over its 1.2 m x 1 m.
+// The plate's contacts lie on its face, and the files carry z.
+TEST(CompressionAnalysis3d, EllipsoidsUnderAPlate) {
+  WorldDef3 def;
+  def.materials.push_back({"rock", 2600, 0.5, 0, 70e9, 0.2});
+  ContactModelDef model;
+  model.law = ContactLaw::kHertzLinearTangential;
+  model.hertz.restitution = 0.5;
+  def.contact_models.push_back(model);
+  for (int i = 0; i < 4; ++i) {
+    ParticleDef3 p;
+    p.position = {0.15 + 0.3 * i, 0.5, 0.05};
+    p.shape.axes = {0.1, 0.07, 0.05};
+    def.particles.push_back(p);
+  }
+  WallDef3 bottom;
+  bottom.name = "bottom";
+  bottom.h2 = 1.2;
+  WallDef3 top = bottom;
+  top.name = "top";
+  top.point = {0.0, 1.0, 0.5};
+  top.direction2 = {0.0, -1.0, 0.0};  // the normal, direction x direction2, faces down at the particles
+  def.walls = {bottom, top};
+  def.gravity = {0.0, 0.0, -9.81};
+  def.damping.local_alpha = 0.7;
+  def.threads = 1;
+  World3 world(def);
+
+  CompressionSettings s;
+  s.loading_plate = 1;
+  s.bottom_plate = 0;
+  s.loading_stage = 1;
+  s.contacts_at_stress = {500};
+  CompressionAnalysis3 analysis(s);
+  const std::filesystem::path directory = test::fresh_directory("compression_csv_3d");
+  {
+    CompressionCsv3 csv(directory, "top", "bottom");
+    StageDef3 rest;
+    rest.cycles = 2000;
+    run_stage(world, rest, 100, [&](const World3& w) { return record_compression(analysis, csv, w, 0), true; });
+    StageDef3 load;
+    load.place_wall = PlaceWallDef{1, 0.005};
+    load.wall_motions = {{1, WallMotion3{{0.0, 0.0, -0.05}, Vec3::Zero(), {}}}};
+    load.cycles = 200000;
+    load.until.wall_stress_above = WallThreshold{1, 1000};
+    run_stage(world, load, 10, [&](const World3& w) { return record_compression(analysis, csv, w, 1), true; });
+    record_compression(analysis, csv, world, 1);
+    csv.write_results(analysis.results(world));
+  }
+  ASSERT_FALSE(analysis.samples().empty());
+  EXPECT_EQ(analysis.samples().front().stage, 1);
+  EXPECT_GE(analysis.samples().back().stress, 1000);
+  EXPECT_EQ(analysis.samples().back().loading_contacts, 4);
+  EXPECT_EQ(analysis.samples().back().bottom_contacts, 4);
+  ASSERT_EQ(analysis.snapshots().size(), 1u);
+  const double plate_z = world.wall(1).point.z();
+  for (const PlateContactT<3>& c : analysis.snapshots()[0].loading) EXPECT_NEAR(c.point.z(), plate_z, 1e-3);
+  std::ifstream in(directory / "plate_contacts.csv");
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header,
+            "snapshot,target_stress,cycle,stress,plate,particle,x,y,z,normal_force,shear_force,f,formed_cycle,"
+            "formed_in");
+  std::filesystem::remove_all(directory);
+}
+
+}  // namespace
+}  // namespace dem::io
