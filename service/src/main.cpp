@@ -1,7 +1,12 @@
 // dem_server: one DEM simulation as a DDS service (docs/SERVICE.md).
 //   dem_server --name NAME --domain ID [--case FILE] [--out DIR] ...
-// Exit codes: 0 after a shutdown command, SIGINT or SIGTERM; 1 when DDS or
-// the output fails; 2 bad arguments; 3 the initial case is invalid.
+//   dem_server --case FILE --run-and-exit ...   (one-shot: the case's programme)
+// Options may also come from the environment (DEM_SERVER, DEM_DOMAIN,
+// DEM_CASE, ...: a container or a batch script configures it that way).
+// Exit codes: 0 after a shutdown command, SIGINT or SIGTERM, or a one-shot
+// programme that ran to its end; 1 when DDS or the output fails, or the
+// one-shot run failed; 2 bad arguments; 3 the initial case is invalid;
+// 4 a one-shot programme stopped before its end.
 #include <signal.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
@@ -20,6 +25,20 @@ namespace {
 constexpr int kFailure = 1;
 constexpr int kBadArguments = 2;
 constexpr int kBadCase = 3;
+constexpr int kStopped = 4;
+
+int exit_code(dem::service::ProgrammeOutcome outcome) {
+  switch (outcome) {
+    case dem::service::ProgrammeOutcome::kCompleted:
+      return 0;
+    case dem::service::ProgrammeOutcome::kStopped:
+      return kStopped;
+    case dem::service::ProgrammeOutcome::kRunning:
+    case dem::service::ProgrammeOutcome::kFailed:
+      break;
+  }
+  return kFailure;
+}
 
 // SIGINT and SIGTERM are blocked in every thread and collected here with
 // sigwait, so a signal is an ordinary event on an ordinary thread: it asks
@@ -67,26 +86,43 @@ int main(int argc, char** argv) {
   std::string initial_case;
   int threads = -1;
   bool no_csv = false;
-  app.add_option("-n,--name", options.name, "server name; topics are rt/dem/<name>/...")->capture_default_str();
-  app.add_option("-d,--domain", options.domain, "DDS domain id")->capture_default_str()->check(CLI::Range(0, 232));
+  app.add_option("-n,--name", options.name, "server name; topics are rt/dem/<name>/...")
+      ->capture_default_str()
+      ->envname("DEM_SERVER");
+  app.add_option("-d,--domain", options.domain, "DDS domain id")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 232))
+      ->envname("DEM_DOMAIN");
   app.add_option("--dds-config", options.dds_config,
                  "Cyclone DDS configuration (file or URI); default $CYCLONEDDS_URI, else the repository's "
                  "loopback-only config/cyclonedds-loopback.xml");
   app.add_option("--telemetry-cycles", options.telemetry_cycles, "publish telemetry every N cycles (0: off)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->envname("DEM_TELEMETRY_CYCLES");
   app.add_option("--telemetry-seconds", options.telemetry_seconds,
                  "publish telemetry every T seconds of simulated time (0: off)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::NonNegativeNumber)
+      ->envname("DEM_TELEMETRY_SECONDS");
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error or off")
       ->capture_default_str()
-      ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}));
-  app.add_option("--case", initial_case, "a case file to load at start");
+      ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}))
+      ->envname("DEM_LOG_LEVEL");
+  CLI::Option* case_option =
+      app.add_option("--case", initial_case, "a case file to load at start")->envname("DEM_CASE");
   app.add_option("-o,--out", options.output_directory, "output directory: CSV tables per case, and snapshots")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->envname("DEM_OUT");
   app.add_option("-t,--threads", threads, "engine threads, 0 = all cores (default: the case's numerics.threads)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::NonNegativeNumber)
+      ->envname("DEM_THREADS");
   app.add_flag("--no-csv", no_csv, "write no CSV tables");
+  app.add_flag("--run-and-exit", options.run_programme,
+               "one-shot: run the case's loading programme (its stages), publishing telemetry and answering "
+               "commands meanwhile; write the tables and <out>/<case>/final.snapshot (after a failure "
+               "last_good.snapshot) and exit: 0 done, 1 failed, 4 stopped before its end")
+      ->needs(case_option)
+      ->envname("DEM_RUN_AND_EXIT");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -113,6 +149,7 @@ int main(int argc, char** argv) {
     server.start();
     server.wait();
     signals.stop();
+    if (const auto outcome = server.programme_outcome()) return exit_code(*outcome);
   } catch (const dem::service::CommandError& error) {
     spdlog::error("the initial case cannot be loaded:\n{}", error.what());
     return kBadCase;

@@ -21,8 +21,8 @@ OutputRecorder::OutputRecorder(std::filesystem::path output_directory, bool enab
 template <int Dim>
 void OutputRecorder::start(const std::string& case_name, const BasicWorld<Dim>& world) {
   close();
-  if (!enabled_) return;
   directory_ = output_directory_ / directory_name(case_name);
+  if (!enabled_) return;
   try {
     if constexpr (Dim == 2) {
       walls2_ = std::make_unique<io::WallsCsvT<2>>(directory_);
@@ -38,7 +38,8 @@ void OutputRecorder::start(const std::string& case_name, const BasicWorld<Dim>& 
 
 template <int Dim>
 void OutputRecorder::record(const BasicWorld<Dim>& world) {
-  if (!assembly_) return;
+  if (!assembly_ || last_cycle_ == world.cycle_count()) return;
+  last_cycle_ = world.cycle_count();
   try {
     if constexpr (Dim == 2) {
       walls2_->write(world);
@@ -46,6 +47,21 @@ void OutputRecorder::record(const BasicWorld<Dim>& world) {
       walls3_->write(world);
     }
     assembly_->write(world);
+  } catch (const std::exception& error) {
+    fail(error);
+  }
+}
+
+void OutputRecorder::record_stage(std::size_t stage, const std::string& name, const StageResult& result,
+                                  std::uint64_t cycle, double time) {
+  if (!assembly_) return;
+  try {
+    if (!stages_) {
+      stages_ = std::make_unique<io::CsvFile>(directory_, "stages.csv",
+                                              "stage,name,cycles_run,condition_met,cycle,time");
+    }
+    stages_->write_row(stage + 1, name, result.cycles_run, result.condition_met, cycle, time);
+    stages_->flush();
   } catch (const std::exception& error) {
     fail(error);
   }
@@ -66,6 +82,7 @@ void OutputRecorder::finish(const BasicWorld<Dim>& world) {
 
 void OutputRecorder::fail(const std::exception& error) {
   spdlog::error("output recording stopped: {}", error.what());
+  failed_ = true;
   close();
 }
 
@@ -73,6 +90,8 @@ void OutputRecorder::close() {
   walls2_.reset();
   walls3_.reset();
   assembly_.reset();
+  stages_.reset();
+  last_cycle_.reset();
 }
 
 template void OutputRecorder::start(const std::string&, const BasicWorld<2>&);

@@ -14,6 +14,9 @@ ServerOptions checked(ServerOptions options) {
     throw std::invalid_argument("server name \"" + options.name +
                                 "\" is not a ROS 2 name token (a letter, then letters, digits or underscores)");
   }
+  if (options.run_programme && !options.initial_case) {
+    throw std::invalid_argument("a one-shot run (--run-and-exit) needs a case to run (--case FILE)");
+  }
   return options;
 }
 }  // namespace
@@ -41,7 +44,11 @@ void Server::start() {
 }
 
 void Server::engine_main() {
-  runner_.run();
+  if (options_.run_programme) {
+    runner_.run_programme();
+  } else {
+    runner_.run();
+  }
   // No more commands from here on; whatever is queued gets its reply in finish().
   receiver_.stop();
   runner_.finish();

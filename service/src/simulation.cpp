@@ -34,7 +34,8 @@ std::string join(const std::vector<std::string>& lines) {
 template <int Dim>
 Simulation::Prepared prepared_case(const io::CaseDefinitionT<Dim>& definition, const std::string& source) {
   Simulation::Prepared prepared;
-  prepared.world = make_session(BasicWorld<Dim>(definition.world));
+  prepared.world = make_session(BasicWorld<Dim>(definition.world), definition.stages);
+  prepared.output_interval = definition.output.interval;
   prepared.case_name = definition.name.empty() ? std::string("unnamed") : definition.name;
   prepared.description = definition.description;
   prepared.contact_models = definition.world.contact_models;
@@ -53,6 +54,7 @@ std::string Simulation::install(Prepared prepared) {
   case_name_ = std::move(prepared.case_name);
   description_ = std::move(prepared.description);
   contact_models_ = std::move(prepared.contact_models);
+  output_interval_ = prepared.output_interval;
   return prepared.message;
 }
 
@@ -122,7 +124,7 @@ Simulation::Prepared Simulation::prepare_snapshot(std::string_view bytes, const 
 }
 
 std::string Simulation::snapshot_bytes() const {
-  return world().snapshot_bytes(io::SnapshotInfo{case_name_, description_});
+  return world().snapshot_bytes(snapshot_info());
 }
 
 WallId Simulation::find_wall(const std::string& name, std::int32_t id) const {

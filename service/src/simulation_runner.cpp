@@ -41,7 +41,12 @@ SimulationRunner::SimulationRunner(const ServerOptions& options, CommandQueue& q
 void SimulationRunner::load_initial_case(const std::filesystem::path& path) {
   protocol::LoadCaseArgs args;
   args.path = path.string();
-  const std::string message = install(simulation_.prepare_case(args));
+  Simulation::Prepared prepared = simulation_.prepare_case(args);
+  if (options_.run_programme && prepared.world->stage_count() == 0) {
+    throw CommandError(ReplyStatus::kInvalidCase,
+                       path.string() + ": the case defines no stages, so --run-and-exit has nothing to run");
+  }
+  const std::string message = install(std::move(prepared));
   spdlog::info("{}", message);
 }
 
@@ -82,8 +87,10 @@ void SimulationRunner::finish() {
     simulation_.world().finish_tables(recorder_);
   }
   state_ = ServerState::kShutdown;
-  message_ = simulation_.loaded() ? "shut down at cycle " + std::to_string(simulation_.world().cycle_count())
-                                  : "shut down";
+  // A one-shot server's last word keeps how its programme ended.
+  message_ = (programme_ ? message_ + "; " : std::string()) +
+             (simulation_.loaded() ? "shut down at cycle " + std::to_string(simulation_.world().cycle_count())
+                                   : "shut down");
   publish_status();
   using namespace std::chrono_literals;
   replies_.flush(2s);
@@ -170,6 +177,11 @@ std::string SimulationRunner::install(Simulation::Prepared prepared) {
 }
 
 std::string SimulationRunner::stop() {
+  if (programme_ && programme_->outcome() == ProgrammeOutcome::kRunning) {
+    programme_->stop("stopped by request");
+    return "stopping the programme at cycle " + std::to_string(simulation_.world().cycle_count()) + " in " +
+           stage_label(programme_->stage());
+  }
   if (!active_) return "nothing was running";
   const std::string what = std::string(protocol::to_string(*protocol::command_kind(active_->command().command.kind)));
   const std::uint64_t done = active_->done();
@@ -382,6 +394,14 @@ protocol::Status SimulationRunner::status() const {
     s.command_cycles_done = active_->done();
     s.command_cycles_total = active_->total();
     s.progress = active_->total() > 0 ? static_cast<double>(active_->done()) / static_cast<double>(active_->total()) : 0.0;
+  } else if (programme_ && state_ == ServerState::kRunning) {
+    // A one-shot run's programme shows as a running command of no client.
+    s.command = "programme";
+    s.command_cycles_done = programme_->done(simulation_.world());
+    s.command_cycles_total = programme_->total();
+    s.progress = s.command_cycles_total > 0
+                     ? static_cast<double>(s.command_cycles_done) / static_cast<double>(s.command_cycles_total)
+                     : 0.0;
   }
   return s;
 }
@@ -405,7 +425,8 @@ void SimulationRunner::publish_telemetry() {
   stats.time = plates.time;
   stats.stamp = plates.stamp;
   telemetry_.publish(plates, stats);
-  world.record_tables(recorder_);
+  // A one-shot run writes its rows at the case's output interval instead.
+  if (!programme_) world.record_tables(recorder_);
   schedule_.published(world.cycle_count(), world.time());
   last_telemetry_cycle_ = world.cycle_count();
   telemetry_published_ = true;

@@ -25,9 +25,21 @@ double spin_of(const protocol::Vector3& w, std::integral_constant<int, 2>, const
 Vec3 spin_of(const protocol::Vector3& w, std::integral_constant<int, 3>, const std::string&) { return {w.x, w.y, w.z}; }
 
 template <int Dim>
+class CheckpointT final : public StateCheckpoint {
+ public:
+  explicit CheckpointT(WorldSnapshotT<Dim> snapshot) : snapshot_(std::move(snapshot)) {}
+  std::uint64_t cycle() const override { return snapshot_.cycle; }
+  std::string bytes(const io::SnapshotInfo& info) const override { return io::serialize_snapshot(snapshot_, info); }
+
+ private:
+  WorldSnapshotT<Dim> snapshot_;
+};
+
+template <int Dim>
 class WorldSessionT final : public WorldSession {
  public:
-  explicit WorldSessionT(BasicWorld<Dim> world) : world_(std::move(world)) {}
+  WorldSessionT(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages)
+      : world_(std::move(world)), stages_(std::move(stages)) {}
 
   std::uint8_t dimension() const override { return Dim; }
   void cycle(std::uint64_t cycles) override { world_.cycle(cycles); }
@@ -76,6 +88,18 @@ class WorldSessionT final : public WorldSession {
   std::string snapshot_bytes(const io::SnapshotInfo& info) const override {
     return io::serialize_snapshot(world_.snapshot(), info);
   }
+  std::unique_ptr<StateCheckpoint> checkpoint() const override {
+    return std::make_unique<CheckpointT<Dim>>(world_.snapshot());
+  }
+
+  std::size_t stage_count() const override { return stages_.size(); }
+  const std::string& stage_name(std::size_t stage) const override { return stages_.at(stage).name; }
+  std::uint64_t stage_cycles(std::size_t stage) const override { return stages_.at(stage).cycles; }
+  StageResult run_stage(std::size_t stage, const std::function<bool()>& between_cycles) override {
+    // An observer interval of one cycle: the caller decides what is due
+    // (rows, telemetry, commands); run_stage alone decides the stage's end.
+    return dem::run_stage(world_, stages_.at(stage), 1, [&](const BasicWorld<Dim>&) { return between_cycles(); });
+  }
 
   void start_tables(OutputRecorder& recorder, const std::string& case_name) const override {
     recorder.start(case_name, world_);
@@ -86,16 +110,17 @@ class WorldSessionT final : public WorldSession {
  private:
   static constexpr std::integral_constant<int, Dim> kDim{};
   BasicWorld<Dim> world_;
+  std::vector<StageDefT<Dim>> stages_;
 };
 
 }  // namespace
 
 template <int Dim>
-std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world) {
-  return std::make_unique<WorldSessionT<Dim>>(std::move(world));
+std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages) {
+  return std::make_unique<WorldSessionT<Dim>>(std::move(world), std::move(stages));
 }
 
-template std::unique_ptr<WorldSession> make_session<2>(BasicWorld<2> world);
-template std::unique_ptr<WorldSession> make_session<3>(BasicWorld<3> world);
+template std::unique_ptr<WorldSession> make_session<2>(BasicWorld<2> world, std::vector<StageDefT<2>> stages);
+template std::unique_ptr<WorldSession> make_session<3>(BasicWorld<3> world, std::vector<StageDefT<3>> stages);
 
 }  // namespace dem::service

@@ -21,7 +21,8 @@ namespace dem::test {
 using namespace std::chrono_literals;
 
 // One domain id per test, distinct across the whole suite by construction.
-// The shell tests (CMakeLists.txt) use 118 and 119.
+// The shell tests (CMakeLists.txt) use 118 and 119; the container test
+// (tests/container) 150 to 153; the Python tests (tests/python) 160 to 179.
 enum Domain : std::uint32_t {
   kDdsTypedRoundTrip = 40,
   kDdsWaitSet,
@@ -60,6 +61,12 @@ enum Domain : std::uint32_t {
   kSnapshotTransfer,
   kExperimentNineDisc = 100,
   kExperimentSignals,
+  kOneShotComplete = 105,
+  kOneShotStop,
+  kOneShotSigterm,
+  kOneShotFailure,
+  kOneShotBadStarts,
+  kOneShotEnvironment,
   kLastDomain
 };
 static_assert(kLastDomain <= 118, "the shell tests use domains 118 and 119");

@@ -22,6 +22,9 @@ struct ServerOptions {
   std::optional<std::filesystem::path> initial_case;          // loaded at start
   std::optional<int> threads;                                 // engine threads; overrides the case's
   bool record_csv = true;  // walls.csv and assembly.csv at the telemetry interval, contacts.csv and particles.csv at the end
+  // One-shot mode (dem_server --case FILE --run-and-exit): run the initial
+  // case's loading programme, write the results and a final snapshot, stop.
+  bool run_programme = false;
   // The engine thread looks at its command queue between chunks of cycles
   // sized to take about this long, so commands are answered within it.
   std::chrono::milliseconds chunk_duration{20};

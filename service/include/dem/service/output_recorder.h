@@ -1,15 +1,22 @@
 // The server's files in its output directory, per loaded case
 // (<output>/<case>/): walls.csv and assembly.csv at the telemetry interval
-// while it runs (the same tables as dem_run, io/csv_writers.h), contacts.csv
-// and particles.csv when the case is replaced or the server stops. A file
-// that cannot be written is logged and recording stops; the simulation goes on.
+// while it runs (the same tables as dem_run, io/csv_writers.h; a one-shot
+// run writes them at the case's output interval), contacts.csv and
+// particles.csv when the case is replaced or the server stops, and
+// stages.csv, a row per stage of a one-shot run's programme. A file that
+// cannot be written is logged and recording stops; the simulation goes on
+// (a one-shot run then fails: failed()).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
+#include "dem/io/csv_file.h"
 #include "dem/io/csv_writers.h"
+#include "dem/programme.h"
 #include "dem/world.h"
 
 namespace dem::service {
@@ -20,10 +27,21 @@ class OutputRecorder {
 
   template <int Dim>
   void start(const std::string& case_name, const BasicWorld<Dim>& world);  // after a load
+  // A row of the time series, unless this cycle has one already (a load
+  // and its first telemetry, a stage's end and the next stage's start).
   template <int Dim>
-  void record(const BasicWorld<Dim>& world);  // at the telemetry interval
+  void record(const BasicWorld<Dim>& world);
+  // A stage of a one-shot run's programme has ended, at `cycle` and `time`.
+  void record_stage(std::size_t stage, const std::string& name, const StageResult& result, std::uint64_t cycle,
+                    double time);
   template <int Dim>
   void finish(const BasicWorld<Dim>& world);  // before a new load and at shutdown
+
+  // <output>/<case>/ of the case loaded last: its tables and a one-shot
+  // run's final snapshot (also when the tables are off).
+  const std::filesystem::path& case_directory() const { return directory_; }
+  // A table could not be written (the error was logged).
+  bool failed() const { return failed_; }
 
  private:
   void fail(const std::exception& error);
@@ -31,10 +49,13 @@ class OutputRecorder {
 
   std::filesystem::path output_directory_;
   bool enabled_;
+  bool failed_ = false;
   std::filesystem::path directory_;
   std::unique_ptr<io::WallsCsvT<2>> walls2_;
   std::unique_ptr<io::WallsCsvT<3>> walls3_;
   std::unique_ptr<io::AssemblyCsv> assembly_;
+  std::unique_ptr<io::CsvFile> stages_;
+  std::optional<std::uint64_t> last_cycle_;
 };
 
 }  // namespace dem::service

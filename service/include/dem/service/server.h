@@ -22,8 +22,9 @@ namespace dem::service {
 class Server {
  public:
   // Creates the DDS entities and loads the initial case, if any; throws
-  // CommandError for a bad case, dds::DdsError when DDS cannot start, and
-  // std::invalid_argument for a server name that is not a ROS 2 name token.
+  // CommandError for a bad case (or a one-shot case without stages),
+  // dds::DdsError when DDS cannot start, and std::invalid_argument for a
+  // server name that is not a ROS 2 name token or a one-shot run without a case.
   explicit Server(ServerOptions options);
   ~Server();  // requests a shutdown and waits for it
   Server(const Server&) = delete;
@@ -33,8 +34,12 @@ class Server {
   // Thread-safe (a signal handler thread, a test): the engine thread
   // finishes its chunk of cycles, answers what is pending and stops.
   void request_shutdown();
-  // Until the engine thread has finished (after a shutdown command or request).
+  // Until the engine thread has finished (after a shutdown command or
+  // request, or a one-shot run's programme).
   void wait();
+  // After wait(): how a one-shot run's programme ended; nothing for a
+  // server that ran commands.
+  std::optional<ProgrammeOutcome> programme_outcome() const { return runner_.programme_outcome(); }
 
   const ServerOptions& options() const { return options_; }
 

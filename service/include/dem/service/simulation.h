@@ -26,6 +26,8 @@ class Simulation {
   WorldSession& world() { return *world_; }
   const std::string& case_name() const { return case_name_; }
   std::uint8_t dimension() const { return loaded() ? world_->dimension() : 0; }
+  // Cycles between rows of the case's time series (its output.interval).
+  std::uint64_t output_interval() const { return output_interval_; }
 
   // A world built and ready to replace the current one.
   struct Prepared {
@@ -33,6 +35,7 @@ class Simulation {
     std::string case_name;
     std::string description;
     std::vector<ContactModelDef> contact_models;
+    std::uint64_t output_interval = 100;  // the case's; a snapshot keeps the default
     std::string message;  // what was loaded, for the reply
   };
   // A case (2D or 3D) from a file the server reads, text or serialized
@@ -45,6 +48,7 @@ class Simulation {
   // Makes a prepared world the simulation; returns its message.
   std::string install(Prepared prepared);
   std::string snapshot_bytes() const;
+  io::SnapshotInfo snapshot_info() const { return {case_name_, description_}; }  // what a snapshot says of the case
 
   std::string set_wall_velocity(const protocol::WallVelocityArgs& args);
   std::string set_wall_servo(const protocol::WallServoArgs& args);
@@ -60,6 +64,7 @@ class Simulation {
   std::string case_name_;
   std::string description_;
   std::vector<ContactModelDef> contact_models_;
+  std::uint64_t output_interval_ = 100;
 };
 
 }  // namespace dem::service

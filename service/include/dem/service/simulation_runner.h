@@ -14,6 +14,7 @@
 #include "dem/service/command_queue.h"
 #include "dem/service/options.h"
 #include "dem/service/output_recorder.h"
+#include "dem/service/programme_run.h"
 #include "dem/service/reply_sender.h"
 #include "dem/service/simulation.h"
 #include "dem/service/telemetry_publisher.h"
@@ -26,12 +27,22 @@ class SimulationRunner {
   SimulationRunner(const ServerOptions& options, CommandQueue& queue, ReplySender& replies,
                    TelemetryPublisher& telemetry);
 
-  // Loads the case given at start; throws CommandError when it cannot.
+  // Loads the case given at start; throws CommandError when it cannot (and
+  // when a one-shot run's case has no stages to run).
   void load_initial_case(const std::filesystem::path& path);
 
   // Runs until a shutdown is requested (signal or command), then returns
   // between two chunks of cycles.
   void run();
+  // The one-shot mode (ServerOptions::run_programme), instead of run(): runs
+  // the loaded case's loading programme stage by stage with the engine's
+  // run_stage, answering commands and publishing telemetry between cycles,
+  // writes its time series at the case's output interval, then the final
+  // snapshot, or after a failure the last good state. Returns when the
+  // programme is over: completed, stopped (stop, shutdown, a signal) or failed.
+  void run_programme();
+  // How the one-shot run ended; nothing when the server ran commands instead.
+  std::optional<ProgrammeOutcome> programme_outcome() const;
   // After run() and once no more commands arrive: stops the running command
   // (a cancelled reply), answers every command still queued (shutting
   // down), publishes the final telemetry and status, writes the end-of-run
@@ -45,6 +56,14 @@ class SimulationRunner {
   void complete_run();
   void end_run(protocol::ReplyStatus status, const std::string& message);
   void fail_run(const std::string& message);
+
+  // The one-shot mode (simulation_runner_programme.cpp).
+  bool between_programme_cycles();
+  bool programme_blew_up();  // fails the programme when the kinetic energy is not finite
+  void record_programme_row();
+  void end_stage(std::size_t stage, const StageResult& result);
+  void end_programme();
+  std::string stage_label(std::size_t stage) const;
 
   std::string install(Simulation::Prepared prepared);
   std::string stop();
@@ -67,6 +86,8 @@ class SimulationRunner {
   TelemetrySchedule schedule_;
   protocol::ServerState state_ = protocol::ServerState::kIdle;
   std::optional<ActiveRun> active_;
+  std::optional<ProgrammeRun> programme_;  // a one-shot run's programme
+  std::chrono::steady_clock::time_point last_poll_{};  // of the queue, during a programme
   std::vector<ReceivedCommand> unanswered_;  // taken from the queue after a shutdown request
   std::string message_ = "started";
   std::uint64_t commands_served_ = 0;

@@ -1,11 +1,14 @@
 // The engine behind the service, whatever its dimension: the one interface
 // the runner and the commands use to step, steer and read a 2D World or a
-// 3D World3. WorldSessionT<Dim> implements it over the engine and the
-// readout functions (engine_readout.h); a call per command or per chunk of
-// cycles, never per particle.
+// 3D World3, and to run the case's loading programme. WorldSessionT<Dim>
+// implements it over the engine and the readout functions
+// (engine_readout.h); a call per command or per chunk of cycles, never per
+// particle (run_stage's callback excepted: it is how a one-shot run stays
+// responsive inside a stage).
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -13,6 +16,7 @@
 #include <vector>
 
 #include "dem/io/snapshot_conversion.h"
+#include "dem/programme.h"
 #include "dem/protocol/messages.h"
 #include "dem/service/engine_readout.h"
 #include "dem/world.h"
@@ -20,6 +24,15 @@
 namespace dem::service {
 
 class OutputRecorder;
+
+// The whole state at one cycle, copied in memory (the engine's snapshot) so
+// it can be written later: a one-shot run that fails writes its last good one.
+class StateCheckpoint {
+ public:
+  virtual ~StateCheckpoint() = default;
+  virtual std::uint64_t cycle() const = 0;
+  virtual std::string bytes(const io::SnapshotInfo& info) const = 0;  // a serialized dem.proto.Snapshot
+};
 
 class WorldSession {
  public:
@@ -59,6 +72,16 @@ class WorldSession {
   virtual void set_threads(int threads) = 0;
 
   virtual std::string snapshot_bytes(const io::SnapshotInfo& info) const = 0;
+  virtual std::unique_ptr<StateCheckpoint> checkpoint() const = 0;
+
+  // The case's loading programme: its stages as io converted them (none for
+  // a world restored from a snapshot), run by the engine's run_stage.
+  virtual std::size_t stage_count() const = 0;
+  virtual const std::string& stage_name(std::size_t stage) const = 0;
+  virtual std::uint64_t stage_cycles(std::size_t stage) const = 0;  // its length, or its cap when it has conditions
+  // Runs one stage; `between_cycles` is called after every cycle and ends
+  // the stage early by returning false. Throws what the engine throws.
+  virtual StageResult run_stage(std::size_t stage, const std::function<bool()>& between_cycles) = 0;
 
   // The per-case tables (the recorder writes them for this world's dimension).
   virtual void start_tables(OutputRecorder& recorder, const std::string& case_name) const = 0;
@@ -67,6 +90,6 @@ class WorldSession {
 };
 
 template <int Dim>
-std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world);
+std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages = {});
 
 }  // namespace dem::service

@@ -1,0 +1,156 @@
+// The engine thread in one-shot mode (dem_server --case FILE --run-and-exit):
+// SimulationRunner::run_programme and what it calls. The stages are the
+// case's as io converted them, each run by the engine's run_stage (through
+// WorldSession); between cycles the runner does what it does between the
+// chunks of a cycle command. The command loop is in simulation_runner.cpp.
+#include <spdlog/spdlog.h>
+
+#include <cmath>
+
+#include "dem/io/snapshot_file.h"
+#include "dem/service/simulation_runner.h"
+
+namespace dem::service {
+
+using protocol::ServerState;
+
+void SimulationRunner::run_programme() {
+  WorldSession& world = simulation_.world();  // the initial case: Server requires one
+  programme_.emplace(world, simulation_.output_interval());
+  state_ = ServerState::kRunning;
+  message_ = "programme of " + std::to_string(programme_->stage_count()) + " stages running";
+  spdlog::info("running the programme of {}: {} stages, up to {} cycles", simulation_.case_name(),
+               programme_->stage_count(), programme_->total());
+  last_poll_ = std::chrono::steady_clock::now();
+  for (std::size_t i = 0; i < programme_->stage_count() && !programme_->ending(); ++i) {
+    if (queue_.shutdown_requested()) {
+      programme_->stop("the server is shutting down");
+      break;
+    }
+    programme_->start_stage(i, world);
+    message_ = stage_label(i) + " running";
+    publish_status();
+    StageResult result;
+    try {
+      result = world.run_stage(i, [this] { return between_programme_cycles(); });
+    } catch (const std::exception& error) {
+      programme_->fail("the engine failed at cycle " + std::to_string(world.cycle_count()) + " in " +
+                       stage_label(i) + ": " + error.what());
+      break;
+    }
+    if (programme_->outcome() == ProgrammeOutcome::kFailed || programme_blew_up()) break;
+    end_stage(i, result);
+  }
+  if (!programme_->ending()) programme_->complete();
+  end_programme();
+}
+
+// After every cycle of a stage: a row of the time series at the case's
+// interval, telemetry on schedule, and every chunk_duration the commands
+// that came in, as run_chunk does between its chunks. The blow-up check
+// comes first at both, so nothing is recorded or kept of a broken state.
+bool SimulationRunner::between_programme_cycles() {
+  const WorldSession& world = simulation_.world();
+  const auto now = std::chrono::steady_clock::now();
+  const bool row = programme_->row_due(world.cycle_count());
+  const bool poll = now - last_poll_ >= options_.chunk_duration;
+  if ((row || poll) && programme_blew_up()) return false;
+  if (row) {
+    record_programme_row();
+    programme_->keep_if_good(world);
+  }
+  if (schedule_.due(world.cycle_count(), world.time())) publish_telemetry();
+  if (poll) {
+    last_poll_ = now;
+    for (ReceivedCommand& received : queue_.take_all()) {
+      if (queue_.shutdown_requested()) {
+        unanswered_.push_back(std::move(received));
+      } else {
+        execute(std::move(received));
+      }
+    }
+    if (queue_.shutdown_requested()) programme_->stop("the server is shutting down");
+    if (now - last_status_ >= options_.progress_interval) publish_status();
+  }
+  return !programme_->ending();
+}
+
+bool SimulationRunner::programme_blew_up() {
+  const WorldSession& world = simulation_.world();
+  if (std::isfinite(world.kinetic_energy())) return false;
+  programme_->fail("the simulation blew up at cycle " + std::to_string(world.cycle_count()) + " in " +
+                   stage_label(programme_->stage()) +
+                   ": the kinetic energy is not finite (is the time step too large?)");
+  return true;
+}
+
+void SimulationRunner::record_programme_row() {
+  simulation_.world().record_tables(recorder_);
+  if (recorder_.failed()) programme_->fail("an output file could not be written (see the error above)");
+}
+
+void SimulationRunner::end_stage(std::size_t stage, const StageResult& result) {
+  const WorldSession& world = simulation_.world();
+  record_programme_row();
+  programme_->keep_if_good(world, true);  // the caller found it finite
+  recorder_.record_stage(stage, world.stage_name(stage), result, world.cycle_count(), world.time());
+  if (recorder_.failed()) programme_->fail("an output file could not be written (see the error above)");
+  spdlog::info("{}: {} cycles{}, to cycle {}", stage_label(stage), result.cycles_run,
+               result.condition_met ? ", its stop condition met" : "", world.cycle_count());
+}
+
+// The final snapshot beside the tables: the state reached, or after a
+// failure the last state known to be good (the one at the failure is not).
+void SimulationRunner::end_programme() {
+  const WorldSession& world = simulation_.world();
+  const bool failed = programme_->outcome() == ProgrammeOutcome::kFailed;
+  const std::filesystem::path path = recorder_.case_directory() / (failed ? "last_good.snapshot" : "final.snapshot");
+  const std::uint64_t snapshot_cycle = failed ? programme_->last_good().cycle() : world.cycle_count();
+  bool written = true;
+  try {
+    io::write_snapshot_bytes(path, failed ? programme_->last_good().bytes(simulation_.snapshot_info())
+                                          : simulation_.snapshot_bytes());
+  } catch (const std::exception& error) {
+    written = false;
+    spdlog::error("the snapshot cannot be written: {}", error.what());
+    programme_->fail("the snapshot cannot be written: " + std::string(error.what()));
+  }
+  const std::string at = " at cycle " + std::to_string(world.cycle_count());
+  switch (programme_->outcome()) {
+    case ProgrammeOutcome::kCompleted:
+      state_ = ServerState::kLoaded;
+      message_ = "programme complete" + at + "; final snapshot " + path.string();
+      spdlog::info("{}", message_);
+      break;
+    case ProgrammeOutcome::kStopped:
+      state_ = ServerState::kLoaded;
+      message_ = "programme stopped" + at + " in " + stage_label(programme_->stage()) + " (" + programme_->reason() +
+                 "); final snapshot " + path.string();
+      spdlog::warn("{}", message_);
+      break;
+    case ProgrammeOutcome::kFailed:
+    case ProgrammeOutcome::kRunning:
+      state_ = ServerState::kError;
+      message_ = "programme failed: " + programme_->reason();
+      if (failed && written) {
+        message_ += "; the last good state, at cycle " + std::to_string(snapshot_cycle) + ", is in " + path.string();
+      }
+      spdlog::error("{}", message_);
+      break;
+  }
+  publish_status();
+}
+
+std::string SimulationRunner::stage_label(std::size_t stage) const {
+  if (stage >= programme_->stage_count()) return "the end of the programme";
+  const std::string& name = simulation_.world().stage_name(stage);
+  return "stage " + std::to_string(stage + 1) + "/" + std::to_string(programme_->stage_count()) +
+         (name.empty() ? std::string() : " " + name);
+}
+
+std::optional<ProgrammeOutcome> SimulationRunner::programme_outcome() const {
+  if (!programme_) return std::nullopt;
+  return programme_->outcome();
+}
+
+}  // namespace dem::service
