@@ -1,0 +1,50 @@
+"""dem: the Python client of dem_server (docs/PYTHON.md).
+
+The C++ client library (dem::client) through pybind11 (dem._client), with a
+Pythonic layer around it: connect to a named server, send commands and await
+their replies, subscribe to telemetry, receive contacts as numpy arrays; cases
+built with the protobuf-generated classes (dem.cases) or read from text; a
+case's stages run through the service (dem.programme); the seeds' figures
+(dem.plots).
+
+    import dem
+    with dem.ServerProcess("press", domain=21, out="out/press") as server, server.connect() as press:
+        press.load_case("cases/ball/nine_disc_damped.case.txtpb")
+        press.set_wall_velocity("top", (0, -12))
+        press.cycle(3000)
+        contacts = press.contacts(wall="top")
+"""
+
+from . import cases, errors
+from ._client import CONTACT_DTYPE, ContactStats, PlateForces, Reply, Status, WallForce
+from .client import Client, list_servers
+from .errors import (CaseFileError, DdsError, DemError, NoSuchServer, ProgrammeError, ReplyTimeout,
+                     ServerError)
+from .paths import use_loopback
+from .programme import run_programme
+from .server_process import ServerProcess
+from .telemetry import Subscription
+
+__all__ = [
+    "CONTACT_DTYPE",
+    "CaseFileError",
+    "Client",
+    "ContactStats",
+    "DdsError",
+    "DemError",
+    "NoSuchServer",
+    "PlateForces",
+    "ProgrammeError",
+    "Reply",
+    "ReplyTimeout",
+    "ServerError",
+    "ServerProcess",
+    "Status",
+    "Subscription",
+    "WallForce",
+    "cases",
+    "errors",
+    "list_servers",
+    "run_programme",
+    "use_loopback",
+]

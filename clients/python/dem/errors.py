@@ -1,0 +1,43 @@
+"""What can go wrong when talking to a dem_server, as exceptions a program can
+tell apart. The C++ client's exceptions are turned into these by the
+extension module (clients/python/src/errors.cpp)."""
+
+
+class DemError(Exception):
+    """Base of every error of the dem package."""
+
+
+class NoSuchServer(DemError):
+    """No server of that name answered on the domain within the timeout."""
+
+
+class ReplyTimeout(DemError, TimeoutError):
+    """The server was found, but its (complete) reply did not come in time."""
+
+
+class DdsError(DemError):
+    """Cyclone DDS refused an operation (its message names the action)."""
+
+
+class ServerError(DemError):
+    """The server answered a command with an error status.
+
+    ``status`` is the reply's status (``"not_found"``, ``"invalid_case"``,
+    ``"refused"``, ...), ``message`` the server's own message, ``command``
+    the command's kind and ``reply`` the whole reply.
+    """
+
+    def __init__(self, status, message, command, reply=None):
+        super().__init__(f"{command} -> {status}: {message}")
+        self.status = status
+        self.message = message
+        self.command = command
+        self.reply = reply
+
+
+class CaseFileError(DemError):
+    """A case file does not parse; the message names the file, line and column."""
+
+
+class ProgrammeError(DemError):
+    """A case's stage asks for something the service cannot do."""

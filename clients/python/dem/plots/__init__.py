@@ -1,0 +1,35 @@
+"""The seeds' figures with matplotlib, each a function that draws on given
+axes (or a new headless figure) and writes a PNG when given a path:
+
+- plot_stress_settlement, LiveStressSettlement: plate stress against
+  settlement, live while a run goes on or as PNG files (Miyata Figs. 26, 32);
+- plot_force_distribution: P(f) of the normalised contact force on a plate
+  with the q-model (eq. 62) and Mueth's fit (eq. 61) (Miyata Fig. 35);
+- plot_force_chains: contact forces as rectangles (Cundall & Strack Figs.
+  5(b), 11);
+- plot_contact_force_history: the nine-disc force at contact C against
+  cycles (Cundall & Strack Figs. 6, 7, 9);
+- plot_psi2_against_psi1: the oblique impact sweep (Randall Fig. 5.10).
+
+Figures are drawn on matplotlib's Agg canvas (figure.py), so nothing here
+needs a display.
+"""
+
+from .contact_history import plot_contact_force_history
+from .figure import new_axes, save_png
+from .force_chains import plot_force_chains
+from .force_distribution import plot_force_distribution
+from .oblique_impact import plot_psi2_against_psi1
+from .stress_settlement import LiveStressSettlement, StressSettlementSeries, plot_stress_settlement
+
+__all__ = [
+    "LiveStressSettlement",
+    "StressSettlementSeries",
+    "new_axes",
+    "plot_contact_force_history",
+    "plot_force_chains",
+    "plot_force_distribution",
+    "plot_psi2_against_psi1",
+    "plot_stress_settlement",
+    "save_png",
+]

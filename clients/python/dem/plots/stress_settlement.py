@@ -1,0 +1,160 @@
+"""A plate's normal stress against its settlement (the curves of Miyata et al.
+2002, Figs. 26 and 32), drawn from the server's plate-force telemetry, and
+live while a run goes on:
+
+    with press.subscribe() as telemetry, \\
+            LiveStressSettlement(telemetry, ["top"], png="out/stress.png") as live:
+        press.run_until(wall="top", stress=1e6, max_cycles=100000, on_wait=live.update)
+
+``update()`` runs in the caller's thread (matplotlib is not thread-safe):
+Client.cycle and run_until call it through ``on_wait`` while they wait.
+Headless it rewrites the PNG (and, with ``frames``, numbered frames) at most
+every ``redraw_interval`` seconds; with ``show=True`` it draws in a window.
+"""
+
+import csv
+import pathlib
+import time
+
+import numpy as np
+from matplotlib.ticker import EngFormatter
+
+from .figure import finish, new_axes, save_png
+
+
+class StressSettlementSeries:
+    """Each wall's settlement, normal stress and contacts, sample by sample."""
+
+    def __init__(self, walls=None, origin=None):
+        self.walls = list(walls) if walls else None  # None: every wall seen
+        # Settlement counted from these (wall -> m), e.g. where loading began.
+        self.origin = dict(origin or {})
+        self._rows = {}  # wall -> list of (cycle, time, settlement, stress, contacts)
+
+    def add(self, plate_forces):
+        """Adds one PlateForces sample (telemetry or a reply's ``plates``)."""
+        for wall in plate_forces.walls:
+            if self.walls is not None and wall.name not in self.walls:
+                continue
+            rows = self._rows.setdefault(wall.name, [])
+            if rows and rows[-1][0] == plate_forces.cycle:
+                continue  # the same cycle again (a reply after the telemetry)
+            settlement = wall.settlement - self.origin.get(wall.name, 0.0)
+            rows.append((plate_forces.cycle, plate_forces.time, settlement, wall.normal_stress, wall.contacts))
+
+    def names(self):
+        return list(self.walls) if self.walls is not None else list(self._rows)
+
+    def __len__(self):
+        return sum(len(rows) for rows in self._rows.values())
+
+    def column(self, wall, name):
+        """cycle, time, settlement (m), stress (Pa) or contacts of one wall, as an array."""
+        index = ("cycle", "time", "settlement", "stress", "contacts").index(name)
+        return np.array([row[index] for row in self._rows.get(wall, [])])
+
+    def write_csv(self, path):
+        """One row per wall per sample: wall,cycle,time,settlement,stress,contacts."""
+        path = pathlib.Path(path)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        with open(path, "w", newline="") as out:
+            writer = csv.writer(out)
+            writer.writerow(["wall", "cycle", "time", "settlement", "stress", "contacts"])
+            for wall in self.names():
+                for row in self._rows.get(wall, []):
+                    writer.writerow([wall, *(repr(v) if isinstance(v, float) else v for v in row)])
+        return path
+
+
+def plot_stress_settlement(series, *, walls=None, ax=None, png=None, title=None):
+    """Normal stress (Pa) against settlement (m), one curve per wall."""
+    figure, ax = new_axes(ax)
+    _draw(ax, series, walls or series.names(), title)
+    return finish(figure, png)
+
+
+def _draw(ax, series, walls, title):
+    ax.clear()
+    for wall in walls:
+        settlement = series.column(wall, "settlement")
+        if settlement.size:
+            ax.plot(settlement, series.column(wall, "stress"), marker=".", markersize=3, linewidth=1, label=wall)
+    ax.set_xlabel("settlement")
+    ax.set_ylabel("normal stress")
+    ax.xaxis.set_major_formatter(EngFormatter(unit="m"))
+    ax.yaxis.set_major_formatter(EngFormatter(unit="Pa"))
+    ax.grid(True, alpha=0.3)
+    if any(series.column(wall, "settlement").size for wall in walls):
+        ax.legend(title="plate")
+    if title:
+        ax.set_title(title, fontsize="medium")
+
+
+class LiveStressSettlement:
+    """Stress against settlement, redrawn from a Subscription as samples come."""
+
+    def __init__(self, subscription, walls=None, *, png=None, frames=None, show=False, redraw_interval=1.0,
+                 title=None):
+        self.subscription = subscription
+        self.series = StressSettlementSeries(walls)
+        self.png = pathlib.Path(png) if png else None
+        self.frames = pathlib.Path(frames) if frames else None
+        self.frame_count = 0
+        self.redraw_interval = redraw_interval
+        self.title = title
+        self._drawn_at = 0.0
+        self._drawn_samples = -1
+        self._show = show
+        if show:
+            from matplotlib import pyplot  # a window only when asked for one
+            self._pyplot = pyplot
+            pyplot.ion()
+            self.figure = pyplot.figure()
+            self.ax = self.figure.add_subplot()
+        else:
+            self.figure, self.ax = new_axes()
+
+    def update(self):
+        """Takes the samples that arrived; redraws when due. Returns how many came."""
+        samples = [s for s in self.subscription.drain() if hasattr(s, "walls")]
+        for sample in samples:
+            self.series.add(sample)
+        if time.monotonic() - self._drawn_at >= self.redraw_interval:
+            self.redraw()
+        return len(samples)
+
+    def redraw(self):
+        if len(self.series) == self._drawn_samples:
+            return
+        self._drawn_samples = len(self.series)
+        self._drawn_at = time.monotonic()
+        _draw(self.ax, self.series, self.series.names(), self.title)
+        if self._show:
+            self.figure.canvas.draw_idle()
+            self._pyplot.pause(0.001)
+        if self.png:
+            save_png(self.figure, self.png)
+        if self.frames:
+            self.frame_count += 1
+            save_png(self.figure, self.frames / f"stress_settlement_{self.frame_count:04d}.png")
+
+    def finish(self, settle=0.3):
+        """Takes the last samples (waiting up to ``settle`` s for stragglers)
+        and draws the final picture."""
+        deadline = time.monotonic() + settle
+        while time.monotonic() < deadline:
+            sample = self.subscription.get(max(0.0, deadline - time.monotonic()))
+            if sample is None:
+                break
+            if hasattr(sample, "walls"):
+                self.series.add(sample)
+        self.update()
+        self._drawn_samples = -1
+        self.redraw()
+        return self.figure
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.finish()

@@ -1,0 +1,128 @@
+"""A whole small experiment from Python: Cundall & Strack's nine-disc test
+(damped, Figs. 5-6) run through dem_server stage by stage with
+dem.run_programme, the force at contact C read every 10 cycles - and every
+value equal to the probe dem_run writes running the same case in-process."""
+
+import csv
+import subprocess
+
+import numpy as np
+import pytest
+
+import dem
+from conftest import CASES, DOMAINS, case_file
+from dem.plots import LiveStressSettlement, plot_contact_force_history
+from dem.snapshot import State
+
+
+def dem_run_probe(case, out):
+    """cycle -> (F_n, F_s) at probe C, from dem_run's probes.csv."""
+    try:
+        program = dem.paths.run_program()
+    except FileNotFoundError:
+        pytest.skip("dem_run is not built (DEM_BUILD_TOOLS=OFF)")
+    subprocess.run([str(program), str(case), "--out", str(out), "--quiet"], check=True)
+    with open(out / "probes.csv") as table:
+        return {int(row["cycle"]): (float(row["normal_force"]), float(row["shear_force"]))
+                for row in csv.DictReader(table) if row["probe"] == "C"}
+
+
+def test_nine_disc_through_the_service_equals_dem_run(serve, out):
+    client = serve("experiment_nine_disc")
+    case = dem.cases.load_case_file(case_file("nine_disc_damped"))
+    reply = client.load_case(case)
+    assert reply.state.state == "loaded" and reply.state.particles == 9
+
+    samples = {}
+
+    def sample(stage, cycle):
+        c = client.contacts()
+        between = c[(c["first"] == 4) & (c["second_particle"] == 5)]
+        assert between.size == 1, f"contact C missing at cycle {cycle}"
+        samples[cycle] = (float(between["normal_force"][0]), float(between["shear_force"][0]))
+
+    with client.subscribe(contact_stats=False) as telemetry:
+        assert telemetry.wait_for_publisher()
+        with LiveStressSettlement(telemetry, ["top", "right"], png=out / "stress.png") as live:
+            outcomes = dem.run_programme(client, case, sample_every=10, on_sample=sample, on_wait=live.update)
+    assert [(o.name, o.cycles_run, o.condition_met) for o in outcomes] == [("compress", 40, False),
+                                                                              ("hold", 2960, False)]
+    assert client.status.cycle == 3000
+    assert sorted(samples) == list(range(10, 3001, 10))
+
+    expected = dem_run_probe(case_file("nine_disc_damped"), out / "dem_run")
+    for cycle, forces in samples.items():
+        assert forces == expected[cycle], f"cycle {cycle}"
+    # The equilibrium of Fig. 6 (about 2.8e9 in these units, cases/ball).
+    assert 2.5e9 < samples[3000][0] < 3.1e9
+
+    # The top plate: telemetry every 10 cycles, its settlement 40 cycles x 12 x 0.01.
+    settlement = live.series.column("top", "settlement")
+    assert len(settlement) >= 290 and settlement[-1] == pytest.approx(40 * 12 * 0.01)
+    assert np.all(live.series.column("top", "stress")[-10:] > 0)
+    assert (out / "stress.png").stat().st_size > 10000
+    live.series.write_csv(out / "stress.csv")
+    assert len((out / "stress.csv").read_text().splitlines()) == 1 + len(live.series)
+    cycles = sorted(samples)
+    plot_contact_force_history({"damped": (cycles, [samples[c][0] for c in cycles])}, start_cycle=40,
+                               png=out / "fig6.png")
+    assert (out / "fig6.png").stat().st_size > 10000
+
+
+def test_a_stage_the_service_cannot_run_is_refused_by_name(serve):
+    client = serve("experiment_programme_refusals")
+    case = dem.cases.load_case_file(case_file("nine_disc_damped"))
+    client.load_case(case)
+    stage = case.stage.add(name="rotating damping", cycles=10)
+    stage.damping.global_alpha_rotation = 1.0
+    with pytest.raises(dem.ProgrammeError, match='stage 2 \\("rotating damping"\\) sets damping.global_alpha_rotation'):
+        dem.run_programme(client, case)
+    assert client.status.cycle == 0, "nothing ran: the stages are checked first"
+    if "trim" in dem.cases.Stage.DESCRIPTOR.fields_by_name:
+        case.stage[2].ClearField("damping")
+        case.stage[2].trim.height = 1.0
+        with pytest.raises(dem.ProgrammeError, match="trims the sample"):
+            dem.run_programme(client, case)
+
+
+def test_a_compression_the_server_runs_itself_followed_from_python(tmp_path):
+    """Miyata's reduced case CS needs stages no command does (trimming,
+    placing the plate): the server runs its programme one-shot while the
+    client follows the telemetry and queries the plates' contacts mid-run."""
+    path = CASES / "miyata" / "cs_reduced.case.txtpb"
+    case = dem.cases.load_case_file(path)
+    target = case.stage[2].until.wall_stress_above.value  # 900 kPa (Miyata 3.2)
+    server = dem.ServerProcess("py_one_shot", DOMAINS["experiment_one_shot_compression"], tmp_path / "server",
+                               telemetry_cycles=50, extra_arguments=["--case", str(path), "--run-and-exit"])
+    mid_run = None
+    with server, server.connect() as client, client.subscribe(contact_stats=False) as telemetry:
+        with LiveStressSettlement(telemetry, ["top"], png=tmp_path / "stress.png") as live:
+            while server.process.poll() is None:
+                sample = telemetry.get(0.05)
+                if sample is None:
+                    continue
+                live.series.add(sample)
+                top = sample.wall("top")
+                if mid_run is None and top.normal_stress > 0.3 * target:
+                    mid_run = (top.area, client.contacts(wall="top", timeout=10))
+            assert server.process.wait() == 0, server.log_file.read_text()[-2000:]
+            live.update()
+    assert mid_run is not None, "the loading was not seen"
+    area, contacts = mid_run
+    assert area == pytest.approx(4.0)  # the plate spans the 4 m period, unit depth
+    assert contacts.size > 0 and np.all(contacts["second_wall"] == contacts["second_wall"][0])
+    # The plate's stress is its contacts' normal forces over its area.
+    assert contacts["normal_force"].sum() / area > 0.3 * target
+
+    final = State.from_file(tmp_path / "server" / case.name / "final.snapshot")
+    top_id = [w.name for w in final.walls].index("top")
+    on_top = final.contacts[final.contacts["second_wall"] == top_id]
+    stress = on_top["normal_force"].sum() / area
+    print(f"one-shot CS (reduced): cycle {final.cycle}, {final.contacts.size} contacts, "
+          f"top plate {stress / 1e3:.1f} kPa (stop condition {target / 1e3:.0f} kPa)")
+    # The loading stage ends at the first cycle the plate's stress reaches
+    # 900 kPa. The contacts' normal_force is the springs' part only (the
+    # dashpots of Miyata's eqs. 13-23 come on top), so it lands within 1%.
+    assert stress == pytest.approx(target, rel=0.01)
+    settlement = live.series.column("top", "settlement")
+    assert settlement.size > 50 and settlement.max() > 0.1  # the plate travelled tens of centimetres

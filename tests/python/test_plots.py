@@ -1,0 +1,130 @@
+"""Every plot function writes a non-empty PNG, headless; the live plot
+rewrites its PNG and frames as samples come; the force-chain rectangles have
+BALL's geometry (Cundall & Strack 1979, Fig. 5(b))."""
+
+import types
+
+import numpy as np
+import pytest
+from matplotlib.image import imread
+
+import dem
+from dem.force_distribution import ForceDistribution
+from dem.plots import (LiveStressSettlement, StressSettlementSeries, plot_contact_force_history, plot_force_chains,
+                       plot_force_distribution, plot_psi2_against_psi1, plot_stress_settlement)
+from dem.plots.force_chains import force_rectangles
+from dem.snapshot import State, WallState
+
+
+def assert_png(path, min_bytes=5000):
+    data = path.read_bytes()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", f"{path} is not a PNG"
+    assert len(data) > min_bytes, f"{path} has only {len(data)} bytes"
+    image = imread(path)
+    assert image.shape[0] > 100 and image.shape[1] > 100
+    # Something is drawn: not one colour throughout.
+    assert np.ptp(image[..., :3]) > 0.5
+
+
+def plate_forces(cycle, settlement, stress, name="top"):
+    wall = types.SimpleNamespace(name=name, settlement=settlement, normal_stress=stress, contacts=3)
+    return types.SimpleNamespace(cycle=cycle, time=0.01 * cycle, walls=[wall])
+
+
+def nine_discs():
+    """Three by three discs of radius 50 at spacing 100 in a 300 box."""
+    x, y = np.meshgrid([50.0, 150.0, 250.0], [50.0, 150.0, 250.0])
+    walls = tuple(WallState(name, np.array(p), np.array(d), -200.0, 200.0, np.empty(0), 0.0, 0.0)
+                  for name, p, d in (("bottom", (150, 0), (1, 0)), ("right", (300, 150), (0, 1)),
+                                     ("top", (150, 300), (-1, 0)), ("left", (0, 150), (0, -1))))
+    return State("nine", 2, 3000, 30.0, 0.01, np.column_stack([x.ravel(), y.ravel()]), np.full(9, 50.0),
+                 np.zeros((9, 2)), np.zeros(9), np.zeros(9), np.empty(0), walls)
+
+
+def contacts(rows):
+    array = np.zeros(len(rows), dtype=dem.CONTACT_DTYPE)
+    for k, (first, second, wall, point, normal, fn, fs) in enumerate(rows):
+        array[k] = (first, second, wall, point + (0.0,), normal + (0.0,), 0.01, fn, fs, 0.0, 0.0, False)
+    return array
+
+
+NINE_DISC_CONTACTS = contacts([
+    (4, 5, -1, (200.0, 150.0), (1.0, 0.0), 2.8e9, 0.0),       # contact C
+    (4, 7, -1, (150.0, 200.0), (0.0, 1.0), 1.4e9, 0.7e9),
+    (1, -1, 0, (150.0, 0.0), (0.0, -1.0), 2.0e9, 0.0),        # disc 1 on the bottom wall
+])
+
+
+def test_force_rectangles_have_ball_s_geometry():
+    corners, forces = force_rectangles(nine_discs(), NINE_DISC_CONTACTS, max_width=20.0)
+    assert corners.shape == (3, 4, 2)
+    np.testing.assert_allclose(forces, [2.8e9, np.hypot(1.4e9, 0.7e9), 2.0e9])
+    # C: centred on the contact, along the force, R1 + R2 = 100 long, the widest.
+    c = corners[0]
+    np.testing.assert_allclose(c, [[150, 160], [250, 160], [250, 140], [150, 140]])
+    # A force with a shear part is turned by atan(F_s/F_n) from the normal,
+    # its width in proportion: 20 * |F| / max |F|.
+    along = corners[1][1] - corners[1][0]
+    assert np.linalg.norm(along) == pytest.approx(100.0)
+    assert np.degrees(np.arctan2(abs(along[0]), abs(along[1]))) == pytest.approx(np.degrees(np.arctan(0.5)))
+    assert np.linalg.norm(corners[1][0] - corners[1][3]) == pytest.approx(20.0 * forces[1] / forces[0])
+    # A wall contact: from the contact point into the disc, one radius long.
+    np.testing.assert_allclose(corners[2][:, 1], [0.0, 50.0, 50.0, 0.0], atol=1e-9)
+
+
+def test_every_plot_function_writes_a_png(out):
+    series = StressSettlementSeries(["top"])
+    for k in range(1, 50):
+        series.add(plate_forces(10 * k, 0.001 * k, 1e4 * k ** 1.5))
+    plot_stress_settlement(series, png=out / "stress.png")
+    assert_png(out / "stress.png")
+
+    rng = np.random.default_rng(2002)
+    top, bottom = ForceDistribution("top"), ForceDistribution("bottom")
+    for _ in range(10):
+        top.add_snapshot(rng.gamma(3.0, 1.0, 60))
+        bottom.add_snapshot(rng.exponential(1.0, 120))
+    plot_force_distribution([top, bottom], png=out / "distribution.png")
+    assert_png(out / "distribution.png")
+
+    plot_force_chains(nine_discs(), NINE_DISC_CONTACTS, png=out / "chains.png")
+    assert_png(out / "chains.png")
+
+    cycles = np.arange(10, 3001, 10)
+    plot_contact_force_history({"damped": (cycles, 2.8e9 * (1 - np.exp(-cycles / 300.0)))}, start_cycle=40,
+                               png=out / "history.png")
+    assert_png(out / "history.png")
+
+    psi1 = np.linspace(0.0, 12.0, 30)
+    plot_psi2_against_psi1(psi1, np.where(psi1 < 5.86, -0.3 * psi1, psi1 - 5.86), 1.465, png=out / "psi.png")
+    assert_png(out / "psi.png")
+
+
+class FakeSubscription:
+    """Hands out prepared plate-force samples as a Subscription would."""
+
+    def __init__(self, samples):
+        self.samples = list(samples)
+
+    def drain(self):
+        taken, self.samples = self.samples[:5], self.samples[5:]
+        return taken
+
+    def get(self, timeout):
+        return self.samples.pop(0) if self.samples else None
+
+
+def test_the_live_plot_rewrites_its_png_headless(out):
+    feed = FakeSubscription(plate_forces(10 * k, 0.001 * k, 1e4 * k) for k in range(1, 21))
+    live = LiveStressSettlement(feed, ["top"], png=out / "live.png", frames=out / "frames", redraw_interval=0.0)
+    assert live.update() == 5
+    assert_png(out / "live.png")
+    while live.update():
+        pass
+    live.finish()
+    assert len(live.series) == 20
+    frames = sorted((out / "frames").glob("stress_settlement_*.png"))
+    assert len(frames) >= 4
+    for frame in frames:
+        assert_png(frame)
+    assert not list(out.glob("*.partial")), "a PNG was left half-written"
