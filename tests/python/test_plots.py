@@ -128,3 +128,23 @@ def test_the_live_plot_rewrites_its_png_headless(out):
     for frame in frames:
         assert_png(frame)
     assert not list(out.glob("*.partial")), "a PNG was left half-written"
+
+
+def test_a_monitor_recording_becomes_a_stress_settlement_png(out):
+    # The columns demctl monitor --csv writes (clients/cpp/demctl/monitor.cpp).
+    recording = out / "monitor.csv"
+    recording.write_text(
+        "cycle,time,top_stress,top_settlement,bottom_stress,bottom_settlement,contacts,coordination_number,"
+        "sliding_fraction,mean_normal_force,max_normal_force,kinetic_energy,out_of_balance\n"
+        + "".join(f"{100 * k},{0.01 * k},{1e4 * k},{0.002 * k},{1.1e4 * k},0,50,3.1,0.1,10,40,1.5,0.01\n"
+                  for k in range(1, 31)))
+    series = StressSettlementSeries.from_monitor_csv(recording, ["top"])
+    assert series.names() == ["top"]
+    np.testing.assert_allclose(series.column("top", "stress"), 1e4 * np.arange(1, 31))
+    np.testing.assert_allclose(series.column("top", "settlement"), 0.002 * np.arange(1, 31))
+    with pytest.raises(ValueError, match="no plate left"):
+        StressSettlementSeries.from_monitor_csv(recording, ["left"])
+    from dem.plots.stress_settlement import main
+    main([str(recording), str(out / "curve.png")])
+    assert_png(out / "curve.png")
+    assert len(StressSettlementSeries.from_monitor_csv(recording)) == 60  # both plates

@@ -42,6 +42,26 @@ class StressSettlementSeries:
             settlement = wall.settlement - self.origin.get(wall.name, 0.0)
             rows.append((plate_forces.cycle, plate_forces.time, settlement, wall.normal_stress, wall.contacts))
 
+    @classmethod
+    def from_monitor_csv(cls, path, walls=None):
+        """The rows ``demctl monitor --csv`` recorded: cycle, time and, per
+        plate shown, <wall>_stress and <wall>_settlement (the monitor's
+        contacts column counts the whole sample's, so a plate's is 0 here)."""
+        with open(path, newline="") as source:
+            rows = list(csv.DictReader(source))
+        columns = rows[0].keys() if rows else []
+        shown = [c[: -len("_stress")] for c in columns if c.endswith("_stress")]
+        unknown = [w for w in walls or [] if w not in shown]
+        if unknown:
+            raise ValueError(f"{path}: no plate {', '.join(unknown)} in the monitor's columns (plates: {', '.join(shown)})")
+        series = cls(walls or shown)
+        for row in rows:
+            for wall in series.walls:
+                series._rows.setdefault(wall, []).append(
+                    (int(row["cycle"]), float(row["time"]), float(row[f"{wall}_settlement"]),
+                     float(row[f"{wall}_stress"]), 0))
+        return series
+
     def names(self):
         return list(self.walls) if self.walls is not None else list(self._rows)
 
@@ -158,3 +178,19 @@ class LiveStressSettlement:
 
     def __exit__(self, *exc):
         self.finish()
+
+
+def main(argv=None):
+    """python3 -m dem.plots stress-settlement MONITOR_CSV PNG [--wall W ...]:
+    the stress-settlement curve of a ``demctl monitor --csv`` recording."""
+    import argparse
+
+    parser = argparse.ArgumentParser(prog="python3 -m dem.plots stress-settlement", description=main.__doc__)
+    parser.add_argument("monitor_csv")
+    parser.add_argument("png")
+    parser.add_argument("--wall", action="append", help="plates to draw (default: every plate recorded)")
+    parser.add_argument("--title")
+    args = parser.parse_args(argv)
+    series = StressSettlementSeries.from_monitor_csv(args.monitor_csv, args.wall)
+    plot_stress_settlement(series, png=args.png, title=args.title)
+    print(f"wrote {args.png} ({len(series)} points)")
