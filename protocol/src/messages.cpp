@@ -38,6 +38,7 @@ std::string_view to_string(CommandKind kind) {
     case CommandKind::kSaveSnapshot: return "save_snapshot";
     case CommandKind::kLoadSnapshot: return "load_snapshot";
     case CommandKind::kSetParameter: return "set_parameter";
+    case CommandKind::kRunProgramme: return "run_programme";
   }
   return "unknown";
 }
@@ -59,7 +60,7 @@ std::string_view to_string(ReplyStatus status) {
 
 std::optional<CommandKind> command_kind(std::uint8_t value) {
   if (value < static_cast<std::uint8_t>(CommandKind::kLoadCase) ||
-      value > static_cast<std::uint8_t>(CommandKind::kSetParameter)) {
+      value > static_cast<std::uint8_t>(CommandKind::kRunProgramme)) {
     return std::nullopt;
   }
   return static_cast<CommandKind>(value);

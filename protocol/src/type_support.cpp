@@ -31,8 +31,8 @@ using CReply = dem_interfaces_msg_dds__Reply_;
 static_assert(dem_interfaces_msg_Status_Constants_RUNNING == static_cast<int>(protocol::ServerState::kRunning));
 static_assert(dem_interfaces_msg_Status_Constants_SHUTDOWN == static_cast<int>(protocol::ServerState::kShutdown));
 static_assert(dem_interfaces_msg_Command_Constants_LOAD_CASE == static_cast<int>(protocol::CommandKind::kLoadCase));
-static_assert(dem_interfaces_msg_Command_Constants_SET_PARAMETER ==
-              static_cast<int>(protocol::CommandKind::kSetParameter));
+static_assert(dem_interfaces_msg_Command_Constants_RUN_PROGRAMME ==
+              static_cast<int>(protocol::CommandKind::kRunProgramme));
 static_assert(dem_interfaces_msg_Reply_Constants_SHUTTING_DOWN ==
               static_cast<int>(protocol::ReplyStatus::kShuttingDown));
 
@@ -197,6 +197,8 @@ CCommand to_c(const protocol::Command& m) {
   c.parameter.material = borrow(m.parameter.material);
   c.parameter.value = m.parameter.value;
   c.parameter.vector = to_c(m.parameter.vector);
+  c.programme.first_stage = m.programme.first_stage;
+  c.programme.stage_count = m.programme.stage_count;
   c.stamp = to_c(m.stamp);
   return c;
 }
@@ -335,6 +337,7 @@ protocol::Command from_c(const CCommand& c) {
   m.query.chunk_size = q.chunk_size;
   m.snapshot = {copy(c.snapshot.path), c.snapshot.transfer, copy(c.snapshot.data)};
   m.parameter = {copy(c.parameter.name), copy(c.parameter.material), c.parameter.value, from_c(c.parameter.vector)};
+  m.programme = {c.programme.first_stage, c.programme.stage_count};
   m.stamp = from_c(c.stamp);
   return m;
 }

@@ -29,6 +29,7 @@ std::optional<std::string> refusal(ServerState state, CommandKind kind) {
           return std::nullopt;
         case CommandKind::kCycle:
         case CommandKind::kRunUntil:
+        case CommandKind::kRunProgramme:
           return "a command is already running: wait for it or stop it";
         default:
           return "not while a command is running: stop it first";

@@ -10,13 +10,14 @@ namespace {
 constexpr int kCheckpointSpacing = 20;
 }  // namespace
 
-ProgrammeRun::ProgrammeRun(const WorldSession& world, std::uint64_t output_interval)
+ProgrammeRun::ProgrammeRun(const WorldSession& world, std::uint64_t output_interval, std::size_t first,
+                           std::size_t count)
     : stage_count_(world.stage_count()),
       output_interval_(std::max<std::uint64_t>(output_interval, 1)),
       start_cycle_(world.cycle_count()),
       stage_start_(world.cycle_count()),
       last_good_(world.checkpoint()) {
-  for (std::size_t i = 0; i < stage_count_; ++i) total_ += world.stage_cycles(i);
+  for (std::size_t i = first; i < first + count; ++i) total_ += world.stage_cycles(i);
 }
 
 void ProgrammeRun::start_stage(std::size_t stage, const WorldSession& world) {

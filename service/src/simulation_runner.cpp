@@ -115,6 +115,9 @@ void SimulationRunner::execute(ReceivedCommand received) {
       case CommandKind::kRunUntil:
         start_run(received, *kind);
         return;  // its one reply comes when it ends
+      case CommandKind::kRunProgramme:
+        run_programme(received);
+        return;  // replied to when the stages end
       case CommandKind::kLoadCase:
         reply.message = install(simulation_.prepare_case(command.load_case));
         reply.path = command.load_case.path;
@@ -397,6 +400,11 @@ protocol::Status SimulationRunner::status() const {
   } else if (programme_ && state_ == ServerState::kRunning) {
     // A one-shot run's programme shows as a running command of no client.
     s.command = "programme";
+    if (programme_command_) {
+      s.command = "run_programme";
+      s.command_client = programme_command_->client_id;
+      s.command_request_id = programme_command_->request_id;
+    }
     s.command_cycles_done = programme_->done(simulation_.world());
     s.command_cycles_total = programme_->total();
     s.progress = s.command_cycles_total > 0

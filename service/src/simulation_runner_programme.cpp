@@ -1,4 +1,5 @@
-// The engine thread in one-shot mode (dem_server --case FILE --run-and-exit):
+// The engine thread running a case's stages: in one-shot mode (dem_server
+// --case FILE --run-and-exit) and for the run_programme command -
 // SimulationRunner::run_programme and what it calls. The stages are the
 // case's as io converted them, each run by the engine's run_stage (through
 // WorldSession); between cycles the runner does what it does between the
@@ -8,21 +9,62 @@
 #include <cmath>
 
 #include "dem/io/snapshot_file.h"
+#include "dem/service/command_error.h"
 #include "dem/service/simulation_runner.h"
 
 namespace dem::service {
 
+using protocol::ReplyStatus;
 using protocol::ServerState;
 
 void SimulationRunner::run_programme() {
-  WorldSession& world = simulation_.world();  // the initial case: Server requires one
-  programme_.emplace(world, simulation_.output_interval());
+  run_stages(0, simulation_.world().stage_count());  // the initial case: Server requires one
+}
+
+void SimulationRunner::run_programme(const ReceivedCommand& received) {
+  const protocol::ProgrammeArgs& args = received.command.programme;
+  const std::size_t stages = simulation_.world().stage_count();
+  if (stages == 0) {
+    throw CommandError(ReplyStatus::kRefused, "run_programme refused: " + simulation_.case_name() +
+                                                  " has no stages (a snapshot keeps none; load the case)");
+  }
+  const std::size_t first = args.first_stage == 0 ? 0 : args.first_stage - 1;
+  if (first >= stages) {
+    throw CommandError(ReplyStatus::kBadRequest, "first_stage " + std::to_string(args.first_stage) + " is past the " +
+                                                     std::to_string(stages) + " stages of " + simulation_.case_name());
+  }
+  if (args.stage_count > stages - first) {
+    throw CommandError(ReplyStatus::kBadRequest, std::to_string(args.stage_count) + " stages from stage " +
+                                                     std::to_string(first + 1) + " go past the " +
+                                                     std::to_string(stages) + " of " + simulation_.case_name());
+  }
+  const std::uint64_t start = simulation_.world().cycle_count();
+  programme_command_ = &received.command;
+  run_stages(first, args.stage_count == 0 ? stages - first : args.stage_count);
+  programme_command_ = nullptr;
+  protocol::Reply reply;
+  reply.cycles_run = simulation_.world().cycle_count() - start;
+  reply.message = message_;
+  switch (programme_->outcome()) {
+    case ProgrammeOutcome::kCompleted: reply.status = ReplyStatus::kOk; break;
+    case ProgrammeOutcome::kStopped: reply.status = ReplyStatus::kCancelled; break;
+    default: reply.status = ReplyStatus::kFailed; break;
+  }
+  programme_.reset();  // cycle and run_until record the tables at the telemetry interval again
+  send(received, std::move(reply));
+  publish_status();
+}
+
+// Stages first .. first + count - 1 (from 0), each by the engine's run_stage.
+void SimulationRunner::run_stages(std::size_t first, std::size_t count) {
+  WorldSession& world = simulation_.world();
+  programme_.emplace(world, simulation_.output_interval(), first, count);
   state_ = ServerState::kRunning;
-  message_ = "programme of " + std::to_string(programme_->stage_count()) + " stages running";
-  spdlog::info("running the programme of {}: {} stages, up to {} cycles", simulation_.case_name(),
-               programme_->stage_count(), programme_->total());
+  message_ = "programme of " + std::to_string(count) + " stages running";
+  spdlog::info("running the programme of {}: stages {} to {}, up to {} cycles", simulation_.case_name(), first + 1,
+               first + count, programme_->total());
   last_poll_ = std::chrono::steady_clock::now();
-  for (std::size_t i = 0; i < programme_->stage_count() && !programme_->ending(); ++i) {
+  for (std::size_t i = first; i < first + count && !programme_->ending(); ++i) {
     if (queue_.shutdown_requested()) {
       programme_->stop("the server is shutting down");
       break;

@@ -23,6 +23,7 @@ DOMAINS = {
     "experiment_nine_disc": 167,
     "experiment_programme_refusals": 168,
     "experiment_one_shot_compression": 172,
+    "experiment_server_programme": 173,
     "telemetry_iteration": 169,
     "telemetry_callback": 170,
     "telemetry_gil_released": 171,

@@ -85,6 +85,36 @@ def test_a_stage_the_service_cannot_run_is_refused_by_name(serve):
             dem.run_programme(client, case)
 
 
+def test_the_server_runs_a_programme_that_trims_and_places_the_plate(serve):
+    """Miyata's reduced case CS through the run_programme command: the stages
+    dem.run_programme cannot send (trim, place the plate) run on the server."""
+    client = serve("experiment_server_programme")
+    case = dem.cases.load_case_file(CASES / "miyata" / "cs_reduced.case.txtpb")
+    client.load_case(case)
+    with pytest.raises(dem.ProgrammeError, match="Client.run_programme runs the stages on the server"):
+        dem.run_programme(client, case)
+    prepared = client.run_programme(first_stage=1, stage_count=2, timeout=120)
+    assert prepared.cycles_run > 0 and client.status.state == "loaded"
+    loaded = client.run_programme(first_stage=3, timeout=120)
+    top = next(w for w in client.state().plates.walls if w.name == "top")
+    assert loaded.cycles_run > 0
+    assert 900e3 <= top.normal_stress < 950e3  # the stage's stop condition (Miyata 3.2: 900 kPa)
+    with pytest.raises(dem.ServerError, match="first_stage 4 is past the 3 stages"):
+        client.run_programme(first_stage=4)
+
+
+def plate_contacts(client, wall, attempts=3):
+    """The contacts on a loaded plate mid-run. One CI run under load got an
+    empty answer once (not reproduced since, cause unknown): ask again and
+    say so, so it shows in the log instead of failing the run."""
+    for attempt in range(attempts):
+        contacts = client.contacts(wall=wall, timeout=10)
+        if contacts.size:
+            return contacts
+        print(f"query {attempt + 1}: no contacts on {wall} at cycle {client.status.cycle}; asking again")
+    return contacts
+
+
 def test_a_compression_the_server_runs_itself_followed_from_python(tmp_path):
     """Miyata's reduced case CS needs stages no command does (trimming,
     placing the plate): the server runs its programme one-shot while the
@@ -104,7 +134,7 @@ def test_a_compression_the_server_runs_itself_followed_from_python(tmp_path):
                 live.series.add(sample)
                 top = sample.wall("top")
                 if mid_run is None and top.normal_stress > 0.3 * target:
-                    mid_run = (top.area, client.contacts(wall="top", timeout=10))
+                    mid_run = (top.area, plate_contacts(client, "top"))
             assert server.process.wait() == 0, server.log_file.read_text()[-2000:]
             live.update()
     assert mid_run is not None, "the loading was not seen"

@@ -67,6 +67,9 @@ enum Domain : std::uint32_t {
   kOneShotFailure,
   kOneShotBadStarts,
   kOneShotEnvironment,
+  kProgrammeCommand,
+  kProgrammeCommandStop,
+  kProgrammeCommandErrors,
   kLastDomain
 };
 static_assert(kLastDomain <= 118, "the shell tests use domains 118 and 119");

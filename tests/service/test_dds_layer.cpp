@@ -323,8 +323,10 @@ TEST(Protocol, TopicNamesFollowRos2Conventions) {
 TEST(Protocol, KindsAndStatusesHaveNames) {
   EXPECT_EQ(protocol::command_kind(4), protocol::CommandKind::kCycle);
   EXPECT_EQ(protocol::command_kind(0), std::nullopt);
-  EXPECT_EQ(protocol::command_kind(13), std::nullopt);
+  EXPECT_EQ(protocol::command_kind(13), protocol::CommandKind::kRunProgramme);
+  EXPECT_EQ(protocol::command_kind(14), std::nullopt);
   EXPECT_EQ(protocol::to_string(protocol::CommandKind::kQueryContacts), "query_contacts");
+  EXPECT_EQ(protocol::to_string(protocol::CommandKind::kRunProgramme), "run_programme");
   EXPECT_EQ(protocol::to_string(protocol::ReplyStatus::kInvalidSnapshot), "invalid_snapshot");
   EXPECT_EQ(protocol::to_string(protocol::ServerState::kLoaded), "loaded");
 }

@@ -189,6 +189,8 @@ TEST(Lifecycle, EachStateAcceptsItsCommands) {
   EXPECT_FALSE(service::refusal(ServerState::kRunning, CommandKind::kSaveSnapshot));
   EXPECT_FALSE(service::refusal(ServerState::kRunning, CommandKind::kStop));
   EXPECT_TRUE(service::refusal(ServerState::kRunning, CommandKind::kCycle));
+  EXPECT_TRUE(service::refusal(ServerState::kRunning, CommandKind::kRunProgramme));
+  EXPECT_FALSE(service::refusal(ServerState::kLoaded, CommandKind::kRunProgramme));
   EXPECT_TRUE(service::refusal(ServerState::kRunning, CommandKind::kLoadCase));
   EXPECT_TRUE(service::refusal(ServerState::kRunning, CommandKind::kSetParameter));
   EXPECT_FALSE(service::refusal(ServerState::kError, CommandKind::kLoadSnapshot));

@@ -72,7 +72,7 @@ bool runs(const Status& status, const Client& client, std::uint64_t request) {
          status.command_request_id == request;
 }
 
-// A cycle or run_until just sent: with `wait`, shows progress until its
+// A cycle, run_until or run_programme just sent: with `wait`, shows progress until its
 // reply (Ctrl-C stops the run); without, returns once the server has
 // accepted it (it shows in the status) or refused it (a reply).
 int follow_run(const Global& global, Client& client, std::uint64_t request, bool wait) {
@@ -212,6 +212,11 @@ int cycle(const Global& global, std::int64_t cycles, bool wait) {
   if (cycles <= 0) throw BadArguments("cycle: N must be > 0, got " + std::to_string(cycles));
   Client client = connect(global);
   return follow_run(global, client, client.start_cycle(cycles), wait);
+}
+
+int run_programme(const Global& global, std::uint32_t first_stage, std::uint32_t stage_count, bool wait) {
+  Client client = connect(global);
+  return follow_run(global, client, client.start_run_programme(first_stage, stage_count), wait);
 }
 
 int run_until(const Global& global, const dem::protocol::RunUntilArgs& args, bool wait) {

@@ -36,6 +36,7 @@ int wall_velocity(const Global& global, const std::string& wall, const std::vect
 int servo(const Global& global, const std::string& wall, double stress, double gain, double max_speed);
 int cycle(const Global& global, std::int64_t cycles, bool wait);
 int run_until(const Global& global, const dem::protocol::RunUntilArgs& args, bool wait);
+int run_programme(const Global& global, std::uint32_t first_stage, std::uint32_t stage_count, bool wait);
 int stop(const Global& global);
 int contacts(const Global& global, const dem::protocol::ContactQueryArgs& query, const std::string& csv, int limit);
 int snapshot_save(const Global& global, const std::string& file, bool on_server);

@@ -106,7 +106,16 @@ int main(int argc, char** argv) {
     action = [&] { return demctl::run_until(global, until, wait); };
   });
 
-  app.add_subcommand("stop", "stop the running cycle or run-until")->callback([&] {
+  std::uint32_t first_stage = 0;
+  std::uint32_t stage_count = 0;
+  auto* programme = app.add_subcommand("run-programme", "run the loaded case's stages as dem_run does (trim, place "
+                                                        "walls, wall motions, stop conditions)");
+  programme->add_option("--from", first_stage, "the first stage to run, counted from 1 (default: the first)");
+  programme->add_option("--stages", stage_count, "how many stages to run (default: to the last)");
+  programme->add_flag("-w,--wait", wait, "wait for the end, with a progress bar (Ctrl-C stops the run)");
+  programme->callback([&] { action = [&] { return demctl::run_programme(global, first_stage, stage_count, wait); }; });
+
+  app.add_subcommand("stop", "stop the running cycle, run-until or run-programme")->callback([&] {
     action = [&] { return demctl::stop(global); };
   });
 

@@ -309,6 +309,19 @@ protocol::Reply Client::run_until(const protocol::RunUntilArgs& args, std::chron
   return call(std::move(c), timeout);
 }
 
+std::uint64_t Client::start_run_programme(std::uint32_t first_stage, std::uint32_t stage_count) {
+  protocol::Command c = command(CommandKind::kRunProgramme);
+  c.programme = {first_stage, stage_count};
+  return send(std::move(c));
+}
+
+protocol::Reply Client::run_programme(std::uint32_t first_stage, std::uint32_t stage_count,
+                                      std::chrono::milliseconds timeout) {
+  protocol::Command c = command(CommandKind::kRunProgramme);
+  c.programme = {first_stage, stage_count};
+  return call(std::move(c), timeout);
+}
+
 protocol::Reply Client::stop() { return call(command(CommandKind::kStop)); }
 protocol::Reply Client::get_state() { return call(command(CommandKind::kGetState)); }
 protocol::Reply Client::shutdown() { return call(command(CommandKind::kShutdown)); }

@@ -166,8 +166,18 @@ class Client:
         return self._native.start_run_until(wall, _optional(stress), _optional(settlement),
                                             _optional(kinetic_energy), int(max_cycles), int(check_interval))
 
+    def run_programme(self, *, first_stage=0, stage_count=0, timeout=None, on_wait=None, wait_interval=0.1):
+        """Runs the loaded case's stages on the server as dem_run does - trims,
+        wall placements, wall motions, damping, stop conditions - from
+        ``first_stage`` (counted from 1; 0 = the first) for ``stage_count``
+        stages (0 = to the last), and returns the reply when they end."""
+        return self._native.run_programme(int(first_stage), int(stage_count), timeout, on_wait, wait_interval)
+
+    def start_run_programme(self, *, first_stage=0, stage_count=0):
+        return self._native.start_run_programme(int(first_stage), int(stage_count))
+
     def await_run(self, request_id, *, timeout=None, on_wait=None, wait_interval=0.1):
-        """The reply to a run started with start_cycle or start_run_until."""
+        """The reply to a run started with start_cycle, start_run_until or start_run_programme."""
         return self._native.await_reply(request_id, timeout, on_wait, wait_interval, True)
 
     def stop(self, *, timeout=None):

@@ -8,8 +8,10 @@ Each piece becomes service commands: a wall motion set_wall_velocity or
 set_wall_servo (the case's servo force and gain per unit force are turned
 into the service's stress and gain per unit stress with the wall's area),
 damping set_parameter, cycles cycle; the conditions are checked here, from
-get_state, between cycle commands. A stage that trims the sample or places
-a wall raises ProgrammeError: the service has no command for either yet.
+get_state, between cycle commands, so a script can watch and sample each
+stage as it goes. A stage that trims the sample or places a wall has no
+command of its own and raises ProgrammeError: Client.run_programme runs
+such a programme on the server instead (the run_programme command).
 """
 
 import dataclasses
@@ -36,10 +38,11 @@ def check_stage_supported(case, index):
     stage = case.stage[index]
     label = f'stage {index} ("{stage.name}")'
     if has(stage, "trim"):
-        raise ProgrammeError(f"{label} trims the sample, which no service command does yet")
+        raise ProgrammeError(f"{label} trims the sample, which no single command does: "
+                             "Client.run_programme runs the stages on the server")
     if has(stage, "place_wall"):
-        raise ProgrammeError(f'{label} places wall "{stage.place_wall.wall}" on the sample, '
-                             "which no service command does yet")
+        raise ProgrammeError(f'{label} places wall "{stage.place_wall.wall}" on the sample, which no single '
+                             "command does: Client.run_programme runs the stages on the server")
     if has(stage, "damping"):
         for rotation in ("global_alpha_rotation", "local_alpha_rotation"):
             if has(stage.damping, rotation):

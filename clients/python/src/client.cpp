@@ -265,6 +265,23 @@ void bind_client(py::module_& m) {
           py::arg("wall"), py::arg("stress"), py::arg("settlement"), py::arg("kinetic_energy"), py::arg("max_cycles"),
           py::arg("check_interval"))
       .def(
+          "run_programme",
+          [](ClientHandle& h, std::uint32_t first_stage, std::uint32_t stage_count, Seconds t, py::object w,
+             double i) {
+            protocol::Command c = command(CommandKind::kRunProgramme);
+            c.programme = {first_stage, stage_count};
+            return call(h, std::move(c), run_wait(t, std::move(w), i));
+          },
+          py::arg("first_stage"), py::arg("stage_count"), timeout, on_wait, interval)
+      .def(
+          "start_run_programme",
+          [](ClientHandle& h, std::uint32_t first_stage, std::uint32_t stage_count) {
+            protocol::Command c = command(CommandKind::kRunProgramme);
+            c.programme = {first_stage, stage_count};
+            return send(h.get(), std::move(c));
+          },
+          py::arg("first_stage"), py::arg("stage_count"))
+      .def(
           "await_reply",
           [](ClientHandle& h, std::uint64_t id, Seconds t, py::object w, double i, bool is_run) {
             const Wait wait = is_run ? run_wait(t, std::move(w), i) : command_wait(h, t, std::move(w), i);

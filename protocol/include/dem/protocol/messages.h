@@ -45,6 +45,7 @@ enum class CommandKind : std::uint8_t {
   kSaveSnapshot = 10,
   kLoadSnapshot = 11,
   kSetParameter = 12,
+  kRunProgramme = 13,
 };
 
 // Reply_Constants in idl/dem/command.idl.
@@ -201,6 +202,13 @@ struct ParameterArgs {
   friend bool operator==(const ParameterArgs&, const ParameterArgs&) = default;
 };
 
+// run_programme: stages numbered from 1; first_stage 0 = 1, stage_count 0 = to the last.
+struct ProgrammeArgs {
+  std::uint32_t first_stage = 0;
+  std::uint32_t stage_count = 0;
+  friend bool operator==(const ProgrammeArgs&, const ProgrammeArgs&) = default;
+};
+
 struct Command {
   std::string server;
   std::string client_id;
@@ -214,6 +222,7 @@ struct Command {
   ContactQueryArgs query;
   SnapshotArgs snapshot;
   ParameterArgs parameter;
+  ProgrammeArgs programme;
   Stamp stamp;
   friend bool operator==(const Command&, const Command&) = default;
 };

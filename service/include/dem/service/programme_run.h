@@ -1,5 +1,5 @@
 // The case's loading programme as a one-shot server runs it
-// (dem_server --case FILE --run-and-exit): which stage is running and how
+// (dem_server --case FILE --run-and-exit, or the run_programme command): which stage is running and how
 // far, when the time series is due a row, the last state known to be good,
 // and how the programme ended. The engine's run_stage does the stepping and
 // decides each stage's end; this is only the bookkeeping around it.
@@ -24,8 +24,9 @@ enum class ProgrammeOutcome {
 class ProgrammeRun {
  public:
   // `output_interval`: cycles between rows of the time series, counted from
-  // each stage's start as dem_run counts them (the case's output.interval).
-  ProgrammeRun(const WorldSession& world, std::uint64_t output_interval);
+  // each stage's start as dem_run counts them (the case's output.interval);
+  // the stages run are first .. first + count - 1 (from 0).
+  ProgrammeRun(const WorldSession& world, std::uint64_t output_interval, std::size_t first, std::size_t count);
 
   std::size_t stage_count() const { return stage_count_; }
   std::size_t stage() const { return stage_; }  // the stage running, or stage_count() after the last
@@ -35,7 +36,7 @@ class ProgrammeRun {
   bool row_due(std::uint64_t cycle) const { return (cycle - stage_start_) % output_interval_ == 0; }
 
   std::uint64_t done(const WorldSession& world) const { return world.cycle_count() - start_cycle_; }
-  // Every stage's length or cap added up: what `done` reaches at most.
+  // The length or cap of every stage run, added up: what `done` reaches at most.
   std::uint64_t total() const { return total_; }
 
   // Keeps a copy of the state, which the caller has found good (finite):

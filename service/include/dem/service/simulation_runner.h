@@ -57,7 +57,12 @@ class SimulationRunner {
   void end_run(protocol::ReplyStatus status, const std::string& message);
   void fail_run(const std::string& message);
 
-  // The one-shot mode (simulation_runner_programme.cpp).
+  // The one-shot mode and run_programme (simulation_runner_programme.cpp).
+  // The run_programme command runs the same stages from the command loop;
+  // its one reply comes when they end (completed, stopped or failed), and
+  // the server then takes commands again.
+  void run_programme(const ReceivedCommand& received);
+  void run_stages(std::size_t first, std::size_t count);
   bool between_programme_cycles();
   bool programme_blew_up();  // fails the programme when the kinetic energy is not finite
   void record_programme_row();
@@ -86,7 +91,8 @@ class SimulationRunner {
   TelemetrySchedule schedule_;
   protocol::ServerState state_ = protocol::ServerState::kIdle;
   std::optional<ActiveRun> active_;
-  std::optional<ProgrammeRun> programme_;  // a one-shot run's programme
+  std::optional<ProgrammeRun> programme_;  // a one-shot run's programme, or run_programme's
+  const protocol::Command* programme_command_ = nullptr;  // run_programme's, while it runs
   std::chrono::steady_clock::time_point last_poll_{};  // of the queue, during a programme
   std::vector<ReceivedCommand> unanswered_;  // taken from the queue after a shutdown request
   std::string message_ = "started";

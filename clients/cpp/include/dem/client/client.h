@@ -86,6 +86,11 @@ class Client {
   protocol::Reply run_until(const protocol::RunUntilArgs& args,
                             std::chrono::milliseconds timeout = std::chrono::hours(24));
   std::uint64_t start_run_until(const protocol::RunUntilArgs& args);
+  // Runs the loaded case's stages (all, or from `first_stage`, counted from
+  // 1, for `stage_count` stages; 0 = to the last) and waits for the end.
+  protocol::Reply run_programme(std::uint32_t first_stage = 0, std::uint32_t stage_count = 0,
+                                std::chrono::milliseconds timeout = std::chrono::hours(24));
+  std::uint64_t start_run_programme(std::uint32_t first_stage = 0, std::uint32_t stage_count = 0);
   protocol::Reply stop();
   protocol::Reply get_state();
   protocol::Reply shutdown();

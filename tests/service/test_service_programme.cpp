@@ -1,0 +1,127 @@
+// The run_programme command: a loaded case's stages run on a server that
+// takes commands, with the same result as the engine's own run_stage; a
+// range of stages; its status and reply; a stop; Miyata's staged plate
+// loading (trim, place the plate, lower it to a stress) through the
+// command loop; and the requests it refuses.
+#include <gtest/gtest.h>
+
+#include "dem/io/case_conversion.h"
+#include "dem/io/case_loader.h"
+#include "service_test_support.h"
+
+namespace dem::test {
+namespace {
+
+using protocol::ReplyStatus;
+using protocol::ServerState;
+
+std::uint64_t engine_hash(const std::filesystem::path& case_path, std::size_t first, std::size_t count) {
+  io::CaseDefinition definition = io::convert_case(io::load_case_file(case_path).message);
+  definition.world.threads = 1;  // as the test server's
+  World engine(definition.world);
+  for (std::size_t i = first; i < first + count; ++i) run_stage(engine, definition.stages[i]);
+  return engine.state_hash();
+}
+
+protocol::Reply error_reply(const std::function<void()>& command) {
+  try {
+    command();
+  } catch (const client::ServerError& error) {
+    return error.reply();
+  }
+  ADD_FAILURE() << "the command succeeded";
+  return {};
+}
+
+TEST(ProgrammeCommand, RunsTheStagesAsTheEngineDoesThenTakesCommandsAgain) {
+  InProcessServer server(server_options("stages", kProgrammeCommand));
+  client::Client client(connect_options("stages", kProgrammeCommand));
+  client.load_case_file(case_file("nine_disc_damped"));
+
+  // compress (40 cycles), hold (2960).
+  const protocol::Reply all = client.run_programme();
+  EXPECT_TRUE(all.ok()) << all.message;
+  EXPECT_EQ(all.cycles_run, 3000u);
+  EXPECT_NE(all.message.find("programme complete at cycle 3000"), std::string::npos) << all.message;
+  EXPECT_EQ(all.state.state, ServerState::kLoaded);
+  EXPECT_EQ(client.get_state().state_hash, engine_hash(case_file("nine_disc_damped"), 0, 2));
+
+  // Commands work as before, and a range of stages runs on from where the world is.
+  EXPECT_EQ(client.cycle(10).cycles_run, 10u);
+  const protocol::Reply hold = client.run_programme(2, 1);
+  EXPECT_TRUE(hold.ok()) << hold.message;
+  EXPECT_EQ(hold.cycles_run, 2960u);
+  EXPECT_EQ(client.get_state().state.cycle, 5970u);
+}
+
+TEST(ProgrammeCommand, MiyatasPlateLoadingRunsThroughTheCommandLoop) {
+  // The reduced CS case: settle, trim and settle, place the plate and lower
+  // it until it carries 900 kPa (Miyata et al. 2002, 3.2).
+  const auto cs = std::filesystem::path(DEM_CASES_DIR) / "miyata" / "cs_reduced.case.txtpb";
+  InProcessServer server(server_options("miyata", kProgrammeCommandStop));
+  client::Client client(connect_options("miyata", kProgrammeCommandStop));
+  client.load_case_file(cs);
+
+  const protocol::Reply prepared = client.run_programme(1, 2);
+  ASSERT_TRUE(prepared.ok()) << prepared.message;
+  const std::uint64_t loading = client.start_run_programme(3, 1);
+  const auto running = client.wait_for_status(
+      [&](const protocol::Status& s) { return s.state == ServerState::kRunning && s.command == "run_programme"; }, 30s);
+  ASSERT_TRUE(running);
+  EXPECT_EQ(running->command_client, client.client_id());
+  EXPECT_EQ(running->command_request_id, loading);
+  const auto reply = client.await(loading, 120s);
+  ASSERT_TRUE(reply);
+  ASSERT_TRUE(reply->ok()) << reply->message;
+  const protocol::Reply state = client.get_state();
+  const auto& top = state.plates.walls.at(1);
+  ASSERT_EQ(top.name, "top");
+  std::printf("reduced CS through run_programme: top plate %.1f kPa at settlement %.4f m, %d contacts, cycle %llu\n",
+              top.normal_stress / 1e3, top.settlement, top.contacts,
+              static_cast<unsigned long long>(state.plates.cycle));
+  EXPECT_GE(top.normal_stress, 900e3);  // the stage's stop condition
+  EXPECT_LT(top.normal_stress, 950e3);
+  EXPECT_GT(top.settlement, 0.0);  // counted from where the stage placed the plate
+  // The same stages in the engine give the same state.
+  EXPECT_EQ(state.state_hash, engine_hash(cs, 0, 3));
+}
+
+TEST(ProgrammeCommand, AStopEndsItCancelledAndBadRangesAreRefused) {
+  InProcessServer server(server_options("refusals", kProgrammeCommandErrors));
+  client::Client client(connect_options("refusals", kProgrammeCommandErrors));
+  EXPECT_EQ(error_reply([&] { client.run_programme(); }).message,
+            "run_programme refused: no case is loaded: load a case or a snapshot first");
+
+  client.load_case_file(case_file("nine_disc_damped"));
+  const protocol::Reply past = error_reply([&] { client.run_programme(3); });
+  EXPECT_EQ(past.status, ReplyStatus::kBadRequest);
+  EXPECT_EQ(past.message, "first_stage 3 is past the 2 stages of nine_disc_damped");
+  EXPECT_EQ(error_reply([&] { client.run_programme(2, 2); }).message,
+            "2 stages from stage 2 go past the 2 of nine_disc_damped");
+  EXPECT_EQ(client.get_state().state.cycle, 0u);  // nothing was run
+
+  // A snapshot carries no stages.
+  client.save_snapshot("nine_disc.snapshot");
+  client.load_snapshot_on_server("nine_disc.snapshot");
+  EXPECT_EQ(error_reply([&] { client.run_programme(); }).message,
+            "run_programme refused: nine_disc_damped has no stages (a snapshot keeps none; load the case)");
+
+  // A long compression (300,000 cycles), stopped: the reply is cancelled
+  // and the server takes commands again.
+  client.load_case_file(case_file("verification_assembly"));
+  const std::uint64_t request = client.start_run_programme();
+  ASSERT_TRUE(client.wait_for_status([](const auto& s) { return s.state == ServerState::kRunning; }, 10s));
+  const protocol::Reply twice = error_reply([&] { client.run_programme(); });
+  EXPECT_EQ(twice.message, "run_programme refused: a command is already running: wait for it or stop it");
+  client.stop();
+  const auto stopped = client.await(request, 10s);
+  ASSERT_TRUE(stopped);
+  EXPECT_EQ(stopped->status, ReplyStatus::kCancelled);
+  EXPECT_NE(stopped->message.find("programme stopped"), std::string::npos) << stopped->message;
+  EXPECT_LT(stopped->cycles_run, 300000u);
+  EXPECT_EQ(client.status().state, ServerState::kLoaded);
+  EXPECT_TRUE(client.cycle(5).ok());
+}
+
+}  // namespace
+}  // namespace dem::test
