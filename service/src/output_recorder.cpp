@@ -19,9 +19,20 @@ OutputRecorder::OutputRecorder(std::filesystem::path output_directory, bool enab
     : output_directory_(std::move(output_directory)), enabled_(enabled) {}
 
 template <int Dim>
-void OutputRecorder::start(const std::string& case_name, const BasicWorld<Dim>& world) {
+std::unique_ptr<OutputRecorder::Compression<Dim>>& OutputRecorder::compression() {
+  if constexpr (Dim == 2) {
+    return compression2_;
+  } else {
+    return compression3_;
+  }
+}
+
+template <int Dim>
+void OutputRecorder::start(const std::string& case_name, const BasicWorld<Dim>& world,
+                           std::optional<io::CompressionSettings> compression) {
   close();
   directory_ = output_directory_ / directory_name(case_name);
+  compression_settings_ = std::move(compression);
   if (!enabled_) return;
   try {
     if constexpr (Dim == 2) {
@@ -37,8 +48,24 @@ void OutputRecorder::start(const std::string& case_name, const BasicWorld<Dim>& 
 }
 
 template <int Dim>
-void OutputRecorder::record(const BasicWorld<Dim>& world) {
-  if (!assembly_ || last_cycle_ == world.cycle_count()) return;
+void OutputRecorder::record(const BasicWorld<Dim>& world, std::optional<std::size_t> stage) {
+  if (!assembly_) return;
+  try {
+    if (stage && compression_settings_) {
+      std::unique_ptr<Compression<Dim>>& c = compression<Dim>();
+      if (!c) {
+        c.reset(new Compression<Dim>{io::CompressionAnalysisT<Dim>(*compression_settings_),
+                                     io::CompressionCsvT<Dim>(directory_,
+                                                              world.wall(compression_settings_->loading_plate).name,
+                                                              world.wall(compression_settings_->bottom_plate).name)});
+      }
+      io::record_compression(c->analysis, c->csv, world, static_cast<int>(*stage));
+    }
+  } catch (const std::exception& error) {
+    fail(error);
+    return;
+  }
+  if (last_cycle_ == world.cycle_count()) return;
   last_cycle_ = world.cycle_count();
   try {
     if constexpr (Dim == 2) {
@@ -74,6 +101,11 @@ void OutputRecorder::finish(const BasicWorld<Dim>& world) {
     io::write_contacts_csv(directory_, world);
     io::write_particles_csv(directory_, world);
     spdlog::info("wrote {}/{{walls,assembly,contacts,particles}}.csv", directory_.string());
+    if (const std::unique_ptr<Compression<Dim>>& c = compression<Dim>()) {
+      c->csv.write_results(c->analysis.results(world));
+      spdlog::info("wrote the plate loading analyses in {} (compression.csv, compression_states.csv, ...)",
+                   directory_.string());
+    }
   } catch (const std::exception& error) {
     fail(error);
   }
@@ -91,13 +123,15 @@ void OutputRecorder::close() {
   walls3_.reset();
   assembly_.reset();
   stages_.reset();
+  compression2_.reset();
+  compression3_.reset();
   last_cycle_.reset();
 }
 
-template void OutputRecorder::start(const std::string&, const BasicWorld<2>&);
-template void OutputRecorder::start(const std::string&, const BasicWorld<3>&);
-template void OutputRecorder::record(const BasicWorld<2>&);
-template void OutputRecorder::record(const BasicWorld<3>&);
+template void OutputRecorder::start(const std::string&, const BasicWorld<2>&, std::optional<io::CompressionSettings>);
+template void OutputRecorder::start(const std::string&, const BasicWorld<3>&, std::optional<io::CompressionSettings>);
+template void OutputRecorder::record(const BasicWorld<2>&, std::optional<std::size_t>);
+template void OutputRecorder::record(const BasicWorld<3>&, std::optional<std::size_t>);
 template void OutputRecorder::finish(const BasicWorld<2>&);
 template void OutputRecorder::finish(const BasicWorld<3>&);
 

@@ -127,7 +127,7 @@ bool SimulationRunner::programme_blew_up() {
 }
 
 void SimulationRunner::record_programme_row() {
-  simulation_.world().record_tables(recorder_);
+  simulation_.world().record_tables(recorder_, programme_->stage());
   if (recorder_.failed()) programme_->fail("an output file could not be written (see the error above)");
 }
 

@@ -38,8 +38,9 @@ class CheckpointT final : public StateCheckpoint {
 template <int Dim>
 class WorldSessionT final : public WorldSession {
  public:
-  WorldSessionT(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages)
-      : world_(std::move(world)), stages_(std::move(stages)) {}
+  WorldSessionT(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages,
+                std::optional<io::CompressionSettings> compression)
+      : world_(std::move(world)), stages_(std::move(stages)), compression_(std::move(compression)) {}
 
   std::uint8_t dimension() const override { return Dim; }
   void cycle(std::uint64_t cycles) override { world_.cycle(cycles); }
@@ -102,25 +103,31 @@ class WorldSessionT final : public WorldSession {
   }
 
   void start_tables(OutputRecorder& recorder, const std::string& case_name) const override {
-    recorder.start(case_name, world_);
+    recorder.start(case_name, world_, compression_);
   }
-  void record_tables(OutputRecorder& recorder) const override { recorder.record(world_); }
+  void record_tables(OutputRecorder& recorder, std::optional<std::size_t> stage) const override {
+    recorder.record(world_, stage);
+  }
   void finish_tables(OutputRecorder& recorder) const override { recorder.finish(world_); }
 
  private:
   static constexpr std::integral_constant<int, Dim> kDim{};
   BasicWorld<Dim> world_;
   std::vector<StageDefT<Dim>> stages_;
+  std::optional<io::CompressionSettings> compression_;
 };
 
 }  // namespace
 
 template <int Dim>
-std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages) {
-  return std::make_unique<WorldSessionT<Dim>>(std::move(world), std::move(stages));
+std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages,
+                                           std::optional<io::CompressionSettings> compression) {
+  return std::make_unique<WorldSessionT<Dim>>(std::move(world), std::move(stages), std::move(compression));
 }
 
-template std::unique_ptr<WorldSession> make_session<2>(BasicWorld<2> world, std::vector<StageDefT<2>> stages);
-template std::unique_ptr<WorldSession> make_session<3>(BasicWorld<3> world, std::vector<StageDefT<3>> stages);
+template std::unique_ptr<WorldSession> make_session<2>(BasicWorld<2>, std::vector<StageDefT<2>>,
+                                                       std::optional<io::CompressionSettings>);
+template std::unique_ptr<WorldSession> make_session<3>(BasicWorld<3>, std::vector<StageDefT<3>>,
+                                                       std::optional<io::CompressionSettings>);
 
 }  // namespace dem::service

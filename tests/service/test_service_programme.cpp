@@ -2,8 +2,11 @@
 // takes commands, with the same result as the engine's own run_stage; a
 // range of stages; its status and reply; a stop; Miyata's staged plate
 // loading (trim, place the plate, lower it to a stress) through the
-// command loop; and the requests it refuses.
+// command loop, with dem_run's plate loading analyses; and the requests it
+// refuses.
 #include <gtest/gtest.h>
+
+#include <fstream>
 
 #include "dem/io/case_conversion.h"
 #include "dem/io/case_loader.h"
@@ -58,7 +61,8 @@ TEST(ProgrammeCommand, MiyatasPlateLoadingRunsThroughTheCommandLoop) {
   // The reduced CS case: settle, trim and settle, place the plate and lower
   // it until it carries 900 kPa (Miyata et al. 2002, 3.2).
   const auto cs = std::filesystem::path(DEM_CASES_DIR) / "miyata" / "cs_reduced.case.txtpb";
-  InProcessServer server(server_options("miyata", kProgrammeCommandStop));
+  const service::ServerOptions options = server_options("miyata", kProgrammeCommandStop);
+  InProcessServer server(options);
   client::Client client(connect_options("miyata", kProgrammeCommandStop));
   client.load_case_file(cs);
 
@@ -84,6 +88,24 @@ TEST(ProgrammeCommand, MiyatasPlateLoadingRunsThroughTheCommandLoop) {
   EXPECT_GT(top.settlement, 0.0);  // counted from where the stage placed the plate
   // The same stages in the engine give the same state.
   EXPECT_EQ(state.state_hash, engine_hash(cs, 0, 3));
+
+  // The plate loading analyses dem_run writes, written when the case is
+  // replaced: a row per output interval of the loading stage, three states.
+  client.load_case_file(cs);
+  const auto tables = options.output_directory / "miyata_cs_reduced";
+  const auto lines = [&](const char* file) {
+    std::ifstream in(tables / file);
+    int count = 0;
+    for (std::string line; std::getline(in, line);) ++count;
+    return count;
+  };
+  const int loading_rows = lines("compression.csv") - 1;
+  std::printf("compression.csv: %d rows; compression_states.csv: %d states\n", loading_rows,
+              lines("compression_states.csv") - 1);
+  EXPECT_GT(loading_rows, 100);  // the loading stage: about 46,000 cycles at 100 a row
+  EXPECT_EQ(lines("compression_states.csv") - 1, 3);
+  EXPECT_GT(lines("plate_contacts.csv"), 1);
+  EXPECT_GT(lines("force_tail.csv"), 1);
 }
 
 TEST(ProgrammeCommand, AStopEndsItCancelledAndBadRangesAreRefused) {

@@ -3,7 +3,10 @@
 // while it runs (the same tables as dem_run, io/csv_writers.h; a one-shot
 // run writes them at the case's output interval), contacts.csv and
 // particles.csv when the case is replaced or the server stops, and
-// stages.csv, a row per stage of a one-shot run's programme. A file that
+// stages.csv, a row per stage of a programme (one-shot or run_programme);
+// when the case asks for them (output.compression), the plate loading
+// analyses of a programme, the same files as dem_run writes
+// (io/compression_csv.h). A file that
 // cannot be written is logged and recording stops; the simulation goes on
 // (a one-shot run then fails: failed()).
 #pragma once
@@ -14,6 +17,9 @@
 #include <optional>
 #include <string>
 
+#include "dem/io/compression_analysis.h"
+#include "dem/io/compression_csv.h"
+#include "dem/io/compression_settings.h"
 #include "dem/io/csv_file.h"
 #include "dem/io/csv_writers.h"
 #include "dem/programme.h"
@@ -26,11 +32,14 @@ class OutputRecorder {
   OutputRecorder(std::filesystem::path output_directory, bool enabled);
 
   template <int Dim>
-  void start(const std::string& case_name, const BasicWorld<Dim>& world);  // after a load
+  void start(const std::string& case_name, const BasicWorld<Dim>& world,
+             std::optional<io::CompressionSettings> compression = std::nullopt);  // after a load
   // A row of the time series, unless this cycle has one already (a load
-  // and its first telemetry, a stage's end and the next stage's start).
+  // and its first telemetry, a stage's end and the next stage's start);
+  // with the stage of a programme running, a sample of the plate loading
+  // analyses too.
   template <int Dim>
-  void record(const BasicWorld<Dim>& world);
+  void record(const BasicWorld<Dim>& world, std::optional<std::size_t> stage = std::nullopt);
   // A stage of a one-shot run's programme has ended, at `cycle` and `time`.
   void record_stage(std::size_t stage, const std::string& name, const StageResult& result, std::uint64_t cycle,
                     double time);
@@ -44,6 +53,15 @@ class OutputRecorder {
   bool failed() const { return failed_; }
 
  private:
+  // The plate loading analyses and their files, made at the first sample.
+  template <int Dim>
+  struct Compression {
+    io::CompressionAnalysisT<Dim> analysis;
+    io::CompressionCsvT<Dim> csv;
+  };
+  template <int Dim>
+  std::unique_ptr<Compression<Dim>>& compression();
+
   void fail(const std::exception& error);
   void close();
 
@@ -55,6 +73,9 @@ class OutputRecorder {
   std::unique_ptr<io::WallsCsvT<3>> walls3_;
   std::unique_ptr<io::AssemblyCsv> assembly_;
   std::unique_ptr<io::CsvFile> stages_;
+  std::optional<io::CompressionSettings> compression_settings_;
+  std::unique_ptr<Compression<2>> compression2_;
+  std::unique_ptr<Compression<3>> compression3_;
   std::optional<std::uint64_t> last_cycle_;
 };
 

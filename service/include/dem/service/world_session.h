@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "dem/io/compression_settings.h"
 #include "dem/io/snapshot_conversion.h"
 #include "dem/programme.h"
 #include "dem/protocol/messages.h"
@@ -83,13 +84,17 @@ class WorldSession {
   // the stage early by returning false. Throws what the engine throws.
   virtual StageResult run_stage(std::size_t stage, const std::function<bool()>& between_cycles) = 0;
 
-  // The per-case tables (the recorder writes them for this world's dimension).
+  // The per-case tables (the recorder writes them for this world's
+  // dimension); `stage`, the stage running, when a programme runs (the
+  // plate loading analyses follow programmes only).
   virtual void start_tables(OutputRecorder& recorder, const std::string& case_name) const = 0;
-  virtual void record_tables(OutputRecorder& recorder) const = 0;
+  virtual void record_tables(OutputRecorder& recorder, std::optional<std::size_t> stage = std::nullopt) const = 0;
   virtual void finish_tables(OutputRecorder& recorder) const = 0;
 };
 
+// `compression`: the case's plate loading analyses (output.compression), if any.
 template <int Dim>
-std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages = {});
+std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages = {},
+                                           std::optional<io::CompressionSettings> compression = std::nullopt);
 
 }  // namespace dem::service
