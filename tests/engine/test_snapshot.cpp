@@ -6,32 +6,12 @@
 #include "dem/packing.h"
 #include "dem/world.h"
 #include "model_builders.h"
+#include "snapshot_worlds.h"
 
 namespace dem {
 namespace {
 
-// Discs settling into a box whose lid is a servo: contact history, sliding,
-// wall motion and servo state all matter for the continuation.
-WorldDef settling_box() {
-  WorldDef def;
-  def.materials = {MaterialDef{"disc", 2650.0, 0.4, 0.0}, MaterialDef{"wall", 1.0, 0.2, 0.0}};
-  def.contact_models = {testing::linear_model(1.0e6, 0.7e6)};
-  RandomPackingDef packing;
-  packing.min = {0.0, 0.0};
-  packing.max = {0.3, 0.3};
-  packing.sizes = {{0.012, 40}, {0.008, 60}};
-  packing.seed = 11;
-  def.particles = generate_random_packing(packing);
-  def.walls = {WallDef{"bottom", {0.15, 0.0}, {1, 0}, -0.2, 0.2, 1, {}},
-               WallDef{"right", {0.3, 0.15}, {0, 1}, -0.2, 0.2, 1, {}},
-               WallDef{"top", {0.15, 0.3}, {-1, 0}, -0.2, 0.2, 1, {}},
-               WallDef{"left", {0.0, 0.15}, {0, -1}, -0.2, 0.2, 1, {}}};
-  def.walls[2].motion.servo = ServoDef{200.0, 1e-3, 0.05};
-  def.walls[3].motion.velocity = {0.001, 0.0};
-  def.gravity = {0.0, -9.81};
-  def.damping = {1e-4, 0.5};
-  return def;
-}
+using testing::settling_box;
 
 TEST(Snapshot, ContinuationIsBitIdentical) {
   World original(settling_box());

@@ -6,13 +6,13 @@
 #include <limits>
 
 #include "dem/io/snapshot_conversion.h"
-#include "snapshot_test_worlds.h"
+#include "snapshot_worlds.h"
 
 namespace dem::io {
 namespace {
 
-using test::settling_box;
-using test::sphere_stack;
+using testing::settling_box;
+using testing::sphere_stack;
 
 std::string problems_of(const proto::Snapshot& message) {
   try {

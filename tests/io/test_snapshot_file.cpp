@@ -8,7 +8,7 @@
 #include "dem/case.pb.h"
 #include "dem/io/snapshot_file.h"
 #include "io_test_support.h"
-#include "snapshot_test_worlds.h"
+#include "snapshot_worlds.h"
 
 namespace dem::io {
 namespace {
@@ -23,7 +23,7 @@ std::string error_of(std::string_view bytes, std::string_view source) {
 }
 
 TEST(SnapshotFile, BytesRoundTripExactly) {
-  World world(test::settling_box());
+  World world(testing::settling_box());
   world.cycle(800);
   const std::string bytes = serialize_snapshot(world.snapshot(), SnapshotInfo{"box", "d"});
   const LoadedSnapshot loaded = parse_snapshot(bytes, "mem");
@@ -52,7 +52,7 @@ TEST(SnapshotFile, GarbageIsRefusedNamingTheSource) {
 }
 
 TEST(SnapshotFile, TruncatedBytesAreRefused) {
-  World world(test::settling_box());
+  World world(testing::settling_box());
   world.cycle(100);
   const std::string bytes = serialize_snapshot(world.snapshot(), SnapshotInfo{});
   for (const std::size_t keep : {bytes.size() / 3, bytes.size() / 2, bytes.size() - 1}) {
@@ -62,7 +62,7 @@ TEST(SnapshotFile, TruncatedBytesAreRefused) {
 
 TEST(SnapshotFile, FilesRoundTripAndLeaveNoPartialFile) {
   const auto directory = test::fresh_directory("snapshot_file");
-  World world(test::settling_box());
+  World world(testing::settling_box());
   world.cycle(300);
   const auto path = directory / "nested" / "box.snapshot";
   write_snapshot_file(path, world.snapshot(), SnapshotInfo{"box", ""});
@@ -81,12 +81,12 @@ TEST(SnapshotFile, MissingOrUnwritableFilesNameThePath) {
     EXPECT_EQ(std::string(error.what()).rfind("/nonexistent/dir/x.snapshot: cannot read the snapshot", 0), 0u)
         << error.what();
   }
-  World world(test::settling_box());
+  World world(testing::settling_box());
   EXPECT_THROW(write_snapshot_file("/proc/x.snapshot", world.snapshot(), SnapshotInfo{}), SnapshotError);
 }
 
 TEST(SnapshotFile, ThreeDimensionalSnapshotsKeepTheirDimension) {
-  World3 world(test::sphere_stack(ContactLaw::kLinear));
+  World3 world(testing::sphere_stack(ContactLaw::kLinear));
   world.cycle(200);
   const std::string bytes = serialize_snapshot(world.snapshot(), SnapshotInfo{});
   EXPECT_EQ(parse_snapshot_message(bytes).dimension(), 3u);

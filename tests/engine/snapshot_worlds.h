@@ -1,21 +1,20 @@
-// Worlds with rich state for the snapshot tests: contact history, sliding,
-// wall motion and a servo in 2D; Hertz-Mindlin history, vector spins and
-// quaternions in 3D.
+// Worlds with rich state for the snapshot tests of the engine and of io:
+// contact history, sliding, wall motion and a servo in 2D; Hertz-Mindlin
+// history, vector spins and quaternions in 3D.
 #pragma once
 
 #include "dem/packing.h"
 #include "dem/world.h"
+#include "model_builders.h"
 
-namespace dem::io::test {
+namespace dem::testing {
 
 // Discs settling in a box whose lid is a servo (BALL's linear law).
 inline WorldDef settling_box() {
   WorldDef def;
   def.materials = {MaterialDef{"disc", 2650.0, 0.4, 0.0}, MaterialDef{"wall", 1.0, 0.2, 0.0}};
-  ContactModelDef linear;
-  linear.linear = {1.0e6, 0.7e6};
-  linear.friction = 0.35;
-  def.contact_models = {linear};
+  def.contact_models = {linear_model(1.0e6, 0.7e6)};
+  def.contact_models[0].friction = 0.35;
   RandomPackingDef packing;
   packing.min = {0.0, 0.0};
   packing.max = {0.3, 0.3};
@@ -73,4 +72,4 @@ inline WorldDef3 sphere_stack(ContactLaw law) {
   return def;
 }
 
-}  // namespace dem::io::test
+}  // namespace dem::testing
