@@ -291,6 +291,10 @@ void visit_touching_contacts(const WorldState<Dim>& state,
 template <int Dim>
 std::vector<ContactRecordT<Dim>> report_contacts(const WorldState<Dim>& state) {
   std::vector<ContactRecordT<Dim>> records;
+  std::size_t touching = 0;
+  for (const std::uint8_t f : state.contacts.pairs.flags) touching += (f & kTouching) != 0;
+  for (const std::uint8_t f : state.contacts.walls.flags) touching += (f & kTouching) != 0;
+  records.reserve(touching);
   visit_rows(state, std::nullopt, [&](const RowReport<Dim>& r) { records.push_back(r.record); });
   return records;
 }

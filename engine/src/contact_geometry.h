@@ -165,12 +165,31 @@ struct EllipsoidShape {
     return {p.shape[i].axes, centre, p.rotation[i]};
   }
 
+  // How far the ellipsoid reaches from its centre along the unit vector u
+  // (or -u): |diag(a) R^T u|.
+  static double support(const Particles<3>& p, Slot i, const Vec3& u) {
+    return (p.shape[i].axes.cwiseProduct(p.rotation[i].conjugate() * u)).norm();
+  }
+
   template <bool>
   static ContactGeometry<3> pair(const Particles<3>& p, const Periodic<3>& periodic, Slot x, Slot y,
                                  ContactSearch& search) {
     const Vec3& cx = p.position[x];
     const Vec3 d = periodic.separation(cx, p.position[y]);
     if (!bounding_circles_meet(p, x, y, d, search)) return apart(p, x, y, d);
+    // An elongated body's bounding sphere reaches far past it. How far each
+    // reaches along the line of centres (its support) tells most pairs
+    // whose spheres meet apart, for the price of two rotations: the plane
+    // across that line between the two supports separates them.
+    const double distance = d.norm();
+    const Vec3 u = d / distance;
+    const double reach = support(p, x, u) + support(p, y, u);
+    if (reach < distance) {
+      ContactGeometry<3> g;
+      g.overlap = reach - distance;
+      g.normal = u;
+      return g;
+    }
     const Vec3 cy = cx + d;  // the nearest image of y
     const EllipsoidContact c = ellipsoid_contact(placed(p, x, cx), placed(p, y, cy), search.valid ? search.first : 0.0,
                                                  search.valid ? search.second : 0.0);

@@ -43,6 +43,7 @@ AssemblyMeasures measure_assembly(const WorldState<Dim>& s) {
   Strain strain;
   visit_touching_contacts<Dim>(s, [&](const ContactRecordT<Dim>& c) {
     ++m.contacts;
+    if (c.second_particle != kInvalidId) ++m.particle_contacts;
     if (c.sliding) ++m.sliding_contacts;
     m.max_contact_force = std::max(m.max_contact_force, std::hypot(c.normal_force, c.tangential_force.norm()));
     if (!s.energy_budget) return;

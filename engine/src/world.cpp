@@ -379,6 +379,13 @@ void BasicWorld<Dim>::set_time_step_fraction(double fraction) {
 }
 
 template <int Dim>
+void BasicWorld<Dim>::set_fixed_time_step(double seconds) {
+  check(seconds > 0.0 && std::isfinite(seconds), "fixed time step must be a finite number > 0");
+  state_->fixed_time_step = seconds;
+  state_->time_step = seconds;
+}
+
+template <int Dim>
 void BasicWorld<Dim>::set_friction(MaterialId material, double friction) {
   check(material >= 0 && material < static_cast<MaterialId>(state_->materials.size()),
         "unknown material id " + std::to_string(material));

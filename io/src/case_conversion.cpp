@@ -395,6 +395,13 @@ class Converter {
         def.wall_motions.emplace_back(walls_.at(command.wall()), to_motion<Dim>(command.motion()));
       }
       if (stage.has_damping()) def.damping = to_damping(stage.damping());
+      if (stage.has_time_step()) {
+        const proto::TimeStep& step = stage.time_step();
+        def.time_step = step.fixed() > 0 ? TimeStepSetting{0.0, step.fixed()} : TimeStepSetting{step.fraction(), 0.0};
+      }
+      for (const proto::MaterialFriction& friction : stage.friction()) {
+        def.frictions.emplace_back(materials_.at(friction.material()), friction.friction());
+      }
       if (stage.has_trim()) def.trim = to_trim(stage.trim());
       if (stage.has_place_wall()) {
         def.place_wall = PlaceWallDef{walls_.at(stage.place_wall().wall()), stage.place_wall().clearance()};

@@ -71,6 +71,7 @@ struct AssemblyMeasures {
   double out_of_balance = 0.0;
   double max_contact_force = 0.0;  // N
   int contacts = 0;                // touching particle-particle and particle-wall pairs
+  int particle_contacts = 0;       // of which particle-particle: the coordination number is twice this over N
   int sliding_contacts = 0;        // those at the Coulomb limit (eq. 19)
   // Randall (1989) 4.35-4.40: the time step over the smallest particle-wise
   // critical step 2 (m dx / d|sum F|)^(1/2) seen in the last cycle. Above

@@ -158,6 +158,8 @@ class BasicWorld {
 
   // The time step as a fraction of the critical step (0, 1]; recomputes the step.
   void set_time_step_fraction(double fraction);
+  // A fixed time step, s (> 0).
+  void set_fixed_time_step(double seconds);
   // Friction coefficient tan(phi) of a material; recomputes the pair table
   // (contact models that set their own friction keep it).
   void set_friction(MaterialId material, double friction);
