@@ -133,6 +133,7 @@ def million_case(work):
                     f.write(f"{float(x) + shift!r},{rest}\n")
     case = (ROOT / "cases" / "bench" / "plate_compression_100k.case.txtpb").read_text()
     case = case.replace('name: "plate_compression_100k"', 'name: "plate_compression_1m"')
+    case = case.replace("100000 spheres", "1000000 spheres (ten copies of the 100k bed along x)")
     case = re.sub(r'path: "[^"]*"', f'path: "{csv}"', case)
     case = case.replace("max { x: 0.1 y: 0.1 }", "max { x: 1.0 y: 0.1 }")
     case = case.replace("point { x: 0.05 y: 0.05", "point { x: 0.5 y: 0.05")

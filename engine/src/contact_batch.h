@@ -67,6 +67,14 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
 
   std::int32_t cross = blocks.cross_begin[b];
   const std::int32_t cross_end = blocks.cross_begin[b + 1];
+  Slot pending = -1;  // the first particle of the rows being summed
+  Vec<Dim> pending_force = Vec<Dim>::Zero();
+  Spin<Dim> pending_moment = Space<Dim>::zero_spin();
+  auto flush_pending = [&] {
+    if (pending < 0) return;
+    particle_force[pending] += pending_force;
+    particle_moment[pending] += pending_moment;
+  };
   // Rows crossing blocks up to `r` that did not touch: nothing to set aside.
   auto skip_crossing_before = [&](std::int32_t r) {
     while (cross < cross_end && cross_row[cross] < r) {
@@ -205,8 +213,17 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
       } else {
         turn = lever[0][j];
       }
-      particle_force[x] += on_first;
-      particle_moment[x] += rx[j] * turn;
+      // A block's rows come grouped by their first particle: its shares
+      // are summed here and added to it once the group ends.
+      if (x != pending) {
+        flush_pending();
+        pending = x;
+        pending_force = on_first;
+        pending_moment = rx[j] * turn;
+      } else {
+        pending_force += on_first;
+        pending_moment += rx[j] * turn;
+      }
       skip_crossing_before(r);
       if (cross < cross_end && cross_row[cross] == r) {
         deferred_force[cross_slot[cross]] = -on_first;
@@ -218,6 +235,7 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
       }
     }
   }
+  flush_pending();
   skip_crossing_before(end);
   if (sort_out) blocks.near_count[b] = kept;
 }

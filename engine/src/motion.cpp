@@ -4,9 +4,16 @@
 #include <cmath>
 
 #include "inline.h"
+#include "motion_plain.h"
 #include "parallel.h"
 
 namespace dem {
+
+void large_half_angle(double h2, double& cosine, double& sine_over_h) {
+  const double h = std::sqrt(h2);
+  cosine = std::cos(h);
+  sine_over_h = std::sin(h) / h;
+}
 
 namespace {
 
@@ -21,12 +28,6 @@ namespace {
 // drift passes 1e-12, not every step.
 void turn(double& angle, double omega, double dt) { angle += omega * dt; }
 
-// cos h and sin(h)/h for a large half angle (a fast spin or a long step).
-[[gnu::noinline]] void half_angle_factors(double h2, double& cosine, double& sine_over_h) {
-  const double h = std::sqrt(h2);
-  cosine = std::cos(h);
-  sine_over_h = std::sin(h) / h;
-}
 
 DEM_INLINE void turn(Quaternion& q, const Vec3& omega, double dt) {
   const double hx = 0.5 * dt * omega.x(), hy = 0.5 * dt * omega.y(), hz = 0.5 * dt * omega.z();
@@ -37,7 +38,7 @@ DEM_INLINE void turn(Quaternion& q, const Vec3& omega, double dt) {
   constexpr double k6 = 1.0 / 6.0, k20 = 1.0 / 20.0, k42 = 1.0 / 42.0;
   double cosine = 1.0 - h2 * k2 * (1.0 - h2 * k12 * (1.0 - h2 * k30));
   double sine_over_h = 1.0 - h2 * k6 * (1.0 - h2 * k20 * (1.0 - h2 * k42));
-  if (h2 >= 1e-4) half_angle_factors(h2, cosine, sine_over_h);
+  if (h2 >= 1e-4) large_half_angle(h2, cosine, sine_over_h);
   // (c, a) (w, v) = (c w - a.v, c v + w a + a x v), a = sin(h)/h (hx, hy, hz).
   const double ax = sine_over_h * hx, ay = sine_over_h * hy, az = sine_over_h * hz;
   const double w = q.w(), x = q.x(), y = q.y(), z = q.z();
@@ -186,7 +187,12 @@ MotionStep move_particles(Particles<Dim>& p, const MotionInputs<Dim>& in) {
   const MotionConstants<Dim> c = motion_constants(in);
   const auto partials = for_blocks<MotionStep>(
       static_cast<std::int64_t>(p.size()), in.threads, [&](std::int64_t begin, std::int64_t end, MotionStep& step) {
-        move_block<Dim, kLocal, kTensor, kEnergy>(p, c, begin, end, step);
+        if constexpr (!kLocal && !kTensor && !kEnergy) {
+          move_plain_block(p, c.gravity, c.cell, c.dt, c.keep, c.scale, c.keep_rotation, c.scale_rotation, begin,
+                           end, step);
+        } else {
+          move_block<Dim, kLocal, kTensor, kEnergy>(p, c, begin, end, step);
+        }
       });
   MotionStep total;
   for (const MotionStep& part : partials) total += part;
