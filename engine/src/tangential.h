@@ -60,7 +60,7 @@ DEM_INLINE Vec3 choose(bool c, const Vec3& a, const Vec3& b) {
 // at it, keeping its direction, and the contact slides. limit >= 0; squares
 // compare without a root.
 DEM_INLINE double held_at(double shear, double, double limit, bool sliding) {
-  return sliding ? std::copysign(limit, shear) : shear;
+  return sliding ? (shear < 0.0 ? -limit : limit) : shear;  // sliding: |shear| > limit >= 0
 }
 DEM_INLINE Vec3 held_at(const Vec3& shear, double magnitude2, double limit, bool sliding) {
   return shear * (sliding ? limit / std::sqrt(magnitude2) : 1.0);  // sliding: magnitude2 > limit^2 >= 0
