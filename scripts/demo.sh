@@ -6,7 +6,9 @@
 # settle under gravity, trims it at 2.7 m, settles it again, places the
 # loading plate on top and lowers it at 0.01 m/s until it carries 900 kPa.
 # Meanwhile `demctl monitor` shows the loading plate's stress against its
-# settlement live, and records it; at the end the curve is drawn as a PNG.
+# settlement live, and records it; at the end the curve is drawn as a PNG,
+# and ParaView (pvpython, headless) draws the compressed sample with its
+# force chains from the server's ParaView files.
 # Outputs go to out/demo/ (or the directory given as $1). Another case:
 #   DEM_DEMO_CASE=cases/miyata/ss_reduced.case.txtpb bash scripts/demo.sh
 set -euo pipefail
@@ -27,7 +29,7 @@ step() { printf '\n== %s\n' "$*"; }
 rm -rf "$out" && mkdir -p "$out"
 step "starting dem_server \"$DEM_SERVER\" on DDS domain $DEM_DOMAIN with $(basename "$case_file") (log: $out/dem_server.log)"
 "$root/build/service/dem_server" --name "$DEM_SERVER" --domain "$DEM_DOMAIN" --out "$out" \
-  --case "$case_file" --run-and-exit --telemetry-cycles 1000 >"$out/dem_server.log" 2>&1 &
+  --case "$case_file" --run-and-exit --telemetry-cycles 1000 --vtk-interval 10000 >"$out/dem_server.log" 2>&1 &
 server_pid=$!
 
 step "demctl monitor: the loading plate (top) and the bottom plate, live, until the server is done"
@@ -49,10 +51,18 @@ PYTHONPATH="$root/build/clients/python" /usr/bin/python3 -m dem.plots stress-set
   "$out/monitor.csv" "$out/stress_settlement.png" --wall top \
   --title "$(basename "$case_file" .case.txtpb): loading plate stress against settlement"
 
+step "the force chains at the end (ParaView, headless)"
+case_out="$(dirname "$(ls "$out"/*/particles.pvd | head -1)")"
+xvfb-run -a pvpython "$root/tools/paraview/force_chains.py" "$case_out" "$out/force_chains.png" \
+  --title "$(basename "$case_file" .case.txtpb): contact normal forces at the end of loading" 2>"$out/pvpython.log" ||
+  { echo "pvpython failed; its log:" >&2; tail -20 "$out/pvpython.log" >&2; exit 1; }
+
 echo
 echo "Results in $out:"
 echo "  monitor.csv             the live table: plate stress and settlement, contact statistics, every 1000 cycles"
 echo "  stress_settlement.png   the loading plate's stress against its settlement (Miyata Fig. 26)"
+echo "  force_chains.png        the sample at the end with its contact forces (ParaView)"
+echo "  */particles.pvd, contacts.pvd, walls.pvd   ParaView time series every 10,000 cycles (open in paraview)"
 echo "  */walls.csv, assembly.csv, stages.csv, contacts.csv, particles.csv   the server's own tables"
 echo "  */compression*.csv, plate_contacts.csv, force_distribution.csv, force_tail.csv, load_by_state.csv,"
 echo "    stress_drops.csv      the plate loading analyses (Miyata Figs. 26-37; docs/CASES.md)"

@@ -15,6 +15,8 @@ packages=(
   cyclonedds-dev cyclonedds-tools
   # Python client
   pybind11-dev python3-dev python3-protobuf python3-numpy python3-matplotlib python3-pytest
+  # ParaView output: VTK reads the files back in tests; pvpython renders the demo's picture (headless, in Xvfb)
+  python3-vtk9 paraview python3-paraview xvfb xauth
 )
 
 missing=()
