@@ -27,6 +27,7 @@ DOMAINS = {
     "telemetry_iteration": 169,
     "telemetry_callback": 170,
     "telemetry_gil_released": 171,
+    "recording_demctl_record": 174,
 }
 assert len(set(DOMAINS.values())) == len(DOMAINS), "two tests share a DDS domain"
 assert all(160 <= d <= 174 for d in DOMAINS.values()), "the Python tests' domains are 160-174"

@@ -10,8 +10,8 @@ case's stages run through the service (dem.programme); the seeds' figures
     import dem
     with dem.ServerProcess("press", domain=21, out="out/press") as server, server.connect() as press:
         press.load_case("cases/ball/nine_disc_damped.case.txtpb")
-        press.set_wall_velocity("top", (0, -12))
-        press.cycle(3000)
+        press.set_wall_velocity("top", (0, -0.5))     # lower the top wall at 0.5 m/s
+        press.run_until(wall="top", stress=1e6, max_cycles=2000)   # until it carries 1 MPa
         contacts = press.contacts(wall="top")
 """
 
