@@ -46,17 +46,21 @@ void report_nine_disc(const dem::validation::CompressionReport& c, const dem::va
 int main(int argc, char** argv) {
   CLI::App app{"dem_validate: reproduce the seeds' validation checks and write their figures"};
   app.require_subcommand(1);
-  std::filesystem::path out = "validation";
+  app.footer("Every subcommand writes its figures as CSV files into --out DIR (required: nothing is written\n"
+             "where it was not asked for); dem_validate SUBCOMMAND --help lists its options.");
+  std::filesystem::path out;
   std::filesystem::path cases = DEM_DEFAULT_CASES_DIR;
   auto* nine = app.add_subcommand("nine-disc", "Cundall & Strack (1979) nine-disc test, Figs. 6-9");
-  nine->add_option("--out", out, "directory for nine_disc.csv and nine_disc_distortion.csv");
+  nine->add_option("--out", out, "directory for nine_disc.csv and nine_disc_distortion.csv")->required();
   nine->add_option("--cases", cases, "directory holding the cases/ball case files")->check(CLI::ExistingDirectory);
   auto* hertz = app.add_subcommand("hertz-impact", "Hertz normal impact, sphere-wall and sphere-sphere (Randall 5.3.1)");
   auto* oblique = app.add_subcommand("oblique-impact", "oblique impact sweep 0-90 degrees (Randall 5.4, Maw et al.)");
   auto* restitution = app.add_subcommand("restitution", "linear spring-dashpot restitution (Miyata eq. 17)");
   auto* mindlin = app.add_subcommand("mindlin-loading", "Mindlin-Deresiewicz loading history (Randall 5.2)");
   auto* box = app.add_subcommand("box-settle", "spheres settle in a 3D box: weight on the floor, energy budget");
-  for (auto* sub : {hertz, oblique, restitution, mindlin, box}) sub->add_option("--out", out, "directory for the CSV files");
+  for (auto* sub : {hertz, oblique, restitution, mindlin, box}) {
+    sub->add_option("--out", out, "directory for the CSV files (created)")->required();
+  }
   box->add_option("--cases", cases, "directory holding cases/validation")->check(CLI::ExistingDirectory);
   std::filesystem::path miyata_case;
   auto* miyata = app.add_subcommand("miyata-compression",
@@ -65,8 +69,12 @@ int main(int argc, char** argv) {
   miyata->add_option("--case", miyata_case, "the case file (it must set output.compression)")
       ->required()
       ->check(CLI::ExistingFile);
-  miyata->add_option("--out", out, "directory for the analyses' CSV files and miyata_summary.csv");
-  CLI11_PARSE(app, argc, argv);
+  miyata->add_option("--out", out, "directory for the analyses' CSV files and miyata_summary.csv")->required();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return app.exit(error) == 0 ? 0 : 2;  // --help is not a mistake; a bad command line is exit code 2
+  }
   try {
     if (*hertz) dem::validation::report_hertz_impact(out);
     if (*oblique) dem::validation::report_oblique_impact(out);
