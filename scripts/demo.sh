@@ -53,7 +53,7 @@ PYTHONPATH="$root/build/clients/python" /usr/bin/python3 -m dem.plots stress-set
 
 step "the force chains at the end (ParaView, headless)"
 case_out="$(dirname "$(ls "$out"/*/particles.pvd | head -1)")"
-xvfb-run -a pvpython "$root/tools/paraview/force_chains.py" "$case_out" "$out/force_chains.png" \
+bash "$root/scripts/pvpython.sh" "$root/tools/paraview/force_chains.py" "$case_out" "$out/force_chains.png" \
   --title "$(basename "$case_file" .case.txtpb): contact normal forces at the end of loading" 2>"$out/pvpython.log" ||
   { echo "pvpython failed; its log:" >&2; tail -20 "$out/pvpython.log" >&2; exit 1; }
 

@@ -16,6 +16,7 @@
 #include <iostream>
 #include <thread>
 
+#include "dem/version.h"
 #include "dem/protocol/topics.h"
 #include "dem/service/command_error.h"
 #include "dem/service/server.h"
@@ -82,6 +83,7 @@ int main(int argc, char** argv) {
   dem::service::ServerOptions options;
   CLI::App app{"Runs one DEM simulation as a service on Cyclone DDS (loopback by default), driven by commands and "
                "publishing plate forces, contact statistics and its status."};
+  app.set_version_flag("--version", "dem_server " DEM_VERSION);
   std::string log_level = "info";
   std::string initial_case;
   int threads = -1;

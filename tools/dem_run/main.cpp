@@ -9,6 +9,7 @@
 #include <iostream>
 #include <string>
 
+#include "dem/version.h"
 #include "dem/error.h"
 #include "dem/io/case_error.h"
 #include "run_case.h"
@@ -34,6 +35,7 @@ std::function<std::string(const std::string&)> whole_number(std::string meaning)
 int main(int argc, char** argv) {
   CLI::App app{"Runs a DEM case headless and writes its results as CSV files, a final snapshot and, when asked, "
                "ParaView files."};
+  app.set_version_flag("--version", "dem_run " DEM_VERSION);
   app.footer("Exit codes: 0 done, 1 other failure, 2 bad arguments, 3 an invalid case (file, line and field named),\n"
              "130 interrupted (Ctrl-C): the tables and final.snapshot hold the state reached.");
   dem::run::RunOptions options;

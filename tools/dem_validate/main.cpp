@@ -14,6 +14,7 @@
 #include <exception>
 #include <filesystem>
 
+#include "dem/version.h"
 #include "contact_mechanics.h"
 #include "miyata_compression.h"
 #include "nine_disc.h"
@@ -41,15 +42,25 @@ void report_nine_disc(const dem::validation::CompressionReport& c, const dem::va
   }
 }
 
+// The repository's cases when this is a build; an installed program's
+// beside it (<prefix>/bin/dem_validate -> <prefix>/share/dem/cases).
+std::filesystem::path default_cases() {
+  if (std::filesystem::exists(DEM_DEFAULT_CASES_DIR)) return DEM_DEFAULT_CASES_DIR;
+  std::error_code error;
+  const auto program = std::filesystem::read_symlink("/proc/self/exe", error);
+  return program.parent_path().parent_path() / "share" / "dem" / "cases";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"dem_validate: reproduce the seeds' validation checks and write their figures"};
+  app.set_version_flag("--version", "dem_validate " DEM_VERSION);
   app.require_subcommand(1);
   app.footer("Every subcommand writes its figures as CSV files into --out DIR (required: nothing is written\n"
              "where it was not asked for); dem_validate SUBCOMMAND --help lists its options.");
   std::filesystem::path out;
-  std::filesystem::path cases = DEM_DEFAULT_CASES_DIR;
+  std::filesystem::path cases = default_cases();
   auto* nine = app.add_subcommand("nine-disc", "Cundall & Strack (1979) nine-disc test, Figs. 6-9");
   nine->add_option("--out", out, "directory for nine_disc.csv and nine_disc_distortion.csv")->required();
   nine->add_option("--cases", cases, "directory holding the cases/ball case files")->check(CLI::ExistingDirectory);

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "dem/version.h"
 #include "dem/io/snapshot_file.h"
 #include "dem/io/vtk_series.h"
 
@@ -35,6 +36,7 @@ void add_step(dem::io::VtkSeries& series, const dem::proto::Snapshot& message, c
 
 int main(int argc, char** argv) {
   CLI::App app{"Writes ParaView files (VTK XML .vtp and .pvd time series) from dem snapshot files."};
+  app.set_version_flag("--version", "dem_vtk " DEM_VERSION);
   std::vector<std::filesystem::path> snapshots;
   std::filesystem::path out;
   app.add_option("SNAPSHOT", snapshots, "snapshot files (dem.proto.Snapshot), one step each")

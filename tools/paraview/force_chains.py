@@ -1,10 +1,10 @@
 """Draws a run's force chains with ParaView: the particles at the last step
 of a ParaView series (dem_run --vtk-interval, dem_server --vtk-interval or
 dem_vtk), the contacts as tubes whose width and colour grow with the normal
-force, and the walls. Runs under pvpython (Debian's python3-paraview);
-without a display, under xvfb-run:
+force, and the walls. Runs under ParaView's pvpython; headless, as
+scripts/pvpython.sh runs it (in Xvfb; docs/PARAVIEW.md):
 
-    xvfb-run -a pvpython tools/paraview/force_chains.py OUT_DIR PNG [--title TEXT] [--width PX] [--height PX]
+    bash scripts/pvpython.sh tools/paraview/force_chains.py OUT_DIR PNG [--title TEXT] [--width PX] [--height PX]
 
 OUT_DIR holds particles.pvd, contacts.pvd and walls.pvd. 2D runs are seen
 from +z; 3D runs from the side (-y), with z up.

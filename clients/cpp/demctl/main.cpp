@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <iostream>
 
+#include "dem/version.h"
 #include "commands.h"
 #include "dem/client/errors.h"
 #include "dem/dds/error.h"
@@ -28,6 +29,7 @@ int main(int argc, char** argv) {
   demctl::Global global;
   environment_defaults(global);
   CLI::App app{"Drives and watches dem_server simulations over DDS (loopback only by default)."};
+  app.set_version_flag("--version", "demctl " DEM_VERSION);
   app.require_subcommand(1);
   app.footer("Exit codes: 0 done, 1 other failure, 2 bad arguments, 3 no such server within --timeout,\n"
              "4 the server replied with an error, 5 no reply in time, 6 run-until --wait reached its cycle cap\n"

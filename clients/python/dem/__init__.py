@@ -15,7 +15,7 @@ case's stages run through the service (dem.programme); the seeds' figures
         contacts = press.contacts(wall="top")
 """
 
-from . import cases, errors
+from . import _build_info, cases, errors
 from ._client import CONTACT_DTYPE, ContactStats, PlateForces, Reply, Status, WallForce
 from .client import Client, list_servers
 from .errors import (CaseFileError, DdsError, DemError, NoSuchServer, ProgrammeError, ReplyTimeout,
@@ -24,6 +24,9 @@ from .paths import use_loopback
 from .programme import run_programme
 from .server_process import ServerProcess
 from .telemetry import Subscription
+
+# The project's version (CMakeLists.txt's project(VERSION)), as every program's --version.
+__version__ = _build_info.VERSION
 
 __all__ = [
     "CONTACT_DTYPE",
