@@ -123,5 +123,6 @@ set(CPACK_DEBIAN_PACKAGE_SECTION science)
 # client's own imports by hand.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "python3 (>= 3.11), python3-numpy, python3-protobuf")
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "python3-matplotlib")
+# The plots, and the bridge's web server and charts (python3 -m dem.bridge).
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "python3-matplotlib, python3-websockets, libjs-chart.js")
 include(CPack)

@@ -27,6 +27,8 @@ if [ $build_only = 0 ]; then
     # ParaView output: VTK reads the files back in tests; ParaView's pvpython renders the demo's picture
     # (headless, in Xvfb; unpacked below, as python3-paraview conflicts with python3-vtk9)
     python3-vtk9 paraview xvfb xauth
+    # the live dashboard (dem.bridge: websockets, Chart.js) and its page test (headless Chromium)
+    python3-websockets libjs-chart.js chromium chromium-driver python3-selenium
   )
   # Node.js and npm for the tests' independent readers (tests/npm), unless a
   # Node.js is installed already (from another source, with its own npm).
