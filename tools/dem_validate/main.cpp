@@ -53,12 +53,19 @@ std::filesystem::path default_cases() {
 
 }  // namespace
 
+// Exit codes: 0 every check passed; 1 a check failed (the verdict says
+// which) or the run could not be done; 2 a bad command line.
+constexpr int kCheckFailed = 1;
+constexpr int kFailure = 1;
+
 int main(int argc, char** argv) {
   CLI::App app{"dem_validate: reproduce the seeds' validation checks and write their figures"};
   app.set_version_flag("--version", "dem_validate " DEM_VERSION);
   app.require_subcommand(1);
   app.footer("Every subcommand writes its figures as CSV files into --out DIR (required: nothing is written\n"
-             "where it was not asked for); dem_validate SUBCOMMAND --help lists its options.");
+             "where it was not asked for), prints them and ends with its verdict: each check against the seed's\n"
+             "or the theory's bound, pass or FAIL. dem_validate SUBCOMMAND --help lists its options.\n"
+             "Exit codes: 0 every check passed, 1 a check failed or the run failed, 2 bad arguments.");
   std::filesystem::path out;
   std::filesystem::path cases = default_cases();
   auto* nine = app.add_subcommand("nine-disc", "Cundall & Strack (1979) nine-disc test, Figs. 6-9");
@@ -86,18 +93,20 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     return app.exit(error) == 0 ? 0 : 2;  // --help is not a mistake; a bad command line is exit code 2
   }
+  dem::validation::Verdict verdict;
   try {
-    if (*hertz) dem::validation::report_hertz_impact(out);
-    if (*oblique) dem::validation::report_oblique_impact(out);
-    if (*restitution) dem::validation::report_restitution(out);
-    if (*mindlin) dem::validation::report_mindlin_loading(out);
-    if (*box) dem::validation::report_box_settle(cases / "validation" / "box_settle.case.txtpb", out);
+    if (*hertz) verdict = dem::validation::report_hertz_impact(out);
+    if (*oblique) verdict = dem::validation::report_oblique_impact(out);
+    if (*restitution) verdict = dem::validation::report_restitution(out);
+    if (*mindlin) verdict = dem::validation::report_mindlin_loading(out);
+    if (*box) verdict = dem::validation::report_box_settle(cases / "validation" / "box_settle.case.txtpb", out);
     if (*miyata) {
       const dem::validation::MiyataRun run = dem::validation::run_miyata_compression(miyata_case, out);
       const dem::validation::MiyataFigures figures = dem::validation::miyata_figures(run);
       dem::validation::print_miyata_report(stdout, run, figures);
       dem::validation::write_miyata_summary(out, run, figures);
       std::printf("wrote the analyses and miyata_summary.csv to %s\n", out.c_str());
+      verdict = dem::validation::judge_miyata(run, figures);
     }
     if (*nine) {
       const auto compression = dem::validation::run_compression(cases / "ball");
@@ -105,10 +114,14 @@ int main(int argc, char** argv) {
       dem::validation::write_nine_disc_csv(compression, distortion, out);
       report_nine_disc(compression, distortion);
       std::printf("wrote %s and %s\n", (out / "nine_disc.csv").c_str(), (out / "nine_disc_distortion.csv").c_str());
+      verdict = dem::validation::judge_nine_disc(compression, distortion);
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
-    return 1;
+    return kFailure;
   }
-  return 0;
+  // The verdict: each check against the seed's or the theory's bound.
+  std::printf("\n");
+  verdict.print(stdout, app.get_subcommands().front()->get_name());
+  return verdict.passed() ? 0 : kCheckFailed;
 }
