@@ -36,10 +36,12 @@ void RunRecorder<Dim>::record(const BasicWorld<Dim>& world, int stage) {
   // estimate K = d|sum F| / dx with dx = |v| dt is meaningless for a
   // particle nearly at rest that is struck (dx -> 0): a settling sample
   // shows isolated spikes at the seed's own time step (Miyata's CS: 3 rows
-  // of 506 above 0.3, none adjacent; the nine-disc test holding still, 3
-  // rows of 10 cycles). A step really too large keeps the ratio high, so
-  // the warning waits until it has been above 0.3 at every row for
-  // kSustainedCycles cycles. Said once.
+  // of 506 above 0.3, none adjacent, the largest 0.59; the nine-disc test
+  // holding still, 3 rows of 10 cycles). A step really too large keeps the
+  // ratio high, so the warning waits until it has been above 0.3 at every
+  // row for kSustainedCycles cycles - or until it exceeds 1 at once: the
+  // step is then longer than a particle's critical step, and the run is
+  // blowing up. Said once.
   if (measures.time_step_ratio > 0.3) {
     if (rows_above_ == 0) first_above_ = world.cycle_count();
     ++rows_above_;
@@ -48,7 +50,8 @@ void RunRecorder<Dim>::record(const BasicWorld<Dim>& world, int stage) {
     rows_above_ = 0;
     largest_ratio_ = 0.0;
   }
-  if (rows_above_ > 1 && world.cycle_count() - first_above_ >= kSustainedCycles && !warned_time_step_) {
+  const bool sustained = rows_above_ > 1 && world.cycle_count() - first_above_ >= kSustainedCycles;
+  if ((sustained || measures.time_step_ratio > 1.0) && !warned_time_step_) {
     warned_time_step_ = true;
     std::fprintf(stderr,
                  "warning: from cycle %llu to %llu the time step was %.2f (at most) of the smallest particle-wise "
