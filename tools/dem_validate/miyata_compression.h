@@ -96,8 +96,8 @@ void print_miyata_report(std::FILE* out, const MiyataRun& run, const MiyataFigur
 // times softer than the final one, which is straight (R² above 0.99 for a
 // smooth 2D surface, 0.85 for a rough one, 0.95 in 3D); the loading plate
 // gains contacts three times faster in the initial state than in the final
-// one, and ends with more than four; with a force distribution, each
-// plate's tail above f = 1 falls with f (decay rate at least 1, more
+// one, and ends with more than four; with a force distribution, in 2D,
+// each plate's tail above f = 1 falls with f (decay rate at least 1, more
 // contacts in (1, 2] than above 2).
 Verdict judge_miyata(const MiyataRun& run, const MiyataFigures& figures);
 // One row of the figures, miyata_summary.csv, in `directory`.
