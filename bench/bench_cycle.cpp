@@ -55,7 +55,6 @@ void Dense(benchmark::State& state) {
   state.counters["rebuild_every"] = cycles / static_cast<double>(std::max<std::uint64_t>(after.contact_rebuilds - before.contact_rebuilds, 1));
   state.counters["us_find"] = 1e6 * (after.find_contacts - before.find_contacts) / cycles;
   state.counters["us_forces"] = 1e6 * (after.contact_forces - before.contact_forces) / cycles;
-  state.counters["us_sums"] = 1e6 * (after.force_sums - before.force_sums) / cycles;
   state.counters["us_motion"] = 1e6 * (after.motion - before.motion) / cycles;
   state.SetItemsProcessed(state.iterations() * kCyclesPerIteration * world.particle_count());
   state.counters["discs"] = world.particle_count();

@@ -187,6 +187,7 @@ class Converter {
     def.world.fixed_time_step = case_.time_step().fixed();
     def.world.contact_tolerance = case_.numerics().contact_tolerance();
     def.world.threads = static_cast<int>(case_.numerics().threads());
+    def.world.energy_budget = case_.output().energy_budget();
     add_stages(def.stages);
     add_output(def.output, def.world.particles.size());
     return def;

@@ -54,10 +54,19 @@ template <int Dim>
 AssemblyMeasures AssemblyCsv::write(const BasicWorld<Dim>& world) {
   const AssemblyMeasures measures = world.assembly_measures();
   const EnergyBudget& e = measures.energy;
-  file_.write_row(world.cycle_count(), world.time(), measures.kinetic_energy, measures.out_of_balance,
-                  measures.max_contact_force, measures.contacts, measures.sliding_contacts, measures.time_step_ratio,
-                  e.gravity_work, e.wall_work, e.strain, e.contact_damping, e.friction, e.global_damping,
-                  e.local_damping, e.residual());
+  if (world.energy_budget()) {
+    file_.write_row(world.cycle_count(), world.time(), measures.kinetic_energy, measures.out_of_balance,
+                    measures.max_contact_force, measures.contacts, measures.sliding_contacts, measures.time_step_ratio,
+                    e.gravity_work, e.wall_work, e.strain, e.contact_damping, e.friction, e.global_damping,
+                    e.local_damping, e.residual());
+  } else {
+    // A world keeps its energy budget only when the case asks for it
+    // (output.energy_budget): the budget's columns stay empty.
+    const std::string_view none;
+    file_.write_row(world.cycle_count(), world.time(), measures.kinetic_energy, measures.out_of_balance,
+                    measures.max_contact_force, measures.contacts, measures.sliding_contacts, measures.time_step_ratio,
+                    none, none, none, none, none, none, none, none);
+  }
   file_.flush();
   return measures;
 }

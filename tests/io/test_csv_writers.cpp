@@ -29,6 +29,7 @@ std::vector<Row> read_csv(const std::filesystem::path& path) {
     Row row;
     std::istringstream fields(line);
     for (std::string field; std::getline(fields, field, ',');) row.push_back(field);
+    if (!line.empty() && line.back() == ',') row.emplace_back();  // getline drops a last empty field
     rows.push_back(row);
   }
   return rows;
@@ -61,6 +62,7 @@ class CsvWriters : public ::testing::Test {
     floor.h2 = 0.2;
     def.walls.push_back(floor);
     def.fixed_time_step = 1e-6;
+    def.energy_budget = true;
     return def;
   }
 
@@ -93,6 +95,20 @@ TEST_F(CsvWriters, WallsAreLongFormat) {
   EXPECT_EQ(number(row[13]), measure.normal_force / world_.wall_area(0));
   EXPECT_EQ(number(row[14]), world_.wall_settlement(0));
   EXPECT_GT(measure.normal_force, 0);
+}
+
+TEST_F(CsvWriters, AssemblyLeavesTheEnergyColumnsEmptyWithoutABudget) {
+  WorldDef def = make_world();
+  def.energy_budget = false;
+  World world(def);
+  world.cycle(1);
+  AssemblyCsv assembly(directory_);
+  assembly.write(world);
+  const auto rows = read_csv(directory_ / "assembly.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  ASSERT_EQ(rows[1].size(), 16u);
+  EXPECT_EQ(number(rows[1][2]), world.assembly_measures().kinetic_energy);
+  for (std::size_t column = 8; column < 16; ++column) EXPECT_EQ(rows[1][column], "") << rows[0][column];
 }
 
 TEST_F(CsvWriters, AssemblyRoundTripsEveryDigit) {

@@ -105,10 +105,12 @@ void print_final_state(std::ostream& out, const BasicWorld<Dim>& world,
       << brief(assembly.kinetic_energy) << " J, out-of-balance " << brief(assembly.out_of_balance) << ", "
       << assembly.contacts << " contacts (" << assembly.sliding_contacts << " sliding)\n";
   const EnergyBudget& e = assembly.energy;
-  out << "energy (J): gravity " << brief(e.gravity_work) << ", walls " << brief(e.wall_work) << " -> kinetic "
-      << brief(e.kinetic) << ", strain " << brief(e.strain) << ", dashpots " << brief(e.contact_damping)
-      << ", friction " << brief(e.friction) << ", global damping " << brief(e.global_damping) << ", local damping "
-      << brief(e.local_damping) << "; residual " << brief(e.residual()) << '\n';
+  if (world.energy_budget()) {
+    out << "energy (J): gravity " << brief(e.gravity_work) << ", walls " << brief(e.wall_work) << " -> kinetic "
+        << brief(e.kinetic) << ", strain " << brief(e.strain) << ", dashpots " << brief(e.contact_damping)
+        << ", friction " << brief(e.friction) << ", global damping " << brief(e.global_damping) << ", local damping "
+        << brief(e.local_damping) << "; residual " << brief(e.residual()) << '\n';
+  }
   out << "wrote";
   for (const auto& file : files) out << ' ' << file.string();
   out << '\n';
