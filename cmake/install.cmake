@@ -46,6 +46,14 @@ while(exported_libraries)
   endif()
   list(APPEND export_targets ${target})
 endwhile()
+# The build's global settings that change what a header means: Eigen's
+# vectorisation changes the layout of its fixed-size vectors (and so of
+# every definition struct), and the instruction set what inline code is.
+# A program built against the installed libraries must use the same.
+target_compile_definitions(dem_engine INTERFACE "$<INSTALL_INTERFACE:EIGEN_NO_DEBUG;EIGEN_DONT_VECTORIZE>")
+if(DEM_ARCH AND DEM_ARCH_SUPPORTED)
+  target_compile_options(dem_engine INTERFACE $<INSTALL_INTERFACE:-march=${DEM_ARCH}>)
+endif()
 if(DEM_USES_DDS)
   # idlc_generate's interface target only carries the generated sources
   # that dem_idl_dds compiles; what users of the library need is Cyclone.
