@@ -54,9 +54,12 @@ def test_the_service_session(tmp_path):
     # The session leaves monitor and record to end with the server: wait for them.
     result = run_shell(script + "\nwait\n", tmp_path)
     out = tmp_path / "out" / "press"
-    assert "the stress on top reached" in result.stdout
+    reached = re.search(r"the stress on top reached [0-9.e+]+ Pa after (\d+) cycles", result.stdout)
+    assert reached, result.stdout
     state = json.loads((out / "state.json").read_text())
-    assert state["status"]["cycle"] == 1072  # 72 cycles to 1 MPa, then 1000 holding
+    # About 70 cycles to 1 MPa (0.005 m a cycle), then 1000 holding.
+    assert 50 < int(reached.group(1)) < 100
+    assert state["status"]["cycle"] == int(reached.group(1)) + 1000
     top = next(w for w in state["plates"]["walls"] if w["name"] == "top")
     # Physically sensible: the top wall 0.36 m down a 300 m box, carrying about 1 MPa at rest.
     assert 0.3 < top["settlement"] < 0.4
@@ -66,7 +69,8 @@ def test_the_service_session(tmp_path):
         assert len(monitor.readlines()) > 10
     recording = Recording(out / "telemetry.mcap")
     plates = [m.data for m in recording.messages("/dem/press/plate_forces")]
-    assert max(p.cycle for p in plates) >= 1072
+    # The recording goes on to the staged case; the nine-disc session is in it up to the state saved.
+    assert state["status"]["cycle"] in {p.cycle for p in plates}
     assert len((out / "top.csv").read_text().splitlines()) == 1 + top["contacts"]
     assert (tmp_path / "out" / "press.snapshot").stat().st_size > 0
     assert (out / "miyata_cs_reduced" / "compression.csv").is_file()  # the staged case ran on the server
