@@ -417,6 +417,7 @@ class Converter {
   void add_output(OutputSettings& output, std::size_t particle_count) const {
     if (case_.output().interval() > 0) output.interval = case_.output().interval();
     output.contacts_file = !case_.output().no_contacts_file();
+    output.vtk_interval = case_.output().vtk_interval();
     if (case_.output().has_compression()) output.compression = to_compression(case_, walls_);
     std::vector<std::string> problems;
     for (int i = 0; i < case_.output().probe_size(); ++i) {

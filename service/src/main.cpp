@@ -16,6 +16,7 @@
 #include <iostream>
 #include <thread>
 
+#include "dem/version.h"
 #include "dem/protocol/topics.h"
 #include "dem/service/command_error.h"
 #include "dem/service/server.h"
@@ -82,6 +83,7 @@ int main(int argc, char** argv) {
   dem::service::ServerOptions options;
   CLI::App app{"Runs one DEM simulation as a service on Cyclone DDS (loopback by default), driven by commands and "
                "publishing plate forces, contact statistics and its status."};
+  app.set_version_flag("--version", "dem_server " DEM_VERSION);
   std::string log_level = "info";
   std::string initial_case;
   int threads = -1;
@@ -117,6 +119,13 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber)
       ->envname("DEM_THREADS");
   app.add_flag("--no-csv", no_csv, "write no CSV tables");
+  std::uint64_t vtk_interval = 0;
+  CLI::Option* vtk_option =
+      app.add_option("--vtk-interval", vtk_interval,
+                     "cycles between the ParaView files (particles.pvd, contacts.pvd, walls.pvd, vtk/) of the "
+                     "programmes it runs; 0 = none (default: each case's output.vtk_interval)")
+          ->check(CLI::NonNegativeNumber)
+          ->envname("DEM_VTK_INTERVAL");
   app.add_flag("--run-and-exit", options.run_programme,
                "one-shot: run the case's loading programme (its stages), publishing telemetry and answering "
                "commands meanwhile; write the tables and <out>/<case>/final.snapshot (after a failure "
@@ -136,6 +145,7 @@ int main(int argc, char** argv) {
   if (!initial_case.empty()) options.initial_case = initial_case;
   if (threads >= 0) options.threads = threads;
   options.record_csv = !no_csv;
+  if (vtk_option->count() > 0) options.vtk_interval = vtk_interval;
 
   auto logger = spdlog::stderr_color_mt("dem_server");
   logger->set_pattern("[%Y-%m-%d %H:%M:%S.%e] [" + options.name + "] [%^%l%$] %v");

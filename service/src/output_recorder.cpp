@@ -15,8 +15,9 @@ std::string directory_name(const std::string& case_name) {
 
 }  // namespace
 
-OutputRecorder::OutputRecorder(std::filesystem::path output_directory, bool enabled)
-    : output_directory_(std::move(output_directory)), enabled_(enabled) {}
+OutputRecorder::OutputRecorder(std::filesystem::path output_directory, bool enabled,
+                               std::optional<std::uint64_t> vtk_interval)
+    : output_directory_(std::move(output_directory)), enabled_(enabled), vtk_override_(vtk_interval) {}
 
 template <int Dim>
 std::unique_ptr<OutputRecorder::Compression<Dim>>& OutputRecorder::compression() {
@@ -29,10 +30,11 @@ std::unique_ptr<OutputRecorder::Compression<Dim>>& OutputRecorder::compression()
 
 template <int Dim>
 void OutputRecorder::start(const std::string& case_name, const BasicWorld<Dim>& world,
-                           std::optional<io::CompressionSettings> compression) {
+                           std::optional<io::CompressionSettings> compression, std::uint64_t vtk_interval) {
   close();
   directory_ = output_directory_ / directory_name(case_name);
   compression_settings_ = std::move(compression);
+  vtk_interval_ = vtk_override_.value_or(vtk_interval);
   if (!enabled_) return;
   try {
     if constexpr (Dim == 2) {
@@ -60,6 +62,10 @@ void OutputRecorder::record(const BasicWorld<Dim>& world, std::optional<std::siz
                                                               world.wall(compression_settings_->bottom_plate).name)});
       }
       io::record_compression(c->analysis, c->csv, world, static_cast<int>(*stage));
+    }
+    if (stage && vtk_interval_ > 0) {
+      if (!vtk_) vtk_ = std::make_unique<io::VtkSeries>(directory_, vtk_interval_);
+      vtk_->record(world);
     }
   } catch (const std::exception& error) {
     fail(error);
@@ -106,6 +112,11 @@ void OutputRecorder::finish(const BasicWorld<Dim>& world) {
       spdlog::info("wrote the plate loading analyses in {} (compression.csv, compression_states.csv, ...)",
                    directory_.string());
     }
+    if (vtk_) {
+      vtk_->record(world, true);
+      spdlog::info("wrote {} ParaView steps in {} (particles.pvd, contacts.pvd, walls.pvd)", vtk_->steps(),
+                   directory_.string());
+    }
   } catch (const std::exception& error) {
     fail(error);
   }
@@ -125,11 +136,14 @@ void OutputRecorder::close() {
   stages_.reset();
   compression2_.reset();
   compression3_.reset();
+  vtk_.reset();
   last_cycle_.reset();
 }
 
-template void OutputRecorder::start(const std::string&, const BasicWorld<2>&, std::optional<io::CompressionSettings>);
-template void OutputRecorder::start(const std::string&, const BasicWorld<3>&, std::optional<io::CompressionSettings>);
+template void OutputRecorder::start(const std::string&, const BasicWorld<2>&, std::optional<io::CompressionSettings>,
+                                    std::uint64_t);
+template void OutputRecorder::start(const std::string&, const BasicWorld<3>&, std::optional<io::CompressionSettings>,
+                                    std::uint64_t);
 template void OutputRecorder::record(const BasicWorld<2>&, std::optional<std::size_t>);
 template void OutputRecorder::record(const BasicWorld<3>&, std::optional<std::size_t>);
 template void OutputRecorder::finish(const BasicWorld<2>&);

@@ -34,7 +34,8 @@ std::string join(const std::vector<std::string>& lines) {
 template <int Dim>
 Simulation::Prepared prepared_case(const io::CaseDefinitionT<Dim>& definition, const std::string& source) {
   Simulation::Prepared prepared;
-  prepared.world = make_session(BasicWorld<Dim>(definition.world), definition.stages, definition.output.compression);
+  prepared.world = make_session(BasicWorld<Dim>(definition.world), definition.stages, definition.output.compression,
+                                definition.output.vtk_interval);
   prepared.output_interval = definition.output.interval;
   prepared.case_name = definition.name.empty() ? std::string("unnamed") : definition.name;
   prepared.description = definition.description;

@@ -35,7 +35,7 @@ SimulationRunner::SimulationRunner(const ServerOptions& options, CommandQueue& q
       replies_(replies),
       telemetry_(telemetry),
       simulation_(options.threads),
-      recorder_(options.output_directory, options.record_csv),
+      recorder_(options.output_directory, options.record_csv, options.vtk_interval),
       schedule_(options.telemetry_cycles, options.telemetry_seconds) {}
 
 void SimulationRunner::load_initial_case(const std::filesystem::path& path) {

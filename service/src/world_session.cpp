@@ -39,8 +39,11 @@ template <int Dim>
 class WorldSessionT final : public WorldSession {
  public:
   WorldSessionT(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages,
-                std::optional<io::CompressionSettings> compression)
-      : world_(std::move(world)), stages_(std::move(stages)), compression_(std::move(compression)) {}
+                std::optional<io::CompressionSettings> compression, std::uint64_t vtk_interval)
+      : world_(std::move(world)),
+        stages_(std::move(stages)),
+        compression_(std::move(compression)),
+        vtk_interval_(vtk_interval) {}
 
   std::uint8_t dimension() const override { return Dim; }
   void cycle(std::uint64_t cycles) override { world_.cycle(cycles); }
@@ -103,7 +106,7 @@ class WorldSessionT final : public WorldSession {
   }
 
   void start_tables(OutputRecorder& recorder, const std::string& case_name) const override {
-    recorder.start(case_name, world_, compression_);
+    recorder.start(case_name, world_, compression_, vtk_interval_);
   }
   void record_tables(OutputRecorder& recorder, std::optional<std::size_t> stage) const override {
     recorder.record(world_, stage);
@@ -115,19 +118,22 @@ class WorldSessionT final : public WorldSession {
   BasicWorld<Dim> world_;
   std::vector<StageDefT<Dim>> stages_;
   std::optional<io::CompressionSettings> compression_;
+  std::uint64_t vtk_interval_;
 };
 
 }  // namespace
 
 template <int Dim>
 std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages,
-                                           std::optional<io::CompressionSettings> compression) {
-  return std::make_unique<WorldSessionT<Dim>>(std::move(world), std::move(stages), std::move(compression));
+                                           std::optional<io::CompressionSettings> compression,
+                                           std::uint64_t vtk_interval) {
+  return std::make_unique<WorldSessionT<Dim>>(std::move(world), std::move(stages), std::move(compression),
+                                              vtk_interval);
 }
 
 template std::unique_ptr<WorldSession> make_session<2>(BasicWorld<2>, std::vector<StageDefT<2>>,
-                                                       std::optional<io::CompressionSettings>);
+                                                       std::optional<io::CompressionSettings>, std::uint64_t);
 template std::unique_ptr<WorldSession> make_session<3>(BasicWorld<3>, std::vector<StageDefT<3>>,
-                                                       std::optional<io::CompressionSettings>);
+                                                       std::optional<io::CompressionSettings>, std::uint64_t);
 
 }  // namespace dem::service

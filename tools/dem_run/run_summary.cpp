@@ -15,10 +15,14 @@ std::string brief(double value) {
   return text;
 }
 
+}  // namespace
+
 bool has_condition(const StopConditions& until) {
   return until.kinetic_energy_below || until.out_of_balance_below || until.servo_tolerance ||
          until.wall_stress_above || until.wall_settlement_above;
 }
+
+namespace {
 
 // What the particles are, for the header line (a world's particles are
 // all round or all shaped).

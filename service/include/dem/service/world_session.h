@@ -92,9 +92,12 @@ class WorldSession {
   virtual void finish_tables(OutputRecorder& recorder) const = 0;
 };
 
-// `compression`: the case's plate loading analyses (output.compression), if any.
+// `compression`: the case's plate loading analyses (output.compression), if
+// any; `vtk_interval`: the case's cycles between ParaView files of a
+// programme (output.vtk_interval; 0 = none).
 template <int Dim>
 std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages = {},
-                                           std::optional<io::CompressionSettings> compression = std::nullopt);
+                                           std::optional<io::CompressionSettings> compression = std::nullopt,
+                                           std::uint64_t vtk_interval = 0);
 
 }  // namespace dem::service
