@@ -18,14 +18,12 @@
 //                 World::wall_area) and settlement how far it has moved
 //                 along its normal into the particles since it was built or
 //                 placed (m), as the service's telemetry reports them.
-//                 The forces of a row at cycle N are those of cycle N's
-//                 force pass, which works on the positions the particles and
-//                 walls had at the end of cycle N-1; the positions,
-//                 displacements and settlement are those at the end of
-//                 cycle N, after its motion - one step later. (The same
-//                 holds for probes.csv and contacts.csv against
-//                 particles.csv.) Over an output interval of many cycles
-//                 the difference is one step's motion.
+//                 The forces of a row at cycle N come from the force pass
+//                 that ends cycle N, on the positions the particles and
+//                 walls have at that moment: forces, positions,
+//                 displacements and settlement belong to the same instant.
+//                 (The same holds for probes.csv and contacts.csv against
+//                 particles.csv.)
 //   assembly.csv  cycle,time,kinetic_energy,out_of_balance,max_contact_force,
 //                 contacts,sliding_contacts,time_step_ratio,gravity_work,
 //                 wall_work,strain_energy,contact_damping,friction,
