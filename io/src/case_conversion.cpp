@@ -158,7 +158,8 @@ CompressionSettings to_compression(const proto::Case& c, const WallIndex& walls)
 template <int Dim>
 class Converter {
  public:
-  Converter(const proto::Case& c, const CaseSource& source) : case_(c), source_(source) {}
+  Converter(const proto::Case& c, const CaseSource& source, const ResourceLimits& limits)
+      : case_(c), source_(source), limits_(limits) {}
 
   CaseDefinitionT<Dim> run() {
     CaseDefinitionT<Dim> def;
@@ -276,6 +277,10 @@ class Converter {
         throw CaseError(std::move(problems));
       }
       world.particles.insert(world.particles.end(), particles.begin(), particles.end());
+      // Validation could not count the particle files' lines.
+      if (const auto problem = particle_count_problem(world.particles.size(), limits_)) {
+        throw CaseError(describe_problem(source_, "particles", *problem + " (counting " + path + ")"));
+      }
     }
   }
 
@@ -427,6 +432,7 @@ class Converter {
 
   const proto::Case& case_;
   const CaseSource& source_;
+  const ResourceLimits& limits_;
   std::map<std::string, MaterialId, std::less<>> materials_;
   WallIndex walls_;
 };
@@ -436,22 +442,23 @@ class Converter {
 int case_dimension(const proto::Case& message) { return message.dimension() == 3 ? 3 : 2; }
 
 template <int Dim>
-CaseDefinitionT<Dim> convert_case(const proto::Case& message, const CaseSource& source) {
-  validate_case(message, source);
+CaseDefinitionT<Dim> convert_case(const proto::Case& message, const CaseSource& source, const ResourceLimits& limits) {
+  validate_case(message, source, limits);
   if (const int declared = case_dimension(message); declared != Dim) {
     throw CaseError(describe_problem(
         source, "dimension",
         "the case is " + std::to_string(declared) + "D, but a " + std::to_string(Dim) + "D case is expected here"));
   }
-  return Converter<Dim>(message, source).run();
+  return Converter<Dim>(message, source, limits).run();
 }
 
-template CaseDefinitionT<2> convert_case<2>(const proto::Case&, const CaseSource&);
-template CaseDefinitionT<3> convert_case<3>(const proto::Case&, const CaseSource&);
+template CaseDefinitionT<2> convert_case<2>(const proto::Case&, const CaseSource&, const ResourceLimits&);
+template CaseDefinitionT<3> convert_case<3>(const proto::Case&, const CaseSource&, const ResourceLimits&);
 
-AnyCaseDefinition convert_any_case(const proto::Case& message, const CaseSource& source) {
-  if (case_dimension(message) == 3) return convert_case<3>(message, source);
-  return convert_case<2>(message, source);
+AnyCaseDefinition convert_any_case(const proto::Case& message, const CaseSource& source,
+                                   const ResourceLimits& limits) {
+  if (case_dimension(message) == 3) return convert_case<3>(message, source, limits);
+  return convert_case<2>(message, source, limits);
 }
 
 }  // namespace dem::io
