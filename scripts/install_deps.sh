@@ -8,7 +8,7 @@ packages=(
   # toolchain
   cmake g++ make ccache
   # engine and case layer
-  libeigen3-dev libprotobuf-dev protobuf-compiler libspdlog-dev libfmt-dev libcli11-dev
+  libeigen3-dev libprotobuf-dev protobuf-compiler libspdlog-dev libfmt-dev libcli11-dev libssl-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # service (DDS) and its IDL compiler

@@ -7,6 +7,8 @@
 #include <limits>
 #include <system_error>
 
+#include "dem/io/snapshot_frame.h"
+
 namespace dem::io {
 
 template <int Dim>
@@ -15,11 +17,12 @@ std::string serialize_snapshot(const WorldSnapshotT<Dim>& snapshot, const Snapsh
   if (!snapshot_to_proto(snapshot, info).SerializeToString(&bytes)) {
     throw SnapshotError("the snapshot could not be serialized (larger than 2 GiB?)");
   }
-  return bytes;
+  return frame_snapshot(bytes);
 }
 
-proto::Snapshot parse_snapshot_message(std::string_view bytes, std::string_view source_name) {
+proto::Snapshot parse_snapshot_message(std::string_view framed, std::string_view source_name) {
   const std::string source(source_name);
+  const std::string_view bytes = unframe_snapshot(framed, source_name);
   if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
     throw SnapshotError(source + ": larger than 2 GiB, which no snapshot is");
   }
@@ -34,11 +37,12 @@ proto::Snapshot parse_snapshot_message(std::string_view bytes, std::string_view 
 }
 
 template <int Dim>
-LoadedSnapshotT<Dim> parse_snapshot(std::string_view bytes, std::string_view source_name) {
+LoadedSnapshotT<Dim> parse_snapshot(std::string_view bytes, std::string_view source_name,
+                                    const ResourceLimits& limits) {
   const proto::Snapshot message = parse_snapshot_message(bytes, source_name);
   LoadedSnapshotT<Dim> loaded;
   try {
-    loaded.snapshot = snapshot_from_proto<Dim>(message, &loaded.info);
+    loaded.snapshot = snapshot_from_proto<Dim>(message, &loaded.info, limits);
   } catch (const SnapshotError& error) {
     throw SnapshotError(std::string(source_name) + ": " + error.what());
   }
@@ -70,7 +74,7 @@ std::string read_snapshot_bytes(const std::filesystem::path& path) {
 
 template std::string serialize_snapshot<2>(const WorldSnapshotT<2>&, const SnapshotInfo&);
 template std::string serialize_snapshot<3>(const WorldSnapshotT<3>&, const SnapshotInfo&);
-template LoadedSnapshotT<2> parse_snapshot<2>(std::string_view, std::string_view);
-template LoadedSnapshotT<3> parse_snapshot<3>(std::string_view, std::string_view);
+template LoadedSnapshotT<2> parse_snapshot<2>(std::string_view, std::string_view, const ResourceLimits&);
+template LoadedSnapshotT<3> parse_snapshot<3>(std::string_view, std::string_view, const ResourceLimits&);
 
 }  // namespace dem::io

@@ -299,6 +299,7 @@ void SimulationRunner::start_run(ReceivedCommand& received, CommandKind kind) {
   spdlog::info("request {} from {}: {} accepted, up to {} cycles from cycle {}", command.request_id, command.client_id,
                protocol::to_string(kind), goal.max_cycles, simulation_.world().cycle_count());
   active_.emplace(std::move(received), goal, simulation_.world());
+  active_health_.emplace(simulation_.world());
   state_ = ServerState::kRunning;
   message_ = std::string(protocol::to_string(kind)) + " running";
   publish_status();
@@ -325,13 +326,33 @@ void SimulationRunner::run_chunk() {
     const double rate = static_cast<double>(cycles) / seconds;
     cycles_per_second_ = cycles_per_second_ > 0.0 ? 0.5 * (cycles_per_second_ + rate) : rate;
   }
-  if (!std::isfinite(world.kinetic_energy())) {
-    fail_run("the simulation blew up at cycle " + std::to_string(world.cycle_count()) +
-             ": the kinetic energy is not finite (is the time step too large?)");
+  // Non-finite kinetic energy is looked for after every chunk: it is what
+  // a blow-up reaches between two paced assessments.
+  const bool finished = active_->advance(cycles, world);
+  const bool finite = std::isfinite(world.kinetic_energy());
+  if (const auto problem = active_health_->check(world, finished || !finite)) {
+    fail_unhealthy(*problem);
     return;
   }
   if (schedule_.due(world.cycle_count(), world.time())) publish_telemetry();
-  if (active_->advance(cycles, world)) complete_run();
+  if (finished) complete_run();
+}
+
+// The last good state is written beside the case's tables and the world
+// goes back to it; the server stays in error until a case or snapshot is loaded.
+void SimulationRunner::fail_unhealthy(const StepHealth& problem) {
+  WorldSession& world = simulation_.world();
+  const StateCheckpoint& good = active_health_->last_good();
+  const std::filesystem::path path = recorder_.case_directory() / "last_good.snapshot";
+  std::string kept = "; the world is back at the last good state, cycle " + std::to_string(good.cycle());
+  try {
+    io::write_snapshot_bytes(path, good.bytes(simulation_.snapshot_info()));
+    kept += ", which is in " + path.string();
+  } catch (const std::exception& error) {
+    kept += " (it could not be written: " + std::string(error.what()) + ")";
+  }
+  world.restore(good);
+  fail_run("the run is unhealthy " + problem.message + kept);
 }
 
 void SimulationRunner::complete_run() {
@@ -351,6 +372,7 @@ void SimulationRunner::end_run(ReplyStatus status, const std::string& message) {
   reply.condition_met = active_->condition_met();
   const ReceivedCommand received = active_->command();
   active_.reset();
+  active_health_.reset();
   if (state_ == ServerState::kRunning) state_ = ServerState::kLoaded;
   message_ = message;
   send(received, std::move(reply));

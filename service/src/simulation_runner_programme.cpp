@@ -80,7 +80,7 @@ void SimulationRunner::run_stages(std::size_t first, std::size_t count) {
                        stage_label(i) + ": " + error.what());
       break;
     }
-    if (programme_->outcome() == ProgrammeOutcome::kFailed || programme_blew_up()) break;
+    if (programme_->outcome() == ProgrammeOutcome::kFailed || programme_unhealthy(true)) break;
     end_stage(i, result);
   }
   if (!programme_->ending()) programme_->complete();
@@ -89,18 +89,15 @@ void SimulationRunner::run_stages(std::size_t first, std::size_t count) {
 
 // After every cycle of a stage: a row of the time series at the case's
 // interval, telemetry on schedule, and every chunk_duration the commands
-// that came in, as run_chunk does between its chunks. The blow-up check
+// that came in, as run_chunk does between its chunks. The health check
 // comes first at both, so nothing is recorded or kept of a broken state.
 bool SimulationRunner::between_programme_cycles() {
   const WorldSession& world = simulation_.world();
   const auto now = std::chrono::steady_clock::now();
   const bool row = programme_->row_due(world.cycle_count());
   const bool poll = now - last_poll_ >= options_.chunk_duration;
-  if ((row || poll) && programme_blew_up()) return false;
-  if (row) {
-    record_programme_row();
-    programme_->keep_if_good(world);
-  }
+  if ((row || poll) && programme_unhealthy(false)) return false;
+  if (row) record_programme_row();
   if (schedule_.due(world.cycle_count(), world.time())) publish_telemetry();
   if (poll) {
     last_poll_ = now;
@@ -117,12 +114,14 @@ bool SimulationRunner::between_programme_cycles() {
   return !programme_->ending();
 }
 
-bool SimulationRunner::programme_blew_up() {
-  const WorldSession& world = simulation_.world();
-  if (std::isfinite(world.kinetic_energy())) return false;
-  programme_->fail("the simulation blew up at cycle " + std::to_string(world.cycle_count()) + " in " +
-                   stage_label(programme_->stage()) +
-                   ": the kinetic energy is not finite (is the time step too large?)");
+bool SimulationRunner::programme_unhealthy(bool always) {
+  // Non-finite kinetic energy is looked for at every call: it is what a
+  // blow-up reaches between two paced assessments.
+  WorldSession& world = simulation_.world();
+  const bool finite = std::isfinite(world.kinetic_energy());
+  const std::optional<StepHealth> problem = programme_->health().check(world, always || !finite);
+  if (!problem) return false;
+  programme_->fail("the run is unhealthy in " + stage_label(programme_->stage()) + " " + problem->message);
   return true;
 }
 
@@ -134,7 +133,6 @@ void SimulationRunner::record_programme_row() {
 void SimulationRunner::end_stage(std::size_t stage, const StageResult& result) {
   const WorldSession& world = simulation_.world();
   record_programme_row();
-  programme_->keep_if_good(world, true);  // the caller found it finite
   recorder_.record_stage(stage, world.stage_name(stage), result, world.cycle_count(), world.time());
   if (recorder_.failed()) programme_->fail("an output file could not be written (see the error above)");
   spdlog::info("{}: {} cycles{}, to cycle {}", stage_label(stage), result.cycles_run,
@@ -174,8 +172,11 @@ void SimulationRunner::end_programme() {
     case ProgrammeOutcome::kRunning:
       state_ = ServerState::kError;
       message_ = "programme failed: " + programme_->reason();
-      if (failed && written) {
-        message_ += "; the last good state, at cycle " + std::to_string(snapshot_cycle) + ", is in " + path.string();
+      if (failed) {
+        // The world goes back to it: what the server shows and saves from now on is sound.
+        simulation_.world().restore(programme_->last_good());
+        message_ += "; the world is back at the last good state, cycle " + std::to_string(snapshot_cycle);
+        if (written) message_ += ", which is in " + path.string();
       }
       spdlog::error("{}", message_);
       break;

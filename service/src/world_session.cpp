@@ -30,6 +30,7 @@ class CheckpointT final : public StateCheckpoint {
   explicit CheckpointT(WorldSnapshotT<Dim> snapshot) : snapshot_(std::move(snapshot)) {}
   std::uint64_t cycle() const override { return snapshot_.cycle; }
   std::string bytes(const io::SnapshotInfo& info) const override { return io::serialize_snapshot(snapshot_, info); }
+  const WorldSnapshotT<Dim>& snapshot() const { return snapshot_; }
 
  private:
   WorldSnapshotT<Dim> snapshot_;
@@ -40,7 +41,7 @@ class WorldSessionT final : public WorldSession {
  public:
   WorldSessionT(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages,
                 std::optional<io::CompressionSettings> compression)
-      : world_(std::move(world)), stages_(std::move(stages)), compression_(std::move(compression)) {}
+      : world_(std::move(world)), health_(world_), stages_(std::move(stages)), compression_(std::move(compression)) {}
 
   std::uint8_t dimension() const override { return Dim; }
   void cycle(std::uint64_t cycles) override { world_.cycle(cycles); }
@@ -92,6 +93,13 @@ class WorldSessionT final : public WorldSession {
   std::unique_ptr<StateCheckpoint> checkpoint() const override {
     return std::make_unique<CheckpointT<Dim>>(world_.snapshot());
   }
+  void restore(const StateCheckpoint& checkpoint) override {
+    const int threads = world_.threads();
+    world_ = BasicWorld<Dim>(dynamic_cast<const CheckpointT<Dim>&>(checkpoint).snapshot());
+    world_.set_threads(threads);
+    health_ = HealthMonitorT<Dim>(world_);
+  }
+  StepHealth assess_health() override { return health_.assess(world_); }
 
   std::size_t stage_count() const override { return stages_.size(); }
   const std::string& stage_name(std::size_t stage) const override { return stages_.at(stage).name; }
@@ -113,6 +121,7 @@ class WorldSessionT final : public WorldSession {
  private:
   static constexpr std::integral_constant<int, Dim> kDim{};
   BasicWorld<Dim> world_;
+  HealthMonitorT<Dim> health_;
   std::vector<StageDefT<Dim>> stages_;
   std::optional<io::CompressionSettings> compression_;
 };

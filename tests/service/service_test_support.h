@@ -74,6 +74,13 @@ enum Domain : std::uint32_t {
 };
 static_assert(kLastDomain <= 118, "the shell tests use domains 118 and 119");
 
+// The reliability tests (docs/RELIABILITY.md) take 200 to 229.
+enum ReliabilityDomain : std::uint32_t {
+  kHealthCycleBlowUp = 200,
+  kLastReliabilityDomain
+};
+static_assert(kLastReliabilityDomain <= 230, "the reliability tests' domains are 200-229");
+
 std::filesystem::path case_file(const std::string& name);  // cases/ball/<name>.case.txtpb
 std::string read_text(const std::filesystem::path& path);
 

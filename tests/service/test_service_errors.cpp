@@ -144,12 +144,17 @@ TEST(Errors, AGarbageSnapshotIsAnInvalidSnapshot) {
   load.snapshot.data = "this is not a snapshot at all";
   const protocol::Reply reply = f.refused(load);
   EXPECT_EQ(reply.status, ReplyStatus::kInvalidSnapshot);
-  EXPECT_EQ(reply.message, "<transferred snapshot>: not a dem snapshot (the bytes are not a serialized dem.proto.Snapshot)");
-  // A real snapshot made inconsistent.
+  EXPECT_EQ(reply.message, "<transferred snapshot>: not a dem snapshot (it does not start with the \"DEMSNAP1\" "
+                           "header; snapshots written before the header was added must be saved again)");
+  // A real snapshot cut short, or with one byte changed: its frame says so.
   const std::string good = f.client.save_snapshot({}, true).data;
   std::string cut = good.substr(0, good.size() / 2);
   load.snapshot.data = cut;
   EXPECT_EQ(f.refused(load).status, ReplyStatus::kInvalidSnapshot);
+  std::string changed = good;
+  changed[changed.size() / 2] = static_cast<char>(changed[changed.size() / 2] ^ 4);
+  load.snapshot.data = changed;
+  EXPECT_EQ(f.refused(load).message, "<transferred snapshot>: corrupt: its SHA-256 checksum does not match its contents");
   // A case's bytes are no snapshot either.
   load.snapshot.data = io::load_case_file(case_file("nine_disc_damped")).message.SerializeAsString();
   EXPECT_NE(f.refused(load).message.find("not a dem snapshot"), std::string::npos);

@@ -1,7 +1,9 @@
 // dem_run CASE --out DIR [--threads N] [--quiet]: runs a 2D or 3D case.
-// Exit codes: 0 done; 1 any other failure (for example an unwritable output
-// directory); 2 bad command-line arguments; 3 a case that cannot be read,
-// parsed, validated or built (the message names the file and the field).
+// Exit codes: 0 done; 1 a run that became numerically unhealthy (its last
+// good state is in DIR/last_good.snapshot) or any other failure (for
+// example an unwritable output directory); 2 bad command-line arguments;
+// 3 a case that cannot be read, parsed, validated or built (the message
+// names the file and the field).
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
@@ -9,6 +11,7 @@
 
 #include "dem/error.h"
 #include "dem/io/case_error.h"
+#include "dem/io/resource_limits.h"
 #include "run_case.h"
 
 namespace {
@@ -41,7 +44,13 @@ int main(int argc, char** argv) {
     // --help arrives here too, and is not a mistake.
     return app.exit(error) == 0 ? 0 : kBadArguments;
   }
-  if (threads_option->count() > 0) options.threads = threads;
+  if (threads_option->count() > 0) {
+    if (const auto problem = dem::io::thread_count_problem(threads, dem::io::machine_limits())) {
+      std::cerr << "error: --threads " << *problem << '\n';
+      return kBadArguments;
+    }
+    options.threads = threads;
+  }
 
   try {
     dem::run::run_case(options);

@@ -12,6 +12,7 @@
 #include "dem/protocol/messages.h"
 #include "dem/service/active_run.h"
 #include "dem/service/command_queue.h"
+#include "dem/service/health_watch.h"
 #include "dem/service/options.h"
 #include "dem/service/output_recorder.h"
 #include "dem/service/programme_run.h"
@@ -56,6 +57,7 @@ class SimulationRunner {
   void complete_run();
   void end_run(protocol::ReplyStatus status, const std::string& message);
   void fail_run(const std::string& message);
+  void fail_unhealthy(const StepHealth& problem);
 
   // The one-shot mode and run_programme (simulation_runner_programme.cpp).
   // The run_programme command runs the same stages from the command loop;
@@ -64,7 +66,7 @@ class SimulationRunner {
   void run_programme(const ReceivedCommand& received);
   void run_stages(std::size_t first, std::size_t count);
   bool between_programme_cycles();
-  bool programme_blew_up();  // fails the programme when the kinetic energy is not finite
+  bool programme_unhealthy(bool always);  // fails the programme when the world's health says so
   void record_programme_row();
   void end_stage(std::size_t stage, const StageResult& result);
   void end_programme();
@@ -91,6 +93,7 @@ class SimulationRunner {
   TelemetrySchedule schedule_;
   protocol::ServerState state_ = protocol::ServerState::kIdle;
   std::optional<ActiveRun> active_;
+  std::optional<HealthWatch> active_health_;  // the running cycle or run_until's
   std::optional<ProgrammeRun> programme_;  // a one-shot run's programme, or run_programme's
   const protocol::Command* programme_command_ = nullptr;  // run_programme's, while it runs
   std::chrono::steady_clock::time_point last_poll_{};  // of the queue, during a programme

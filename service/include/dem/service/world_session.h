@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "dem/health.h"
 #include "dem/io/compression_settings.h"
 #include "dem/io/snapshot_conversion.h"
 #include "dem/programme.h"
@@ -74,6 +75,12 @@ class WorldSession {
 
   virtual std::string snapshot_bytes(const io::SnapshotInfo& info) const = 0;
   virtual std::unique_ptr<StateCheckpoint> checkpoint() const = 0;
+  // Puts the world back to a checkpoint this session took (its stages and
+  // threads stay); the health monitor starts afresh from it.
+  virtual void restore(const StateCheckpoint& checkpoint) = 0;
+  // The engine's health status of the state now (a pass over the particles
+  // and contacts: HealthWatch paces it).
+  virtual StepHealth assess_health() = 0;
 
   // The case's loading programme: its stages as io converted them (none for
   // a world restored from a snapshot), run by the engine's run_stage.

@@ -1,0 +1,124 @@
+#include "numerical_health.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace dem {
+namespace health {
+
+std::string number(double value) {
+  std::ostringstream out;
+  out.precision(3);
+  out << value;
+  return out.str();
+}
+
+template <int Dim>
+std::optional<std::string> non_finite_particle(const BasicWorld<Dim>& world) {
+  const ParticleViewT<Dim> p = world.particles();
+  for (ParticleId i = 0; i < world.particle_count(); ++i) {
+    if (!p.position[i].allFinite()) return "particle " + std::to_string(i) + "'s position is not finite";
+    if (!p.velocity[i].allFinite()) return "particle " + std::to_string(i) + "'s velocity is not finite";
+  }
+  return std::nullopt;
+}
+
+template <int Dim>
+std::optional<std::string> deepest_overlap(const BasicWorld<Dim>& world, double limit) {
+  const ParticleViewT<Dim> p = world.particles();
+  double worst = 0.0;
+  const ContactRecordT<Dim>* deepest = nullptr;
+  const std::vector<ContactRecordT<Dim>> contacts = world.contacts();
+  for (const ContactRecordT<Dim>& c : contacts) {
+    double radius = p.radius[c.first];
+    if (c.second_particle != kInvalidId) radius = std::min(radius, p.radius[c.second_particle]);
+    const double fraction = c.overlap / radius;
+    if (fraction > worst) {
+      worst = fraction;
+      deepest = &c;
+    }
+  }
+  if (deepest == nullptr || !(worst > limit)) return std::nullopt;
+  const std::string other = deepest->second_particle != kInvalidId
+                                ? "particle " + std::to_string(deepest->second_particle)
+                                : "wall " + world.wall(deepest->second_wall).name;
+  return "the contact of particle " + std::to_string(deepest->first) + " and " + other + " overlaps " +
+         number(worst) + " of the smaller radius (the limit is " + number(limit) + ")";
+}
+
+template std::optional<std::string> non_finite_particle(const BasicWorld<2>&);
+template std::optional<std::string> non_finite_particle(const BasicWorld<3>&);
+template std::optional<std::string> deepest_overlap(const BasicWorld<2>&, double);
+template std::optional<std::string> deepest_overlap(const BasicWorld<3>&, double);
+
+}  // namespace health
+
+template <int Dim>
+HealthMonitorT<Dim>::HealthMonitorT(const BasicWorld<Dim>& world, HealthLimits limits) : limits_(limits) {
+  const EnergyBudget e = world.assembly_measures().energy;
+  created_at_start_ = health::created_energy(e);
+  held_at_start_ = e.kinetic + e.strain;
+  const ParticleViewT<Dim> p = world.particles();
+  double mass = 0.0, radius = 0.0;
+  for (ParticleId i = 0; i < world.particle_count(); ++i) {
+    mass += p.mass[i];
+    radius += p.radius[i];
+  }
+  if (world.particle_count() > 0) radius /= world.particle_count();
+  const double speed = radius / world.time_step();
+  round_off_ = 1e-12 * mass * speed * speed;
+}
+
+template <int Dim>
+StepHealth HealthMonitorT<Dim>::assess(const BasicWorld<Dim>& world) {
+  StepHealth health;
+  health.cycle = world.cycle_count();
+  const std::string at = "at cycle " + std::to_string(health.cycle) + ": ";
+  const AssemblyMeasures measures = world.assembly_measures();
+  std::optional<std::string> bad;
+  if (!std::isfinite(measures.kinetic_energy)) bad = "the kinetic energy is not finite";
+  if (!bad) bad = health::non_finite_particle(world);
+  if (bad) {
+    health.problem = HealthProblem::kNonFinite;
+    health.message = at + *bad + ": the simulation blew up; reduce the time step (time_step.fraction) or check "
+                                 "the stiffnesses and masses";
+    return health;
+  }
+  const EnergyBudget& e = measures.energy;
+  const double created = health::created_energy(e) - created_at_start_;
+  const double in_play = std::abs(e.initial_kinetic) + std::abs(e.gravity_work) + std::abs(e.wall_work) + held_at_start_;
+  most_in_play_ = std::max(most_in_play_, in_play);
+  const bool beyond = created > round_off_ && created > limits_.max_energy_growth * most_in_play_;
+  if (!beyond) suspect_created_ = 0.0;
+  if (beyond && suspect_created_ == 0.0) {
+    suspect_created_ = created;
+    suspect_cycle_ = health.cycle;
+  }
+  if (beyond && (health.cycle >= suspect_cycle_ + 2 || created >= 2.0 * suspect_created_)) {
+    health.problem = HealthProblem::kEnergyGrowth;
+    health.message = at + health::number(created) + " J of energy appeared without work done (the most energy in play was " +
+                     health::number(most_in_play_) + " J; the limit is " + health::number(limits_.max_energy_growth) +
+                     " times that): the integration is unstable; reduce the time step (time_step.fraction)";
+    return health;
+  }
+  // Validation refuses such a step in a case; a snapshot or a parameter can still bring one.
+  if (world.time_step() > world.critical_time_step() * (1.0 + 1e-9)) {
+    health.problem = HealthProblem::kStepAboveCritical;
+    health.message = at + "the time step " + health::number(world.time_step()) + " s exceeds the critical step " +
+                     health::number(world.critical_time_step()) +
+                     " s, beyond which central differences are unstable: reduce the time step (time_step_fraction)";
+    return health;
+  }
+  if (const auto overlap = health::deepest_overlap(world, limits_.max_overlap_fraction)) {
+    health.problem = HealthProblem::kOverlap;
+    health.message = at + *overlap + ": the particles pass through each other; reduce the time step or the "
+                                     "loading rate, or stiffen the contacts";
+    return health;
+  }
+  return health;
+}
+
+template class HealthMonitorT<2>;
+template class HealthMonitorT<3>;
+
+}  // namespace dem
