@@ -14,6 +14,7 @@
 #include "dem/io/particle_file.h"
 #include "dem/packing.h"
 #include "field_path.h"
+#include "format_number.h"
 #include "problem_list.h"
 
 namespace dem::io {
@@ -187,6 +188,7 @@ class Converter {
     if (case_.time_step().fraction() > 0) def.world.time_step_fraction = case_.time_step().fraction();
     def.world.fixed_time_step = case_.time_step().fixed();
     def.world.contact_tolerance = case_.numerics().contact_tolerance();
+    check_contact_tolerance(def.world);
     def.world.threads = static_cast<int>(case_.numerics().threads());
     add_stages(def.stages);
     add_output(def.output, def.world.particles.size());
@@ -194,6 +196,29 @@ class Converter {
   }
 
  private:
+  // BALL's TOL is a fraction of a radius. One beyond the largest diameter
+  // makes every pair within it a contact-table row: far apart particles
+  // by the million would make the table quadratic in their number.
+  void check_contact_tolerance(const WorldDefT<Dim>& world) const {
+    double largest = 0.0;
+    for (const ParticleDefT<Dim>& particle : world.particles) {
+      double radius = particle.radius;  // a shaped particle's is set by the engine from its shape
+      if constexpr (Dim == 2) {
+        if (particle.shape.superquadric()) radius = std::max(particle.shape.a, particle.shape.b);
+      } else {
+        if (particle.shape.ellipsoid()) radius = particle.shape.axes.maxCoeff();
+      }
+      largest = std::max(largest, radius);
+    }
+    if (world.contact_tolerance > 2.0 * largest) {
+      throw CaseError(describe_problem(source_, "numerics.contact_tolerance",
+                                       "must be at most the largest particle's diameter (" +
+                                           format_number(2.0 * largest) + " m), got " +
+                                           format_number(world.contact_tolerance) +
+                                           " m; leave it out for a tenth of the mean radius"));
+    }
+  }
+
   void add_materials(WorldDefT<Dim>& world) {
     for (int i = 0; i < case_.material_size(); ++i) {
       const proto::Material& material = case_.material(i);

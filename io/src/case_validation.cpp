@@ -308,8 +308,10 @@ class CaseChecker {
       particle_count_ = saturating_add(particle_count_, size.count());
     }
     if (box_ok) check_packing_room(path, packing);
-    if (packing.max_attempts() > static_cast<std::uint32_t>(std::numeric_limits<int>::max())) {
-      problems_.add(path + ".max_attempts", "must be at most " + std::to_string(std::numeric_limits<int>::max()));
+    if (packing.max_attempts() > limits_.max_packing_attempts) {
+      problems_.add(path + ".max_attempts", "must be at most " + std::to_string(limits_.max_packing_attempts) +
+                                                " (got " + std::to_string(packing.max_attempts()) +
+                                                "): a packing that cannot fit would try that many times a particle");
     }
   }
 

@@ -113,6 +113,21 @@ TEST_F(CaseConversion, GeneratorFailureNamesTheSource) {
   }
 }
 
+// Every pair within the tolerance gets a contact-table row: one far
+// beyond a particle's size would make the table quadratic.
+TEST_F(CaseConversion, AContactToleranceBeyondTheLargestDiameterIsRefused) {
+  case_.mutable_numerics()->set_contact_tolerance(0.02);  // the largest diameter: allowed
+  EXPECT_NO_THROW(convert_case(case_));
+  case_.mutable_numerics()->set_contact_tolerance(0.5);
+  try {
+    convert_case(case_, {.name = "case.txtpb"});
+    FAIL() << "a tolerance of 25 diameters passed";
+  } catch (const CaseError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("case.txtpb: numerics.contact_tolerance: must be at most the largest "
+                                        "particle's diameter (0.02 m), got 0.5 m"));
+  }
+}
+
 TEST_F(CaseConversion, WallsGetUnitDirections) {
   const std::vector<WallDef> walls = convert_case(case_).world.walls;
   ASSERT_EQ(walls.size(), 4u);

@@ -235,7 +235,7 @@ const Mistake kMistakes[] = {
     {"PackingDiscTooBig", [](auto& c) { packing(c).mutable_size(0)->set_radius(0.02); },
      "particles[2].random_packing.size[0].radius: discs of radius 0.02 do not fit in the box (0.1 x "},
     {"PackingTooManyAttempts", [](auto& c) { packing(c).set_max_attempts(3'000'000'000u); },
-     "particles[2].random_packing.max_attempts: must be at most 2147483647"},
+     "particles[2].random_packing.max_attempts: must be at most 10000000 (got 3000000000)"},
     {"SuperquadricWithoutA", [](auto& c) { shape(c).clear_a(); },
      "particles[1].particle.superquadric.a: must be > 0 (got 0)"},
     {"SuperquadricNegativeB", [](auto& c) { shape(c).set_b(-0.005); },

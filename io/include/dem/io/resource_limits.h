@@ -24,6 +24,10 @@ struct ResourceLimits {
   // Cells of a random packing's placement grid (one per largest diameter
   // of the box): a huge box of small particles would allocate them all.
   std::uint64_t max_packing_cells = 0;
+  // A random packing's max_attempts (per particle): a packing that nearly
+  // cannot fit costs up to its count times this many tries. The engine's
+  // default is 100,000; the machine's limit allows 100 times that.
+  std::uint64_t max_packing_attempts = 10'000'000;
 };
 
 // Measured on the shared 100,000-sphere benchmark packing (3D, Hertz laws,
