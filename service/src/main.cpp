@@ -16,6 +16,7 @@
 #include <iostream>
 #include <thread>
 
+#include "dem/io/resource_limits.h"
 #include "dem/protocol/topics.h"
 #include "dem/service/command_error.h"
 #include "dem/service/server.h"
@@ -117,6 +118,27 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber)
       ->envname("DEM_THREADS");
   app.add_flag("--no-csv", no_csv, "write no CSV tables");
+  app.add_option("--max-particles", options.max_particles,
+                 "particles one case or snapshot may hold (0: as many as the memory budget holds)")
+      ->capture_default_str()
+      ->envname("DEM_MAX_PARTICLES");
+  app.add_option("--memory-budget", options.memory_budget_bytes,
+                 "bytes one world may need, at 2.5 kB a particle (0: half the machine's memory)")
+      ->capture_default_str()
+      ->envname("DEM_MEMORY_BUDGET");
+  app.add_option("--max-cycles", options.limits.max_cycles, "cycles one command may run")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber)
+      ->envname("DEM_MAX_CYCLES");
+  app.add_option("--max-payload-bytes", options.limits.max_payload_bytes,
+                 "bytes of case text, case or snapshot one command may carry")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber)
+      ->envname("DEM_MAX_PAYLOAD_BYTES");
+  app.add_option("--max-query-contacts", options.limits.max_query_contacts, "contacts one query may return")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber)
+      ->envname("DEM_MAX_QUERY_CONTACTS");
   app.add_flag("--run-and-exit", options.run_programme,
                "one-shot: run the case's loading programme (its stages), publishing telemetry and answering "
                "commands meanwhile; write the tables and <out>/<case>/final.snapshot (after a failure "
@@ -134,7 +156,13 @@ int main(int argc, char** argv) {
     return kBadArguments;
   }
   if (!initial_case.empty()) options.initial_case = initial_case;
-  if (threads >= 0) options.threads = threads;
+  if (threads >= 0) {
+    if (const auto problem = dem::io::thread_count_problem(threads, dem::io::machine_limits())) {
+      std::cerr << "error: --threads " << *problem << '\n';
+      return kBadArguments;
+    }
+    options.threads = threads;
+  }
   options.record_csv = !no_csv;
 
   auto logger = spdlog::stderr_color_mt("dem_server");

@@ -8,6 +8,7 @@
 #include "dem/io/case_conversion.h"
 #include "dem/io/case_loader.h"
 #include "dem/io/snapshot_file.h"
+#include "dem/io/world_checks.h"
 #include "dem/service/command_error.h"
 #include "format_value.h"
 
@@ -32,9 +33,12 @@ std::string join(const std::vector<std::string>& lines) {
 
 // A case's world built, with what the reply says about it.
 template <int Dim>
-Simulation::Prepared prepared_case(const io::CaseDefinitionT<Dim>& definition, const std::string& source) {
+Simulation::Prepared prepared_case(const io::CaseDefinitionT<Dim>& definition, const io::CaseSource& case_source,
+                                   const std::string& source) {
   Simulation::Prepared prepared;
-  prepared.world = make_session(BasicWorld<Dim>(definition.world), definition.stages, definition.output.compression);
+  BasicWorld<Dim> built(definition.world);
+  io::check_built_world(built, case_source);
+  prepared.world = make_session(std::move(built), definition.stages, definition.output.compression);
   prepared.output_interval = definition.output.interval;
   prepared.case_name = definition.name.empty() ? std::string("unnamed") : definition.name;
   prepared.description = definition.description;
@@ -80,8 +84,8 @@ Simulation::Prepared Simulation::prepare_case(const protocol::LoadCaseArgs& args
       source = args.source_name.empty() ? "<binary>" : args.source_name;
       loaded = io::parse_case_binary(args.binary, source);
     }
-    const io::AnyCaseDefinition definition = io::convert_any_case(loaded.message, loaded.source);
-    return std::visit([&](const auto& d) { return prepared_case(d, source); }, definition);
+    const io::AnyCaseDefinition definition = io::convert_any_case(loaded.message, loaded.source, limits_);
+    return std::visit([&](const auto& d) { return prepared_case(d, loaded.source, source); }, definition);
   } catch (const io::CaseError& error) {
     throw CommandError(ReplyStatus::kInvalidCase, join(error.problems()));
   } catch (const DefinitionError& error) {
@@ -98,7 +102,7 @@ Simulation::Prepared Simulation::prepare_snapshot(std::string_view bytes, const 
       io::SnapshotInfo info;
       WorldSnapshotT<kDim> snapshot;
       try {
-        snapshot = io::snapshot_from_proto<kDim>(message, &info);
+        snapshot = io::snapshot_from_proto<kDim>(message, &info, limits_);
       } catch (const io::SnapshotError& error) {
         throw io::SnapshotError(source + ": " + error.what());
       }
@@ -250,7 +254,14 @@ std::vector<protocol::ContactEntry> Simulation::query_contacts(const protocol::C
     require(std::isfinite(*args.min_normal_force), "the force threshold must be finite");
     filter.min_normal_force = args.min_normal_force;
   }
-  return world().query_contacts(filter);
+  std::vector<protocol::ContactEntry> contacts = world().query_contacts(filter);
+  if (contacts.size() > max_query_contacts_) {
+    throw CommandError(ReplyStatus::kBadRequest,
+                       "the query matches " + std::to_string(contacts.size()) + " contacts, more than the " +
+                           std::to_string(max_query_contacts_) +
+                           " one query may return (--max-query-contacts): narrow it by wall, box or minimum force");
+  }
+  return contacts;
 }
 
 }  // namespace dem::service

@@ -7,6 +7,7 @@
 
 #include "dem/io/snapshot_file.h"
 #include "dem/service/command_error.h"
+#include "dem/service/command_limits.h"
 #include "dem/service/lifecycle.h"
 
 namespace dem::service {
@@ -34,7 +35,8 @@ SimulationRunner::SimulationRunner(const ServerOptions& options, CommandQueue& q
       queue_(queue),
       replies_(replies),
       telemetry_(telemetry),
-      simulation_(options.threads),
+      simulation_(options.threads, io::limits_with_budget(options.max_particles, options.memory_budget_bytes),
+                  options.limits.max_query_contacts),
       recorder_(options.output_directory, options.record_csv),
       schedule_(options.telemetry_cycles, options.telemetry_seconds) {}
 
@@ -110,6 +112,7 @@ void SimulationRunner::execute(ReceivedCommand received) {
     if (const auto reason = refusal(state_, *kind)) {
       throw CommandError(ReplyStatus::kRefused, std::string(protocol::to_string(*kind)) + " refused: " + *reason);
     }
+    check_command(command, options_.limits);
     switch (*kind) {
       case CommandKind::kCycle:
       case CommandKind::kRunUntil:

@@ -154,7 +154,7 @@ TEST(Commands, RunUntilStopsAtStressSettlementOrEnergy) {
   EXPECT_LT(s.client.get_state().stats.kinetic_energy, 1.0);
 
   protocol::RunUntilArgs capped = stress;
-  capped.stress = 1e300;
+  capped.stress = 1e29;  // never reached (1e30 is the largest threshold a command may give)
   capped.max_cycles = 50;
   const protocol::Reply cap = s.client.run_until(capped);
   EXPECT_FALSE(cap.condition_met);

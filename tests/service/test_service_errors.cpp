@@ -83,7 +83,7 @@ TEST(Errors, NegativeOrZeroCycleCountsAreBadRequests) {
   cycle.cycle.cycles = -5;
   const protocol::Reply reply = f.refused(cycle);
   EXPECT_EQ(reply.status, ReplyStatus::kBadRequest);
-  EXPECT_EQ(reply.message, "the cycle count must be > 0, got -5");
+  EXPECT_EQ(reply.message, "cycle.cycles: must be > 0, got -5");
   cycle.cycle.cycles = 0;
   EXPECT_EQ(f.refused(cycle).status, ReplyStatus::kBadRequest);
   protocol::Command until = command(CommandKind::kRunUntil);
@@ -225,7 +225,7 @@ TEST(Errors, BadParameterValuesAreRefusedWithTheReason) {
   EXPECT_EQ(f.refused(parameter("contact_damping", -1)).message, "contact_damping must be >= 0");
   EXPECT_EQ(f.refused(parameter("time_step_fraction", 2)).message, "time_step_fraction must be in (0, 1]");
   EXPECT_EQ(f.refused(parameter("time_step_fraction", std::nan(""))).message,
-            "time_step_fraction: the value must be finite");
+            "parameter.value: must be a finite number of magnitude at most 1e30");
   EXPECT_EQ(f.refused(parameter("friction", 0.3, "sand")).message, "no material \"sand\" (materials: disc, wall)");
   EXPECT_EQ(f.refused(parameter("friction", -0.3, "disc")).status, ReplyStatus::kBadRequest);
   EXPECT_EQ(f.refused(parameter("stiffness", 1)).status, ReplyStatus::kNotFound);

@@ -30,7 +30,11 @@ TEST(Health, ACycleThatBlowsUpFailsAndKeepsTheLastGoodState) {
   const protocol::Reply& failed = *reply;
   EXPECT_EQ(failed.status, ReplyStatus::kFailed);
   EXPECT_NE(failed.message.find("the run is unhealthy at cycle "), std::string::npos) << failed.message;
-  EXPECT_NE(failed.message.find("J of energy appeared without work done"), std::string::npos) << failed.message;
+  // Energy from nowhere, or the overlaps it causes: which an assessment
+  // sees first depends on when it comes (they are paced by wall time).
+  EXPECT_TRUE(failed.message.find("J of energy appeared without work done") != std::string::npos ||
+              failed.message.find("the particles pass through each other") != std::string::npos)
+      << failed.message;
   EXPECT_LT(failed.cycles_run, 1000u);
   EXPECT_EQ(failed.state.state, ServerState::kError);
 
@@ -54,8 +58,7 @@ TEST(Health, ACycleThatBlowsUpFailsAndKeepsTheLastGoodState) {
   const std::optional<protocol::Reply> refused = client.await(client.start_cycle(10), 10s);
   ASSERT_TRUE(refused);
   EXPECT_EQ(refused->status, ReplyStatus::kRefused);
-  EXPECT_TRUE(client.load_snapshot_on_server("saved_after_failure.snapshot").ok());
-  EXPECT_EQ(client.status().state, ServerState::kLoaded);
+  EXPECT_EQ(client.load_snapshot_on_server("saved_after_failure.snapshot").state.state, ServerState::kLoaded);
 }
 
 }  // namespace

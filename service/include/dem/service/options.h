@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include "dem/service/command_limits.h"
+
 namespace dem::service {
 
 struct ServerOptions {
@@ -31,6 +33,12 @@ struct ServerOptions {
   std::chrono::milliseconds progress_interval{250};  // status updates while a command runs
   std::uint32_t contact_chunk = 4096;                // contacts per reply chunk, by default
   std::uint32_t snapshot_chunk = 1u << 20;           // bytes per reply chunk of a transferred snapshot
+  // What one world may take (io/resource_limits.h): 0 sizes each to the
+  // machine (half its memory, at 2.5 kB a particle); the threads any case,
+  // snapshot or option asks for are capped at the cores.
+  std::uint64_t max_particles = 0;
+  std::uint64_t memory_budget_bytes = 0;
+  CommandLimits limits;  // what one command may ask
 };
 
 }  // namespace dem::service

@@ -12,14 +12,18 @@
 #include <string_view>
 #include <vector>
 
+#include "dem/io/resource_limits.h"
 #include "dem/protocol/messages.h"
+#include "dem/service/command_limits.h"
 #include "dem/service/world_session.h"
 
 namespace dem::service {
 
 class Simulation {
  public:
-  explicit Simulation(std::optional<int> threads = std::nullopt) : threads_(threads) {}
+  explicit Simulation(std::optional<int> threads = std::nullopt, io::ResourceLimits limits = io::machine_limits(),
+                      std::uint64_t max_query_contacts = CommandLimits{}.max_query_contacts)
+      : threads_(threads), limits_(limits), max_query_contacts_(max_query_contacts) {}
 
   bool loaded() const { return world_ != nullptr; }
   const WorldSession& world() const { return *world_; }
@@ -39,11 +43,12 @@ class Simulation {
     std::string message;  // what was loaded, for the reply
   };
   // A case (2D or 3D) from a file the server reads, text or serialized
-  // bytes. INVALID_CASE names the file, line and field of each problem;
-  // NOT_FOUND when the file is missing.
+  // bytes, within the resource limits. INVALID_CASE names the file, line
+  // and field of each problem; NOT_FOUND when the file is missing.
   Prepared prepare_case(const protocol::LoadCaseArgs& args) const;
-  // A serialized dem.proto.Snapshot of either dimension; INVALID_SNAPSHOT
-  // when it is not one or is inconsistent. `source` names it in messages.
+  // A framed, serialized dem.proto.Snapshot of either dimension, within the
+  // resource limits; INVALID_SNAPSHOT when it is not one or is
+  // inconsistent. `source` names it in messages.
   Prepared prepare_snapshot(std::string_view bytes, const std::string& source) const;
   // Makes a prepared world the simulation; returns its message.
   std::string install(Prepared prepared);
@@ -53,6 +58,7 @@ class Simulation {
   std::string set_wall_velocity(const protocol::WallVelocityArgs& args);
   std::string set_wall_servo(const protocol::WallServoArgs& args);
   std::string set_parameter(const protocol::ParameterArgs& args);
+  // BAD_REQUEST when more contacts match than one query may return.
   std::vector<protocol::ContactEntry> query_contacts(const protocol::ContactQueryArgs& args) const;
 
   // A wall by name, or by id when the name is empty; NOT_FOUND otherwise.
@@ -60,6 +66,8 @@ class Simulation {
 
  private:
   std::optional<int> threads_;
+  io::ResourceLimits limits_;
+  std::uint64_t max_query_contacts_;
   std::unique_ptr<WorldSession> world_;
   std::string case_name_;
   std::string description_;
