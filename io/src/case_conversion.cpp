@@ -11,6 +11,7 @@
 
 #include "dem/error.h"
 #include "dem/io/case_validation.h"
+#include "dem/io/file_access.h"
 #include "dem/io/particle_file.h"
 #include "dem/packing.h"
 #include "field_path.h"
@@ -354,7 +355,15 @@ class Converter {
 
   // A relative path starts from the case file's directory; an absolute one stays.
   std::vector<ParticleDefT<Dim>> read_file(const proto::ParticleFile& file) const {
-    std::vector<ParticleDefT<Dim>> particles = read_particle_file<Dim>(source_.directory / file.path());
+    std::filesystem::path path = source_.directory / file.path();
+    if (source_.files) {
+      try {
+        path = source_.files->readable(file.path(), source_.directory);
+      } catch (const FileAccessError& error) {
+        throw CaseError(error.what());
+      }
+    }
+    std::vector<ParticleDefT<Dim>> particles = read_particle_file<Dim>(path);
     const MaterialId material = materials_.at(file.material());
     const Vec<Dim> offset = to_vec<Dim>(file.offset());
     for (ParticleDefT<Dim>& particle : particles) {

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <vector>
 
+#include "command_sample.h"
 #include "dem/command.h"
 #include "dem/telemetry.h"
 
@@ -452,3 +453,12 @@ protocol::Reply TypeSupport<protocol::Reply>::from_sample(const void* sample) {
 }
 
 }  // namespace dem::dds
+
+namespace dem::protocol {
+
+void with_command_sample(const Command& command, const std::function<void(const void*)>& use) {
+  const dds::CCommand sample = dds::to_c(command);
+  use(&sample);
+}
+
+}  // namespace dem::protocol

@@ -118,6 +118,11 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber)
       ->envname("DEM_THREADS");
   app.add_flag("--no-csv", no_csv, "write no CSV tables");
+  app.add_option("--read-dir", options.read_directories,
+                 "a directory load_case may read cases (and cases their particle files) from; repeat for more "
+                 "(default: the current directory; the --case file's directory is always allowed)")
+      ->envname("DEM_READ_DIRS")
+      ->delimiter(':');
   app.add_option("--max-particles", options.max_particles,
                  "particles one case or snapshot may hold (0: as many as the memory budget holds)")
       ->capture_default_str()

@@ -52,6 +52,15 @@ Simulation::Prepared prepared_case(const io::CaseDefinitionT<Dim>& definition, c
 
 }  // namespace
 
+Simulation::Simulation(std::optional<int> threads, io::ResourceLimits limits, std::uint64_t max_query_contacts,
+                       std::shared_ptr<const io::FileAccess> files)
+    : threads_(threads),
+      limits_(limits),
+      files_(files ? std::move(files)
+                   : std::make_shared<const io::FileAccess>(
+                         std::vector<std::filesystem::path>{std::filesystem::current_path()})),
+      max_query_contacts_(max_query_contacts) {}
+
 std::string Simulation::install(Prepared prepared) {
   if (threads_) prepared.world->set_threads(*threads_);
   world_ = std::move(prepared.world);
@@ -72,11 +81,14 @@ Simulation::Prepared Simulation::prepare_case(const protocol::LoadCaseArgs& args
     io::LoadedCase loaded;
     if (!args.path.empty()) {
       source = args.path;
-      std::error_code error;
-      if (!std::filesystem::is_regular_file(args.path, error)) {
-        throw CommandError(ReplyStatus::kNotFound, "no case file " + args.path + " on the server");
+      std::filesystem::path path;
+      try {
+        path = files_->readable(args.path);
+      } catch (const io::FileAccessError& error) {
+        throw CommandError(ReplyStatus::kNotFound, "no case file on the server: " + std::string(error.what()));
       }
-      loaded = io::load_case_file(args.path);
+      loaded = io::load_case_file(path);
+      loaded.source.name = args.path;
     } else if (!args.text.empty()) {
       source = args.source_name.empty() ? "<text>" : args.source_name;
       loaded = io::parse_case_text(args.text, source);
@@ -84,6 +96,7 @@ Simulation::Prepared Simulation::prepare_case(const protocol::LoadCaseArgs& args
       source = args.source_name.empty() ? "<binary>" : args.source_name;
       loaded = io::parse_case_binary(args.binary, source);
     }
+    loaded.source.files = files_;
     const io::AnyCaseDefinition definition = io::convert_any_case(loaded.message, loaded.source, limits_);
     return std::visit([&](const auto& d) { return prepared_case(d, loaded.source, source); }, definition);
   } catch (const io::CaseError& error) {

@@ -23,6 +23,13 @@ namespace {
 constexpr std::chrono::milliseconds kIdleWait{200};
 constexpr std::uint64_t kMaxChunk = 1'000'000;
 
+std::shared_ptr<const io::FileAccess> read_access(const ServerOptions& options) {
+  std::vector<std::filesystem::path> roots = options.read_directories;
+  if (roots.empty()) roots.push_back(std::filesystem::current_path());
+  if (options.initial_case) roots.push_back(std::filesystem::absolute(*options.initial_case).parent_path());
+  return std::make_shared<const io::FileAccess>(roots);
+}
+
 void require(bool condition, const std::string& message) {
   if (!condition) throw CommandError(ReplyStatus::kBadRequest, message);
 }
@@ -36,7 +43,7 @@ SimulationRunner::SimulationRunner(const ServerOptions& options, CommandQueue& q
       replies_(replies),
       telemetry_(telemetry),
       simulation_(options.threads, io::limits_with_budget(options.max_particles, options.memory_budget_bytes),
-                  options.limits.max_query_contacts),
+                  options.limits.max_query_contacts, read_access(options)),
       recorder_(options.output_directory, options.record_csv),
       schedule_(options.telemetry_cycles, options.telemetry_seconds) {}
 

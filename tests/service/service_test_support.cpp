@@ -48,6 +48,8 @@ service::ServerOptions server_options(const std::string& name, std::uint32_t dom
   options.telemetry_cycles = 10;
   options.threads = 1;
   options.output_directory = output_directory(name + "_" + std::to_string(domain));
+  // The cases a test names by their path on the server.
+  options.read_directories = {DEM_CASES_DIR, DEM_SERVICE_TEST_DATA};
   return options;
 }
 

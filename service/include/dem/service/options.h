@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "dem/service/command_limits.h"
 
@@ -22,6 +23,10 @@ struct ServerOptions {
   double telemetry_seconds = 0.0;
   std::filesystem::path output_directory = "out/dem_server";  // CSV tables and snapshots
   std::optional<std::filesystem::path> initial_case;          // loaded at start
+  // Where load_case may read a case by its path, and cases their particle
+  // files (io/file_access.h: after "..", links and all); empty: the
+  // current directory. The initial case's directory is always added.
+  std::vector<std::filesystem::path> read_directories;
   std::optional<int> threads;                                 // engine threads; overrides the case's
   bool record_csv = true;  // walls.csv and assembly.csv at the telemetry interval, contacts.csv and particles.csv at the end
   // One-shot mode (dem_server --case FILE --run-and-exit): run the initial

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "dem/io/file_access.h"
 #include "dem/io/resource_limits.h"
 #include "dem/protocol/messages.h"
 #include "dem/service/command_limits.h"
@@ -21,9 +22,11 @@ namespace dem::service {
 
 class Simulation {
  public:
+  // `files`: where a case named by its path, and the particle files cases
+  // name, may be read from (null: the current directory).
   explicit Simulation(std::optional<int> threads = std::nullopt, io::ResourceLimits limits = io::machine_limits(),
-                      std::uint64_t max_query_contacts = CommandLimits{}.max_query_contacts)
-      : threads_(threads), limits_(limits), max_query_contacts_(max_query_contacts) {}
+                      std::uint64_t max_query_contacts = CommandLimits{}.max_query_contacts,
+                      std::shared_ptr<const io::FileAccess> files = nullptr);
 
   bool loaded() const { return world_ != nullptr; }
   const WorldSession& world() const { return *world_; }
@@ -44,7 +47,9 @@ class Simulation {
   };
   // A case (2D or 3D) from a file the server reads, text or serialized
   // bytes, within the resource limits. INVALID_CASE names the file, line
-  // and field of each problem; NOT_FOUND when the file is missing.
+  // and field of each problem; NOT_FOUND when the file is missing or
+  // outside the directories the server reads (the same answer: whether a
+  // file exists outside them is not said).
   Prepared prepare_case(const protocol::LoadCaseArgs& args) const;
   // A framed, serialized dem.proto.Snapshot of either dimension, within the
   // resource limits; INVALID_SNAPSHOT when it is not one or is
@@ -67,6 +72,7 @@ class Simulation {
  private:
   std::optional<int> threads_;
   io::ResourceLimits limits_;
+  std::shared_ptr<const io::FileAccess> files_;
   std::uint64_t max_query_contacts_;
   std::unique_ptr<WorldSession> world_;
   std::string case_name_;

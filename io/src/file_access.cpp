@@ -1,0 +1,48 @@
+#include "dem/io/file_access.h"
+
+#include <algorithm>
+#include <system_error>
+
+namespace dem::io {
+
+bool lies_within(const std::filesystem::path& path, const std::filesystem::path& root) {
+  auto p = path.begin();
+  for (auto r = root.begin(); r != root.end(); ++r, ++p) {
+    if (r->empty() && std::next(r) == root.end()) break;  // a trailing separator
+    if (p == path.end() || *p != *r) return false;
+  }
+  return true;
+}
+
+FileAccess::FileAccess(const std::vector<std::filesystem::path>& roots) {
+  for (const auto& root : roots) {
+    std::error_code error;
+    const std::filesystem::path canonical = std::filesystem::canonical(root, error);
+    if (!error && std::filesystem::is_directory(canonical, error)) roots_.push_back(canonical);
+  }
+}
+
+std::filesystem::path FileAccess::readable(const std::filesystem::path& requested,
+                                           const std::filesystem::path& base) const {
+  std::string allowed;
+  for (const auto& root : roots_) allowed += (allowed.empty() ? "" : ", ") + root.string();
+  if (allowed.empty()) allowed = "none";
+  const std::string name = requested.string();
+  if (requested.empty()) throw FileAccessError("no file named");
+  const std::filesystem::path joined = requested.is_absolute() || base.empty() ? requested : base / requested;
+  std::error_code error;
+  // canonical() resolves every link and "..": what is checked is what would be opened.
+  const std::filesystem::path canonical = std::filesystem::canonical(joined, error);
+  const bool inside =
+      !error && std::any_of(roots_.begin(), roots_.end(), [&](const auto& root) { return lies_within(canonical, root); });
+  // Whether a file outside exists is not said either.
+  if (!inside) {
+    throw FileAccessError(name + ": not a file in the directories this server reads (" + allowed + ")");
+  }
+  if (!std::filesystem::is_regular_file(canonical, error)) {
+    throw FileAccessError(name + ": not a regular file");
+  }
+  return canonical;
+}
+
+}  // namespace dem::io

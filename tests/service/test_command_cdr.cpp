@@ -1,0 +1,48 @@
+// The command decoder (dem/protocol/command_cdr.h): what a client encodes
+// decodes to the same command, and bytes that are not one are dropped.
+#include <gtest/gtest.h>
+
+#include "dem/protocol/command_cdr.h"
+
+namespace dem::protocol {
+namespace {
+
+Command sample() {
+  Command c;
+  c.server = "press";
+  c.client_id = "host-1-1";
+  c.request_id = 42;
+  c.kind = static_cast<std::uint8_t>(CommandKind::kRunUntil);
+  c.run_until.wall = "top";
+  c.run_until.stress = 1e6;
+  c.run_until.max_cycles = 5000;
+  c.load_case.binary = std::string("\0\1\2", 3);
+  c.query.box_set = true;
+  c.query.box_max = {1, 2, 3};
+  c.snapshot.data = "bytes";
+  c.stamp = {12, 34};
+  return c;
+}
+
+TEST(CommandCdr, WhatIsEncodedDecodesToTheSameCommand) {
+  const std::string bytes = encode_command(sample());
+  EXPECT_EQ(bytes.substr(0, 4), std::string("\0\1\0\0", 4));  // CDR_LE
+  const std::optional<Command> decoded = decode_command(bytes);
+  ASSERT_TRUE(decoded);
+  EXPECT_EQ(*decoded, sample());
+}
+
+TEST(CommandCdr, BytesThatAreNoCommandAreDropped) {
+  const std::string bytes = encode_command(sample());
+  EXPECT_FALSE(decode_command(""));
+  EXPECT_FALSE(decode_command(bytes.substr(0, bytes.size() / 2)));  // truncated
+  std::string unknown = bytes;
+  unknown[1] = 0x42;  // no such encoding
+  EXPECT_FALSE(decode_command(unknown));
+  std::string long_string = bytes;
+  long_string[4] = '\x7f';  // the first string's length, far beyond the bytes
+  EXPECT_FALSE(decode_command(long_string));
+}
+
+}  // namespace
+}  // namespace dem::protocol
