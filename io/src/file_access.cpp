@@ -14,6 +14,30 @@ bool lies_within(const std::filesystem::path& path, const std::filesystem::path&
   return true;
 }
 
+std::filesystem::path inside_directory(const std::filesystem::path& root, const std::filesystem::path& requested) {
+  const std::string name = requested.string();
+  if (requested.empty() || requested.is_absolute()) {
+    throw FileAccessError("\"" + name + "\": a path relative to " + root.string() + " is needed");
+  }
+  for (const auto& part : requested) {
+    if (part == "..") throw FileAccessError("\"" + name + "\": may not leave " + root.string() + " (\"..\")");
+  }
+  std::error_code error;
+  std::filesystem::create_directories(root, error);
+  const std::filesystem::path canonical_root = std::filesystem::canonical(root, error);
+  if (error) throw FileAccessError(root.string() + ": " + error.message());
+  const std::filesystem::path target = root / requested;
+  // weakly_canonical resolves the links of the part that exists.
+  const std::filesystem::path resolved = std::filesystem::weakly_canonical(target.parent_path(), error);
+  if (error || !lies_within(resolved, canonical_root)) {
+    throw FileAccessError("\"" + name + "\": its directory lies outside " + root.string() + " (a link?)");
+  }
+  if (std::filesystem::is_symlink(std::filesystem::symlink_status(target, error))) {
+    throw FileAccessError("\"" + name + "\": is a link; the server writes and reads only files of its own");
+  }
+  return target;
+}
+
 FileAccess::FileAccess(const std::vector<std::filesystem::path>& roots) {
   for (const auto& root : roots) {
     std::error_code error;

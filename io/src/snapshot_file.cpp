@@ -1,5 +1,8 @@
 #include "dem/io/snapshot_file.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -54,14 +57,34 @@ void write_snapshot_bytes(const std::filesystem::path& path, std::string_view by
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), error);
   std::filesystem::path temporary = path;
   temporary += ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) throw SnapshotError(path.string() + ": cannot write the snapshot: " + std::strerror(errno));
+  const auto fail = [&](const std::string& why) {
+    ::unlink(temporary.c_str());
+    throw SnapshotError(path.string() + ": cannot write the snapshot: " + why);
+  };
+  // Not through a link planted where the temporary file goes.
+  const int file = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644);
+  if (file < 0) throw SnapshotError(path.string() + ": cannot write the snapshot: " + std::strerror(errno));
+  for (std::size_t written = 0; written < bytes.size();) {
+    const ssize_t n = ::write(file, bytes.data() + written, bytes.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const std::string why = std::strerror(errno);
+      ::close(file);
+      fail(why);
+    }
+    written += static_cast<std::size_t>(n);
   }
+  // On disk before the rename makes it the snapshot: a crash leaves the old
+  // file or the new one, never a torn one.
+  if (::fsync(file) != 0 || ::close(file) != 0) fail(std::strerror(errno));
   std::filesystem::rename(temporary, path, error);
-  if (error) throw SnapshotError(path.string() + ": cannot write the snapshot: " + error.message());
+  if (error) fail(error.message());
+  const std::filesystem::path directory = path.has_parent_path() ? path.parent_path() : ".";
+  const int dir = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir >= 0) {
+    ::fsync(dir);  // the rename itself
+    ::close(dir);
+  }
 }
 
 std::string read_snapshot_bytes(const std::filesystem::path& path) {

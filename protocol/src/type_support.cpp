@@ -36,6 +36,7 @@ static_assert(dem_interfaces_msg_Command_Constants_RUN_PROGRAMME ==
               static_cast<int>(protocol::CommandKind::kRunProgramme));
 static_assert(dem_interfaces_msg_Reply_Constants_SHUTTING_DOWN ==
               static_cast<int>(protocol::ReplyStatus::kShuttingDown));
+static_assert(dem_interfaces_msg_Reply_Constants_BUSY == static_cast<int>(protocol::ReplyStatus::kBusy));
 
 // --- C++ -> C, borrowing -------------------------------------------------
 

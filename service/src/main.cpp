@@ -123,6 +123,11 @@ int main(int argc, char** argv) {
                  "(default: the current directory; the --case file's directory is always allowed)")
       ->envname("DEM_READ_DIRS")
       ->delimiter(':');
+  app.add_option("--queue-capacity", options.queue_capacity,
+                 "commands waiting for the engine; beyond them a command is answered busy")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber)
+      ->envname("DEM_QUEUE_CAPACITY");
   app.add_option("--max-particles", options.max_particles,
                  "particles one case or snapshot may hold (0: as many as the memory budget holds)")
       ->capture_default_str()

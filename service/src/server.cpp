@@ -23,11 +23,12 @@ ServerOptions checked(ServerOptions options) {
 
 Server::Server(ServerOptions options)
     : options_(checked(std::move(options))),
+      queue_(options_.queue_capacity),
       participant_(options_.domain, options_.dds_config),
       telemetry_(participant_, options_.name),
       replies_(participant_, options_.name, options_.contact_chunk, options_.snapshot_chunk),
-      runner_(options_, queue_, replies_, telemetry_),
-      receiver_(participant_, options_.name, queue_) {
+      runner_(options_, queue_, replies_, telemetry_, cache_),
+      receiver_(participant_, options_.name, queue_, replies_, cache_) {
   if (options_.initial_case) runner_.load_initial_case(*options_.initial_case);
 }
 

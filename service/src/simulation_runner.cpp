@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dem/io/file_access.h"
 #include "dem/io/snapshot_file.h"
 #include "dem/service/command_error.h"
 #include "dem/service/command_limits.h"
@@ -37,11 +38,12 @@ void require(bool condition, const std::string& message) {
 }  // namespace
 
 SimulationRunner::SimulationRunner(const ServerOptions& options, CommandQueue& queue, ReplySender& replies,
-                                   TelemetryPublisher& telemetry)
+                                   TelemetryPublisher& telemetry, StateCache& cache)
     : options_(options),
       queue_(queue),
       replies_(replies),
       telemetry_(telemetry),
+      cache_(cache),
       simulation_(options.threads, io::limits_with_budget(options.max_particles, options.memory_budget_bytes),
                   options.limits.max_query_contacts, read_access(options)),
       recorder_(options.output_directory, options.record_csv),
@@ -85,6 +87,7 @@ void SimulationRunner::finish() {
   for (ReceivedCommand& received : queue_.take_all()) unanswered_.push_back(std::move(received));
   if (active_) end_run(ReplyStatus::kCancelled, "the server is shutting down");
   for (const ReceivedCommand& received : unanswered_) {
+    queue_.done(received.command.client_id);
     protocol::Reply reply;
     reply.status = ReplyStatus::kShuttingDown;
     reply.message = "not done: the server is shutting down";
@@ -104,13 +107,20 @@ void SimulationRunner::finish() {
   using namespace std::chrono_literals;
   replies_.flush(2s);
   telemetry_.flush_status(2s);
-  spdlog::info("{}; {} commands served, {} telemetry samples dropped", message_, commands_served_,
+  spdlog::info("{}; {} commands served, {} telemetry samples dropped", message_, cache_.served(),
                telemetry_.dropped());
 }
 
 // --- commands ------------------------------------------------------------
 
 void SimulationRunner::execute(ReceivedCommand received) {
+  // However it ends - a reply now, or a run started - the client's command
+  // is no longer pending (CommandQueue::pending) when this returns.
+  struct Done {
+    CommandQueue& queue;
+    std::string client;
+    ~Done() { queue.done(client); }
+  } done{queue_, received.command.client_id};
   protocol::Reply reply;
   const protocol::Command& command = received.command;
   try {
@@ -227,14 +237,15 @@ protocol::Reply SimulationRunner::get_state() const {
 }
 
 // Snapshot files live in the output directory: a relative path without
-// "..", so a client can neither read nor overwrite anything else.
+// "..", whose directories do not lead out by a link (io::inside_directory),
+// so a client can neither read nor overwrite anything else.
 std::filesystem::path SimulationRunner::snapshot_path(const std::string& requested) const {
-  const std::filesystem::path path(requested);
-  require(!path.empty() && path.is_relative(),
-          "snapshot paths are relative to the server's output directory (" + options_.output_directory.string() +
-              "), got \"" + requested + "\"");
-  for (const auto& part : path) require(part != "..", "snapshot paths may not leave the output directory");
-  return std::filesystem::absolute(options_.output_directory / path);
+  try {
+    return std::filesystem::absolute(io::inside_directory(options_.output_directory, requested));
+  } catch (const io::FileAccessError& error) {
+    throw CommandError(ReplyStatus::kBadRequest, "snapshot paths are files in the server's output directory (" +
+                                                     options_.output_directory.string() + "): " + error.what());
+  }
 }
 
 protocol::Reply SimulationRunner::save_snapshot(const protocol::SnapshotArgs& args) {
@@ -345,7 +356,11 @@ void SimulationRunner::run_chunk() {
     return;
   }
   if (schedule_.due(world.cycle_count(), world.time())) publish_telemetry();
-  if (finished) complete_run();
+  if (finished) {
+    complete_run();
+  } else {
+    refresh_cache();
+  }
 }
 
 // The last good state is written beside the case's tables and the world
@@ -398,8 +413,9 @@ void SimulationRunner::fail_run(const std::string& message) {
 // --- publishing ----------------------------------------------------------
 
 void SimulationRunner::send(const ReceivedCommand& received, protocol::Reply reply) {
-  ++commands_served_;
+  cache_.invalidate();
   reply.state = status();
+  reply.state.commands_served = cache_.count_reply();
   replies_.send(received, std::move(reply));
 }
 
@@ -408,7 +424,7 @@ protocol::Status SimulationRunner::status() const {
   s.server = options_.name;
   s.state = state_;
   s.message = message_;
-  s.commands_served = commands_served_;
+  s.commands_served = cache_.served();
   s.telemetry_dropped = telemetry_.dropped();
   s.stamp = protocol::now_stamp();
   if (simulation_.loaded()) {
@@ -449,6 +465,13 @@ protocol::Status SimulationRunner::status() const {
 void SimulationRunner::publish_status() {
   telemetry_.publish(status());
   last_status_ = std::chrono::steady_clock::now();
+  refresh_cache();
+}
+
+void SimulationRunner::refresh_cache() {
+  protocol::Reply reply = get_state();
+  reply.state = status();
+  cache_.publish(std::move(reply));
 }
 
 void SimulationRunner::publish_telemetry() {

@@ -109,7 +109,11 @@ bool SimulationRunner::between_programme_cycles() {
       }
     }
     if (queue_.shutdown_requested()) programme_->stop("the server is shutting down");
-    if (now - last_status_ >= options_.progress_interval) publish_status();
+    if (now - last_status_ >= options_.progress_interval) {
+      publish_status();
+    } else {
+      refresh_cache();
+    }
   }
   return !programme_->ending();
 }

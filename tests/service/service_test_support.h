@@ -77,6 +77,11 @@ static_assert(kLastDomain <= 118, "the shell tests use domains 118 and 119");
 // The reliability tests (docs/RELIABILITY.md) take 200 to 229.
 enum ReliabilityDomain : std::uint32_t {
   kHealthCycleBlowUp = 200,
+  kLimitsPerCommand,
+  kLimitsBusy,
+  kLimitsGetStateWhileCycling,
+  kFilesCaseFiles,
+  kFilesSnapshotLinks,
   kLastReliabilityDomain
 };
 static_assert(kLastReliabilityDomain <= 230, "the reliability tests' domains are 200-229");

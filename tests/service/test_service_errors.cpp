@@ -116,7 +116,10 @@ TEST(Errors, MalformedCaseBytesAreAnInvalidCase) {
   EXPECT_EQ(f.refused(command(CommandKind::kLoadCase)).status, ReplyStatus::kBadRequest);
   protocol::Command missing = command(CommandKind::kLoadCase);
   missing.load_case.path = "/no/such/case.txtpb";
-  EXPECT_EQ(f.refused(missing).message, "no case file /no/such/case.txtpb on the server");
+  EXPECT_EQ(f.refused(missing).message.rfind("no case file on the server: /no/such/case.txtpb: not a file in the "
+                                             "directories this server reads (",
+                                             0),
+            0u);
   f.expect_untouched();
 }
 
@@ -241,7 +244,7 @@ TEST(Errors, SnapshotPathsStayInTheOutputDirectory) {
   save.snapshot.path = "/etc/dem.snapshot";
   EXPECT_EQ(f.refused(save).status, ReplyStatus::kBadRequest);
   save.snapshot.path = "../outside.snapshot";
-  EXPECT_EQ(f.refused(save).message, "snapshot paths may not leave the output directory");
+  EXPECT_NE(f.refused(save).message.find("\"../outside.snapshot\": may not leave"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(f.server.server().options().output_directory / ".." / "outside.snapshot"));
   EXPECT_EQ(f.refused(command(CommandKind::kSaveSnapshot)).status, ReplyStatus::kBadRequest);
   f.expect_untouched();

@@ -34,6 +34,13 @@ class FileAccess {
   std::vector<std::filesystem::path> roots_;
 };
 
+// A file for the server to write or read back inside `root` (its output
+// directory): `requested` must be relative, without "..", and resolve - its
+// directories' links followed, as far as they exist - inside `root`; a
+// link in the place of the file itself is refused. Returns root/requested;
+// throws FileAccessError otherwise.
+std::filesystem::path inside_directory(const std::filesystem::path& root, const std::filesystem::path& requested);
+
 // Whether `path` (canonical) lies inside `root` (canonical), component by component.
 bool lies_within(const std::filesystem::path& path, const std::filesystem::path& root);
 

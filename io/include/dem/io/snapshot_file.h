@@ -32,9 +32,10 @@ template <int Dim = 2>
 LoadedSnapshotT<Dim> parse_snapshot(std::string_view bytes, std::string_view source_name = "<bytes>",
                                     const ResourceLimits& limits = machine_limits());
 
-// Writes through a temporary file renamed into place, so a reader never
-// sees half a snapshot; creates the directory. Throws SnapshotError naming
-// the file when it cannot be written.
+// Writes through a temporary file (never through a link in its place),
+// flushed to disk (fsync) and renamed into place, so a reader - or a
+// restart after a crash - never sees half a snapshot; creates the
+// directory. Throws SnapshotError naming the file when it cannot be written.
 void write_snapshot_bytes(const std::filesystem::path& path, std::string_view bytes);
 template <int Dim>
 void write_snapshot_file(const std::filesystem::path& path, const WorldSnapshotT<Dim>& snapshot,

@@ -44,6 +44,8 @@ struct ServerOptions {
   std::uint64_t max_particles = 0;
   std::uint64_t memory_budget_bytes = 0;
   CommandLimits limits;  // what one command may ask
+  // Commands waiting for the engine thread; beyond them a command is answered "busy".
+  std::size_t queue_capacity = 1024;
 };
 
 }  // namespace dem::service

@@ -18,6 +18,7 @@
 #include "dem/service/programme_run.h"
 #include "dem/service/reply_sender.h"
 #include "dem/service/simulation.h"
+#include "dem/service/state_cache.h"
 #include "dem/service/telemetry_publisher.h"
 #include "dem/service/telemetry_schedule.h"
 
@@ -26,7 +27,7 @@ namespace dem::service {
 class SimulationRunner {
  public:
   SimulationRunner(const ServerOptions& options, CommandQueue& queue, ReplySender& replies,
-                   TelemetryPublisher& telemetry);
+                   TelemetryPublisher& telemetry, StateCache& cache);
 
   // Loads the case given at start; throws CommandError when it cannot (and
   // when a one-shot run's case has no stages to run).
@@ -83,11 +84,13 @@ class SimulationRunner {
   protocol::Status status() const;
   void publish_status();
   void publish_telemetry();
+  void refresh_cache();  // the StateCache's get_state, as of now
 
   const ServerOptions& options_;
   CommandQueue& queue_;
   ReplySender& replies_;
   TelemetryPublisher& telemetry_;
+  StateCache& cache_;
   Simulation simulation_;
   OutputRecorder recorder_;
   TelemetrySchedule schedule_;
@@ -99,7 +102,6 @@ class SimulationRunner {
   std::chrono::steady_clock::time_point last_poll_{};  // of the queue, during a programme
   std::vector<ReceivedCommand> unanswered_;  // taken from the queue after a shutdown request
   std::string message_ = "started";
-  std::uint64_t commands_served_ = 0;
   std::uint64_t last_telemetry_cycle_ = 0;
   bool telemetry_published_ = false;
   // Chunks take about options_.chunk_duration at the measured rate.
