@@ -29,6 +29,15 @@ std::vector<ReceivedCommand> CommandQueue::take_all() {
   return all;
 }
 
+void CommandQueue::put_back(std::vector<ReceivedCommand> commands) {
+  {
+    std::lock_guard lock(mutex_);
+    commands_.insert(commands_.begin(), std::make_move_iterator(commands.begin()),
+                     std::make_move_iterator(commands.end()));
+  }
+  ready_.notify_one();
+}
+
 void CommandQueue::done(const std::string& client) {
   std::lock_guard lock(mutex_);
   const auto found = pending_.find(client);

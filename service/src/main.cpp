@@ -13,11 +13,14 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <thread>
 
 #include "dem/io/resource_limits.h"
 #include "dem/protocol/topics.h"
+#include "dem/service/background_load.h"
 #include "dem/service/command_error.h"
 #include "dem/service/server.h"
 
@@ -123,6 +126,12 @@ int main(int argc, char** argv) {
                  "(default: the current directory; the --case file's directory is always allowed)")
       ->envname("DEM_READ_DIRS")
       ->delimiter(':');
+  int load_seconds = 120;
+  app.add_option("--load-seconds", load_seconds,
+                 "a case or snapshot still preparing after this many seconds is abandoned with an error")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber)
+      ->envname("DEM_LOAD_SECONDS");
   app.add_option("--queue-capacity", options.queue_capacity,
                  "commands waiting for the engine; beyond them a command is answered busy")
       ->capture_default_str()
@@ -174,6 +183,7 @@ int main(int argc, char** argv) {
     options.threads = threads;
   }
   options.record_csv = !no_csv;
+  options.load_time_limit = std::chrono::seconds(load_seconds);
 
   auto logger = spdlog::stderr_color_mt("dem_server");
   logger->set_pattern("[%Y-%m-%d %H:%M:%S.%e] [" + options.name + "] [%^%l%$] %v");
@@ -181,19 +191,26 @@ int main(int argc, char** argv) {
   spdlog::set_level(spdlog::level::from_str(log_level));
 
   SignalWatcher signals;
+  int code = 0;
   try {
     dem::service::Server server(options);
     signals.start([&server] { server.request_shutdown(); });
     server.start();
     server.wait();
     signals.stop();
-    if (const auto outcome = server.programme_outcome()) return exit_code(*outcome);
+    if (const auto outcome = server.programme_outcome()) code = exit_code(*outcome);
   } catch (const dem::service::CommandError& error) {
     spdlog::error("the initial case cannot be loaded:\n{}", error.what());
-    return kBadCase;
+    code = kBadCase;
   } catch (const std::exception& error) {
     spdlog::error("{}", error.what());
-    return kFailure;
+    code = kFailure;
   }
-  return 0;
+  // An abandoned load still running (background_load.h) holds copies
+  // only, but static destructors at exit would race it.
+  if (dem::service::BackgroundLoad::running() > 0) {
+    std::fflush(nullptr);
+    std::_Exit(code);
+  }
+  return code;
 }

@@ -71,7 +71,7 @@ std::string Simulation::install(Prepared prepared) {
   return prepared.message;
 }
 
-Simulation::Prepared Simulation::prepare_case(const protocol::LoadCaseArgs& args) const {
+Simulation::Prepared Simulation::Preparer::prepare_case(const protocol::LoadCaseArgs& args) const {
   const int sources = static_cast<int>(!args.path.empty()) + static_cast<int>(!args.text.empty()) +
                       static_cast<int>(!args.binary.empty());
   require(sources == 1, "load_case takes exactly one of a path, a text or a binary case (got " +
@@ -106,7 +106,7 @@ Simulation::Prepared Simulation::prepare_case(const protocol::LoadCaseArgs& args
   }
 }
 
-Simulation::Prepared Simulation::prepare_snapshot(std::string_view bytes, const std::string& source) const {
+Simulation::Prepared Simulation::Preparer::prepare_snapshot(std::string_view bytes, const std::string& source) const {
   try {
     // The dimension the snapshot declares picks the engine.
     const proto::Snapshot message = io::parse_snapshot_message(bytes, source);

@@ -10,6 +10,7 @@
 #include "dem/service/command_error.h"
 #include "dem/service/command_limits.h"
 #include "dem/service/lifecycle.h"
+#include "format_value.h"
 
 namespace dem::service {
 
@@ -84,6 +85,10 @@ void SimulationRunner::run() {
 }
 
 void SimulationRunner::finish() {
+  // An abandoned load is left to end on its own (it holds only copies):
+  // shutting down does not wait for it.
+  if (abandoned_) abandoned_->detach();
+  abandoned_.reset();
   for (ReceivedCommand& received : queue_.take_all()) unanswered_.push_back(std::move(received));
   if (active_) end_run(ReplyStatus::kCancelled, "the server is shutting down");
   for (const ReceivedCommand& received : unanswered_) {
@@ -139,7 +144,10 @@ void SimulationRunner::execute(ReceivedCommand received) {
         run_programme(received);
         return;  // replied to when the stages end
       case CommandKind::kLoadCase:
-        reply.message = install(simulation_.prepare_case(command.load_case));
+        reply.message = install(prepare_in_background(
+            "load_case", [preparer = simulation_.preparer(), args = command.load_case] {
+              return preparer.prepare_case(args);
+            }));
         reply.path = command.load_case.path;
         break;
       case CommandKind::kSetWallVelocity:
@@ -276,7 +284,9 @@ protocol::Reply SimulationRunner::save_snapshot(const protocol::SnapshotArgs& ar
 std::string SimulationRunner::load_snapshot(const protocol::SnapshotArgs& args) {
   if (args.transfer) {
     require(!args.data.empty(), "load_snapshot with transfer needs the snapshot's bytes");
-    return install(simulation_.prepare_snapshot(args.data, "<transferred snapshot>"));
+    return install(prepare_in_background("load_snapshot", [preparer = simulation_.preparer(), data = args.data] {
+      return preparer.prepare_snapshot(data, "<transferred snapshot>");
+    }));
   }
   require(!args.path.empty(), "load_snapshot needs a path, or transfer with the bytes");
   const std::filesystem::path path = snapshot_path(args.path);
@@ -290,7 +300,55 @@ std::string SimulationRunner::load_snapshot(const protocol::SnapshotArgs& args) 
   } catch (const io::SnapshotError& read_error) {
     throw CommandError(ReplyStatus::kFailed, read_error.what());
   }
-  return install(simulation_.prepare_snapshot(bytes, path.string()));
+  return install(prepare_in_background(
+      "load_snapshot", [preparer = simulation_.preparer(), bytes = std::move(bytes), source = path.string()] {
+        return preparer.prepare_snapshot(bytes, source);
+      }));
+}
+
+Simulation::Prepared SimulationRunner::prepare_in_background(const std::string& what,
+                                                            BackgroundLoad::Prepare prepare) {
+  if (abandoned_ && abandoned_->finished()) abandoned_.reset();
+  if (abandoned_) {
+    throw CommandError(ReplyStatus::kBusy, "busy: an abandoned load is still running to its end (its "
+                                           "preparation cannot be interrupted); send " + what + " again later");
+  }
+  auto load = std::make_unique<BackgroundLoad>(std::move(prepare));
+  const auto deadline = std::chrono::steady_clock::now() + options_.load_time_limit;
+  std::vector<ReceivedCommand> later;
+  std::optional<std::string> abandon;
+  while (!load->wait_for(options_.chunk_duration)) {
+    // stop and shutdown now; the rest in order once the load is done.
+    for (ReceivedCommand& received : queue_.take_all()) {
+      const auto kind = protocol::command_kind(received.command.kind);
+      if (kind == CommandKind::kStop) {
+        abandon = what + " stopped by request before it was ready";
+        protocol::Reply reply;
+        reply.message = "stopped the " + what + " in preparation";
+        send(received, std::move(reply));
+        queue_.done(received.command.client_id);
+      } else if (kind == CommandKind::kShutdown) {
+        abandon = what + " given up: the server is shutting down";
+        later.push_back(std::move(received));  // answered by the loop, which shuts down
+      } else {
+        later.push_back(std::move(received));
+      }
+    }
+    if (!abandon && std::chrono::steady_clock::now() >= deadline) {
+      abandon = what + ": preparing it took more than " +
+                format_value(std::chrono::duration<double>(options_.load_time_limit).count()) +
+                " s (--load-seconds); is there a random packing that nearly cannot fit?";
+    }
+    if (abandon) break;
+  }
+  queue_.put_back(std::move(later));
+  if (abandon) {
+    spdlog::warn("{}", *abandon);
+    abandoned_ = std::move(load);
+    throw CommandError(abandon->find("stopped") != std::string::npos ? ReplyStatus::kCancelled : ReplyStatus::kFailed,
+                       *abandon);
+  }
+  return load->take();
 }
 
 // --- running commands ------------------------------------------------------

@@ -82,6 +82,8 @@ enum ReliabilityDomain : std::uint32_t {
   kLimitsGetStateWhileCycling,
   kFilesCaseFiles,
   kFilesSnapshotLinks,
+  kLoadingStop,
+  kLoadingTimeLimit,
   kLastReliabilityDomain
 };
 static_assert(kLastReliabilityDomain <= 230, "the reliability tests' domains are 200-229");

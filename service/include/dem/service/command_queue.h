@@ -39,6 +39,9 @@ class CommandQueue {
   std::optional<ReceivedCommand> pop(std::chrono::milliseconds timeout);
   // Everything queued, without waiting.
   std::vector<ReceivedCommand> take_all();
+  // Puts commands taken but not yet done back in front, in their order
+  // (they are still pending, and may exceed the capacity).
+  void put_back(std::vector<ReceivedCommand> commands);
 
   // A command taken from the queue has been done (its reply sent, or for a
   // cycle, run_until or run_programme, it has started).

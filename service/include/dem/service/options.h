@@ -44,6 +44,9 @@ struct ServerOptions {
   std::uint64_t max_particles = 0;
   std::uint64_t memory_budget_bytes = 0;
   CommandLimits limits;  // what one command may ask
+  // A load_case or load_snapshot still preparing after this long (a
+  // packing that nearly cannot fit) is abandoned with an error.
+  std::chrono::milliseconds load_time_limit{120'000};
   // Commands waiting for the engine thread; beyond them a command is answered "busy".
   std::size_t queue_capacity = 1024;
 };

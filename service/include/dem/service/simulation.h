@@ -45,16 +45,32 @@ class Simulation {
     std::uint64_t output_interval = 100;  // the case's; a snapshot keeps the default
     std::string message;  // what was loaded, for the reply
   };
-  // A case (2D or 3D) from a file the server reads, text or serialized
-  // bytes, within the resource limits. INVALID_CASE names the file, line
-  // and field of each problem; NOT_FOUND when the file is missing or
-  // outside the directories the server reads (the same answer: whether a
-  // file exists outside them is not said).
-  Prepared prepare_case(const protocol::LoadCaseArgs& args) const;
-  // A framed, serialized dem.proto.Snapshot of either dimension, within the
-  // resource limits; INVALID_SNAPSHOT when it is not one or is
-  // inconsistent. `source` names it in messages.
-  Prepared prepare_snapshot(std::string_view bytes, const std::string& source) const;
+  // Prepares worlds for it: a value, so a preparation may run on another
+  // thread and even outlive the simulation (an abandoned load).
+  class Preparer {
+   public:
+    Preparer(io::ResourceLimits limits, std::shared_ptr<const io::FileAccess> files)
+        : limits_(limits), files_(std::move(files)) {}
+    // A case (2D or 3D) from a file the server reads, text or serialized
+    // bytes, within the resource limits. INVALID_CASE names the file, line
+    // and field of each problem; NOT_FOUND when the file is missing or
+    // outside the directories the server reads (the same answer: whether a
+    // file exists outside them is not said).
+    Prepared prepare_case(const protocol::LoadCaseArgs& args) const;
+    // A framed, serialized dem.proto.Snapshot of either dimension, within
+    // the resource limits; INVALID_SNAPSHOT when it is not one or is
+    // inconsistent. `source` names it in messages.
+    Prepared prepare_snapshot(std::string_view bytes, const std::string& source) const;
+
+   private:
+    io::ResourceLimits limits_;
+    std::shared_ptr<const io::FileAccess> files_;
+  };
+  Preparer preparer() const { return Preparer(limits_, files_); }
+  Prepared prepare_case(const protocol::LoadCaseArgs& args) const { return preparer().prepare_case(args); }
+  Prepared prepare_snapshot(std::string_view bytes, const std::string& source) const {
+    return preparer().prepare_snapshot(bytes, source);
+  }
   // Makes a prepared world the simulation; returns its message.
   std::string install(Prepared prepared);
   std::string snapshot_bytes() const;

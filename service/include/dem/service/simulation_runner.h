@@ -11,6 +11,7 @@
 
 #include "dem/protocol/messages.h"
 #include "dem/service/active_run.h"
+#include "dem/service/background_load.h"
 #include "dem/service/command_queue.h"
 #include "dem/service/health_watch.h"
 #include "dem/service/options.h"
@@ -74,6 +75,10 @@ class SimulationRunner {
   std::string stage_label(std::size_t stage) const;
 
   std::string install(Simulation::Prepared prepared);
+  // Runs `prepare` in a BackgroundLoad while taking stop and shutdown (and
+  // keeping other commands for after); throws CommandError when it is
+  // stopped, outlasts options_.load_time_limit, or an abandoned one is still running.
+  Simulation::Prepared prepare_in_background(const std::string& what, BackgroundLoad::Prepare prepare);
   std::string stop();
   protocol::Reply get_state() const;
   protocol::Reply save_snapshot(const protocol::SnapshotArgs& args);
@@ -97,6 +102,7 @@ class SimulationRunner {
   protocol::ServerState state_ = protocol::ServerState::kIdle;
   std::optional<ActiveRun> active_;
   std::optional<HealthWatch> active_health_;  // the running cycle or run_until's
+  std::unique_ptr<BackgroundLoad> abandoned_;  // a load given up on, still running to its end
   std::optional<ProgrammeRun> programme_;  // a one-shot run's programme, or run_programme's
   const protocol::Command* programme_command_ = nullptr;  // run_programme's, while it runs
   std::chrono::steady_clock::time_point last_poll_{};  // of the queue, during a programme
