@@ -1,4 +1,5 @@
 // dem_run CASE --out DIR [--threads N] [--quiet]: runs a 2D or 3D case.
+//        [--checkpoint-cycles N] [--checkpoint-seconds S] [--checkpoint-keep K] [--resume]
 // Exit codes: 0 done; 1 a run that became numerically unhealthy (its last
 // good state is in DIR/last_good.snapshot) or any other failure (for
 // example an unwritable output directory); 2 bad command-line arguments;
@@ -38,6 +39,16 @@ int main(int argc, char** argv) {
       app.add_option("-t,--threads", threads, "worker threads, 0 = all cores (default: the case's numerics.threads)")
           ->check(whole_number);
   app.add_flag("-q,--quiet", options.quiet, "print errors only: no progress line and no summary");
+  app.add_option("--checkpoint-cycles", options.checkpoints.cycles,
+                 "write a checkpoint to OUT/checkpoints every N cycles (0: none)");
+  app.add_option("--checkpoint-seconds", options.checkpoints.seconds,
+                 "write a checkpoint every S seconds of wall time (0: none)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--checkpoint-keep", options.checkpoints.keep, "checkpoints kept (the newest)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  app.add_flag("--resume", options.resume,
+               "continue from the newest checkpoint in OUT/checkpoints, appending to its tables");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
