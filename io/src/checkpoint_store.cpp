@@ -94,8 +94,10 @@ ResumePoint parse_resume(std::string_view text) {
 std::string file_digest(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return hex(sha256(bytes));
+  return bytes_digest(bytes);
 }
+
+std::string bytes_digest(std::string_view bytes) { return hex(sha256(bytes)); }
 
 CheckpointStore::CheckpointStore(std::filesystem::path directory, int keep)
     : directory_(std::move(directory)), keep_(std::max(keep, 1)) {

@@ -132,6 +132,22 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::PositiveNumber)
       ->envname("DEM_LOAD_SECONDS");
+  app.add_option("--checkpoint-cycles", options.checkpoints.cycles,
+                 "write a checkpoint to <out>/<case>/checkpoints every N cycles (0: none)")
+      ->envname("DEM_CHECKPOINT_CYCLES");
+  app.add_option("--checkpoint-seconds", options.checkpoints.seconds,
+                 "write a checkpoint every S seconds of wall time (0: none)")
+      ->check(CLI::NonNegativeNumber)
+      ->envname("DEM_CHECKPOINT_SECONDS");
+  app.add_option("--checkpoint-keep", options.checkpoints.keep, "checkpoints kept (the newest)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber)
+      ->envname("DEM_CHECKPOINT_KEEP");
+  app.add_flag("--resume", options.resume,
+               "continue the --case from its newest checkpoint in <out>/<case>/checkpoints, appending to its tables "
+               "(with --run-and-exit: from where its programme stood)")
+      ->needs(case_option)
+      ->envname("DEM_RESUME");
   app.add_option("--queue-capacity", options.queue_capacity,
                  "commands waiting for the engine; beyond them a command is answered busy")
       ->capture_default_str()

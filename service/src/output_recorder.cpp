@@ -15,6 +15,11 @@ std::string directory_name(const std::string& case_name) {
 
 }  // namespace
 
+std::filesystem::path OutputRecorder::case_directory_of(const std::filesystem::path& output,
+                                                       const std::string& case_name) {
+  return output / directory_name(case_name);
+}
+
 OutputRecorder::OutputRecorder(std::filesystem::path output_directory, bool enabled)
     : output_directory_(std::move(output_directory)), enabled_(enabled) {}
 
@@ -28,22 +33,67 @@ std::unique_ptr<OutputRecorder::Compression<Dim>>& OutputRecorder::compression()
 }
 
 template <int Dim>
+void OutputRecorder::make_compression(const BasicWorld<Dim>& world) {
+  const io::TableSizes* tables = resume_ ? &resume_->tables : nullptr;
+  compression<Dim>().reset(new Compression<Dim>{
+      io::CompressionAnalysisT<Dim>(*compression_settings_),
+      io::CompressionCsvT<Dim>(directory_, world.wall(compression_settings_->loading_plate).name,
+                               world.wall(compression_settings_->bottom_plate).name, tables)});
+  if (resume_ && !resume_->analysis.empty()) compression<Dim>()->analysis.restore(resume_->analysis);
+}
+
+template <int Dim>
 void OutputRecorder::start(const std::string& case_name, const BasicWorld<Dim>& world,
-                           std::optional<io::CompressionSettings> compression) {
+                           std::optional<io::CompressionSettings> compression, const io::ResumePoint* resume) {
   close();
-  directory_ = output_directory_ / directory_name(case_name);
+  directory_ = case_directory_of(output_directory_, case_name);
   compression_settings_ = std::move(compression);
+  if (resume) resume_ = *resume;
   if (!enabled_) return;
   try {
+    const io::TableSizes* tables = resume ? &resume->tables : nullptr;
     if constexpr (Dim == 2) {
-      walls2_ = std::make_unique<io::WallsCsvT<2>>(directory_);
+      walls2_ = std::make_unique<io::WallsCsvT<2>>(directory_, tables);
     } else {
-      walls3_ = std::make_unique<io::WallsCsvT<3>>(directory_);
+      walls3_ = std::make_unique<io::WallsCsvT<3>>(directory_, tables);
     }
-    assembly_ = std::make_unique<io::AssemblyCsv>(directory_);
-    record(world);
+    assembly_ = std::make_unique<io::AssemblyCsv>(directory_, tables);
+    if (resume) {
+      // The checkpoint's row is in the tables already; the analyses (if
+      // they had begun) and stages.csv carry on.
+      last_cycle_ = resume->cycle;
+      if (compression_settings_ && resume->tables.contains("compression.csv")) make_compression(world);
+      if (resume->tables.contains("stages.csv")) {
+        stages_ = std::make_unique<io::CsvFile>(directory_, "stages.csv",
+                                                "stage,name,cycles_run,condition_met,cycle,time", tables);
+      }
+    } else {
+      record(world);
+    }
   } catch (const std::exception& error) {
     fail(error);
+  }
+}
+
+void OutputRecorder::fill(io::ResumePoint& point) {
+  point.tables.clear();
+  point.analysis.clear();
+  std::vector<io::CsvFile*> tables;
+  if (walls2_) tables.push_back(&walls2_->file());
+  if (walls3_) tables.push_back(&walls3_->file());
+  if (assembly_) tables.push_back(&assembly_->file());
+  if (stages_) tables.push_back(stages_.get());
+  const auto add_compression = [&](auto& c) {
+    if (!c) return;
+    tables.push_back(&c->csv.samples_file());
+    tables.push_back(&c->csv.contacts_file());
+    point.analysis = c->analysis.state();
+  };
+  add_compression(compression2_);
+  add_compression(compression3_);
+  for (io::CsvFile* table : tables) {
+    table->flush();
+    point.tables[table->path().filename().string()] = table->bytes();
   }
 }
 
@@ -53,12 +103,7 @@ void OutputRecorder::record(const BasicWorld<Dim>& world, std::optional<std::siz
   try {
     if (stage && compression_settings_) {
       std::unique_ptr<Compression<Dim>>& c = compression<Dim>();
-      if (!c) {
-        c.reset(new Compression<Dim>{io::CompressionAnalysisT<Dim>(*compression_settings_),
-                                     io::CompressionCsvT<Dim>(directory_,
-                                                              world.wall(compression_settings_->loading_plate).name,
-                                                              world.wall(compression_settings_->bottom_plate).name)});
-      }
+      if (!c) make_compression(world);
       io::record_compression(c->analysis, c->csv, world, static_cast<int>(*stage));
     }
   } catch (const std::exception& error) {
@@ -126,10 +171,13 @@ void OutputRecorder::close() {
   compression2_.reset();
   compression3_.reset();
   last_cycle_.reset();
+  resume_.reset();
 }
 
-template void OutputRecorder::start(const std::string&, const BasicWorld<2>&, std::optional<io::CompressionSettings>);
-template void OutputRecorder::start(const std::string&, const BasicWorld<3>&, std::optional<io::CompressionSettings>);
+template void OutputRecorder::start(const std::string&, const BasicWorld<2>&, std::optional<io::CompressionSettings>,
+                                   const io::ResumePoint*);
+template void OutputRecorder::start(const std::string&, const BasicWorld<3>&, std::optional<io::CompressionSettings>,
+                                   const io::ResumePoint*);
 template void OutputRecorder::record(const BasicWorld<2>&, std::optional<std::size_t>);
 template void OutputRecorder::record(const BasicWorld<3>&, std::optional<std::size_t>);
 template void OutputRecorder::finish(const BasicWorld<2>&);

@@ -14,9 +14,9 @@ ProgrammeRun::ProgrammeRun(const WorldSession& world, std::uint64_t output_inter
   for (std::size_t i = first; i < first + count; ++i) total_ += world.stage_cycles(i);
 }
 
-void ProgrammeRun::start_stage(std::size_t stage, const WorldSession& world) {
+void ProgrammeRun::start_stage(std::size_t stage, const WorldSession& world, std::uint64_t done) {
   stage_ = stage;
-  stage_start_ = world.cycle_count();
+  stage_start_ = world.cycle_count() - done;
 }
 
 void ProgrammeRun::stop(std::string reason) {

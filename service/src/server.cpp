@@ -14,6 +14,9 @@ ServerOptions checked(ServerOptions options) {
     throw std::invalid_argument("server name \"" + options.name +
                                 "\" is not a ROS 2 name token (a letter, then letters, digits or underscores)");
   }
+  if (options.resume && !options.initial_case) {
+    throw std::invalid_argument("--resume needs the case whose checkpoints to resume (--case FILE)");
+  }
   if (options.run_programme && !options.initial_case) {
     throw std::invalid_argument("a one-shot run (--run-and-exit) needs a case to run (--case FILE)");
   }
@@ -29,7 +32,7 @@ Server::Server(ServerOptions options)
       replies_(participant_, options_.name, options_.contact_chunk, options_.snapshot_chunk),
       runner_(options_, queue_, replies_, telemetry_, cache_),
       receiver_(participant_, options_.name, queue_, replies_, cache_) {
-  if (options_.initial_case) runner_.load_initial_case(*options_.initial_case);
+  if (options_.initial_case) runner_.load_initial_case(*options_.initial_case, options_.resume);
 }
 
 Server::~Server() {

@@ -7,6 +7,7 @@
 #include "dem/error.h"
 #include "dem/io/case_conversion.h"
 #include "dem/io/case_loader.h"
+#include "dem/io/checkpoint_store.h"
 #include "dem/io/snapshot_file.h"
 #include "dem/io/world_checks.h"
 #include "dem/service/command_error.h"
@@ -68,6 +69,7 @@ std::string Simulation::install(Prepared prepared) {
   description_ = std::move(prepared.description);
   contact_models_ = std::move(prepared.contact_models);
   output_interval_ = prepared.output_interval;
+  digest_ = prepared.digest;
   return prepared.message;
 }
 
@@ -98,7 +100,10 @@ Simulation::Prepared Simulation::Preparer::prepare_case(const protocol::LoadCase
     }
     loaded.source.files = files_;
     const io::AnyCaseDefinition definition = io::convert_any_case(loaded.message, loaded.source, limits_);
-    return std::visit([&](const auto& d) { return prepared_case(d, loaded.source, source); }, definition);
+    Prepared prepared = std::visit([&](const auto& d) { return prepared_case(d, loaded.source, source); }, definition);
+    prepared.digest = !args.path.empty() ? io::file_digest(files_->readable(args.path))
+                                         : io::bytes_digest(!args.text.empty() ? args.text : args.binary);
+    return prepared;
   } catch (const io::CaseError& error) {
     throw CommandError(ReplyStatus::kInvalidCase, join(error.problems()));
   } catch (const DefinitionError& error) {

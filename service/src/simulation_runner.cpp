@@ -48,9 +48,10 @@ SimulationRunner::SimulationRunner(const ServerOptions& options, CommandQueue& q
       simulation_(options.threads, io::limits_with_budget(options.max_particles, options.memory_budget_bytes),
                   options.limits.max_query_contacts, read_access(options)),
       recorder_(options.output_directory, options.record_csv),
-      schedule_(options.telemetry_cycles, options.telemetry_seconds) {}
+      schedule_(options.telemetry_cycles, options.telemetry_seconds),
+      checkpoints_(options.checkpoints) {}
 
-void SimulationRunner::load_initial_case(const std::filesystem::path& path) {
+void SimulationRunner::load_initial_case(const std::filesystem::path& path, bool resume) {
   protocol::LoadCaseArgs args;
   args.path = path.string();
   Simulation::Prepared prepared = simulation_.prepare_case(args);
@@ -58,7 +59,29 @@ void SimulationRunner::load_initial_case(const std::filesystem::path& path) {
     throw CommandError(ReplyStatus::kInvalidCase,
                        path.string() + ": the case defines no stages, so --run-and-exit has nothing to run");
   }
-  const std::string message = install(std::move(prepared));
+  if (resume) {
+    // Where the checkpoints of this case are: the case directory install() will use.
+    const io::CheckpointStore store(OutputRecorder::case_directory_of(options_.output_directory, prepared.case_name) /
+                                        "checkpoints",
+                                    options_.checkpoints.keep);
+    std::optional<io::CheckpointStore::Latest> latest = store.latest();
+    if (!latest) {
+      throw CommandError(ReplyStatus::kNotFound, "--resume: no whole checkpoint in " + store.directory().string() +
+                                                     " (start without --resume to begin afresh)");
+    }
+    if (latest->point.case_digest != prepared.digest) {
+      throw CommandError(ReplyStatus::kInvalidCase, "--resume: " + latest->path.string() +
+                                                        " belongs to another case (or this one changed since)");
+    }
+    try {
+      prepared.world->restore_bytes(latest->snapshot_bytes, latest->path.string());
+    } catch (const std::exception& error) {
+      throw CommandError(ReplyStatus::kInvalidSnapshot, error.what());
+    }
+    resumed_ = std::move(latest->point);
+    spdlog::info("resuming from the checkpoint at cycle {} ({})", resumed_->cycle, latest->path.string());
+  }
+  const std::string message = install(std::move(prepared), resumed_ ? &*resumed_ : nullptr);
   spdlog::info("{}", message);
 }
 
@@ -195,14 +218,15 @@ void SimulationRunner::execute(ReceivedCommand received) {
   publish_status();
 }
 
-std::string SimulationRunner::install(Simulation::Prepared prepared) {
+std::string SimulationRunner::install(Simulation::Prepared prepared, const io::ResumePoint* resume) {
   if (simulation_.loaded()) simulation_.world().finish_tables(recorder_);
   std::string message = simulation_.install(std::move(prepared));
   state_ = ServerState::kLoaded;
   message_ = message;
   const WorldSession& world = simulation_.world();
   schedule_.published(world.cycle_count(), world.time());
-  world.start_tables(recorder_, simulation_.case_name());
+  world.start_tables(recorder_, simulation_.case_name(), resume);
+  checkpoints_.begin(recorder_.case_directory(), simulation_.case_digest(), world.cycle_count());
   publish_telemetry();
   return message;
 }
@@ -414,6 +438,14 @@ void SimulationRunner::run_chunk() {
     return;
   }
   if (schedule_.due(world.cycle_count(), world.time())) publish_telemetry();
+  if (!finished && checkpoints_.due(world.cycle_count())) {
+    // Only a state found healthy is kept.
+    if (const auto problem = active_health_->check(world, true)) {
+      fail_unhealthy(*problem);
+      return;
+    }
+    write_checkpoint(0, 0);
+  }
   if (finished) {
     complete_run();
   } else {
@@ -524,6 +556,16 @@ void SimulationRunner::publish_status() {
   telemetry_.publish(status());
   last_status_ = std::chrono::steady_clock::now();
   refresh_cache();
+}
+
+void SimulationRunner::write_checkpoint(std::size_t stage, std::uint64_t stage_cycles) {
+  try {
+    checkpoints_.write(simulation_.world(), simulation_.snapshot_info(), recorder_, stage, stage_cycles);
+  } catch (const std::exception& error) {
+    // A checkpoint is insurance: its failure is said, the run goes on.
+    spdlog::error("the checkpoint at cycle {} could not be written: {}", simulation_.world().cycle_count(),
+                  error.what());
+  }
 }
 
 void SimulationRunner::refresh_cache() {

@@ -18,7 +18,13 @@ using protocol::ReplyStatus;
 using protocol::ServerState;
 
 void SimulationRunner::run_programme() {
-  run_stages(0, simulation_.world().stage_count());  // the initial case: Server requires one
+  const std::size_t stages = simulation_.world().stage_count();  // the initial case: Server requires one
+  if (resumed_) {
+    const io::ResumePoint point = *std::exchange(resumed_, std::nullopt);
+    if (point.stage < stages) run_stages(point.stage, stages - point.stage, point.stage_cycles);
+    return;
+  }
+  run_stages(0, stages);
 }
 
 void SimulationRunner::run_programme(const ReceivedCommand& received) {
@@ -56,7 +62,7 @@ void SimulationRunner::run_programme(const ReceivedCommand& received) {
 }
 
 // Stages first .. first + count - 1 (from 0), each by the engine's run_stage.
-void SimulationRunner::run_stages(std::size_t first, std::size_t count) {
+void SimulationRunner::run_stages(std::size_t first, std::size_t count, std::uint64_t first_done) {
   WorldSession& world = simulation_.world();
   programme_.emplace(world, simulation_.output_interval(), first, count);
   state_ = ServerState::kRunning;
@@ -69,12 +75,13 @@ void SimulationRunner::run_stages(std::size_t first, std::size_t count) {
       programme_->stop("the server is shutting down");
       break;
     }
-    programme_->start_stage(i, world);
+    const std::uint64_t done = i == first ? first_done : 0;
+    programme_->start_stage(i, world, done);
     message_ = stage_label(i) + " running";
     publish_status();
     StageResult result;
     try {
-      result = world.run_stage(i, [this] { return between_programme_cycles(); });
+      result = world.run_stage(i, [this] { return between_programme_cycles(); }, done);
     } catch (const std::exception& error) {
       programme_->fail("the engine failed at cycle " + std::to_string(world.cycle_count()) + " in " +
                        stage_label(i) + ": " + error.what());
@@ -97,7 +104,15 @@ bool SimulationRunner::between_programme_cycles() {
   const bool row = programme_->row_due(world.cycle_count());
   const bool poll = now - last_poll_ >= options_.chunk_duration;
   if ((row || poll) && programme_unhealthy(false)) return false;
-  if (row) record_programme_row();
+  if (row) {
+    record_programme_row();
+    const std::size_t stage = programme_->stage();
+    const std::uint64_t stage_cycles = programme_->stage_cycles(world.cycle_count());
+    if (checkpoints_.due(world.cycle_count()) && world.resumable_at(stage, stage_cycles)) {
+      if (programme_unhealthy(true)) return false;  // only a healthy state is kept
+      write_checkpoint(stage, stage_cycles);
+    }
+  }
   if (schedule_.due(world.cycle_count(), world.time())) publish_telemetry();
   if (poll) {
     last_poll_ = now;

@@ -1,6 +1,7 @@
 #include "dem/service/world_session.h"
 
 #include "dem/io/snapshot_file.h"
+#include "dem/io/stop_conditions.h"
 #include "dem/service/command_error.h"
 #include "dem/service/output_recorder.h"
 
@@ -104,14 +105,43 @@ class WorldSessionT final : public WorldSession {
   std::size_t stage_count() const override { return stages_.size(); }
   const std::string& stage_name(std::size_t stage) const override { return stages_.at(stage).name; }
   std::uint64_t stage_cycles(std::size_t stage) const override { return stages_.at(stage).cycles; }
-  StageResult run_stage(std::size_t stage, const std::function<bool()>& between_cycles) override {
+  StageResult run_stage(std::size_t stage, const std::function<bool()>& between_cycles,
+                        std::uint64_t done) override {
+    StageDefT<Dim> running = stages_.at(stage);
+    if (done > 0) {
+      // Resumed: the start actions are done and in the state.
+      running.trim.reset();
+      running.place_wall.reset();
+      running.wall_motions.clear();
+      running.damping.reset();
+      running.cycles -= std::min(done, running.cycles);
+      running.until.min_cycles = running.until.min_cycles > done ? running.until.min_cycles - done : 0;
+    }
     // An observer interval of one cycle: the caller decides what is due
     // (rows, telemetry, commands); run_stage alone decides the stage's end.
-    return dem::run_stage(world_, stages_.at(stage), 1, [&](const BasicWorld<Dim>&) { return between_cycles(); });
+    StageResult result =
+        dem::run_stage(world_, running, 1, [&](const BasicWorld<Dim>&) { return between_cycles(); });
+    result.cycles_run += done;
+    return result;
+  }
+  bool resumable_at(std::size_t stage, std::uint64_t stage_cycles) const override {
+    const StageDefT<Dim>& s = stages_.at(stage);
+    if (stage_cycles >= s.cycles || stage_cycles % std::max<std::uint64_t>(s.until.check_interval, 1) != 0) {
+      return false;
+    }
+    return !(io::has_stop_condition(s.until) && stage_cycles >= s.until.min_cycles &&
+             io::stop_conditions_hold(world_, s.until));
+  }
+  void restore_bytes(std::string_view snapshot_bytes, const std::string& source) override {
+    const int threads = world_.threads();
+    world_ = BasicWorld<Dim>(io::parse_snapshot<Dim>(snapshot_bytes, source).snapshot);
+    world_.set_threads(threads);
+    health_ = HealthMonitorT<Dim>(world_);
   }
 
-  void start_tables(OutputRecorder& recorder, const std::string& case_name) const override {
-    recorder.start(case_name, world_, compression_);
+  void start_tables(OutputRecorder& recorder, const std::string& case_name,
+                    const io::ResumePoint* resume) const override {
+    recorder.start(case_name, world_, compression_, resume);
   }
   void record_tables(OutputRecorder& recorder, std::optional<std::size_t> stage) const override {
     recorder.record(world_, stage);

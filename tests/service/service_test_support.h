@@ -84,6 +84,8 @@ enum ReliabilityDomain : std::uint32_t {
   kFilesSnapshotLinks,
   kLoadingStop,
   kLoadingTimeLimit,
+  kCheckpointsOneShot,
+  kCheckpointsInteractive,
   kLastReliabilityDomain
 };
 static_assert(kLastReliabilityDomain <= 230, "the reliability tests' domains are 200-229");

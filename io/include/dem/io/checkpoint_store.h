@@ -66,7 +66,8 @@ class CheckpointStore {
 std::string resume_text(const ResumePoint& point);
 ResumePoint parse_resume(std::string_view text);
 
-// SHA-256 of a file's bytes as hex, for ResumePoint::case_digest.
+// SHA-256 of a file's bytes, or of bytes, as hex, for ResumePoint::case_digest.
 std::string file_digest(const std::filesystem::path& path);
+std::string bytes_digest(std::string_view bytes);
 
 }  // namespace dem::io

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "dem/io/checkpoint_store.h"
 #include "dem/service/command_limits.h"
 
 namespace dem::service {
@@ -47,6 +48,10 @@ struct ServerOptions {
   // A load_case or load_snapshot still preparing after this long (a
   // packing that nearly cannot fit) is abandoned with an error.
   std::chrono::milliseconds load_time_limit{120'000};
+  // Periodic checkpoints in <output>/<case>/checkpoints (none by default),
+  // and --resume: continue the initial case from the newest of them.
+  io::CheckpointSettings checkpoints;
+  bool resume = false;
   // Commands waiting for the engine thread; beyond them a command is answered "busy".
   std::size_t queue_capacity = 1024;
 };

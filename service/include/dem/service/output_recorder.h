@@ -17,6 +17,7 @@
 #include <optional>
 #include <string>
 
+#include "dem/io/checkpoint_store.h"
 #include "dem/io/compression_analysis.h"
 #include "dem/io/compression_csv.h"
 #include "dem/io/compression_settings.h"
@@ -31,9 +32,14 @@ class OutputRecorder {
  public:
   OutputRecorder(std::filesystem::path output_directory, bool enabled);
 
+  // After a load; `resume`: a checkpoint's, whose tables are cut back to
+  // it and appended to, and whose analyses carry on (io/checkpoint_store.h).
   template <int Dim>
   void start(const std::string& case_name, const BasicWorld<Dim>& world,
-             std::optional<io::CompressionSettings> compression = std::nullopt);  // after a load
+             std::optional<io::CompressionSettings> compression = std::nullopt,
+             const io::ResumePoint* resume = nullptr);
+  // The tables' lengths (rows flushed) and the analyses' state, for a checkpoint.
+  void fill(io::ResumePoint& point);
   // A row of the time series, unless this cycle has one already (a load
   // and its first telemetry, a stage's end and the next stage's start);
   // with the stage of a programme running, a sample of the plate loading
@@ -49,6 +55,7 @@ class OutputRecorder {
   // <output>/<case>/ of the case loaded last: its tables and a one-shot
   // run's final snapshot (also when the tables are off).
   const std::filesystem::path& case_directory() const { return directory_; }
+  static std::filesystem::path case_directory_of(const std::filesystem::path& output, const std::string& case_name);
   // A table could not be written (the error was logged).
   bool failed() const { return failed_; }
 
@@ -61,6 +68,8 @@ class OutputRecorder {
   };
   template <int Dim>
   std::unique_ptr<Compression<Dim>>& compression();
+  template <int Dim>
+  void make_compression(const BasicWorld<Dim>& world);
 
   void fail(const std::exception& error);
   void close();
@@ -77,6 +86,7 @@ class OutputRecorder {
   std::unique_ptr<Compression<2>> compression2_;
   std::unique_ptr<Compression<3>> compression3_;
   std::optional<std::uint64_t> last_cycle_;
+  std::optional<io::ResumePoint> resume_;  // while the tables it names are not all reopened
 };
 
 }  // namespace dem::service

@@ -31,7 +31,9 @@ class ProgrammeRun {
 
   std::size_t stage_count() const { return stage_count_; }
   std::size_t stage() const { return stage_; }  // the stage running, or stage_count() after the last
-  void start_stage(std::size_t stage, const WorldSession& world);
+  // `done`: cycles of it run already (a resumed checkpoint's).
+  void start_stage(std::size_t stage, const WorldSession& world, std::uint64_t done = 0);
+  std::uint64_t stage_cycles(std::uint64_t cycle) const { return cycle - stage_start_; }
 
   // Whether the time series is due a row at this cycle of the current stage.
   bool row_due(std::uint64_t cycle) const { return (cycle - stage_start_) % output_interval_ == 0; }

@@ -33,6 +33,7 @@ class Simulation {
   WorldSession& world() { return *world_; }
   const std::string& case_name() const { return case_name_; }
   std::uint8_t dimension() const { return loaded() ? world_->dimension() : 0; }
+  const std::string& case_digest() const { return digest_; }
   // Cycles between rows of the case's time series (its output.interval).
   std::uint64_t output_interval() const { return output_interval_; }
 
@@ -43,6 +44,7 @@ class Simulation {
     std::string description;
     std::vector<ContactModelDef> contact_models;
     std::uint64_t output_interval = 100;  // the case's; a snapshot keeps the default
+    std::string digest;  // SHA-256 of the case's bytes (hex); empty for a snapshot: what a checkpoint resumes
     std::string message;  // what was loaded, for the reply
   };
   // Prepares worlds for it: a value, so a preparation may run on another
@@ -95,6 +97,7 @@ class Simulation {
   std::string description_;
   std::vector<ContactModelDef> contact_models_;
   std::uint64_t output_interval_ = 100;
+  std::string digest_;
 };
 
 }  // namespace dem::service

@@ -18,6 +18,7 @@
 #include "dem/service/output_recorder.h"
 #include "dem/service/programme_run.h"
 #include "dem/service/reply_sender.h"
+#include "dem/service/server_checkpoints.h"
 #include "dem/service/simulation.h"
 #include "dem/service/state_cache.h"
 #include "dem/service/telemetry_publisher.h"
@@ -31,8 +32,12 @@ class SimulationRunner {
                    TelemetryPublisher& telemetry, StateCache& cache);
 
   // Loads the case given at start; throws CommandError when it cannot (and
-  // when a one-shot run's case has no stages to run).
-  void load_initial_case(const std::filesystem::path& path);
+  // when a one-shot run's case has no stages to run). With `resume`, the
+  // world continues from the newest checkpoint of the case
+  // (<output>/<case>/checkpoints) into its tables, a one-shot run from
+  // where its programme stood; CommandError when there is none, or it is
+  // another case's.
+  void load_initial_case(const std::filesystem::path& path, bool resume = false);
 
   // Runs until a shutdown is requested (signal or command), then returns
   // between two chunks of cycles.
@@ -66,7 +71,8 @@ class SimulationRunner {
   // its one reply comes when they end (completed, stopped or failed), and
   // the server then takes commands again.
   void run_programme(const ReceivedCommand& received);
-  void run_stages(std::size_t first, std::size_t count);
+  // `first_done`: cycles of the first stage run already (a resumed checkpoint's).
+  void run_stages(std::size_t first, std::size_t count, std::uint64_t first_done = 0);
   bool between_programme_cycles();
   bool programme_unhealthy(bool always);  // fails the programme when the world's health says so
   void record_programme_row();
@@ -74,7 +80,8 @@ class SimulationRunner {
   void end_programme();
   std::string stage_label(std::size_t stage) const;
 
-  std::string install(Simulation::Prepared prepared);
+  // `resume`: a checkpoint the prepared world was restored from; its tables carry on.
+  std::string install(Simulation::Prepared prepared, const io::ResumePoint* resume = nullptr);
   // Runs `prepare` in a BackgroundLoad while taking stop and shutdown (and
   // keeping other commands for after); throws CommandError when it is
   // stopped, outlasts options_.load_time_limit, or an abandoned one is still running.
@@ -90,6 +97,7 @@ class SimulationRunner {
   void publish_status();
   void publish_telemetry();
   void refresh_cache();  // the StateCache's get_state, as of now
+  void write_checkpoint(std::size_t stage, std::uint64_t stage_cycles);
 
   const ServerOptions& options_;
   CommandQueue& queue_;
@@ -103,6 +111,8 @@ class SimulationRunner {
   std::optional<ActiveRun> active_;
   std::optional<HealthWatch> active_health_;  // the running cycle or run_until's
   std::unique_ptr<BackgroundLoad> abandoned_;  // a load given up on, still running to its end
+  ServerCheckpoints checkpoints_;
+  std::optional<io::ResumePoint> resumed_;  // the checkpoint --resume started from, until its programme runs
   std::optional<ProgrammeRun> programme_;  // a one-shot run's programme, or run_programme's
   const protocol::Command* programme_command_ = nullptr;  // run_programme's, while it runs
   std::chrono::steady_clock::time_point last_poll_{};  // of the queue, during a programme

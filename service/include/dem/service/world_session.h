@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "dem/health.h"
+#include "dem/io/checkpoint_store.h"
 #include "dem/io/compression_settings.h"
 #include "dem/io/snapshot_conversion.h"
 #include "dem/programme.h"
@@ -89,12 +90,25 @@ class WorldSession {
   virtual std::uint64_t stage_cycles(std::size_t stage) const = 0;  // its length, or its cap when it has conditions
   // Runs one stage; `between_cycles` is called after every cycle and ends
   // the stage early by returning false. Throws what the engine throws.
-  virtual StageResult run_stage(std::size_t stage, const std::function<bool()>& between_cycles) = 0;
+  // `done`: the stage's cycles run already (a resumed checkpoint's): its
+  // start actions are in the state, its length and minimum count from
+  // there; the result counts them.
+  virtual StageResult run_stage(std::size_t stage, const std::function<bool()>& between_cycles,
+                                std::uint64_t done = 0) = 0;
+  // Whether a checkpoint `stage_cycles` into the stage can be resumed as if
+  // never interrupted: before its end, on one of its condition checks, and
+  // not one where the conditions hold (io/stop_conditions.h) - the stage
+  // ends there, after the row the checkpoint follows.
+  virtual bool resumable_at(std::size_t stage, std::uint64_t stage_cycles) const = 0;
+  // Replaces the world by a framed snapshot's (a checkpoint of this case);
+  // the stages stay. Throws SnapshotError or DefinitionError.
+  virtual void restore_bytes(std::string_view snapshot_bytes, const std::string& source) = 0;
 
   // The per-case tables (the recorder writes them for this world's
   // dimension); `stage`, the stage running, when a programme runs (the
   // plate loading analyses follow programmes only).
-  virtual void start_tables(OutputRecorder& recorder, const std::string& case_name) const = 0;
+  virtual void start_tables(OutputRecorder& recorder, const std::string& case_name,
+                            const io::ResumePoint* resume = nullptr) const = 0;
   virtual void record_tables(OutputRecorder& recorder, std::optional<std::size_t> stage = std::nullopt) const = 0;
   virtual void finish_tables(OutputRecorder& recorder) const = 0;
 };
