@@ -202,6 +202,7 @@ CCommand to_c(const protocol::Command& m) {
   c.programme.first_stage = m.programme.first_stage;
   c.programme.stage_count = m.programme.stage_count;
   c.stamp = to_c(m.stamp);
+  c.force = m.force;
   return c;
 }
 
@@ -341,6 +342,7 @@ protocol::Command from_c(const CCommand& c) {
   m.parameter = {copy(c.parameter.name), copy(c.parameter.material), c.parameter.value, from_c(c.parameter.vector)};
   m.programme = {c.programme.first_stage, c.programme.stage_count};
   m.stamp = from_c(c.stamp);
+  m.force = c.force;
   return m;
 }
 

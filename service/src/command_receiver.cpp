@@ -47,7 +47,8 @@ void CommandReceiver::receive_loop() {
   while (running_) {
     try {
       waitset_.wait(1s);  // the guard condition ends the wait at stop()
-      for (protocol::Command& command : reader_.take()) {
+      for (dds::Received<protocol::Command>& sample : reader_.take_with_writers()) {
+        protocol::Command& command = sample.value;
         const auto arrived = std::chrono::steady_clock::now();
         if (command.server != server_name_) {
           ++ignored_;
@@ -59,7 +60,7 @@ void CommandReceiver::receive_loop() {
         const std::string what =
             kind ? std::string(protocol::to_string(*kind)) : "unknown kind " + std::to_string(command.kind);
         spdlog::info("received request {} from {}: {}", command.request_id, command.client_id, what);
-        ReceivedCommand received{std::move(command), arrived};
+        ReceivedCommand received{std::move(command), arrived, sample.writer};
         if (answer_here(received)) continue;
         if (!queue_.push(received)) {
           protocol::Reply busy;
@@ -76,6 +77,14 @@ void CommandReceiver::receive_loop() {
       spdlog::error("receiving commands: {}", error.what());
       std::this_thread::sleep_for(100ms);
     }
+  }
+}
+
+bool CommandReceiver::writer_alive(std::uint64_t writer) const {
+  try {
+    return reader_.writer_matched(writer);
+  } catch (const std::exception&) {
+    return true;  // when DDS cannot say, the run keeps its owner
   }
 }
 

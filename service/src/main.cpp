@@ -6,7 +6,8 @@
 // Exit codes: 0 after a shutdown command, SIGINT or SIGTERM, or a one-shot
 // programme that ran to its end; 1 when DDS or the output fails, or the
 // one-shot run failed; 2 bad arguments; 3 the initial case is invalid;
-// 4 a one-shot programme stopped before its end.
+// 4 a one-shot programme stopped before its end; 5 another server of the
+// same name is on the domain.
 #include <signal.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
@@ -22,6 +23,7 @@
 #include "dem/protocol/topics.h"
 #include "dem/service/background_load.h"
 #include "dem/service/command_error.h"
+#include "dem/service/name_claim.h"
 #include "dem/service/server.h"
 
 namespace {
@@ -30,6 +32,7 @@ constexpr int kFailure = 1;
 constexpr int kBadArguments = 2;
 constexpr int kBadCase = 3;
 constexpr int kStopped = 4;
+constexpr int kNameInUse = 5;
 
 int exit_code(dem::service::ProgrammeOutcome outcome) {
   switch (outcome) {
@@ -126,6 +129,13 @@ int main(int argc, char** argv) {
                  "(default: the current directory; the --case file's directory is always allowed)")
       ->envname("DEM_READ_DIRS")
       ->delimiter(':');
+  double name_wait = 12.0;
+  app.add_option("--name-wait", name_wait,
+                 "seconds to wait for another server of this name to leave before refusing to start (one that "
+                 "died keeps its name until its DDS lease, 10 s, runs out)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber)
+      ->envname("DEM_NAME_WAIT");
   int load_seconds = 120;
   app.add_option("--load-seconds", load_seconds,
                  "a case or snapshot still preparing after this many seconds is abandoned with an error")
@@ -200,6 +210,7 @@ int main(int argc, char** argv) {
   }
   options.record_csv = !no_csv;
   options.load_time_limit = std::chrono::seconds(load_seconds);
+  options.name_wait = std::chrono::milliseconds(static_cast<std::int64_t>(name_wait * 1000));
 
   auto logger = spdlog::stderr_color_mt("dem_server");
   logger->set_pattern("[%Y-%m-%d %H:%M:%S.%e] [" + options.name + "] [%^%l%$] %v");
@@ -218,6 +229,9 @@ int main(int argc, char** argv) {
   } catch (const dem::service::CommandError& error) {
     spdlog::error("the initial case cannot be loaded:\n{}", error.what());
     code = kBadCase;
+  } catch (const dem::service::NameInUse& error) {
+    spdlog::error("{}", error.what());
+    code = kNameInUse;
   } catch (const std::exception& error) {
     spdlog::error("{}", error.what());
     code = kFailure;

@@ -100,7 +100,10 @@ void SimulationRunner::run() {
         }
       }
       if (active_ && !queue_.shutdown_requested()) run_chunk();
-      if (active_ && std::chrono::steady_clock::now() - last_status_ >= options_.progress_interval) publish_status();
+      if (active_ && std::chrono::steady_clock::now() - last_status_ >= options_.progress_interval) {
+        note_owner_left();
+        publish_status();
+      }
     } else if (std::optional<ReceivedCommand> received = queue_.pop(kIdleWait)) {
       execute(std::move(*received));
     }
@@ -158,6 +161,11 @@ void SimulationRunner::execute(ReceivedCommand received) {
       throw CommandError(ReplyStatus::kRefused, std::string(protocol::to_string(*kind)) + " refused: " + *reason);
     }
     check_command(command, options_.limits);
+    if (*kind == CommandKind::kStop || *kind == CommandKind::kShutdown) {
+      if (const auto reason = ownership_refusal(received)) {
+        throw CommandError(ReplyStatus::kRefused, std::string(protocol::to_string(*kind)) + " refused: " + *reason);
+      }
+    }
     switch (*kind) {
       case CommandKind::kCycle:
       case CommandKind::kRunUntil:
@@ -375,6 +383,46 @@ Simulation::Prepared SimulationRunner::prepare_in_background(const std::string& 
   return load->take();
 }
 
+// --- who may stop a run ----------------------------------------------------
+
+const ReceivedCommand* SimulationRunner::run_owner() const {
+  if (active_) return &active_->command();
+  return programme_command_;  // a one-shot programme has none: the server's own
+}
+
+// A run belongs to the client (the DDS writer) that started it. Another
+// may stop it, or shut the server down under it, only with force, or once
+// the owner has left the domain (then the run is orphaned: it goes on, and
+// anyone may end it). Who may send commands at all is DDS Security's to
+// say (its permissions), not this.
+std::optional<std::string> SimulationRunner::ownership_refusal(const ReceivedCommand& received) const {
+  const ReceivedCommand* owner = run_owner();
+  if (owner == nullptr || owner->writer == 0 || received.writer == owner->writer) return std::nullopt;
+  const std::string run = std::string(protocol::to_string(*protocol::command_kind(owner->command.kind))) +
+                          " (request " + std::to_string(owner->command.request_id) + ") of client " +
+                          owner->command.client_id;
+  if (received.command.force) {
+    spdlog::warn("{} ends the {} with force", received.command.client_id, run);
+    return std::nullopt;
+  }
+  if (!writer_alive_(owner->writer)) {
+    spdlog::info("{} ends the {}, whose client has left", received.command.client_id, run);
+    return std::nullopt;
+  }
+  return "the running " + run + " belongs to that client, which is still here; send it with force to end it anyway "
+         "(demctl stop --force)";
+}
+
+// Once per run, between chunks: said in the log and the status.
+void SimulationRunner::note_owner_left() {
+  const ReceivedCommand* owner = run_owner();
+  if (owner_left_logged_ || owner == nullptr || owner->writer == 0 || writer_alive_(owner->writer)) return;
+  owner_left_logged_ = true;
+  spdlog::warn("client {}, which started the running {}, has left the domain: the run goes on, and any client may "
+               "stop it", owner->command.client_id, protocol::to_string(*protocol::command_kind(owner->command.kind)));
+  message_ += "; its client has left";
+}
+
 // --- running commands ------------------------------------------------------
 
 void SimulationRunner::start_run(ReceivedCommand& received, CommandKind kind) {
@@ -403,6 +451,7 @@ void SimulationRunner::start_run(ReceivedCommand& received, CommandKind kind) {
                protocol::to_string(kind), goal.max_cycles, simulation_.world().cycle_count());
   active_.emplace(std::move(received), goal, simulation_.world());
   active_health_.emplace(simulation_.world());
+  owner_left_logged_ = false;
   state_ = ServerState::kRunning;
   message_ = std::string(protocol::to_string(kind)) + " running";
   publish_status();
@@ -540,8 +589,8 @@ protocol::Status SimulationRunner::status() const {
     s.command = "programme";
     if (programme_command_) {
       s.command = "run_programme";
-      s.command_client = programme_command_->client_id;
-      s.command_request_id = programme_command_->request_id;
+      s.command_client = programme_command_->command.client_id;
+      s.command_request_id = programme_command_->command.request_id;
     }
     s.command_cycles_done = programme_->done(simulation_.world());
     s.command_cycles_total = programme_->total();

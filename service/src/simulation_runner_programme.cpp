@@ -45,7 +45,8 @@ void SimulationRunner::run_programme(const ReceivedCommand& received) {
                                                      std::to_string(stages) + " of " + simulation_.case_name());
   }
   const std::uint64_t start = simulation_.world().cycle_count();
-  programme_command_ = &received.command;
+  programme_command_ = &received;
+  owner_left_logged_ = false;
   run_stages(first, args.stage_count == 0 ? stages - first : args.stage_count);
   programme_command_ = nullptr;
   protocol::Reply reply;
@@ -125,6 +126,7 @@ bool SimulationRunner::between_programme_cycles() {
     }
     if (queue_.shutdown_requested()) programme_->stop("the server is shutting down");
     if (now - last_status_ >= options_.progress_interval) {
+      note_owner_left();
       publish_status();
     } else {
       refresh_cache();

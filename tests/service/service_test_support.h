@@ -86,6 +86,9 @@ enum ReliabilityDomain : std::uint32_t {
   kLoadingTimeLimit,
   kCheckpointsOneShot,
   kCheckpointsInteractive,
+  kOwnershipNames,
+  kOwnershipRuns,
+  kOwnershipVanished,
   kLastReliabilityDomain
 };
 static_assert(kLastReliabilityDomain <= 230, "the reliability tests' domains are 200-229");

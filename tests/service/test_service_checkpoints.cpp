@@ -56,8 +56,9 @@ TEST(Checkpoints, AOneShotRunKilledAndResumedEndsAsOneNeverInterrupted) {
   second.wait(10s);
   EXPECT_FALSE(fs::exists(directory / "final.snapshot"));
 
-  ServerProcess third(
-      server_arguments("killed", domain, killed, case_path, {"--run-and-exit", "--resume", "--checkpoint-cycles", "5000"}));
+  // Another name: the killed server's stays on the domain until its lease runs out.
+  ServerProcess third(server_arguments("resumed", domain, killed, case_path,
+                                       {"--run-and-exit", "--resume", "--checkpoint-cycles", "5000"}));
   ASSERT_EQ(third.wait(120s), 0);
   int compared = 0;
   for (const auto& entry : fs::directory_iterator(whole / "miyata_cs_reduced")) {
@@ -98,8 +99,9 @@ TEST(Checkpoints, AnInteractiveServerKilledAndResumedTakesUpItsWorld) {
   }
   std::vector<std::string> resuming = checkpointing;
   resuming.push_back("--resume");
-  ServerProcess server(server_arguments("killed", domain, out, case_path, resuming));
-  client::Client client(connect_options("killed", domain));
+  // Another name: the killed server's stays on the domain until its lease runs out.
+  ServerProcess server(server_arguments("resumed", domain, out, case_path, resuming));
+  client::Client client(connect_options("resumed", domain));
   const protocol::Reply state = client.get_state();
   EXPECT_EQ(state.state.cycle, resumed_at);
   ASSERT_LT(resumed_at, 3000u);

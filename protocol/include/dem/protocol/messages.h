@@ -225,6 +225,7 @@ struct Command {
   ParameterArgs parameter;
   ProgrammeArgs programme;
   Stamp stamp;
+  bool force = false;  // stop and shutdown: also another client's run
   friend bool operator==(const Command&, const Command&) = default;
 };
 

@@ -26,6 +26,10 @@ namespace dem::service {
 struct ReceivedCommand {
   protocol::Command command;
   std::chrono::steady_clock::time_point arrived;  // replies report the time from here
+  // The DDS writer it came from (its publication handle): who started a
+  // run, as DDS knows it rather than by the client id it claims; 0 when
+  // not from DDS (the one-shot programme).
+  std::uint64_t writer = 0;
 };
 
 class CommandQueue {

@@ -30,6 +30,8 @@ class CommandReceiver {
   void start();
   void stop();
   std::uint64_t ignored() const { return ignored_.load(); }  // commands for other servers
+  // Whether the writer a command came from is still on the domain (any thread).
+  bool writer_alive(std::uint64_t writer) const;
 
  private:
   void receive_loop();

@@ -52,6 +52,10 @@ struct ServerOptions {
   // and --resume: continue the initial case from the newest of them.
   io::CheckpointSettings checkpoints;
   bool resume = false;
+  // Before starting, how long to look for another server of this name,
+  // and to wait for one found to leave (name_claim.h).
+  std::chrono::milliseconds name_discovery{500};
+  std::chrono::milliseconds name_wait{12'000};
   // Commands waiting for the engine thread; beyond them a command is answered "busy".
   std::size_t queue_capacity = 1024;
 };

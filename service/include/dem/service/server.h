@@ -51,6 +51,7 @@ class Server {
   CommandQueue queue_;
   StateCache cache_;
   dds::Participant participant_;
+  bool name_claimed_;  // before anything is published under the name
   TelemetryPublisher telemetry_;
   ReplySender replies_;
   SimulationRunner runner_;

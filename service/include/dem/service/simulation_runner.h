@@ -5,6 +5,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,6 +50,9 @@ class SimulationRunner {
   // snapshot, or after a failure the last good state. Returns when the
   // programme is over: completed, stopped (stop, shutdown, a signal) or failed.
   void run_programme();
+  // How the server learns whether the client that started a run is still
+  // on the domain (CommandReceiver::writer_alive).
+  void set_writer_check(std::function<bool(std::uint64_t)> alive) { writer_alive_ = std::move(alive); }
   // How the one-shot run ended; nothing when the server ran commands instead.
   std::optional<ProgrammeOutcome> programme_outcome() const;
   // After run() and once no more commands arrive: stops the running command
@@ -93,6 +97,11 @@ class SimulationRunner {
   std::filesystem::path snapshot_path(const std::string& requested) const;
 
   void send(const ReceivedCommand& received, protocol::Reply reply);
+  // Why `received` (a stop or shutdown) may not end the run going on, or
+  // nothing (docs/SERVICE.md, "Who may stop a run").
+  std::optional<std::string> ownership_refusal(const ReceivedCommand& received) const;
+  const ReceivedCommand* run_owner() const;
+  void note_owner_left();
   protocol::Status status() const;
   void publish_status();
   void publish_telemetry();
@@ -114,7 +123,9 @@ class SimulationRunner {
   ServerCheckpoints checkpoints_;
   std::optional<io::ResumePoint> resumed_;  // the checkpoint --resume started from, until its programme runs
   std::optional<ProgrammeRun> programme_;  // a one-shot run's programme, or run_programme's
-  const protocol::Command* programme_command_ = nullptr;  // run_programme's, while it runs
+  const ReceivedCommand* programme_command_ = nullptr;  // run_programme's, while it runs
+  std::function<bool(std::uint64_t)> writer_alive_ = [](std::uint64_t) { return true; };
+  bool owner_left_logged_ = false;
   std::chrono::steady_clock::time_point last_poll_{};  // of the queue, during a programme
   std::vector<ReceivedCommand> unanswered_;  // taken from the queue after a shutdown request
   std::string message_ = "started";
