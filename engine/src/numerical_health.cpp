@@ -55,9 +55,12 @@ template std::optional<std::string> deepest_overlap(const BasicWorld<3>&, double
 
 template <int Dim>
 HealthMonitorT<Dim>::HealthMonitorT(const BasicWorld<Dim>& world, HealthLimits limits) : limits_(limits) {
-  const EnergyBudget e = world.assembly_measures().energy;
-  created_at_start_ = health::created_energy(e);
-  held_at_start_ = e.kinetic + e.strain;
+  if (world.cycle_count() > 0) {
+    const EnergyBudget e = world.assembly_measures().energy;
+    created_at_start_ = health::created_energy(e);
+    held_at_start_ = e.kinetic + e.strain;
+    referenced_ = true;
+  }
   const ParticleViewT<Dim> p = world.particles();
   double mass = 0.0, radius = 0.0;
   for (ParticleId i = 0; i < world.particle_count(); ++i) {
@@ -85,7 +88,12 @@ StepHealth HealthMonitorT<Dim>::assess(const BasicWorld<Dim>& world) {
     return health;
   }
   const EnergyBudget& e = measures.energy;
-  const double created = health::created_energy(e) - created_at_start_;
+  if (!referenced_ && health.cycle > 0) {
+    created_at_start_ = health::created_energy(e);
+    held_at_start_ = e.kinetic + e.strain;
+    referenced_ = true;
+  }
+  const double created = referenced_ ? health::created_energy(e) - created_at_start_ : 0.0;
   const double in_play = std::abs(e.initial_kinetic) + std::abs(e.gravity_work) + std::abs(e.wall_work) + held_at_start_;
   most_in_play_ = std::max(most_in_play_, in_play);
   const bool beyond = created > round_off_ && created > limits_.max_energy_growth * most_in_play_;

@@ -89,6 +89,7 @@ void SimulationRunner::load_initial_case(const std::filesystem::path& path, bool
 
 void SimulationRunner::run() {
   publish_status();
+  refresh_cache(true);
   while (!queue_.shutdown_requested()) {
     if (active_) {
       // Between two chunks: everything that arrived meanwhile, in order.
@@ -99,6 +100,7 @@ void SimulationRunner::run() {
           execute(std::move(received));
         }
       }
+      if (!active_ && !awaiting_refresh_.empty()) refresh_cache(true);  // the run ended among them
       if (active_ && !queue_.shutdown_requested()) run_chunk();
       if (active_ && std::chrono::steady_clock::now() - last_status_ >= options_.progress_interval) {
         note_owner_left();
@@ -106,6 +108,16 @@ void SimulationRunner::run() {
       }
     } else if (std::optional<ReceivedCommand> received = queue_.pop(kIdleWait)) {
       execute(std::move(*received));
+      for (ReceivedCommand& next : queue_.take_all()) {
+        if (queue_.shutdown_requested()) {
+          unanswered_.push_back(std::move(next));
+        } else {
+          execute(std::move(next));
+        }
+      }
+      refresh_cache();
+    } else if (!awaiting_refresh_.empty()) {
+      refresh_cache(true);  // a quiet moment: catch up
     }
   }
 }
@@ -146,12 +158,34 @@ void SimulationRunner::finish() {
 
 void SimulationRunner::execute(ReceivedCommand received) {
   // However it ends - a reply now, or a run started - the client's command
-  // is no longer pending (CommandQueue::pending) when this returns.
+  // stops counting as pending (CommandQueue::pending) once the StateCache
+  // shows its effect: until then that client's get_state waits its turn.
+  // Only commands that change what get_state reads (a load, a run) wait
+  // for it; the others show only from the next cycle on.
+  const auto changes_readout = [](std::uint8_t kind) {
+    switch (protocol::command_kind(kind).value_or(CommandKind::kGetState)) {
+      case CommandKind::kLoadCase:
+      case CommandKind::kLoadSnapshot:
+      case CommandKind::kCycle:
+      case CommandKind::kRunUntil:
+      case CommandKind::kRunProgramme:
+        return true;
+      default:
+        return false;
+    }
+  };
   struct Done {
-    CommandQueue& queue;
+    SimulationRunner& runner;
     std::string client;
-    ~Done() { queue.done(client); }
-  } done{queue_, received.command.client_id};
+    bool await_refresh;
+    ~Done() {
+      if (await_refresh) {
+        runner.awaiting_refresh_.push_back(client);
+      } else {
+        runner.queue_.done(client);
+      }
+    }
+  } done{*this, received.command.client_id, changes_readout(received.command.kind)};
   protocol::Reply reply;
   const protocol::Command& command = received.command;
   try {
@@ -229,6 +263,7 @@ void SimulationRunner::execute(ReceivedCommand received) {
 std::string SimulationRunner::install(Simulation::Prepared prepared, const io::ResumePoint* resume) {
   if (simulation_.loaded()) simulation_.world().finish_tables(recorder_);
   std::string message = simulation_.install(std::move(prepared));
+  ++world_generation_;
   state_ = ServerState::kLoaded;
   message_ = message;
   const WorldSession& world = simulation_.world();
@@ -257,17 +292,27 @@ protocol::Reply SimulationRunner::get_state() const {
   protocol::Reply reply;
   if (simulation_.loaded()) {
     const WorldSession& world = simulation_.world();
-    reply.plates.server = options_.name;
-    reply.plates.cycle = world.cycle_count();
-    reply.plates.time = world.time();
+    // The readout changes only with the world (a cycle, a load): wall
+    // motions, servos and parameters show from the next cycle on. So it is
+    // worked out once per state, however many ask.
+    if (!readout_ || readout_->generation != world_generation_ || readout_->cycle != world.cycle_count()) {
+      Readout readout{world_generation_, world.cycle_count(), {}, {}, 0};
+      readout.plates.server = options_.name;
+      readout.plates.cycle = world.cycle_count();
+      readout.plates.time = world.time();
+      readout.plates.walls = world.read_walls();
+      readout.stats = world.read_contact_stats();
+      readout.stats.server = options_.name;
+      readout.stats.cycle = world.cycle_count();
+      readout.stats.time = world.time();
+      readout.hash = world.state_hash();
+      readout_ = std::move(readout);
+    }
+    reply.plates = readout_->plates;
+    reply.stats = readout_->stats;
     reply.plates.stamp = protocol::now_stamp();
-    reply.plates.walls = world.read_walls();
-    reply.stats = world.read_contact_stats();
-    reply.stats.server = options_.name;
-    reply.stats.cycle = world.cycle_count();
-    reply.stats.time = world.time();
     reply.stats.stamp = reply.plates.stamp;
-    reply.state_hash = world.state_hash();
+    reply.state_hash = readout_->hash;
   }
   reply.message = std::string(protocol::to_string(state_)) +
                   (simulation_.loaded() ? ", case " + simulation_.case_name() + " at cycle " +
@@ -516,6 +561,7 @@ void SimulationRunner::fail_unhealthy(const StepHealth& problem) {
     kept += " (it could not be written: " + std::string(error.what()) + ")";
   }
   world.restore(good);
+  ++world_generation_;
   fail_run("the run is unhealthy " + problem.message + kept);
 }
 
@@ -539,6 +585,7 @@ void SimulationRunner::end_run(ReplyStatus status, const std::string& message) {
   active_health_.reset();
   if (state_ == ServerState::kRunning) state_ = ServerState::kLoaded;
   message_ = message;
+  refresh_cache(true);  // before the reply: who reads it sees the run ended
   send(received, std::move(reply));
   publish_status();
 }
@@ -552,7 +599,6 @@ void SimulationRunner::fail_run(const std::string& message) {
 // --- publishing ----------------------------------------------------------
 
 void SimulationRunner::send(const ReceivedCommand& received, protocol::Reply reply) {
-  cache_.invalidate();
   reply.state = status();
   reply.state.commands_served = cache_.count_reply();
   replies_.send(received, std::move(reply));
@@ -604,7 +650,6 @@ protocol::Status SimulationRunner::status() const {
 void SimulationRunner::publish_status() {
   telemetry_.publish(status());
   last_status_ = std::chrono::steady_clock::now();
-  refresh_cache();
 }
 
 void SimulationRunner::write_checkpoint(std::size_t stage, std::uint64_t stage_cycles) {
@@ -617,10 +662,21 @@ void SimulationRunner::write_checkpoint(std::size_t stage, std::uint64_t stage_c
   }
 }
 
-void SimulationRunner::refresh_cache() {
-  protocol::Reply reply = get_state();
-  reply.state = status();
-  cache_.publish(std::move(reply));
+// After a chunk of cycles or a batch of commands, at a pace that costs at
+// most about 1/20 of the engine thread's time (get_state reads every
+// contact and hashes the state: on a large world that is not free), or
+// `always` when a run ends. Meanwhile the cache is a little older (the
+// replies say which cycle), and a client whose command it does not show
+// yet has its get_state answered by the engine thread.
+void SimulationRunner::refresh_cache(bool always) {
+  if (!always && !refresh_pacing_.due()) return;
+  refresh_pacing_.run([this] {
+    protocol::Reply reply = get_state();
+    reply.state = status();
+    cache_.publish(std::move(reply));
+  });
+  for (const std::string& client : awaiting_refresh_) queue_.done(client);
+  awaiting_refresh_.clear();
 }
 
 void SimulationRunner::publish_telemetry() {

@@ -58,6 +58,7 @@ void SimulationRunner::run_programme(const ReceivedCommand& received) {
     default: reply.status = ReplyStatus::kFailed; break;
   }
   programme_.reset();  // cycle and run_until record the tables at the telemetry interval again
+  refresh_cache(true);  // before the reply: who reads it sees the programme ended
   send(received, std::move(reply));
   publish_status();
 }
@@ -128,9 +129,8 @@ bool SimulationRunner::between_programme_cycles() {
     if (now - last_status_ >= options_.progress_interval) {
       note_owner_left();
       publish_status();
-    } else {
-      refresh_cache();
     }
+    refresh_cache();
   }
   return !programme_->ending();
 }
@@ -196,6 +196,7 @@ void SimulationRunner::end_programme() {
       if (failed) {
         // The world goes back to it: what the server shows and saves from now on is sound.
         simulation_.world().restore(programme_->last_good());
+        ++world_generation_;
         message_ += "; the world is back at the last good state, cycle " + std::to_string(snapshot_cycle);
         if (written) message_ += ", which is in " + path.string();
       }

@@ -7,11 +7,6 @@ void StateCache::publish(protocol::Reply get_state) {
   get_state_ = std::move(get_state);
 }
 
-void StateCache::invalidate() {
-  std::lock_guard lock(mutex_);
-  get_state_.reset();
-}
-
 std::optional<protocol::Reply> StateCache::get_state() const {
   std::lock_guard lock(mutex_);
   return get_state_;

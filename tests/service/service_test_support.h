@@ -89,6 +89,7 @@ enum ReliabilityDomain : std::uint32_t {
   kOwnershipNames,
   kOwnershipRuns,
   kOwnershipVanished,
+  kLimitsStalledClient,
   kLastReliabilityDomain
 };
 static_assert(kLastReliabilityDomain <= 230, "the reliability tests' domains are 200-229");

@@ -4,7 +4,11 @@
 // once while the engine cycles (docs/RELIABILITY.md).
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <sys/wait.h>
+
 #include <algorithm>
+#include <cstdio>
 
 #include "service_test_support.h"
 
@@ -141,6 +145,36 @@ TEST(Limits, GetStateIsAnsweredWithoutWaitingForTheChunkBoundary) {
   EXPECT_GT(last_cycle, first_cycle);  // the state it gives moves on with the run
   client.stop();
   client.await(running, 30s);
+}
+
+// Every client reads the reply topic: one that stops reading (here demctl
+// monitor, stopped with SIGSTOP) must not hold up the replies to others.
+TEST(Limits, AStalledClientDoesNotHoldUpTheOthersReplies) {
+  InProcessServer server(server_options("stalled", kLimitsStalledClient));
+  client::Client client(connect_options("stalled", kLimitsStalledClient));
+  client.load_case_file(case_file("nine_disc_damped"));
+  const pid_t monitor = spawn(DEM_DEMCTL_PROGRAM,
+                              {"monitor", "--server", "stalled", "--domain", std::to_string(kLimitsStalledClient)},
+                              /*quiet=*/true);
+  const std::uint64_t served = client.status().commands_served;
+  ASSERT_TRUE(eventually([&] { return client.get_state().state.commands_served >= served + 2; }, 20s));
+  std::this_thread::sleep_for(1s);  // its readers match
+  ::kill(monitor, SIGSTOP);
+  // Some 2 MB of replies, four times what Cyclone holds for a slow reader
+  // before a writer that keeps everything must wait for it.
+  const auto start = std::chrono::steady_clock::now();
+  double slowest = 0.0;
+  for (int i = 0; i < 2000; ++i) {
+    const auto sent = std::chrono::steady_clock::now();
+    const protocol::Reply reply = i % 2 == 0 ? client.get_state() : client.set_wall_velocity("top", {0, -0.1, 0});
+    ASSERT_TRUE(reply.ok());
+    slowest = std::max(slowest, std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count());
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ::kill(monitor, SIGKILL);
+  waitpid(monitor, nullptr, 0);
+  std::printf("2000 commands with a stalled client on the domain: %.2f s, the slowest %.3f s\n", seconds, slowest);
+  EXPECT_LT(slowest, 1.0);  // a write waiting for the stalled reader would take 5 s
 }
 
 }  // namespace

@@ -60,7 +60,10 @@ struct StepHealth {
 
 // Follows one world's health from when it is made: the energy check counts
 // energy created since then, so a world restored from a snapshot starts
-// afresh. assess() costs a pass over the particles and the contacts, about
+// afresh. A world not yet cycled holds no strain energy even where its
+// particles overlap (no force pass has run), so for one the reference is
+// taken at the first assessment after a cycle: a packing built
+// pre-compressed is a start, not energy from nowhere. assess() costs a pass over the particles and the contacts, about
 // one cycle's reading: call it per chunk of cycles or per output row, not
 // per cycle.
 template <int Dim>
@@ -77,6 +80,7 @@ class HealthMonitorT {
   double held_at_start_ = 0.0;     // J: kinetic and strain energy then
   double most_in_play_ = 0.0;      // J: the largest energy in play at an assessment
   double round_off_ = 0.0;         // J: the floor below which an excess is round-off
+  bool referenced_ = false;        // created_at_start_ and held_at_start_ are taken
   double suspect_created_ = 0.0;   // J: the excess when it first passed the limit, 0 while below
   std::uint64_t suspect_cycle_ = 0;  // and the cycle then
 };

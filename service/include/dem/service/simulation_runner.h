@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "dem/io/pacing.h"
 #include "dem/protocol/messages.h"
 #include "dem/service/active_run.h"
 #include "dem/service/background_load.h"
@@ -105,7 +106,7 @@ class SimulationRunner {
   protocol::Status status() const;
   void publish_status();
   void publish_telemetry();
-  void refresh_cache();  // the StateCache's get_state, as of now
+  void refresh_cache(bool always = false);  // the StateCache's get_state, as of now
   void write_checkpoint(std::size_t stage, std::uint64_t stage_cycles);
 
   const ServerOptions& options_;
@@ -126,6 +127,19 @@ class SimulationRunner {
   const ReceivedCommand* programme_command_ = nullptr;  // run_programme's, while it runs
   std::function<bool(std::uint64_t)> writer_alive_ = [](std::uint64_t) { return true; };
   bool owner_left_logged_ = false;
+  std::vector<std::string> awaiting_refresh_;  // clients whose commands the StateCache does not show yet
+  io::Pacing refresh_pacing_;
+  // get_state's readout of one state of the world: worked out once however
+  // many ask (get_state).
+  struct Readout {
+    std::uint64_t generation = 0;
+    std::uint64_t cycle = 0;
+    protocol::PlateForces plates;
+    protocol::ContactStats stats;
+    std::uint64_t hash = 0;
+  };
+  mutable std::optional<Readout> readout_;
+  std::uint64_t world_generation_ = 0;  // a new world, or one put back: another readout
   std::chrono::steady_clock::time_point last_poll_{};  // of the queue, during a programme
   std::vector<ReceivedCommand> unanswered_;  // taken from the queue after a shutdown request
   std::string message_ = "started";

@@ -19,12 +19,10 @@ class StateCache {
  public:
   // Engine thread: get_state's reply now (its `state` the status).
   void publish(protocol::Reply get_state);
-  // Nothing before the first publish, or after invalidate() until the next.
+  // Nothing before the first publish. A client whose command the cache
+  // does not show yet is kept from it by CommandQueue::pending: the engine
+  // thread marks such commands done only after its next publish.
   std::optional<protocol::Reply> get_state() const;
-  // Engine thread, before any reply: whatever the reply's command changed
-  // is not in the cache yet, and a client that saw the reply must not get
-  // an older state (the queued get_state is answered by the engine thread).
-  void invalidate();
 
   // Every reply sent counts one, from either thread.
   std::uint64_t count_reply() { return ++served_; }
