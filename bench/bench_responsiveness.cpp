@@ -16,6 +16,7 @@
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -24,6 +25,7 @@
 #include <cstdio>
 #include <deque>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -58,6 +60,19 @@ double rss_mib(pid_t pid) {
     if (line.rfind("VmRSS:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
   }
   return 0.0;
+}
+
+// The process's CPU time (user and system, all its threads), s.
+double cpu_seconds(pid_t pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string text((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
+  std::istringstream fields(text.substr(text.rfind(')') + 2));  // after "pid (comm) "
+  std::string field;
+  double ticks = 0.0;
+  for (int i = 3; i <= 15 && fields >> field; ++i) {
+    if (i == 14 || i == 15) ticks += std::stod(field);  // utime, stime
+  }
+  return ticks / static_cast<double>(sysconf(_SC_CLK_TCK));
 }
 
 dem::client::ConnectOptions connect_options() {
@@ -104,14 +119,22 @@ double percentile(std::vector<double> values, double p) {
   return values[std::min(values.size() - 1, static_cast<std::size_t>(p * static_cast<double>(values.size())))];
 }
 
-// Cycles per second over `seconds`, from the status a watcher sees.
-double engine_rate(dem::client::Client& watcher, std::chrono::seconds seconds) {
+// Cycles per second of wall time over `seconds`, from the status a watcher
+// sees, and per second of the server's CPU time: on a machine the load
+// generator shares, the first also counts the server waiting for a core.
+struct Rate {
+  double per_second = 0.0;
+  double per_cpu_second = 0.0;
+};
+Rate engine_rate(dem::client::Client& watcher, pid_t server, std::chrono::seconds seconds) {
   const auto first = watcher.get_state();
+  const double cpu = cpu_seconds(server);
   const auto start = Clock::now();
   std::this_thread::sleep_for(seconds);
   const auto last = watcher.get_state();
-  return static_cast<double>(last.state.cycle - first.state.cycle) /
-         std::chrono::duration<double>(Clock::now() - start).count();
+  const auto cycles = static_cast<double>(last.state.cycle - first.state.cycle);
+  return {cycles / std::chrono::duration<double>(Clock::now() - start).count(),
+          cycles / (cpu_seconds(server) - cpu)};
 }
 
 struct Results {
@@ -144,8 +167,9 @@ int main(int argc, char** argv) {
 
   dem::client::Client watcher(connect_options());
   std::printf("server pid %d; RSS %.1f MiB after loading\n", server, rss_mib(server));
-  const double quiet_rate = engine_rate(watcher, std::chrono::seconds(baseline));
-  std::printf("engine without commands: %.0f cycles/s\n", quiet_rate);
+  const Rate quiet = engine_rate(watcher, server, std::chrono::seconds(baseline));
+  std::printf("engine without commands: %.0f cycles/s, %.0f cycles per CPU second of the server\n",
+              quiet.per_second, quiet.per_cpu_second);
 
   Results results;
   std::atomic<bool> done{false};
@@ -236,17 +260,21 @@ int main(int argc, char** argv) {
     });
   }
   const auto load_start = Clock::now();
-  std::vector<double> rates;
+  std::vector<Rate> rates;
   for (int t = 10; t <= seconds; t += 10) {
-    rates.push_back(engine_rate(watcher, 10s));
-    std::printf("  %3d s: engine %.0f cycles/s, server RSS %.1f MiB\n", t, rates.back(), rss_mib(server));
+    rates.push_back(engine_rate(watcher, server, 10s));
+    std::printf("  %3d s: engine %.0f cycles/s (%.0f per CPU second), server RSS %.1f MiB\n", t,
+                rates.back().per_second, rates.back().per_cpu_second, rss_mib(server));
   }
   done = true;
   for (std::thread& thread : threads) thread.join();
   const double load_seconds = std::chrono::duration<double>(Clock::now() - load_start).count();
 
-  double loaded_rate = 0;
-  for (double r : rates) loaded_rate += r / static_cast<double>(rates.size());
+  Rate loaded;
+  for (const Rate& r : rates) {
+    loaded.per_second += r.per_second / static_cast<double>(rates.size());
+    loaded.per_cpu_second += r.per_cpu_second / static_cast<double>(rates.size());
+  }
   std::printf("load: %.0f s, %llu commands sent (%.0f/s), %llu answered (%llu busy, %llu errors), %llu without reply\n",
               load_seconds, static_cast<unsigned long long>(results.sent), static_cast<double>(results.sent) / load_seconds,
               static_cast<unsigned long long>(results.answered), static_cast<unsigned long long>(results.busy),
@@ -258,8 +286,12 @@ int main(int argc, char** argv) {
     std::printf("on the server, %-18s median %.3f ms, p99 %.3f ms, max %.3f ms (%zu)\n", kind.c_str(),
                 percentile(ms, 0.5), percentile(ms, 0.99), percentile(ms, 1.0), ms.size());
   }
-  std::printf("engine: %.0f cycles/s without commands, %.0f with (%.1f%% less)\n", quiet_rate, loaded_rate,
-              100.0 * (quiet_rate - loaded_rate) / quiet_rate);
+  std::printf("engine: %.0f cycles/s without commands, %.0f with (%.1f%% less)\n", quiet.per_second,
+              loaded.per_second, 100.0 * (quiet.per_second - loaded.per_second) / quiet.per_second);
+  std::printf("engine per CPU second of the server: %.0f without commands, %.0f with (%.1f%% less: the server's own "
+              "cost of the commands)\n",
+              quiet.per_cpu_second, loaded.per_cpu_second,
+              100.0 * (quiet.per_cpu_second - loaded.per_cpu_second) / quiet.per_cpu_second);
 
   owner.stop();
   owner.await(run, 30s);

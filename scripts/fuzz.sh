@@ -4,8 +4,9 @@
 # (default 60), one after the other, starting from the seed corpus and the
 # regression inputs in tests/fuzz; prints each target's executions, rate
 # and coverage. A crash, a sanitizer report, a leak or an input slower than
-# 10 s fails the run; the input is saved in build-fuzz/findings/ (copy it to
-# tests/fuzz/regressions/<target>/ with the fix: docs/FUZZING.md).
+# 10 s (DEM_FUZZ_TIMEOUT) fails the run; the input is saved in
+# build-fuzz/findings/ (copy it to tests/fuzz/regressions/<target>/ with the
+# fix: docs/FUZZING.md).
 #   scripts/fuzz.sh [SECONDS] [TARGET ...]     targets: case_text case_binary snapshot command
 # Part of scripts/test.sh (60 s each). New inputs the fuzzer finds
 # interesting stay in build-fuzz/corpus/<target>/ for the next run.
@@ -34,7 +35,8 @@ for target in "${targets[@]}"; do
   mkdir -p "$corpus"
   log="$build/fuzz_$target.log"
   set +e
-  "$build/tests/fuzz/fuzz_$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2560 -max_len=65536 \
+  "$build/tests/fuzz/fuzz_$target" -max_total_time="$seconds" -timeout="${DEM_FUZZ_TIMEOUT:-10}" -rss_limit_mb=2560 \
+    -max_len=65536 \
     -print_final_stats=1 -artifact_prefix="$build/findings/$target-" \
     "$corpus" "$root/tests/fuzz/corpus/$target" "$root/tests/fuzz/regressions/$target" >"$log" 2>&1
   code=$?

@@ -128,7 +128,7 @@ class SimulationRunner {
   std::function<bool(std::uint64_t)> writer_alive_ = [](std::uint64_t) { return true; };
   bool owner_left_logged_ = false;
   std::vector<std::string> awaiting_refresh_;  // clients whose commands the StateCache does not show yet
-  io::Pacing refresh_pacing_;
+  io::Pacing refresh_pacing_{40};  // at most 1/40 of the engine thread
   // get_state's readout of one state of the world: worked out once however
   // many ask (get_state).
   struct Readout {
