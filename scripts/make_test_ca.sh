@@ -2,7 +2,7 @@
 # Makes everything DDS Security needs for a test or a trial (docs/SECURITY.md):
 #   OUT/ca.pem, ca_key.pem               a CA, both identity and permissions CA
 #   OUT/<who>.pem, <who>_key.pem         an identity for each name given
-#   OUT/governance.xml(.p7s)             authentication, access control and
+#   OUT/governance_ca.xml(.p7s)          authentication, access control and
 #                                        encryption required on domains 0-230
 #   OUT/permissions_<who>.xml(.p7s)      <who> may publish and subscribe every topic
 #   OUT/cyclonedds-<who>.xml             the loopback configuration with
