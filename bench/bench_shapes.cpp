@@ -12,9 +12,14 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
 
 #include "dem/packing.h"
 #include "dem/world.h"
+#include "ellipsoid.h"
+#include "superquadric.h"
 
 namespace {
 
@@ -110,8 +115,90 @@ void Ellipsoids(benchmark::State& state) {
   measure(state, world);
 }
 
+// Contact detection alone, per contact: pairs of touching shapes (Table 1's
+// rectangles, section 3.3's rocks) at random orientations, each pair moved
+// and turned a little before every search, as a time step would, and the
+// search started from where the last one ended, as the force pass does.
+struct Jiggle {
+  std::mt19937_64 random{20021};
+  std::uniform_real_distribution<double> unit{-1.0, 1.0};
+  double operator()() { return unit(random); }
+};
+
+void SuperquadricContactSearch(benchmark::State& state) {
+  const Superquadric shape{0.195, 0.0976, 4.0};
+  Jiggle jiggle;
+  struct Pair {
+    PlacedSuperquadric i, j;
+    double alpha_i = 0.0, alpha_j = 0.0;
+    bool hinted = false;
+  };
+  std::vector<Pair> pairs(256);
+  for (Pair& p : pairs) {
+    p.i = {shape, Vec2::Zero(), 3.2 * jiggle()};
+    const double direction = 3.2 * jiggle();
+    p.j = {shape, 0.27 * Vec2(std::cos(direction), std::sin(direction)), 3.2 * jiggle()};
+  }
+  std::int64_t touching = 0;
+  for (auto _ : state) {
+    for (Pair& p : pairs) {
+      p.j.centre += 1e-5 * Vec2(jiggle(), jiggle());
+      p.j.angle += 1e-4 * jiggle();
+      const SuperquadricContact c = superquadric_contact(p.i, p.j, p.alpha_i, p.alpha_j, p.hinted);
+      p.alpha_i = c.alpha_i;
+      p.alpha_j = c.alpha_j;
+      p.hinted = true;
+      touching += c.overlap > 0.0;
+      benchmark::DoNotOptimize(c);
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pairs.size()));
+  state.counters["ns_per_contact"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * pairs.size()), benchmark::Counter::kIsRate |
+                                                                                    benchmark::Counter::kInvert);
+  state.counters["touching_fraction"] =
+      static_cast<double>(touching) / static_cast<double>(state.iterations() * pairs.size());
+}
+
+void EllipsoidContactSearch(benchmark::State& state) {
+  const Vec3 axes(0.371, 0.260, 0.182);
+  Jiggle jiggle;
+  struct Pair {
+    PlacedEllipsoid i, j;
+    double mu_i = 0.0, mu_j = 0.0;
+  };
+  auto turn = [&](double size) {
+    return Quaternion(Eigen::AngleAxisd(size, Vec3(jiggle(), jiggle(), jiggle()).normalized()));
+  };
+  std::vector<Pair> pairs(256);
+  for (Pair& p : pairs) {
+    p.i = {axes, Vec3::Zero(), turn(3.2)};
+    p.j = {axes, 0.45 * Vec3(jiggle(), jiggle(), jiggle()).normalized(), turn(3.2)};
+  }
+  std::int64_t touching = 0;
+  for (auto _ : state) {
+    for (Pair& p : pairs) {
+      p.j.centre += 1e-5 * Vec3(jiggle(), jiggle(), jiggle());
+      p.j.orientation = (turn(1e-4) * p.j.orientation).normalized();
+      const EllipsoidContact c = ellipsoid_contact(p.i, p.j, p.mu_i, p.mu_j);
+      p.mu_i = c.multiplier_i;
+      p.mu_j = c.multiplier_j;
+      touching += c.overlap > 0.0;
+      benchmark::DoNotOptimize(c);
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pairs.size()));
+  state.counters["ns_per_contact"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * pairs.size()), benchmark::Counter::kIsRate |
+                                                                                    benchmark::Counter::kInvert);
+  state.counters["touching_fraction"] =
+      static_cast<double>(touching) / static_cast<double>(state.iterations() * pairs.size());
+}
+
 }  // namespace
 
+BENCHMARK(SuperquadricContactSearch)->Unit(benchmark::kMicrosecond)->MinTime(1.0);
+BENCHMARK(EllipsoidContactSearch)->Unit(benchmark::kMicrosecond)->MinTime(1.0);
 BENCHMARK(Superquadrics)
     ->ArgNames({"particles", "shaped", "threads"})
     ->Args({2000, 0, 1})

@@ -6,10 +6,16 @@
 #include <mutex>
 
 #include "dem/dds/error.h"
+#include "loopback_config.h"
 
 namespace dem::dds {
 
-std::string default_config() { return "file://" DEM_DEFAULT_DDS_CONFIG; }
+std::string default_config() {
+  // An installed program has no repository to read the file from: it
+  // carries the file's text, which Cyclone takes in place of a URI.
+  if (std::filesystem::exists(DEM_DEFAULT_DDS_CONFIG)) return "file://" DEM_DEFAULT_DDS_CONFIG;
+  return std::string(kLoopbackConfig);
+}
 
 std::string resolve_config(std::string_view requested) {
   if (requested.empty()) {

@@ -1,5 +1,6 @@
 // Broad phase: a uniform cell grid finds every pair whose gap is below the
-// contact tolerance, in time linear in the number of particles.
+// contact tolerance, in time linear in the number of particles. The keys
+// come out in the contact table's order.
 #pragma once
 
 #include <vector>
@@ -11,15 +12,14 @@
 
 namespace dem {
 
-// Sorted (first < second) particle pairs with gap < tolerance, across
-// periodic boundaries through the nearest image.
+// Particle pairs with gap < tolerance, across periodic boundaries through
+// the nearest image, as pair-row keys (first: the lower id's slot), sorted.
 template <int Dim>
-std::vector<Candidate> find_pair_candidates(const Particles<Dim>& particles, const Periodic<Dim>& periodic,
-                                            double tolerance, int threads);
+std::vector<ContactKey> find_pair_keys(const Particles<Dim>& particles, const Periodic<Dim>& periodic,
+                                       double tolerance, int threads);
 
-// Sorted (particle, wall) pairs whose gap to the wall is < tolerance.
+// (particle slot, wall) pairs whose gap to the wall is < tolerance, sorted.
 template <int Dim>
-std::vector<Candidate> find_wall_candidates(const Particles<Dim>& particles, const Walls<Dim>& walls,
-                                            double tolerance);
+std::vector<ContactKey> find_wall_keys(const Particles<Dim>& particles, const Walls<Dim>& walls, double tolerance);
 
 }  // namespace dem

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "contact_history.h"
 #include "contact_params.h"
 #include "dem/error.h"
 #include "law_dispatch.h"
@@ -13,7 +14,8 @@ namespace dem {
 struct ContactDriver::State {
   ContactParams params;
   PairProperties pair{};
-  ContactState<2> contact;
+  ContactHistory<2> history;
+  ContactForces<2> forces;
   double overlap = 0.0;
 };
 
@@ -39,18 +41,22 @@ void ContactDriver::step(double approach, double tangential, double dt) {
   State& s = *state_;
   s.overlap += approach;
   if (s.overlap <= 0.0) {
-    s.contact = ContactState<2>{};
+    s.history = ContactHistory<2>{};
+    s.forces = ContactForces<2>{};
     return;
   }
   // e along +y from the first body to the second; t = e turned clockwise = +x.
   const ContactKinematics<2> k{s.overlap, approach / dt, tangential / dt, Vec2::UnitY()};
-  with_law(s.params.law, [&]<typename Law>() { Law::apply(s.contact, k, s.pair, s.params, dt); });
+  with_law(s.params.law, [&]<typename Law>() {
+    Law::advance(s.history, k, s.pair, s.params, dt);
+    s.forces = Law::forces(s.history, k, s.pair, s.params);
+  });
 }
 
 double ContactDriver::overlap() const { return state_->overlap; }
-double ContactDriver::normal_force() const { return state_->contact.normal_force; }
-double ContactDriver::tangential_force() const { return state_->contact.shear; }
-bool ContactDriver::sliding() const { return state_->contact.sliding; }
+double ContactDriver::normal_force() const { return state_->forces.normal; }
+double ContactDriver::tangential_force() const { return state_->forces.shear; }
+bool ContactDriver::sliding() const { return state_->history.sliding; }
 double ContactDriver::contact_radius() const {
   const State& s = *state_;
   const bool hertz = s.params.law == ContactLaw::kHertzMindlin || s.params.law == ContactLaw::kHertzLinearTangential;

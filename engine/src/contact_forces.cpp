@@ -1,209 +1,333 @@
 #include "contact_forces.h"
 
-#include "contact_geometry.h"
+#include <omp.h>
+
+#include <algorithm>
+
+#include "contact_batch.h"
+#include "contact_row.h"
 #include "law_dispatch.h"
-#include "parallel.h"
+#include "world_state.h"
 
 namespace dem {
 
 namespace {
 
-// Force on the first body from the spring and dashpot forces: F_n and F_s
-// act opposite to e_i and t_i (Cundall & Strack, Fig. 3).
+// What one block's wall rows add to each wall.
 template <int Dim>
-Vec<Dim> resolve_force(const ContactState<Dim>& s, const Vec<Dim>& e) {
-  return -(s.normal_force + s.normal_damping) * e - shear_vector(ShearForce<Dim>(s.shear + s.shear_damping), e);
-}
+struct WallSum {
+  Vec<Dim> force = Vec<Dim>::Zero();
+  Spin<Dim> moment = Space<Dim>::zero_spin();
+  double normal_force = 0.0;
+  int contacts = 0;
+  Eccentricity<Dim> normal_force_arm = zero_eccentricity<Dim>();
+};
 
-template <int Dim>
-ContactKinematics<Dim> kinematics(double overlap, const Vec<Dim>& relative, const Vec<Dim>& e) {
-  return {overlap, relative.dot(e), tangential_velocity(relative, e), e};  // eqs. 12-13
-}
-
-// The work of last cycle's contact forces, settled now. A force of cycle N
-// acts from N - 1/2 to N + 1/2 while the bodies move at the mean of the
-// relative velocity it was computed from and the next one, so
-// F_N . (v_(N-1/2) + v_(N+1/2)) / 2 dt is what the kinetic energy paid:
-// for the dashpots (eqs. 26-27) it is dissipated; for the tangential spring
-// it is stored, or lost to sliding.
-template <int Dim>
-void settle_contact_work(ContactState<Dim>& s, const Vec<Dim>& relative, double dt, ContactEnergy& energy) {
-  const Vec<Dim> mean = 0.5 * (s.relative_velocity + relative);
-  energy.damping -= s.dashpot_force.dot(mean) * dt;
-  energy.tangential_work += shear_vector(s.shear, s.normal).dot(mean) * dt;
-  s.dashpot_force.setZero();
-}
-
-// Records this cycle's dashpot force (on the first body) and the relative velocity it came from.
-template <int Dim>
-void remember_dashpot(ContactState<Dim>& s, const Vec<Dim>& e, const Vec<Dim>& relative) {
-  s.dashpot_force = -s.normal_damping * e - shear_vector(s.shear_damping, e);
-  s.relative_velocity = relative;
-}
-
-ContactEnergy total(const std::vector<ContactEnergy>& partials) {
-  ContactEnergy sum;
-  for (const ContactEnergy& p : partials) sum += p;
-  return sum;
-}
-
-// Relative velocity of the first body's contact point with respect to the
-// second's (Cundall & Strack eq. 11): round bodies in BALL's form, other
-// shapes through their lever arms.
-template <typename Shape, int Dim>
-Vec<Dim> contact_velocity(const Particles<Dim>& p, ParticleId x, const Vec<Dim>& second_velocity,
-                          const Spin<Dim>& second_spin, double second_radius, const ContactGeometry<Dim>& g) {
-  if constexpr (Shape::round) {
-    return relative_contact_velocity(p.velocity[x], p.angular_velocity[x], p.radius[x], second_velocity,
-                                     second_spin, second_radius, g.normal);
-  } else {
-    return (p.velocity[x] + cross(p.angular_velocity[x], g.arm_first)) -
-           (second_velocity + cross(second_spin, g.arm_second));
+// The pair rows of block b: shares added to the block's own particles, or
+// set aside for the other blocks' (contact_blocks.h).
+template <Pass kPass, bool kEnergy, typename Law, typename Shape, int Dim>
+void pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows, ContactBlocks<Dim>& blocks,
+                int b, ContactEnergy& energy) {
+  std::int32_t cross = blocks.cross_begin[b];
+  const std::int32_t cross_end = blocks.cross_begin[b + 1];
+  std::int32_t next_cross = cross < cross_end ? blocks.cross_row[cross] : -1;
+  for (std::int32_t r = blocks.pair_begin[b]; r < blocks.pair_begin[b + 1]; ++r) {
+    const RowResult<Dim> c = pair_row<kPass, kEnergy, Law, Shape, Dim>(in, rows, r, energy);
+    std::int32_t aside = -1;
+    if (r == next_cross) {
+      aside = blocks.cross_slot[cross++];
+      next_cross = cross < cross_end ? blocks.cross_row[cross] : -1;
+    }
+    if (!c.touching) {
+      if (aside >= 0) {
+        blocks.deferred_force[aside] = Vec<Dim>::Zero();
+        blocks.deferred_moment[aside] = Space<Dim>::zero_spin();
+      }
+      continue;
+    }
+    const Slot x = rows.first[r], y = rows.second[r];
+    p.force[x] += c.force;
+    p.moment[x] += c.moment_first;
+    if (aside >= 0) {
+      blocks.deferred_force[aside] = -c.force;
+      blocks.deferred_moment[aside] = c.moment_second;
+    } else {
+      p.force[y] -= c.force;
+      p.moment[y] += c.moment_second;
+    }
   }
 }
 
-// The contact's force on the first body and its moments on both: F_s R for
-// round bodies (Cundall & Strack, resultant moments), arm x F otherwise.
-template <typename Shape, int Dim>
-ContactForce<Dim> contact_force(const ContactState<Dim>& s, const ContactGeometry<Dim>& g, double r_first,
-                                double r_second) {
-  const Vec<Dim> force = resolve_force(s, g.normal);
-  if constexpr (Shape::round) {
-    const ShearForce<Dim> shear = s.shear + s.shear_damping;
-    return {force, shear_moment(shear, r_first, g.normal), shear_moment(shear, r_second, g.normal)};
-  } else {
-    return {force, cross(g.arm_first, force), cross(g.arm_second, Vec<Dim>(-force))};
+// The wall rows of block b, with each wall's share of them.
+template <Pass kPass, bool kEnergy, typename Law, typename Shape, int Dim>
+void wall_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows,
+                const ContactBlocks<Dim>& blocks, int b, ContactEnergy& energy, WallSum<Dim>* walls) {
+  for (std::int32_t r = blocks.wall_begin[b]; r < blocks.wall_begin[b + 1]; ++r) {
+    const RowResult<Dim> c = wall_row<kPass, kEnergy, Law, Shape, Dim>(in, rows, r, energy);
+    if (!c.touching) continue;
+    const Slot x = rows.first[r];
+    p.force[x] += c.force;
+    p.moment[x] += c.moment_first;
+    const WallId w = rows.second[r];
+    const WallDefT<Dim>& wall = in.walls.def[w];
+    WallSum<Dim>& sum = walls[w];
+    const Vec<Dim> on_wall = -c.force;
+    // Compressive normal force: the particle pushes the wall away from its particle side.
+    const double normal = -on_wall.dot(wall_normal(wall));
+    sum.force += on_wall;
+    sum.moment += cross(Vec<Dim>(c.geometry.point - wall.point), on_wall);
+    sum.normal_force += normal;
+    sum.normal_force_arm += normal * closest_point(wall, c.geometry.point).coordinates;
+    ++sum.contacts;
   }
-}
-
-template <int Dim, typename Law, typename Shape>
-ContactEnergy pair_pass(std::uint64_t cycle, const Particles<Dim>& particles, const Periodic<Dim>& periodic,
-                        std::vector<PairContact<Dim>>& pairs, std::vector<ContactForce<Dim>>& forces,
-                        const ContactParamTable& params, double dt, int threads) {
-  const auto n = static_cast<std::int64_t>(pairs.size());
-  return total(for_blocks<ContactEnergy>(n, threads, [&](std::int64_t begin, std::int64_t end, ContactEnergy& energy) {
-    for (std::int64_t c = begin; c < end; ++c) {
-      PairContact<Dim>& contact = pairs[c];
-      ContactState<Dim>& s = contact.state;
-      const ParticleId x = contact.first, y = contact.second;
-      const ContactGeometry<Dim> g = Shape::pair(particles, periodic, x, y, s);
-      const Vec<Dim> relative = contact_velocity<Shape>(particles, x, particles.velocity[y],
-                                                        particles.angular_velocity[y], particles.radius[y], g);
-      if (s.touching) settle_contact_work(s, relative, dt, energy);
-      if (g.overlap <= 0.0) {  // eq. 8
-        separate(s);
-        forces[c] = ContactForce<Dim>{};
-        continue;
-      }
-      if (s.touching) carry_shear(s.shear, g.normal);
-      if (!s.touching) s.formed_cycle = cycle;
-      const double mx = particles.mass[x], my = particles.mass[y];
-      const PairProperties pair{g.effective_radius, mx * my / (mx + my)};  // Randall 4.5-4.6
-      const ContactKinematics<Dim> k = kinematics(g.overlap, relative, g.normal);
-      Law::apply(s, k, pair, params(particles.material[x], particles.material[y]), dt);
-      remember_dashpot(s, g.normal, relative);
-      s.normal = g.normal;
-      s.point = g.point;
-      forces[c] = contact_force<Shape>(s, g, particles.radius[x], particles.radius[y]);
-    }
-  }));
-}
-
-template <int Dim, typename Law, typename Shape>
-ContactEnergy wall_pass(std::uint64_t cycle, const Particles<Dim>& particles, const Walls<Dim>& walls,
-                        std::vector<WallContact<Dim>>& contacts, std::vector<ContactForce<Dim>>& forces,
-                        const ContactParamTable& params, double dt, int threads) {
-  const auto n = static_cast<std::int64_t>(contacts.size());
-  return total(for_blocks<ContactEnergy>(n, threads, [&](std::int64_t begin, std::int64_t end, ContactEnergy& energy) {
-    for (std::int64_t c = begin; c < end; ++c) {
-      WallContact<Dim>& contact = contacts[c];
-      ContactState<Dim>& s = contact.state;
-      const ParticleId x = contact.particle;
-      const WallDefT<Dim>& wall = walls.def[contact.wall];
-      const ContactGeometry<Dim> g = Shape::wall(particles, wall, x);
-      // The wall's velocity at the contact point.
-      const Vec<Dim> wall_velocity = wall_point_velocity(wall, walls.last_velocity[contact.wall],
-                                                         walls.last_angular_velocity[contact.wall], g.point);
-      const Vec<Dim> relative =
-          contact_velocity<Shape>(particles, x, wall_velocity, Space<Dim>::zero_spin(), 0.0, g);
-      if (s.touching) settle_contact_work(s, relative, dt, energy);
-      if (g.overlap <= 0.0) {
-        separate(s);
-        forces[c] = ContactForce<Dim>{};
-        continue;
-      }
-      if (s.touching) carry_shear(s.shear, g.normal);
-      if (!s.touching) s.formed_cycle = cycle;
-      const PairProperties pair{g.effective_radius, particles.mass[x]};
-      const ContactKinematics<Dim> k = kinematics(g.overlap, relative, g.normal);
-      Law::apply(s, k, pair, params(particles.material[x], wall.material), dt);
-      remember_dashpot(s, g.normal, relative);
-      s.normal = g.normal;
-      s.point = g.point;
-      forces[c] = contact_force<Shape>(s, g, particles.radius[x], 0.0);
-      forces[c].moment_second = Space<Dim>::zero_spin();
-      // The wall's motion does work on the particle through this contact.
-      energy.wall_work += forces[c].force.dot(wall_velocity) * dt;
-    }
-  }));
 }
 
 // Calls pass.template operator()<Shape>() with the particles' shape policy.
-template <int Dim, typename Pass>
-void with_shape(ShapeKind shape, Pass&& pass) {
+template <int Dim, typename Run>
+void with_shape(ShapeKind shape, Run&& run) {
   if constexpr (Dim == 2) {
     if (shape == ShapeKind::kSuperquadric) {
-      pass.template operator()<SuperquadricShape>();
+      run.template operator()<SuperquadricShape>();
       return;
     }
   } else {
     if (shape == ShapeKind::kEllipsoid) {
-      pass.template operator()<EllipsoidShape>();
+      run.template operator()<EllipsoidShape>();
       return;
     }
   }
-  pass.template operator()<RoundShape>();
+  run.template operator()<RoundShape>();
+}
+
+template <typename Run>
+void with_energy(bool energy, Run&& run) {
+  if (energy) {
+    run.template operator()<true>();
+  } else {
+    run.template operator()<false>();
+  }
+}
+
+template <int Dim>
+using PairBlockFn = void (*)(const PassInputs<Dim>&, Particles<Dim>&, ContactRows<Dim>&, ContactBlocks<Dim>&, int,
+                             ContactEnergy&);
+template <int Dim>
+using WallBlockFn = void (*)(const PassInputs<Dim>&, Particles<Dim>&, ContactRows<Dim>&, const ContactBlocks<Dim>&,
+                             int, ContactEnergy&, WallSum<Dim>*);
+
+// The one parameter set every pair of bodies uses, if they all share one
+// (a single material): the rows then skip the table lookup.
+template <int Dim>
+const ContactParams* shared_params(const WorldState<Dim>& s) {
+  if (s.materials.size() != 1) return nullptr;
+  return &s.params(0, 0);
+}
+
+template <int Dim>
+PassInputs<Dim> inputs(const WorldState<Dim>& s) {
+  return {s.particles, s.walls, s.periodic, s.params, shared_params(s), s.time_step, s.cycle, near_margin(s)};
+}
+
+template <typename Law, int Dim>
+void batched_pair_rows(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows,
+                       ContactBlocks<Dim>& blocks, int b, ContactEnergy&) {
+  batched_pair_block<Law, Dim>(in, p, rows, blocks, b);
+}
+
+// Runs the chosen pass over every block, then adds the shares set aside,
+// then sums the walls' shares in block order.
+template <Pass kPass, int Dim>
+ContactEnergy run_pass(WorldState<Dim>& s) {
+  const PassInputs<Dim> in = inputs(s);
+  PairBlockFn<Dim> pair_fn = nullptr;
+  WallBlockFn<Dim> wall_fn = nullptr;
+  const bool energy = s.energy_budget && kPass == Pass::kAdvance;
+  with_energy(energy, [&]<bool kEnergy>() {
+    with_shape<Dim>(s.shape, [&]<typename Shape>() {
+      with_law(s.pair_law, [&]<typename Law>() {
+        pair_fn = &pair_block<kPass, kEnergy, Law, Shape, Dim>;
+        if constexpr (kPass == Pass::kAdvance && !kEnergy && kBatchableShape<Shape> && Law::kBatchable) {
+          if (in.shared_params) pair_fn = &batched_pair_rows<Law, Dim>;
+        }
+      });
+      with_law(s.wall_law, [&]<typename Law>() { wall_fn = &wall_block<kPass, kEnergy, Law, Shape, Dim>; });
+    });
+  });
+  ContactBlocks<Dim>& blocks = s.blocks;
+  Particles<Dim>& p = s.particles;
+  const int count = blocks.count();
+  const int walls = s.walls.size();
+  std::vector<WallSum<Dim>> wall_sums(static_cast<std::size_t>(count) * walls);
+  std::vector<ContactEnergy> energies(static_cast<std::size_t>(count));
+  const int threads = count > 1 ? s.threads : 1;
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  {
+#pragma omp for schedule(dynamic, 1)
+    for (int b = 0; b < count; ++b) {
+      for (Slot i = blocks.particle_begin[b]; i < blocks.particle_begin[b + 1]; ++i) {
+        p.force[i] = Vec<Dim>::Zero();
+        p.moment[i] = Space<Dim>::zero_spin();
+      }
+      pair_fn(in, p, s.contacts.pairs, blocks, b, energies[b]);
+      wall_fn(in, p, s.contacts.walls, blocks, b, energies[b], wall_sums.data() + static_cast<std::size_t>(b) * walls);
+    }
+#pragma omp for schedule(static)
+    for (int b = 0; b < count; ++b) {
+      for (std::int32_t k = blocks.deferred_begin[b]; k < blocks.deferred_begin[b + 1]; ++k) {
+        const Slot i = blocks.deferred_particle[k];
+        p.force[i] += blocks.deferred_force[k];
+        p.moment[i] += blocks.deferred_moment[k];
+      }
+    }
+  }
+  if (kPass == Pass::kAdvance && blocks.near_stale) {
+    blocks.near_stale = false;
+    s.near_slack = near_margin(s);
+    ++s.profile.near_sortings;
+    s.profile.near_rows = 0;
+    for (const std::int32_t kept : blocks.near_count) s.profile.near_rows += static_cast<std::uint64_t>(kept);
+  }
+  Walls<Dim>& w = s.walls;
+  std::fill(w.force.begin(), w.force.end(), Vec<Dim>::Zero());
+  std::fill(w.moment.begin(), w.moment.end(), Space<Dim>::zero_spin());
+  std::fill(w.normal_force.begin(), w.normal_force.end(), 0.0);
+  std::fill(w.contacts.begin(), w.contacts.end(), 0);
+  std::fill(w.normal_force_arm.begin(), w.normal_force_arm.end(), zero_eccentricity<Dim>());
+  ContactEnergy total;
+  for (int b = 0; b < count; ++b) {
+    total += energies[b];
+    for (int k = 0; k < walls; ++k) {
+      const WallSum<Dim>& sum = wall_sums[static_cast<std::size_t>(b) * walls + k];
+      w.force[k] += sum.force;
+      w.moment[k] += sum.moment;
+      w.normal_force[k] += sum.normal_force;
+      w.contacts[k] += sum.contacts;
+      w.normal_force_arm[k] += sum.normal_force_arm;
+    }
+  }
+  return total;
+}
+
+template <int Dim>
+ContactRecordT<Dim> to_record(const RowResult<Dim>& c, ParticleId first, std::uint64_t formed_cycle) {
+  ContactRecordT<Dim> record;
+  record.first = first;
+  record.point = c.geometry.point;
+  record.normal = c.geometry.normal;
+  record.overlap = c.geometry.overlap;
+  record.normal_force = c.forces.normal;
+  record.shear_force = reported_shear(c.forces.shear);
+  record.tangential_force = -shear_vector(c.forces.shear, c.geometry.normal);
+  record.normal_damping = c.forces.normal_damping;
+  record.shear_damping = reported_shear(c.forces.shear_damping);
+  record.sliding = c.sliding;
+  record.formed_cycle = formed_cycle;
+  return record;
+}
+
+// Calls visit(report) for every touching row as the last pass left it;
+// `only_pair_row` limits the visit to one pair row (a lookup).
+template <int Dim, typename Visit>
+void visit_rows(const WorldState<Dim>& s, std::optional<std::size_t> only_pair_row, Visit visit) {
+  const PassInputs<Dim> in = inputs(s);
+  ContactEnergy unused;
+  const Particles<Dim>& p = s.particles;
+  auto report = [&](bool wall, std::size_t r, const RowResult<Dim>& c, const ContactRows<Dim>& rows) {
+    RowReport<Dim> out{wall,    r,           to_record(c, p.id[rows.first[r]], rows.formed_cycle[r]),
+                       c.forces.shear_damping, c.force, c.moment_first, c.moment_second};
+    if (wall) {
+      out.record.second_wall = rows.second[r];
+    } else {
+      out.record.second_particle = p.id[rows.second[r]];
+    }
+    visit(out);
+  };
+  with_shape<Dim>(s.shape, [&]<typename Shape>() {
+    with_law(s.pair_law, [&]<typename Law>() {
+      const ContactRows<Dim>& rows = s.contacts.pairs;
+      const std::size_t begin = only_pair_row.value_or(0);
+      const std::size_t end = only_pair_row ? begin + 1 : rows.size();
+      for (std::size_t r = begin; r < end; ++r) {
+        if (!rows.touching(r)) continue;
+        const RowResult<Dim> c = pair_row<Pass::kEvaluate, false, Law, Shape, Dim>(in, rows, r, unused);
+        if (c.touching) report(false, r, c, rows);
+      }
+    });
+    if (only_pair_row) return;
+    with_law(s.wall_law, [&]<typename Law>() {
+      const ContactRows<Dim>& rows = s.contacts.walls;
+      for (std::size_t r = 0; r < rows.size(); ++r) {
+        if (!rows.touching(r)) continue;
+        const RowResult<Dim> c = wall_row<Pass::kEvaluate, false, Law, Shape, Dim>(in, rows, r, unused);
+        if (c.touching) report(true, r, c, rows);
+      }
+    });
+  });
 }
 
 }  // namespace
 
 template <int Dim>
-ContactEnergy compute_pair_forces(ContactLaw law, ShapeKind shape, std::uint64_t cycle,
-                                  const Particles<Dim>& particles, const Periodic<Dim>& periodic, std::vector<PairContact<Dim>>& pairs,
-                                  std::vector<ContactForce<Dim>>& forces, const ContactParamTable& params, double dt,
-                                  int threads) {
-  ContactEnergy energy;
-  with_law(law, [&]<typename Law>() {
-    with_shape<Dim>(shape, [&]<typename Shape>() {
-      energy = pair_pass<Dim, Law, Shape>(cycle, particles, periodic, pairs, forces, params, dt, threads);
-    });
-  });
-  return energy;
+ContactEnergy advance_contacts(WorldState<Dim>& state) {
+  return run_pass<Pass::kAdvance>(state);
 }
 
 template <int Dim>
-ContactEnergy compute_wall_forces(ContactLaw law, ShapeKind shape, std::uint64_t cycle,
-                                  const Particles<Dim>& particles, const Walls<Dim>& walls, std::vector<WallContact<Dim>>& contacts,
-                                  std::vector<ContactForce<Dim>>& forces, const ContactParamTable& params, double dt,
-                                  int threads) {
-  ContactEnergy energy;
-  with_law(law, [&]<typename Law>() {
-    with_shape<Dim>(shape, [&]<typename Shape>() {
-      energy = wall_pass<Dim, Law, Shape>(cycle, particles, walls, contacts, forces, params, dt, threads);
-    });
-  });
-  return energy;
+void evaluate_contacts(WorldState<Dim>& state) {
+  run_pass<Pass::kEvaluate>(state);
 }
 
-template ContactEnergy compute_pair_forces(ContactLaw, ShapeKind, std::uint64_t, const Particles<2>&, const Periodic<2>&,
-                                           std::vector<PairContact<2>>&,
-                                  std::vector<ContactForce<2>>&, const ContactParamTable&, double, int);
-template ContactEnergy compute_pair_forces(ContactLaw, ShapeKind, std::uint64_t, const Particles<3>&, const Periodic<3>&,
-                                           std::vector<PairContact<3>>&,
-                                  std::vector<ContactForce<3>>&, const ContactParamTable&, double, int);
-template ContactEnergy compute_wall_forces(ContactLaw, ShapeKind, std::uint64_t, const Particles<2>&, const Walls<2>&, std::vector<WallContact<2>>&,
-                                  std::vector<ContactForce<2>>&, const ContactParamTable&, double, int);
-template ContactEnergy compute_wall_forces(ContactLaw, ShapeKind, std::uint64_t, const Particles<3>&, const Walls<3>&, std::vector<WallContact<3>>&,
-                                  std::vector<ContactForce<3>>&, const ContactParamTable&, double, int);
+template <int Dim>
+void visit_touching_rows(const WorldState<Dim>& state, const std::function<void(const RowReport<Dim>&)>& visit) {
+  visit_rows(state, std::nullopt, visit);
+}
+
+template <int Dim>
+void visit_touching_contacts(const WorldState<Dim>& state,
+                             const std::function<void(const ContactRecordT<Dim>&)>& visit) {
+  visit_rows(state, std::nullopt, [&](const RowReport<Dim>& r) { visit(r.record); });
+}
+
+template <int Dim>
+std::vector<ContactRecordT<Dim>> report_contacts(const WorldState<Dim>& state) {
+  std::vector<ContactRecordT<Dim>> records;
+  std::size_t touching = 0;
+  for (const std::uint8_t f : state.contacts.pairs.flags) touching += (f & kTouching) != 0;
+  for (const std::uint8_t f : state.contacts.walls.flags) touching += (f & kTouching) != 0;
+  records.reserve(touching);
+  visit_rows(state, std::nullopt, [&](const RowReport<Dim>& r) { records.push_back(r.record); });
+  return records;
+}
+
+template <int Dim>
+std::optional<ContactRecordT<Dim>> report_pair_contact(const WorldState<Dim>& state, ParticleId a, ParticleId b) {
+  const Particles<Dim>& p = state.particles;
+  const auto n = static_cast<ParticleId>(p.size());
+  if (a < 0 || b < 0 || a >= n || b >= n || a == b) return std::nullopt;
+  // Rows are oriented from the lower id and sorted by slot.
+  const ContactKey key{p.slot[std::min(a, b)], p.slot[std::max(a, b)]};
+  const ContactRows<Dim>& rows = state.contacts.pairs;
+  const auto begin = std::lower_bound(rows.first.begin(), rows.first.end(), key.first) - rows.first.begin();
+  for (auto r = static_cast<std::size_t>(begin); r < rows.size() && rows.first[r] == key.first; ++r) {
+    if (rows.second[r] != key.second) continue;
+    std::optional<ContactRecordT<Dim>> found;
+    visit_rows(state, r, [&](const RowReport<Dim>& report) { found = report.record; });
+    return found;
+  }
+  return std::nullopt;
+}
+
+template ContactEnergy advance_contacts(WorldState<2>&);
+template ContactEnergy advance_contacts(WorldState<3>&);
+template void evaluate_contacts(WorldState<2>&);
+template void evaluate_contacts(WorldState<3>&);
+template void visit_touching_rows(const WorldState<2>&, const std::function<void(const RowReport<2>&)>&);
+template void visit_touching_rows(const WorldState<3>&, const std::function<void(const RowReport<3>&)>&);
+template void visit_touching_contacts(const WorldState<2>&, const std::function<void(const ContactRecordT<2>&)>&);
+template void visit_touching_contacts(const WorldState<3>&, const std::function<void(const ContactRecordT<3>&)>&);
+template std::vector<ContactRecordT<2>> report_contacts(const WorldState<2>&);
+template std::vector<ContactRecordT<3>> report_contacts(const WorldState<3>&);
+template std::optional<ContactRecordT<2>> report_pair_contact(const WorldState<2>&, ParticleId, ParticleId);
+template std::optional<ContactRecordT<3>> report_pair_contact(const WorldState<3>&, ParticleId, ParticleId);
 
 }  // namespace dem

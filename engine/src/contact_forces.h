@@ -1,16 +1,23 @@
-// The force-displacement pass over the contact table: every contact computes
-// its own force independently (in parallel); nothing is summed here. The
-// contact law is chosen once per pass, for all particle-particle contacts
-// and for all particle-wall contacts.
+// The force-displacement pass over the contact table (Cundall & Strack,
+// the force-displacement law) and the force sums it feeds (eqs. 20-21):
+// every row is brought up to the particles' current positions and
+// velocities and its forces are added into the particles' and walls' sums,
+// block by block (contact_blocks.h). The contact law and the particles'
+// shape are chosen once per pass, for all particle-particle rows and for all
+// particle-wall rows.
 #pragma once
 
-#include "contact_params.h"
-#include "contact_table.h"
-#include "particles.h"
-#include "periodic.h"
-#include "walls.h"
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "dem/measures.h"
+#include "dem/snapshot.h"
 
 namespace dem {
+
+template <int Dim>
+struct WorldState;
 
 // Energy flows of the contacts settled in one pass: the work the dashpots
 // took out, the work done on the tangential springs (what they do not give
@@ -27,16 +34,48 @@ struct ContactEnergy {
   }
 };
 
+// The force pass: advances every row's history over the step that brought
+// the particles where they are, and sets the force and moment sums of every
+// particle and wall. The energy flows are zero unless the world keeps an
+// energy budget.
 template <int Dim>
-ContactEnergy compute_pair_forces(ContactLaw law, ShapeKind shape, std::uint64_t cycle,
-                                  const Particles<Dim>& particles, const Periodic<Dim>& periodic,
-                                  std::vector<PairContact<Dim>>& pairs, std::vector<ContactForce<Dim>>& forces,
-                                  const ContactParamTable& params, double dt, int threads);
+ContactEnergy advance_contacts(WorldState<Dim>& state);
 
+// The same sums from the histories as they stand, without advancing them:
+// after an edit (particles removed, a wall placed) changed which contacts
+// act but not where the particles are.
 template <int Dim>
-ContactEnergy compute_wall_forces(ContactLaw law, ShapeKind shape, std::uint64_t cycle,
-                                  const Particles<Dim>& particles, const Walls<Dim>& walls,
-                         std::vector<WallContact<Dim>>& contacts, std::vector<ContactForce<Dim>>& forces,
-                         const ContactParamTable& params, double dt, int threads);
+void evaluate_contacts(WorldState<Dim>& state);
+
+// A touching row as the last pass left it: its record, and the force and
+// moments the pass applied (force on the first particle).
+template <int Dim>
+struct RowReport {
+  bool wall = false;  // a particle-wall row
+  std::size_t row = 0;
+  ContactRecordT<Dim> record;
+  ShearForce<Dim> shear_damping = zero_shear<Dim>();  // D_s as the law holds it (a vector in 3D)
+  Vec<Dim> force = Vec<Dim>::Zero();
+  Spin<Dim> moment_first = Space<Dim>::zero_spin();
+  Spin<Dim> moment_second = Space<Dim>::zero_spin();
+};
+
+// Calls visit(report) for every touching row: pair rows, then wall rows,
+// each in table order.
+template <int Dim>
+void visit_touching_rows(const WorldState<Dim>& state, const std::function<void(const RowReport<Dim>&)>& visit);
+
+// Calls visit(record) for every touching contact as the last pass left it.
+template <int Dim>
+void visit_touching_contacts(const WorldState<Dim>& state,
+                             const std::function<void(const ContactRecordT<Dim>&)>& visit);
+
+// Every touching contact as the last pass left it, by particle id.
+template <int Dim>
+std::vector<ContactRecordT<Dim>> report_contacts(const WorldState<Dim>& state);
+
+// The touching contact between two particles, if any.
+template <int Dim>
+std::optional<ContactRecordT<Dim>> report_pair_contact(const WorldState<Dim>& state, ParticleId a, ParticleId b);
 
 }  // namespace dem

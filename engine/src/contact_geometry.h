@@ -29,18 +29,39 @@ struct ContactGeometry {
 
 // Discs and spheres: the line of centres (eqs. 8-10). Their moments keep
 // BALL's form F_s R (tangential.h), so `round` tells the passes which.
+//
+// Most rows of a dense table are neighbours within the tolerance that do not
+// touch: their squared distance tells them apart without a root, and they
+// get no more geometry unless `kApartGeometry` asks for it (the energy
+// budget settles the work of a contact that has just separated).
 struct RoundShape {
   static constexpr bool round = true;
 
-  template <int Dim>
-  static ContactGeometry<Dim> pair(const Particles<Dim>& p, const Periodic<Dim>& periodic, ParticleId x, ParticleId y,
-                                   ContactState<Dim>&) {
-    ContactGeometry<Dim> g;
+  template <bool kApartGeometry, int Dim>
+  static ContactGeometry<Dim> pair(const Particles<Dim>& p, const Periodic<Dim>& periodic, Slot x, Slot y,
+                                   ContactSearch&) {
     const Vec<Dim> d = periodic.separation(p.position[x], p.position[y]);
-    const double distance = d.norm(), rx = p.radius[x], ry = p.radius[y];
-    g.overlap = distance > 0.0 ? rx + ry - distance : -1.0;  // eq. 8
-    g.normal = distance > 0.0 ? Vec<Dim>(d / distance) : Vec<Dim>::UnitX();  // eq. 9
-    g.point = p.position[x] + (rx - 0.5 * g.overlap) * g.normal;
+    const double rx = p.radius[x], ry = p.radius[y];
+    const double distance2 = d.squaredNorm();
+    if (!kApartGeometry && distance2 >= (rx + ry) * (rx + ry)) {
+      ContactGeometry<Dim> g;
+      g.overlap = -1.0;
+      return g;
+    }
+    return geometry(d, distance2, rx, ry, p.position[x]);
+  }
+
+  // From the separation d of the centres (first to second) and its square.
+  template <int Dim>
+  [[gnu::always_inline]] static ContactGeometry<Dim> geometry(const Vec<Dim>& d, double distance2, double rx, double ry,
+                                       const Vec<Dim>& first_centre) {
+    ContactGeometry<Dim> g;
+    const double distance = std::sqrt(distance2);
+    const bool apart = !(distance > 0.0);  // centres on each other: no normal, no contact
+    const double inverse = 1.0 / distance;
+    g.overlap = apart ? -1.0 : rx + ry - distance;  // eq. 8
+    for (int k = 0; k < Dim; ++k) g.normal[k] = apart ? (k == 0 ? 1.0 : 0.0) : d[k] * inverse;  // eq. 9
+    g.point = first_centre + (rx - 0.5 * g.overlap) * g.normal;
     g.arm_first = rx * g.normal;
     g.arm_second = -ry * g.normal;
     g.effective_radius = rx * ry / (rx + ry);  // Randall 4.5
@@ -48,7 +69,7 @@ struct RoundShape {
   }
 
   template <int Dim>
-  static ContactGeometry<Dim> wall(const Particles<Dim>& p, const WallDefT<Dim>& wall, ParticleId x) {
+  static ContactGeometry<Dim> wall(const Particles<Dim>& p, const WallDefT<Dim>& wall, Slot x) {
     ContactGeometry<Dim> g;
     const Vec<Dim>& centre = p.position[x];
     const double r = p.radius[x];
@@ -73,17 +94,16 @@ struct RoundShape {
 // contact and the iterative search is skipped; it then starts afresh when
 // they meet again, whatever came before.
 template <int Dim>
-bool bounding_circles_meet(const Particles<Dim>& p, ParticleId x, ParticleId y, const Vec<Dim>& d,
-                           ContactState<Dim>& state) {
+bool bounding_circles_meet(const Particles<Dim>& p, Slot x, Slot y, const Vec<Dim>& d, ContactSearch& search) {
   const double reach = p.radius[x] + p.radius[y];
   if (d.squaredNorm() < reach * reach) return true;
-  state.has_search = false;
+  search.valid = false;
   return false;
 }
 
 // No contact: the gap between the bounding circles, as a negative overlap.
 template <int Dim>
-ContactGeometry<Dim> apart(const Particles<Dim>& p, ParticleId x, ParticleId y, const Vec<Dim>& d) {
+ContactGeometry<Dim> apart(const Particles<Dim>& p, Slot x, Slot y, const Vec<Dim>& d) {
   ContactGeometry<Dim> g;
   g.overlap = p.radius[x] + p.radius[y] - d.norm();
   g.normal = d.normalized();
@@ -95,22 +115,21 @@ ContactGeometry<Dim> apart(const Particles<Dim>& p, ParticleId x, ParticleId y, 
 struct SuperquadricShape {
   static constexpr bool round = false;
 
-  static PlacedSuperquadric placed(const Particles<2>& p, ParticleId i, const Vec2& centre) {
+  static PlacedSuperquadric placed(const Particles<2>& p, Slot i, const Vec2& centre) {
     const ShapeDefT<2>& s = p.shape[i];
     return {{s.a, s.b, s.n}, centre, p.rotation[i]};
   }
 
-  static ContactGeometry<2> pair(const Particles<2>& p, const Periodic<2>& periodic, ParticleId x, ParticleId y,
-                                 ContactState<2>& state) {
+  template <bool>
+  static ContactGeometry<2> pair(const Particles<2>& p, const Periodic<2>& periodic, Slot x, Slot y,
+                                 ContactSearch& search) {
     const Vec2& cx = p.position[x];
     const Vec2 d = periodic.separation(cx, p.position[y]);
-    if (!bounding_circles_meet(p, x, y, d, state)) return apart(p, x, y, d);
+    if (!bounding_circles_meet(p, x, y, d, search)) return apart(p, x, y, d);
     const Vec2 cy = cx + d;  // the nearest image of y
-    const SuperquadricContact c = superquadric_contact(placed(p, x, cx), placed(p, y, cy), state.search_first,
-                                                       state.search_second, state.has_search);
-    state.search_first = c.alpha_i;
-    state.search_second = c.alpha_j;
-    state.has_search = true;
+    const SuperquadricContact c =
+        superquadric_contact(placed(p, x, cx), placed(p, y, cy), search.first, search.second, search.valid);
+    search = {c.alpha_i, c.alpha_j, true};
     ContactGeometry<2> g;
     g.overlap = c.overlap;
     g.normal = c.normal;
@@ -121,7 +140,7 @@ struct SuperquadricShape {
     return g;
   }
 
-  static ContactGeometry<2> wall(const Particles<2>& p, const WallDefT<2>& wall, ParticleId x) {
+  static ContactGeometry<2> wall(const Particles<2>& p, const WallDefT<2>& wall, Slot x) {
     ContactGeometry<2> g;
     const Vec2 towards_particles = wall_normal(wall);
     const SupportContact s = superquadric_line_contact(placed(p, x, p.position[x]), wall.point, -towards_particles);
@@ -142,22 +161,39 @@ struct SuperquadricShape {
 struct EllipsoidShape {
   static constexpr bool round = false;
 
-  static PlacedEllipsoid placed(const Particles<3>& p, ParticleId i, const Vec3& centre) {
+  static PlacedEllipsoid placed(const Particles<3>& p, Slot i, const Vec3& centre) {
     return {p.shape[i].axes, centre, p.rotation[i]};
   }
 
-  static ContactGeometry<3> pair(const Particles<3>& p, const Periodic<3>& periodic, ParticleId x, ParticleId y,
-                                 ContactState<3>& state) {
+  // How far the ellipsoid reaches from its centre along the unit vector u
+  // (or -u): |diag(a) R^T u|.
+  static double support(const Particles<3>& p, Slot i, const Vec3& u) {
+    return (p.shape[i].axes.cwiseProduct(p.rotation[i].conjugate() * u)).norm();
+  }
+
+  template <bool>
+  static ContactGeometry<3> pair(const Particles<3>& p, const Periodic<3>& periodic, Slot x, Slot y,
+                                 ContactSearch& search) {
     const Vec3& cx = p.position[x];
     const Vec3 d = periodic.separation(cx, p.position[y]);
-    if (!bounding_circles_meet(p, x, y, d, state)) return apart(p, x, y, d);
+    if (!bounding_circles_meet(p, x, y, d, search)) return apart(p, x, y, d);
+    // An elongated body's bounding sphere reaches far past it. How far each
+    // reaches along the line of centres (its support) tells most pairs
+    // whose spheres meet apart, for the price of two rotations: the plane
+    // across that line between the two supports separates them.
+    const double distance = d.norm();
+    const Vec3 u = d / distance;
+    const double reach = support(p, x, u) + support(p, y, u);
+    if (reach < distance) {
+      ContactGeometry<3> g;
+      g.overlap = reach - distance;
+      g.normal = u;
+      return g;
+    }
     const Vec3 cy = cx + d;  // the nearest image of y
-    const EllipsoidContact c = ellipsoid_contact(placed(p, x, cx), placed(p, y, cy),
-                                                 state.has_search ? state.search_first : 0.0,
-                                                 state.has_search ? state.search_second : 0.0);
-    state.search_first = c.multiplier_i;
-    state.search_second = c.multiplier_j;
-    state.has_search = true;
+    const EllipsoidContact c = ellipsoid_contact(placed(p, x, cx), placed(p, y, cy), search.valid ? search.first : 0.0,
+                                                 search.valid ? search.second : 0.0);
+    search = {c.multiplier_i, c.multiplier_j, true};
     ContactGeometry<3> g;
     g.overlap = c.overlap;
     g.normal = c.normal;
@@ -168,7 +204,7 @@ struct EllipsoidShape {
     return g;
   }
 
-  static ContactGeometry<3> wall(const Particles<3>& p, const WallDefT<3>& wall, ParticleId x) {
+  static ContactGeometry<3> wall(const Particles<3>& p, const WallDefT<3>& wall, Slot x) {
     if (!wall.triangles.empty()) return faces(p, wall, x);
     ContactGeometry<3> g;
     const Vec3 towards_particles = wall_normal(wall);
@@ -192,7 +228,7 @@ struct EllipsoidShape {
   // contact. A point on the edge two faces share has a zero coordinate (to
   // round-off) in both, so the edge counts as inside: with eq. 59's strict
   // > 0 a particle centred over the seam would touch neither face.
-  static ContactGeometry<3> faces(const Particles<3>& p, const WallDefT<3>& wall, ParticleId x) {
+  static ContactGeometry<3> faces(const Particles<3>& p, const WallDefT<3>& wall, Slot x) {
     constexpr double kOnTheEdge = 1e-12;  // triangular coordinates are area fractions
     ContactGeometry<3> g;
     g.overlap = -1.0;

@@ -53,7 +53,7 @@ ContactParamTable::ContactParamTable(const std::vector<MaterialDef>& materials,
     p.shear_modulus = g > 0.0 ? 1.0 / g : 0.0;
     p.damping_ratio = model.hertz.restitution ? damping_ratio_from_restitution(*model.hertz.restitution)
                                               : model.hertz.damping_ratio;
-    p.tangential_damping = model.hertz.tangential;
+    p.tangential_damping_ratio = model.hertz.tangential ? p.damping_ratio : 0.0;
     params_[a * count_ + b] = p;
     params_[b * count_ + a] = p;
   };

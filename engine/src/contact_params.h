@@ -24,7 +24,9 @@ struct ContactParams {
   double contact_modulus = 0.0;   // E* (Randall 3.6, 4.7)
   double shear_modulus = 0.0;     // G* (Randall 4.8-4.10)
   double damping_ratio = 0.0;     // beta, fraction of critical (Randall 4.13)
-  bool tangential_damping = false;
+  // The same fraction on the tangential stiffness (Randall 4.19), 0 when
+  // the model has no tangential dashpot.
+  double tangential_damping_ratio = 0.0;
 };
 
 // A square table indexed by (material_a, material_b), symmetric.

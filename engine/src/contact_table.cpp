@@ -1,109 +1,69 @@
 #include "contact_table.h"
 
-#include <cassert>
+#include <algorithm>
+#include <numeric>
 
 namespace dem {
 
-namespace {
+template <int Dim>
+void gather_rows(ContactRows<Dim>& rows, const std::vector<std::int32_t>& from, const std::vector<ContactKey>& keys) {
+  rows.for_each_column([&](auto& column) {
+    using T = typename std::decay_t<decltype(column)>::value_type;
+    std::vector<T> moved(from.size(), fresh<T>());
+    for (std::size_t k = 0; k < from.size(); ++k) {
+      if (from[k] >= 0) moved[k] = column[static_cast<std::size_t>(from[k])];
+    }
+    column.swap(moved);
+  });
+  // Fresh rows carry their keys.
+  for (std::size_t k = 0; k < from.size(); ++k) {
+    if (from[k] >= 0) continue;
+    rows.first[k] = keys[k].first;
+    rows.second[k] = keys[k].second;
+  }
+}
 
 template <int Dim>
-std::int32_t first_of(const PairContact<Dim>& c) { return c.first; }
-template <int Dim>
-std::int32_t second_of(const PairContact<Dim>& c) { return c.second; }
-template <int Dim>
-std::int32_t first_of(const WallContact<Dim>& c) { return c.particle; }
-template <int Dim>
-std::int32_t second_of(const WallContact<Dim>& c) { return c.wall; }
-
-template <typename Contact>
-inline constexpr bool kIsPair = false;
-template <int Dim>
-inline constexpr bool kIsPair<PairContact<Dim>> = true;
-
-// Merges the sorted new keys with the sorted old entries, keeping the history
-// of every key present in both: linear in the table size and deterministic.
-template <typename Contact>
-std::vector<Contact> merge(const std::vector<Contact>& old_entries, const std::vector<Candidate>& keys) {
-  std::vector<Contact> merged;
-  merged.reserve(keys.size());
+void merge_rows(ContactRows<Dim>& rows, const std::vector<ContactKey>& keys) {
+  std::vector<std::int32_t> from(keys.size(), -1);
   std::size_t o = 0;
-  auto before = [](const Contact& c, const Candidate& k) {
-    return first_of(c) < k.first || (first_of(c) == k.first && second_of(c) < k.second);
-  };
-  for (const Candidate& key : keys) {
-    while (o < old_entries.size() && before(old_entries[o], key)) ++o;
-    const bool kept = o < old_entries.size() && first_of(old_entries[o]) == key.first &&
-                      second_of(old_entries[o]) == key.second;
-    if (kept) {
-      merged.push_back(old_entries[o]);
-    } else {
-      Contact fresh{};
-      if constexpr (kIsPair<Contact>) {
-        fresh.first = key.first;
-        fresh.second = key.second;
-      } else {
-        fresh.particle = key.first;
-        fresh.wall = key.second;
-      }
-      merged.push_back(fresh);
+  const std::size_t old_size = rows.size();
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    while (o < old_size && ContactKey{rows.first[o], rows.second[o]} < keys[k]) ++o;
+    if (o < old_size && rows.first[o] == keys[k].first && rows.second[o] == keys[k].second) {
+      from[k] = static_cast<std::int32_t>(o);
     }
   }
-  return merged;
-}
-
-// CSR index from each contact's owners, in contact order, so that each
-// particle's entries come in a fixed order whatever the thread count.
-void build_index(const std::vector<std::int32_t>& first_owner, const std::vector<std::int32_t>* second_owner,
-                 int particle_count, std::vector<std::int32_t>& offsets, std::vector<std::int32_t>& entries) {
-  offsets.assign(particle_count + 1, 0);
-  for (std::int32_t p : first_owner) ++offsets[p + 1];
-  if (second_owner) {
-    for (std::int32_t p : *second_owner) ++offsets[p + 1];
-  }
-  for (int p = 0; p < particle_count; ++p) offsets[p + 1] += offsets[p];
-  entries.resize(offsets[particle_count]);
-  std::vector<std::int32_t> cursor(offsets.begin(), offsets.end() - 1);
-  for (std::size_t c = 0; c < first_owner.size(); ++c) {
-    const auto id = static_cast<std::int32_t>(c);
-    if (second_owner) {
-      entries[cursor[first_owner[c]]++] = 2 * id;
-      entries[cursor[(*second_owner)[c]]++] = 2 * id + 1;
-    } else {
-      entries[cursor[first_owner[c]]++] = id;
-    }
-  }
-}
-
-}  // namespace
-
-template <int Dim>
-void rebuild_contacts(ContactTable<Dim>& table, const std::vector<Candidate>& pair_candidates,
-                      const std::vector<Candidate>& wall_candidates, int particle_count) {
-  table.pairs = merge(table.pairs, pair_candidates);
-  table.walls = merge(table.walls, wall_candidates);
-  // Outputs of the next force pass; every entry is rewritten there.
-  table.pair_forces.assign(table.pairs.size(), ContactForce<Dim>{});
-  table.wall_forces.assign(table.walls.size(), ContactForce<Dim>{});
-  reindex_contacts(table, particle_count);
+  gather_rows(rows, from, keys);
 }
 
 template <int Dim>
-void reindex_contacts(ContactTable<Dim>& table, int particle_count) {
-  std::vector<std::int32_t> firsts(table.pairs.size()), seconds(table.pairs.size());
-  for (std::size_t c = 0; c < table.pairs.size(); ++c) {
-    assert(table.pairs[c].first < table.pairs[c].second);
-    firsts[c] = table.pairs[c].first;
-    seconds[c] = table.pairs[c].second;
+void rename_slots(ContactRows<Dim>& rows, const std::vector<Slot>& renamed, bool pairs) {
+  const std::size_t n = rows.size();
+  std::vector<ContactKey> keys(n);
+  std::vector<std::int32_t> order;
+  order.reserve(n);
+  for (std::size_t r = 0; r < n; ++r) {
+    const Slot first = renamed[static_cast<std::size_t>(rows.first[r])];
+    const std::int32_t second = pairs ? renamed[static_cast<std::size_t>(rows.second[r])] : rows.second[r];
+    keys[r] = {first, second};
+    if (first >= 0 && second >= 0) order.push_back(static_cast<std::int32_t>(r));
   }
-  build_index(firsts, &seconds, particle_count, table.index.pair_offsets, table.index.pair_entries);
-  std::vector<std::int32_t> owners(table.walls.size());
-  for (std::size_t c = 0; c < table.walls.size(); ++c) owners[c] = table.walls[c].particle;
-  build_index(owners, nullptr, particle_count, table.index.wall_offsets, table.index.wall_entries);
+  std::sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) { return keys[a] < keys[b]; });
+  std::vector<ContactKey> sorted(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = keys[static_cast<std::size_t>(order[k])];
+  gather_rows(rows, order, sorted);
+  for (std::size_t k = 0; k < sorted.size(); ++k) {
+    rows.first[k] = sorted[k].first;
+    rows.second[k] = sorted[k].second;
+  }
 }
 
-template void reindex_contacts(ContactTable<2>&, int);
-template void reindex_contacts(ContactTable<3>&, int);
-template void rebuild_contacts(ContactTable<2>&, const std::vector<Candidate>&, const std::vector<Candidate>&, int);
-template void rebuild_contacts(ContactTable<3>&, const std::vector<Candidate>&, const std::vector<Candidate>&, int);
+template void gather_rows(ContactRows<2>&, const std::vector<std::int32_t>&, const std::vector<ContactKey>&);
+template void gather_rows(ContactRows<3>&, const std::vector<std::int32_t>&, const std::vector<ContactKey>&);
+template void merge_rows(ContactRows<2>&, const std::vector<ContactKey>&);
+template void merge_rows(ContactRows<3>&, const std::vector<ContactKey>&);
+template void rename_slots(ContactRows<2>&, const std::vector<Slot>&, bool);
+template void rename_slots(ContactRows<3>&, const std::vector<Slot>&, bool);
 
 }  // namespace dem

@@ -1,105 +1,155 @@
 // The contact table: every pair closer than the tolerance (BALL's TOL), with
-// its history (the accumulated normal and shear forces of eq. 18) kept from
-// cycle to cycle while the pair stays close, and a per-particle index so the
-// force sums gather in a fixed order (bit-identical for any thread count).
+// its history (the accumulated forces of eq. 18) kept from cycle to cycle
+// while the pair stays close. Structure of arrays, one row per pair: the
+// force pass reads and writes only the key, the flags and the shear history
+// of a row, plus the columns its contact law needs; columns a world does not
+// need stay empty (ContactColumns). Particle-particle rows and particle-wall
+// rows are separate tables with the same columns.
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "dem/ids.h"
 #include "dem/snapshot.h"
-#include "mindlin.h"
+#include "particles.h"
 
 namespace dem {
 
-// State shared by particle-particle and particle-wall contacts.
+// Bits of a row's flags.
+inline constexpr std::uint8_t kTouching = 1;  // the bodies overlapped at the last force pass
+inline constexpr std::uint8_t kSliding = 2;   // the shear force stood at the Coulomb limit (eq. 19)
+
+// Mindlin-Deresiewicz history of a row (Hertz-Mindlin law only): Randall's
+// CDF, T*, T** and DD; in 3D the law works along a loading axis in the
+// tangent plane. theta, the stiffness factor of the last step, sizes the
+// optional tangential dashpot.
 template <int Dim>
-struct ContactState {
-  // history, carried across cycles (eq. 18)
-  double normal_force = 0.0;    // F_n, compressive positive
-  ShearForce<Dim> shear = zero_shear<Dim>();  // F_s: signed along t_i (2D) or a tangent-plane vector (3D)
-  bool touching = false;
-  // results of the last force pass
-  bool sliding = false;
-  double overlap = 0.0;
-  double normal_damping = 0.0;        // D_n (eq. 26)
-  ShearForce<Dim> shear_damping = zero_shear<Dim>();  // D_s (eq. 27)
-  Vec<Dim> normal = Vec<Dim>::Zero();  // e_i, from the particle towards the other body
-  Vec<Dim> point = Vec<Dim>::Zero();   // halfway through the overlap
-  // Mindlin-Deresiewicz history (Hertz-Mindlin law only); in 3D the law
-  // works along a loading axis in the tangent plane.
-  MindlinHistory mindlin;
-  Vec<Dim> mindlin_axis = Vec<Dim>::Zero();
-  // Energy bookkeeping: the dashpot force applied last cycle (on the first
-  // body) and the relative velocity it was computed from. Its work is only
-  // known once the next relative velocity is: it acts over the step the
-  // central differences centre on (see contact_forces.cpp).
-  Vec<Dim> dashpot_force = Vec<Dim>::Zero();
+struct MindlinRow {
+  MindlinHistory history;
+  Vec<Dim> axis = Vec<Dim>::Zero();
+  double theta = 1.0;
+};
+
+// Energy bookkeeping (energy budget only): the dashpot force and the
+// tangential spring force applied last cycle (on the first body) and the
+// relative velocity they were computed from. Their work is known once the
+// next relative velocity is (contact_forces.cpp).
+template <int Dim>
+struct DashpotWork {
+  Vec<Dim> force = Vec<Dim>::Zero();
+  Vec<Dim> tangential = Vec<Dim>::Zero();
   Vec<Dim> relative_velocity = Vec<Dim>::Zero();
-  // Superquadrics and ellipsoids: where last cycle's two contact searches
-  // ended (parametric angles, Miyata 2.3; Lagrange multipliers, 2.4), to
-  // start this cycle's near them.
-  double search_first = 0.0, search_second = 0.0;
-  bool has_search = false;
-  std::uint64_t formed_cycle = 0;  // the cycle the contact began touching
 };
 
-// What a contact exerts this cycle (springs + dashpots), zero when it does
-// not touch. Kept apart from the history rows: the force sums read only
-// these few bytes per contact, which keeps the gathers in cache.
-template <int Dim>
-struct ContactForce {
-  Vec<Dim> force = Vec<Dim>::Zero();  // on the first particle; the second gets -force
-  Spin<Dim> moment_first = Space<Dim>::zero_spin();
-  Spin<Dim> moment_second = Space<Dim>::zero_spin();  // pairs only
+// Superquadrics and ellipsoids: where last cycle's two contact searches
+// ended (parametric angles, Miyata 2.3; Lagrange multipliers, 2.4), to
+// start this cycle's near them.
+struct ContactSearch {
+  double first = 0.0, second = 0.0;
+  bool valid = false;
 };
 
-template <int Dim>
-struct PairContact {
-  ParticleId first;   // first < second
-  ParticleId second;
-  ContactState<Dim> state;
+// The optional columns a world keeps.
+struct ContactColumns {
+  bool normal_force = false;  // laws whose normal force is history (BALL's eq. 18) or whose dN matters (Mindlin)
+  bool mindlin = false;
+  bool search = false;        // shaped particles
+  bool dashpot = false;       // energy budget
 };
 
 template <int Dim>
-struct WallContact {
-  ParticleId particle;
-  WallId wall;
-  ContactState<Dim> state;
+struct ContactRows {
+  // The key. A pair row's `first` is the slot of the particle with the lower
+  // id and `second` the other's slot, so a row keeps its orientation (e_i
+  // from first to second) when particles are re-sorted; a wall row's
+  // `second` is the wall id. Rows are sorted by (first, second).
+  std::vector<Slot> first;
+  std::vector<std::int32_t> second;
+  // Hot: read and written at every force pass.
+  std::vector<std::uint8_t> flags;
+  std::vector<ShearForce<Dim>> shear;  // F_s: signed along t_i (2D) or a tangent-plane vector (3D)
+  // Optional, by law, shape and energy budget.
+  std::vector<double> normal_force;    // F_n as history, compressive positive
+  std::vector<MindlinRow<Dim>> mindlin;
+  std::vector<ContactSearch> search;
+  std::vector<DashpotWork<Dim>> dashpot;
+  // Cold: written when a contact forms.
+  std::vector<std::uint64_t> formed_cycle;
+
+  ContactColumns columns;
+
+  std::size_t size() const { return first.size(); }
+  bool touching(std::size_t r) const { return (flags[r] & kTouching) != 0; }
+  bool sliding(std::size_t r) const { return (flags[r] & kSliding) != 0; }
+
+  // Every column the table keeps, key included: visit(column).
+  template <typename Visit>
+  void for_each_column(Visit&& visit) {
+    visit(first);
+    visit(second);
+    visit(flags);
+    visit(shear);
+    if (columns.normal_force) visit(normal_force);
+    if (columns.mindlin) visit(mindlin);
+    if (columns.search) visit(search);
+    if (columns.dashpot) visit(dashpot);
+    visit(formed_cycle);
+  }
 };
 
-// A particle's view of its contacts: CSR offsets into an entry list.
-// Pair entries encode 2 * contact + side (side 0 = first, 1 = second).
-struct ContactIndex {
-  std::vector<std::int32_t> pair_offsets;
-  std::vector<std::int32_t> pair_entries;
-  std::vector<std::int32_t> wall_offsets;
-  std::vector<std::int32_t> wall_entries;
+// A value with every member zero: what a row that just entered the table holds.
+template <typename T>
+T fresh() {
+  if constexpr (std::is_base_of_v<Eigen::MatrixBase<T>, T>) {
+    return T::Zero();
+  } else {
+    return T{};
+  }
+}
+
+// The row a pair that stopped touching leaves behind: no force, no
+// history; a shaped pair keeps where its contact search ended.
+template <int Dim>
+void separate(ContactRows<Dim>& rows, std::size_t r) {
+  rows.flags[r] = 0;
+  rows.shear[r] = fresh<ShearForce<Dim>>();
+  if (rows.columns.normal_force) rows.normal_force[r] = 0.0;
+  if (rows.columns.mindlin) rows.mindlin[r] = MindlinRow<Dim>{};
+  if (rows.columns.dashpot) rows.dashpot[r] = DashpotWork<Dim>{};
+}
+
+// A row's key, for building and merging tables.
+struct ContactKey {
+  Slot first;
+  std::int32_t second;  // a slot (pairs) or a wall id
+  friend bool operator<(const ContactKey& a, const ContactKey& b) {
+    return a.first < b.first || (a.first == b.first && a.second < b.second);
+  }
+  friend bool operator==(const ContactKey& a, const ContactKey& b) = default;
 };
+
+// Rearranges the rows: new row k is old row from[k], or a fresh row with
+// key keys[k] where from[k] < 0.
+template <int Dim>
+void gather_rows(ContactRows<Dim>& rows, const std::vector<std::int32_t>& from, const std::vector<ContactKey>& keys);
+
+// Replaces the rows with the given keys (sorted), carrying over the history
+// of every key present in both: linear in the table size and deterministic.
+template <int Dim>
+void merge_rows(ContactRows<Dim>& rows, const std::vector<ContactKey>& keys);
+
+// Renames the particle slots of every key (new slot = renamed[old]; pair
+// rows swap nothing: their first is still the lower id) and sorts the rows
+// by their new keys. Rows naming a slot renamed to -1 are dropped.
+template <int Dim>
+void rename_slots(ContactRows<Dim>& rows, const std::vector<Slot>& renamed, bool pairs);
 
 template <int Dim>
 struct ContactTable {
-  std::vector<PairContact<Dim>> pairs;  // sorted by (first, second)
-  std::vector<WallContact<Dim>> walls;  // sorted by (particle, wall)
-  std::vector<ContactForce<Dim>> pair_forces;  // parallel to pairs
-  std::vector<ContactForce<Dim>> wall_forces;  // parallel to walls
-  ContactIndex index;
+  ContactRows<Dim> pairs;
+  ContactRows<Dim> walls;
 };
-
-struct Candidate {
-  ParticleId first;
-  std::int32_t second;  // a particle (pairs) or a wall
-};
-
-// Rebuilds the per-particle index after rows were dropped or renumbered.
-template <int Dim>
-void reindex_contacts(ContactTable<Dim>& table, int particle_count);
-
-// Replaces the table's entries with the new candidate lists (both sorted),
-// carrying over the history of every pair present in both.
-template <int Dim>
-void rebuild_contacts(ContactTable<Dim>& table, const std::vector<Candidate>& pair_candidates,
-                      const std::vector<Candidate>& wall_candidates, int particle_count);
 
 }  // namespace dem

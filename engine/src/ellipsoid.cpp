@@ -40,16 +40,28 @@ Deepest deepest_point(const Mat3& mi, const Vec3& ci, const Mat3& mj, const Vec3
   double lo = 0.0, hi = std::numeric_limits<double>::infinity();
   double mu = start > 0.0 ? start : 1.0;
   Vec3 x = Vec3::Zero();
+  const Vec3 mj_cj = mj * cj, mi_ci = mi * ci;
   for (int iteration = 0; iteration < 100; ++iteration) {
-    const Eigen::PartialPivLU<Mat3> lu(mj + mu * mi);
-    x = lu.solve(mj * cj + mu * mi * ci);
+    // M_j + mu M_i is symmetric positive definite: its closed-form 3x3
+    // inverse (cofactors) serves both solves of the step.
+    const Mat3 inverse = (mj + mu * mi).inverse();
+    x = inverse * (mj_cj + mu * mi_ci);
     const Vec3 d = x - ci;
-    const double g = d.dot(mi * d) - 1.0;
+    const Vec3 mi_d = mi * d;
+    const double g = d.dot(mi_d) - 1.0;
     (g > 0.0 ? lo : hi) = mu;
     if (std::abs(g) < 1e-13) break;
     // g'(mu) = 2 d^T M_i dx/dmu with dx/dmu = -(M_j + mu M_i)^-1 M_i d.
-    const double slope = -2.0 * d.dot(mi * lu.solve(mi * d));
+    const Vec3 dx_dmu = -(inverse * mi_d);
+    const double slope = 2.0 * mi_d.dot(dx_dmu);
     double next = slope < 0.0 ? mu - g / slope : -1.0;
+    // Close to the root one Newton step, applied to x to first order, leaves
+    // an error of order g^2 (below 1e-14 here): no further solve is needed.
+    if (std::abs(g) < 1e-7 && next > lo && next < hi) {
+      x += (next - mu) * dx_dmu;
+      mu = next;
+      break;
+    }
     if (!(next > lo && next < hi)) next = std::isfinite(hi) ? (lo > 0.0 ? std::sqrt(lo * hi) : 0.5 * hi) : 10.0 * mu;
     if (std::abs(next - mu) <= 1e-15 * mu) break;
     mu = next;
@@ -89,8 +101,32 @@ Eigen::Vector2d in_plane_eigenvalues(const Mat3& k, const Vec3& n) {
 // (Miyata eqs. 45-46), and R_e = (1/2)(AB)^(-1/2) = (k1 k2)^(-1/2). Miyata's
 // eq. 48 as printed, 1/sqrt(AB), is twice this: for two spheres it would
 // give 2 R* instead of Hertz's R*, so we follow Johnson.
-double equivalent_radius(const Eigen::Vector2d& k) {
-  return 1.0 / std::sqrt(std::max(k[0], 1e-300) * std::max(k[1], 1e-300));
+//
+// Only the product k1 k2 is needed: the determinant of the tensor
+// restricted to the plane normal to n, written in any orthonormal basis
+// (t1, t2) of that plane. No eigenvalue problem need be solved.
+//
+// On the plane the projector of the curvature tensor (curvature_tensor)
+// does nothing, so body b contributes 2 t^T M_b t' / |grad f_b| to the
+// restricted tensor: no 3x3 products are needed.
+struct TangentBasis {
+  Vec3 t1, t2;
+  explicit TangentBasis(const Vec3& n) {
+    const Vec3 helper = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+    t1 = n.cross(helper).normalized();
+    t2 = n.cross(t1);
+  }
+};
+
+// Body b's curvature restricted to the plane: (k11, k12, k22).
+Vec3 restricted_curvature(const Mat3& m, const Vec3& centre, const Vec3& point, const TangentBasis& t) {
+  const double scale = 2.0 / (2.0 * m * (point - centre)).norm();
+  const Vec3 m_t1 = m * t.t1, m_t2 = m * t.t2;
+  return scale * Vec3(t.t1.dot(m_t1), t.t1.dot(m_t2), t.t2.dot(m_t2));
+}
+
+double equivalent_radius(const Vec3& k) {
+  return 1.0 / std::sqrt(std::max(k.x() * k.z() - k.y() * k.y(), 1e-300));
 }
 
 }  // namespace
@@ -108,8 +144,9 @@ EllipsoidContact ellipsoid_contact(const PlacedEllipsoid& i, const PlacedEllipso
   c.normal = (ni - nj).normalized();
   c.overlap = (pi - pj).dot(c.normal);
   c.point = 0.5 * (pi + pj);
-  const Mat3 k = curvature_tensor(mi, i.centre, pi, c.normal) + curvature_tensor(mj, j.centre, pj, c.normal);
-  c.effective_radius = equivalent_radius(in_plane_eigenvalues(k, c.normal));
+  const TangentBasis plane(c.normal);
+  c.effective_radius = equivalent_radius(restricted_curvature(mi, i.centre, pi, plane) +
+                                         restricted_curvature(mj, j.centre, pj, plane));
   c.first_point = pi;
   c.second_point = pj;
   c.multiplier_i = di.multiplier;
@@ -127,8 +164,7 @@ EllipsoidFaceContact ellipsoid_plane_contact(const PlacedEllipsoid& body, const 
   c.support = body.centre + inverse * u / std::sqrt(u.dot(inverse * u));
   c.overlap = (on_plane - c.support).dot(towards);  // eq. 55
   c.projected = c.support + c.overlap * towards;    // eq. 56
-  const Mat3 k = curvature_tensor(m, body.centre, c.support, u);
-  c.effective_radius = equivalent_radius(in_plane_eigenvalues(k, u));
+  c.effective_radius = equivalent_radius(restricted_curvature(m, body.centre, c.support, TangentBasis(u)));
   return c;
 }
 

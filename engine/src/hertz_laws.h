@@ -6,9 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "contact_kinematics.h"
+#include "contact_history.h"
 #include "contact_params.h"
-#include "contact_table.h"
 #include "mindlin.h"
 #include "tangential.h"
 
@@ -17,100 +16,128 @@ namespace dem {
 // The normal part both Hertz laws share. Randall codes Hertz incrementally
 // (4.11-4.12), which drifts from the curve it integrates; we use the curve
 // itself, N = 4/3 E* (R* alpha^3)^(1/2) = 4/3 E* a alpha with a = (R* alpha)^(1/2)
-// (Randall 3.12-3.13; Miyata eq. 24), and its change over the step.
-struct HertzNormal {
-  double contact_radius;  // a
-  double force_change;    // dN
-  double stiffness;       // dN/d(alpha) = 2 E* a (Randall 3.15)
+// (Randall 3.12-3.13; Miyata eq. 24).
+struct HertzContact {
+  double contact_radius;  // a (3.12)
+  double normal_force;    // N (3.13)
 };
 
-template <int Dim>
-HertzNormal apply_hertz_normal(ContactState<Dim>& s, const ContactKinematics<Dim>& k, const PairProperties& pair,
-                               const ContactParams& p) {
-  const double previous = s.touching ? s.normal_force : 0.0;
-  const double a = std::sqrt(pair.effective_radius * k.overlap);  // (3.12)
-  s.normal_force = 4.0 / 3.0 * p.contact_modulus * a * k.overlap;  // (3.13)
-  s.overlap = k.overlap;
-  const double stiffness = 2.0 * p.contact_modulus * a;
-  // Damping as a fraction beta of critical (4.13): 2 beta sqrt(m* 2 E* a) n_dot.
-  s.normal_damping = 2.0 * p.damping_ratio * std::sqrt(pair.effective_mass * stiffness) * k.normal_velocity;
-  return {a, s.normal_force - previous, stiffness};
+DEM_INLINE HertzContact hertz_contact(double overlap, const PairProperties& pair, const ContactParams& p) {
+  const double a = std::sqrt(pair.effective_radius * overlap);
+  return {a, 4.0 / 3.0 * p.contact_modulus * a * overlap};
 }
 
-// Tangential dashpot on a tangential stiffness (Randall 4.19), off unless asked for.
+// A dashpot at a fraction beta of the critical damping of a stiffness
+// (Randall 4.13, 4.19): 2 beta sqrt(m* k) times the velocity.
+DEM_INLINE double dashpot_coefficient(const PairProperties& pair, double damping_ratio, double stiffness) {
+  return 2.0 * damping_ratio * std::sqrt(pair.effective_mass * stiffness);
+}
+
+// Normal dashpot on dN/d(alpha) = 2 E* a (Randall 3.15, 4.13); tangential
+// dashpot on a tangential stiffness (Randall 4.19), off unless asked for.
 template <int Dim>
-ShearForce<Dim> tangential_dashpot(const ContactState<Dim>& s, const ContactKinematics<Dim>& k,
-                                   const PairProperties& pair, const ContactParams& p, double stiffness) {
-  if (!p.tangential_damping || s.sliding) return zero_shear<Dim>();
-  return ShearForce<Dim>(2.0 * p.damping_ratio * std::sqrt(pair.effective_mass * stiffness) * k.shear_velocity);
+DEM_INLINE ContactForces<Dim> hertz_forces(const ContactHistory<Dim>& h, const ContactKinematics<Dim>& k,
+                                const PairProperties& pair, const ContactParams& p, const HertzContact& c,
+                                double tangential_stiffness) {
+  ContactForces<Dim> f;
+  f.normal = c.normal_force;
+  f.normal_damping =
+      dashpot_coefficient(pair, p.damping_ratio, 2.0 * p.contact_modulus * c.contact_radius) * k.normal_velocity;
+  f.shear = h.shear;
+  // No tangential dashpot while sliding: friction alone damps.
+  f.shear_damping = choose(h.sliding, zero_shear<Dim>(),
+                           ShearForce<Dim>(dashpot_coefficient(pair, p.tangential_damping_ratio, tangential_stiffness) *
+                                           k.shear_velocity));
+  return f;
 }
 
 struct HertzMindlinLaw {
+  static constexpr bool kNormalHistory = true;  // dN over the step
+  static constexpr bool kMindlin = true;
+  static constexpr bool kBatchable = false;  // the loading history branches per contact
+
   template <int Dim>
-  static void apply(ContactState<Dim>& s, const ContactKinematics<Dim>& k, const PairProperties& pair,
-                    const ContactParams& p, double dt) {
-    if (!s.touching) {
-      s.shear = zero_shear<Dim>();
-      s.mindlin = MindlinHistory{};
-      s.mindlin_axis = Vec<Dim>::Zero();
+  [[gnu::always_inline]] static void advance(ContactHistory<Dim>& h, const ContactKinematics<Dim>& k, const PairProperties& pair,
+                      const ContactParams& p, double dt) {
+    if (!h.touching) {
+      h.shear = zero_shear<Dim>();
+      h.normal_force = 0.0;
+      h.mindlin = MindlinRow<Dim>{};
     }
-    const HertzNormal n = apply_hertz_normal(s, k, pair, p);
-    s.touching = true;
+    const HertzContact c = hertz_contact(k.overlap, pair, p);
+    const double force_change = c.normal_force - h.normal_force;
+    h.normal_force = c.normal_force;
+    h.touching = true;
     const ShearForce<Dim> ds = k.shear_velocity * dt;
     const double mu = p.friction;
     double theta;
     if constexpr (Dim == 2) {
       // F_s along t_i is the law's signed T.
-      theta = mindlin_step(s.mindlin, s.shear, s.normal_force, n.force_change, n.contact_radius, ds, mu,
+      theta = mindlin_step(h.mindlin.history, h.shear, h.normal_force, force_change, c.contact_radius, ds, mu,
                            p.shear_modulus);
     } else {
       // In 3D the law runs along a loading axis in the tangent plane, set
       // by the first tangential displacement and turned with the contact;
       // displacement across the axis meets the current stiffness 8 G* a theta.
-      Vec3& axis = s.mindlin_axis;
+      Vec3& axis = h.mindlin.axis;
       axis -= axis.dot(k.normal) * k.normal;
       if (axis.squaredNorm() < 1e-24) {
         axis = ds.norm() > 0.0 ? Vec3(ds.normalized()) : Vec3::Zero();
       } else {
         axis.normalize();
       }
-      double along = s.shear.dot(axis);
-      const Vec3 across = s.shear - along * axis;
+      double along = h.shear.dot(axis);
+      const Vec3 across = h.shear - along * axis;
       const double ds_along = ds.dot(axis);
-      theta = mindlin_step(s.mindlin, along, s.normal_force, n.force_change, n.contact_radius, ds_along, mu,
+      theta = mindlin_step(h.mindlin.history, along, h.normal_force, force_change, c.contact_radius, ds_along, mu,
                            p.shear_modulus);
-      s.shear = along * axis + across + 8.0 * p.shear_modulus * n.contact_radius * theta * (ds - ds_along * axis);
+      h.shear = along * axis + across + 8.0 * p.shear_modulus * c.contact_radius * theta * (ds - ds_along * axis);
     }
-    const double limit = std::max(0.0, mu * s.normal_force + p.cohesion);
+    h.mindlin.theta = theta;
+    const double limit = std::max(0.0, mu * h.normal_force + p.cohesion);
     // With theta = 0 the law lands exactly on mu N: full slip (Randall 3.95), so
     // reaching the limit counts as sliding, not only passing it.
-    const double magnitude = shear_magnitude(s.shear);
-    s.sliding = magnitude > limit || (limit > 0.0 && magnitude >= limit * (1.0 - 1e-12));
-    if (s.sliding) {
-      clamp_shear(s.shear, limit);
+    const double magnitude = shear_magnitude(h.shear);
+    h.sliding = magnitude > limit || (limit > 0.0 && magnitude >= limit * (1.0 - 1e-12));
+    if (h.sliding) {
+      clamp_shear(h.shear, limit);
       if constexpr (Dim == 2) {
-        mindlin_slide(s.mindlin, s.shear);
+        mindlin_slide(h.mindlin.history, h.shear);
       } else {
-        if (limit > 0.0) s.mindlin_axis = s.shear.normalized();
-        mindlin_slide(s.mindlin, limit);
+        if (limit > 0.0) h.mindlin.axis = h.shear.normalized();
+        mindlin_slide(h.mindlin.history, limit);
       }
     }
-    s.shear_damping = tangential_dashpot(s, k, pair, p, 8.0 * p.shear_modulus * n.contact_radius * theta);
+  }
+
+  template <int Dim>
+  [[gnu::always_inline]] static ContactForces<Dim> forces(const ContactHistory<Dim>& h, const ContactKinematics<Dim>& k,
+                                   const PairProperties& pair, const ContactParams& p) {
+    const HertzContact c = hertz_contact(k.overlap, pair, p);
+    return hertz_forces(h, k, pair, p, c, 8.0 * p.shear_modulus * c.contact_radius * h.mindlin.theta);
   }
 };
 
 struct HertzLinearTangentialLaw {
+  static constexpr bool kNormalHistory = false;
+  static constexpr bool kMindlin = false;
+  static constexpr bool kBatchable = true;  // branch-free enough for contact_batch.h
+
   template <int Dim>
-  static void apply(ContactState<Dim>& s, const ContactKinematics<Dim>& k, const PairProperties& pair,
-                    const ContactParams& p, double dt) {
-    if (!s.touching) s.shear = zero_shear<Dim>();
-    const HertzNormal n = apply_hertz_normal(s, k, pair, p);
-    s.touching = true;
-    const double stiffness = 8.0 * p.shear_modulus * n.contact_radius;  // Miyata eq. 31
-    s.shear += stiffness * k.shear_velocity * dt;
-    const double limit = std::max(0.0, p.friction * s.normal_force + p.cohesion);
-    apply_coulomb_limit(s, limit);
-    s.shear_damping = tangential_dashpot(s, k, pair, p, stiffness);
+  [[gnu::always_inline]] static void advance(ContactHistory<Dim>& h, const ContactKinematics<Dim>& k, const PairProperties& pair,
+                      const ContactParams& p, double dt) {
+    const HertzContact c = hertz_contact(k.overlap, pair, p);
+    const double stiffness = 8.0 * p.shear_modulus * c.contact_radius;  // Miyata eq. 31
+    h.shear = choose(h.touching, h.shear, zero_shear<Dim>()) + stiffness * k.shear_velocity * dt;
+    h.touching = true;
+    apply_coulomb_limit(h, std::max(0.0, p.friction * c.normal_force + p.cohesion));
+  }
+
+  template <int Dim>
+  [[gnu::always_inline]] static ContactForces<Dim> forces(const ContactHistory<Dim>& h, const ContactKinematics<Dim>& k,
+                                   const PairProperties& pair, const ContactParams& p) {
+    const HertzContact c = hertz_contact(k.overlap, pair, p);
+    return hertz_forces(h, k, pair, p, c, 8.0 * p.shear_modulus * c.contact_radius);
   }
 };
 

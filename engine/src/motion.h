@@ -1,41 +1,43 @@
-// Force sums per particle and the law of motion (Cundall & Strack eqs.
-// 20-23a, with global damping eqs. 29-36 and the body force term).
+// The law of motion (Cundall & Strack eqs. 20-23a, with global damping eqs.
+// 29-36 and the body force term), applied to the force sums of the last
+// force pass.
 #pragma once
 
-#include "contact_table.h"
+#include "dem/definitions.h"
 #include "particles.h"
 #include "periodic.h"
-#include "walls.h"
 
 namespace dem {
-
-// Gathers each particle's contact forces and moments in the fixed order of
-// the contact index: no racing sums, the same bits for any thread count.
-template <int Dim>
-void sum_particle_forces(Particles<Dim>& particles, const ContactTable<Dim>& table, int threads);
-
-// Gathers the force each wall receives and the eccentricity sums, in contact order.
-template <int Dim>
-void sum_wall_forces(Walls<Dim>& walls, const std::vector<WallContact<Dim>>& contacts,
-                     const std::vector<ContactForce<Dim>>& forces);
 
 // What one integration step reports.
 struct MotionStep {
   double max_travel = 0.0;       // largest distance from the positions at the last contact-table rebuild
-  double gravity_work = 0.0;     // J
-  double global_damping = 0.0;   // J dissipated
-  double local_damping = 0.0;    // J dissipated
+  double max_speed = 0.0;        // largest particle speed over the step
+  double gravity_work = 0.0;     // J (energy budget only)
+  double global_damping = 0.0;   // J dissipated (energy budget only)
+  double local_damping = 0.0;    // J dissipated (energy budget only)
   double time_step_ratio = 0.0;  // dt over the smallest particle-wise critical step (Randall 4.35-4.40)
+};
+
+// What one integration step is asked for.
+template <int Dim>
+struct MotionInputs {
+  const Periodic<Dim>& periodic;
+  Vec<Dim> gravity;
+  const DampingDef& damping;
+  double dt;
+  int threads;
+  bool energy_budget;    // book gravity's work and the damping's losses
+  bool keep_force;       // remember each |sum F| for the next step's check
+  bool check_step;       // Randall's particle-wise check against the kept |sum F|
 };
 
 // Time-centred central differences (Cundall & Strack eqs. 35-36, then
 // 22a-23a) with the body force, global damping (eq. 34; Miyata eq. 32) and
-// local non-viscous damping (Miyata eq. 33).
-// Positions that leave a periodic cell enter it on the other side.
-// Ellipsoids (`tensor_rotation`) turn by Euler's equations with their inertia tensor.
+// local non-viscous damping (Miyata eq. 33). Positions that leave a
+// periodic cell enter it on the other side. Ellipsoids turn by Euler's
+// equations with their inertia tensor.
 template <int Dim>
-MotionStep integrate_motion(Particles<Dim>& particles, const std::vector<Vec<Dim>>& reference,
-                            const Periodic<Dim>& periodic, const Vec<Dim>& gravity, const DampingDef& damping,
-                            bool tensor_rotation, double dt, int threads);
+MotionStep integrate_motion(Particles<Dim>& particles, const MotionInputs<Dim>& inputs);
 
 }  // namespace dem

@@ -14,17 +14,32 @@ std::string number(double value) {
 }
 
 template <int Dim>
-std::optional<std::string> non_finite_particle(const BasicWorld<Dim>& world) {
+ParticleScan scan_particles(const BasicWorld<Dim>& world) {
   const ParticleViewT<Dim> p = world.particles();
+  ParticleScan scan;
+  const double dt = world.time_step();
   for (ParticleId i = 0; i < world.particle_count(); ++i) {
-    if (!p.position[i].allFinite()) return "particle " + std::to_string(i) + "'s position is not finite";
-    if (!p.velocity[i].allFinite()) return "particle " + std::to_string(i) + "'s velocity is not finite";
+    if (!p.position[i].allFinite()) {
+      scan.non_finite = "particle " + std::to_string(i) + "'s position is not finite";
+      return scan;
+    }
+    if (!p.velocity[i].allFinite()) {
+      scan.non_finite = "particle " + std::to_string(i) + "'s velocity is not finite";
+      return scan;
+    }
+    const double travel = p.velocity[i].norm() * dt / p.radius[i];
+    if (travel > scan.travel) {
+      scan.travel = travel;
+      scan.fastest = i;
+    }
   }
-  return std::nullopt;
+  return scan;
 }
 
 template <int Dim>
-std::optional<std::string> deepest_overlap(const BasicWorld<Dim>& world, double limit) {
+std::optional<std::string> deepest_overlap(const BasicWorld<Dim>& world, double depth, double limit) {
+  // The assembly measures found the depth; only a contact beyond the limit is looked for, to name it.
+  if (!(depth > limit)) return std::nullopt;
   const ParticleViewT<Dim> p = world.particles();
   double worst = 0.0;
   const ContactRecordT<Dim>* deepest = nullptr;
@@ -46,16 +61,16 @@ std::optional<std::string> deepest_overlap(const BasicWorld<Dim>& world, double 
          number(worst) + " of the smaller radius (the limit is " + number(limit) + ")";
 }
 
-template std::optional<std::string> non_finite_particle(const BasicWorld<2>&);
-template std::optional<std::string> non_finite_particle(const BasicWorld<3>&);
-template std::optional<std::string> deepest_overlap(const BasicWorld<2>&, double);
-template std::optional<std::string> deepest_overlap(const BasicWorld<3>&, double);
+template ParticleScan scan_particles(const BasicWorld<2>&);
+template ParticleScan scan_particles(const BasicWorld<3>&);
+template std::optional<std::string> deepest_overlap(const BasicWorld<2>&, double, double);
+template std::optional<std::string> deepest_overlap(const BasicWorld<3>&, double, double);
 
 }  // namespace health
 
 template <int Dim>
 HealthMonitorT<Dim>::HealthMonitorT(const BasicWorld<Dim>& world, HealthLimits limits) : limits_(limits) {
-  if (world.cycle_count() > 0) {
+  if (world.cycle_count() > 0 && world.energy_budget()) {
     const EnergyBudget e = world.assembly_measures().energy;
     created_at_start_ = health::created_energy(e);
     held_at_start_ = e.kinetic + e.strain;
@@ -79,8 +94,9 @@ StepHealth HealthMonitorT<Dim>::assess(const BasicWorld<Dim>& world) {
   const std::string at = "at cycle " + std::to_string(health.cycle) + ": ";
   const AssemblyMeasures measures = world.assembly_measures();
   std::optional<std::string> bad;
+  const health::ParticleScan particles = health::scan_particles(world);
   if (!std::isfinite(measures.kinetic_energy)) bad = "the kinetic energy is not finite";
-  if (!bad) bad = health::non_finite_particle(world);
+  if (!bad) bad = particles.non_finite;
   if (bad) {
     health.problem = HealthProblem::kNonFinite;
     health.message = at + *bad + ": the simulation blew up; reduce the time step (time_step.fraction) or check "
@@ -88,7 +104,10 @@ StepHealth HealthMonitorT<Dim>::assess(const BasicWorld<Dim>& world) {
     return health;
   }
   const EnergyBudget& e = measures.energy;
-  if (!referenced_ && health.cycle > 0) {
+  // A world without the energy budget books no work (gravity's, the
+  // walls', the dampers'): its residual would count every joule gravity
+  // puts in as created. Its blow-ups are caught by the other checks.
+  if (world.energy_budget() && !referenced_ && health.cycle > 0) {
     created_at_start_ = health::created_energy(e);
     held_at_start_ = e.kinetic + e.strain;
     referenced_ = true;
@@ -96,7 +115,7 @@ StepHealth HealthMonitorT<Dim>::assess(const BasicWorld<Dim>& world) {
   const double created = referenced_ ? health::created_energy(e) - created_at_start_ : 0.0;
   const double in_play = std::abs(e.initial_kinetic) + std::abs(e.gravity_work) + std::abs(e.wall_work) + held_at_start_;
   most_in_play_ = std::max(most_in_play_, in_play);
-  const bool beyond = created > round_off_ && created > limits_.max_energy_growth * most_in_play_;
+  const bool beyond = referenced_ && created > round_off_ && created > limits_.max_energy_growth * most_in_play_;
   if (!beyond) suspect_created_ = 0.0;
   if (beyond && suspect_created_ == 0.0) {
     suspect_created_ = created;
@@ -117,13 +136,28 @@ StepHealth HealthMonitorT<Dim>::assess(const BasicWorld<Dim>& world) {
                      " s, beyond which central differences are unstable: reduce the time step (time_step_fraction)";
     return health;
   }
-  if (const auto overlap = health::deepest_overlap(world, limits_.max_overlap_fraction)) {
+  if (particles.travel > limits_.max_step_travel) {
+    health.problem = HealthProblem::kRunaway;
+    health.message = at + "particle " + std::to_string(particles.fastest) + " moves " +
+                     health::number(particles.travel) + " of its radius in a step (the limit is " +
+                     health::number(limits_.max_step_travel) +
+                     "): the simulation blew up, or flung it out; reduce the time step (time_step.fraction) or check "
+                     "the stiffnesses and masses";
+    return health;
+  }
+  if (const auto overlap = health::deepest_overlap(world, measures.deepest_overlap, limits_.max_overlap_fraction)) {
     health.problem = HealthProblem::kOverlap;
     health.message = at + *overlap + ": the particles pass through each other; reduce the time step or the "
                                      "loading rate, or stiffen the contacts";
     return health;
   }
   return health;
+}
+
+template <int Dim>
+bool HealthMonitorT<Dim>::motion_suspect(const BasicWorld<Dim>& world) const {
+  const health::ParticleScan scan = health::scan_particles(world);
+  return scan.non_finite.has_value() || scan.travel > limits_.max_step_travel;
 }
 
 template class HealthMonitorT<2>;

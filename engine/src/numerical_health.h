@@ -9,13 +9,22 @@
 
 namespace dem::health {
 
-// The first particle whose position or velocity is not finite, as text.
+// One pass over the particles: the first whose position or velocity is
+// not finite, as text, and the one travelling farthest in a step relative
+// to its radius.
+struct ParticleScan {
+  std::optional<std::string> non_finite;
+  double travel = 0.0;  // |v| dt / r, the largest
+  ParticleId fastest = kInvalidId;
+};
 template <int Dim>
-std::optional<std::string> non_finite_particle(const BasicWorld<Dim>& world);
+ParticleScan scan_particles(const BasicWorld<Dim>& world);
 
-// The contact overlapping most, relative to its smaller radius, if beyond `limit`.
+// The contact overlapping most, relative to its smaller radius, if beyond
+// `limit`; `deepest` is AssemblyMeasures::deepest_overlap, so a healthy
+// world costs no pass over its contacts here.
 template <int Dim>
-std::optional<std::string> deepest_overlap(const BasicWorld<Dim>& world, double limit);
+std::optional<std::string> deepest_overlap(const BasicWorld<Dim>& world, double deepest, double limit);
 
 // Three significant digits, for messages.
 std::string number(double value);

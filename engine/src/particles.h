@@ -1,13 +1,18 @@
-// Particle state as structure-of-arrays, indexed by ParticleId. Hot data
-// (positions, velocities, force sums) in parallel arrays; no per-particle
-// objects. Written once over the dimension.
+// Particle state as structure-of-arrays. Arrays are indexed by a storage
+// slot, not by the particle's id: the engine keeps particles that are close
+// in space close in memory (particle_order.h), so a slot changes when the
+// particles are re-sorted while an id stays what the user gave. `id` and
+// `slot` translate. Hot data (what every contact reads, what the law of
+// motion writes) is apart from cold data (shapes, ids). Written once over
+// the dimension.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
-#include "dem/ids.h"
 #include "dem/definitions.h"
+#include "dem/ids.h"
 #include "dem/math.h"
 
 namespace dem {
@@ -16,33 +21,67 @@ namespace dem {
 // choose their geometry once, like the law.
 enum class ShapeKind { kRound, kSuperquadric, kEllipsoid };
 
+using Slot = std::int32_t;  // index into the particle arrays
+
 template <int Dim>
 struct Particles {
-  // dynamic state
+  // Read by every contact of the force pass.
   std::vector<Vec<Dim>> position;          // x_i at cycle N
   std::vector<Vec<Dim>> velocity;          // x_dot_i at N - 1/2 (time-centred, eq. 22)
   std::vector<Spin<Dim>> angular_velocity;  // at N - 1/2 (eq. 23)
-  std::vector<Orientation<Dim>> rotation;  // accumulated angle (2D) or unit quaternion (3D) (eq. 23a)
-  // per-cycle sums (eqs. 20-21): contact forces and damping forces, moments
+  std::vector<double> radius;              // bounding radius for shaped particles
+  std::vector<double> mass;
+  std::vector<MaterialId> material;
+  // Written by the force pass (eqs. 20-21): the sums of the contact forces and moments.
   std::vector<Vec<Dim>> force;
   std::vector<Spin<Dim>> moment;
-  // |sum F| of the previous cycle, for the particle-wise critical step (Randall 4.38)
-  std::vector<double> previous_force;
-  // constant properties
-  std::vector<double> radius;
-  std::vector<double> mass;
-  std::vector<double> inertia;  // about the centre (discs, spheres, superquadrics in the plane)
-  std::vector<MaterialId> material;
-  std::vector<ShapeDefT<Dim>> shape;  // superquadric or ellipsoid axes (the orientation lives in rotation)
-  std::vector<Vec3> principal_inertia;  // ellipsoids: about their own axes (inertia holds the smallest)
+  // Read and written by the law of motion only.
+  std::vector<double> inertia;             // about the centre; an ellipsoid's smallest principal moment
+  std::vector<Orientation<Dim>> rotation;  // accumulated angle (2D) or unit quaternion (3D) (eq. 23a)
+  std::vector<double> previous_force;      // |sum F| of the last cycle (Randall 4.38)
+  std::vector<Vec<Dim>> reference_position;  // where the particle was at the last contact-table rebuild
+  // Cold.
+  std::vector<ShapeDefT<Dim>> shape;       // superquadric or ellipsoid worlds only (empty otherwise)
+  std::vector<Vec3> principal_inertia;     // ellipsoid worlds only: about the body's own axes
+  std::vector<ParticleId> id;              // the particle in each slot
+
+  // The slot of each particle id (indexed by id, not by slot).
+  std::vector<Slot> slot;
 
   std::size_t size() const { return position.size(); }
+
+  // Every per-slot array, so that reordering and removing particles touch
+  // them all: visit(array) for each (empty optional arrays included).
+  template <typename Visit>
+  void for_each_slot_array(Visit&& visit) {
+    visit(position);
+    visit(velocity);
+    visit(angular_velocity);
+    visit(radius);
+    visit(mass);
+    visit(material);
+    visit(force);
+    visit(moment);
+    visit(inertia);
+    visit(rotation);
+    visit(previous_force);
+    visit(reference_position);
+    visit(shape);
+    visit(principal_inertia);
+    visit(id);
+  }
+
+  // Rebuilds `slot` from `id`.
+  void index_ids() {
+    slot.assign(id.size(), 0);
+    for (std::size_t k = 0; k < id.size(); ++k) slot[static_cast<std::size_t>(id[k])] = static_cast<Slot>(k);
+  }
 
   // omega^T I omega: with the scalar inertia for discs, spheres and
   // superquadrics, with the inertia tensor for ellipsoids.
   double spin_energy_product(std::size_t i, const Spin<Dim>& w) const {
     if constexpr (Dim == 3) {
-      if (shape[i].ellipsoid()) {
+      if (!principal_inertia.empty()) {
         const Vec3 body = rotation[i].conjugate() * w;
         return body.dot(principal_inertia[i].cwiseProduct(body));
       }
@@ -52,5 +91,15 @@ struct Particles {
     }
   }
 };
+
+// Reorders every per-slot array: new slot k holds what slot order[k] held.
+template <typename T>
+void gather(std::vector<T>& values, const std::vector<Slot>& order) {
+  if (values.empty()) return;
+  std::vector<T> moved;
+  moved.reserve(order.size());
+  for (Slot from : order) moved.push_back(values[static_cast<std::size_t>(from)]);
+  values.swap(moved);
+}
 
 }  // namespace dem

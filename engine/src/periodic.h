@@ -25,13 +25,34 @@ struct Periodic {
   bool repeats(int axis) const { return length[axis] > 0.0; }
   bool any() const { return (length.array() > 0.0).any(); }
 
-  // b - a through the nearest image.
+  // b - a through the nearest image. Positions lie inside the cell, so a
+  // difference is under one period and one shift finds the nearest image.
+  // (The branches are taken by the few pairs across the cell's edge only.)
   Vec<Dim> separation(const Vec<Dim>& a, const Vec<Dim>& b) const {
     Vec<Dim> d = b - a;
     for (int k = 0; k < Dim; ++k) {
-      if (length[k] > 0.0) d[k] -= length[k] * std::nearbyint(d[k] / length[k]);
+      if (length[k] <= 0.0) continue;
+      if (d[k] > 0.5 * length[k]) {
+        d[k] -= length[k];
+      } else if (d[k] < -0.5 * length[k]) {
+        d[k] += length[k];
+      }
     }
     return d;
+  }
+  // The image inside the cell of a position that was inside it one step
+  // ago: a particle moves far less than a period in one step.
+  void wrap_step(Vec<Dim>& x) const {
+    for (int k = 0; k < Dim; ++k) {
+      if (length[k] <= 0.0) continue;
+      if (x[k] < min[k]) {
+        x[k] += length[k];
+        if (x[k] < min[k] || x[k] >= min[k] + length[k]) wrap(x);  // it moved farther, or sits on the edge
+      } else if (x[k] >= min[k] + length[k]) {
+        x[k] -= length[k];
+        if (x[k] < min[k] || x[k] >= min[k] + length[k]) wrap(x);
+      }
+    }
   }
   // The image of x inside [min, min + length) along repeating axes.
   void wrap(Vec<Dim>& x) const {

@@ -89,6 +89,14 @@ StageResult run_stage(BasicWorld<Dim>& world, const StageDefT<Dim>& stage, std::
   if (stage.place_wall) place_on_sample(world, *stage.place_wall);
   for (const auto& [wall, motion] : stage.wall_motions) world.set_wall_motion(wall, motion);
   if (stage.damping) world.set_damping(*stage.damping);
+  if (stage.time_step) {
+    if (stage.time_step->fixed > 0.0) {
+      world.set_fixed_time_step(stage.time_step->fixed);
+    } else {
+      world.set_time_step_fraction(stage.time_step->fraction);
+    }
+  }
+  for (const auto& [material, friction] : stage.frictions) world.set_friction(material, friction);
 
   StageResult result;
   const bool conditional = has_condition(stage.until);

@@ -7,30 +7,34 @@
 #include <algorithm>
 #include <cmath>
 
-#include "contact_kinematics.h"
+#include "contact_history.h"
 #include "contact_params.h"
-#include "contact_table.h"
 #include "tangential.h"
 
 namespace dem {
 
 struct RestitutionLaw {
+  static constexpr bool kNormalHistory = false;  // F_n = k_n delta (eq. 13)
+  static constexpr bool kMindlin = false;
+  static constexpr bool kBatchable = true;  // branch-free enough for contact_batch.h
+
   template <int Dim>
-  static void apply(ContactState<Dim>& s, const ContactKinematics<Dim>& k, const PairProperties& pair,
+  [[gnu::always_inline]] static void advance(ContactHistory<Dim>& h, const ContactKinematics<Dim>& k, const PairProperties&,
                       const ContactParams& p, double dt) {
-    if (!s.touching) {
-      s.shear = zero_shear<Dim>();  // eq. 19: the shear force starts at zero
-      s.touching = true;
-    } else {
-      s.shear += p.shear_stiffness * k.shear_velocity * dt;  // eqs. 19-21
-    }
-    s.overlap = k.overlap;
-    s.normal_force = p.normal_stiffness * k.overlap;  // eq. 13
+    // eqs. 19-21; the shear force starts at zero (eq. 19).
+    h.shear = choose(h.touching, ShearForce<Dim>(h.shear + p.shear_stiffness * k.shear_velocity * dt),
+                     zero_shear<Dim>());
+    h.touching = true;
+    apply_coulomb_limit(h, std::max(0.0, p.friction * (p.normal_stiffness * k.overlap) + p.cohesion));  // eq. 22
+  }
+
+  template <int Dim>
+  [[gnu::always_inline]] static ContactForces<Dim> forces(const ContactHistory<Dim>& h, const ContactKinematics<Dim>& k,
+                                   const PairProperties& pair, const ContactParams& p) {
     // eq. 17 with the pair's effective mass (eq. 18).
-    s.normal_damping = p.restitution_viscosity * std::sqrt(pair.effective_mass) * k.normal_velocity;  // eq. 14
-    const double shear_limit = std::max(0.0, p.friction * s.normal_force + p.cohesion);  // eq. 22
-    apply_coulomb_limit(s, shear_limit);
-    s.shear_damping = zero_shear<Dim>();
+    return {p.normal_stiffness * k.overlap,                                             // eq. 13
+            p.restitution_viscosity * std::sqrt(pair.effective_mass) * k.normal_velocity,  // eq. 14
+            h.shear, zero_shear<Dim>()};
   }
 };
 

@@ -1,76 +1,70 @@
 #include <algorithm>
 #include <string>
 
+#include "contact_forces.h"
+#include "contact_history.h"
 #include "dem/error.h"
+#include "particle_order.h"
 #include "world_state.h"
 
 namespace dem {
 
 namespace {
 
+// A row's history, as the snapshot holds it.
 template <int Dim>
-ContactSnapshotT<Dim> save_contact(const ContactState<Dim>& s, const ContactForce<Dim>& f) {
+ContactSnapshotT<Dim> save_row(const ContactRows<Dim>& rows, std::size_t r, const Particles<Dim>& p, bool wall) {
   ContactSnapshotT<Dim> c;
-  c.normal_force = s.normal_force;
-  c.shear_force = s.shear;
-  c.sliding = s.sliding;
-  c.overlap = s.overlap;
-  c.normal_damping = s.normal_damping;
-  c.shear_damping = s.shear_damping;
-  c.normal = s.normal;
-  c.point = s.point;
-  c.force = f.force;
-  c.moment_first = f.moment_first;
-  c.moment_second = f.moment_second;
-  c.formed_cycle = s.formed_cycle;
-  c.touching = s.touching;
-  c.mindlin = s.mindlin;
-  c.mindlin_axis = s.mindlin_axis;
-  c.dashpot_force = s.dashpot_force;
-  c.relative_velocity = s.relative_velocity;
-  c.search_first = s.search_first;
-  c.search_second = s.search_second;
-  c.has_search = s.has_search;
+  c.first = p.id[rows.first[r]];
+  c.second = wall ? rows.second[r] : p.id[rows.second[r]];
+  c.with_wall = wall;
+  c.touching = rows.touching(r);
+  c.sliding = rows.sliding(r);
+  c.shear_force = rows.shear[r];
+  if (rows.columns.normal_force) c.normal_force = rows.normal_force[r];
+  if (rows.columns.mindlin) {
+    c.mindlin = rows.mindlin[r].history;
+    c.mindlin_axis = rows.mindlin[r].axis;
+    c.mindlin_theta = rows.mindlin[r].theta;
+  }
+  if (rows.columns.dashpot) {
+    c.dashpot_force = rows.dashpot[r].force;
+    c.tangential_spring = rows.dashpot[r].tangential;
+    c.relative_velocity = rows.dashpot[r].relative_velocity;
+  }
+  if (rows.columns.search) {
+    c.search_first = rows.search[r].first;
+    c.search_second = rows.search[r].second;
+    c.has_search = rows.search[r].valid;
+  }
+  c.formed_cycle = rows.formed_cycle[r];
   return c;
 }
 
 template <int Dim>
-void restore_contact(const ContactSnapshotT<Dim>& c, ContactState<Dim>& s, ContactForce<Dim>& f) {
-  s.normal_force = c.normal_force;
-  s.shear = c.shear_force;
-  s.touching = c.touching;
-  s.sliding = c.sliding;
-  s.overlap = c.overlap;
-  s.normal_damping = c.normal_damping;
-  s.shear_damping = c.shear_damping;
-  s.normal = c.normal;
-  s.point = c.point;
-  s.formed_cycle = c.formed_cycle;
-  s.mindlin = c.mindlin;
-  s.mindlin_axis = c.mindlin_axis;
-  s.dashpot_force = c.dashpot_force;
-  s.relative_velocity = c.relative_velocity;
-  s.search_first = c.search_first;
-  s.search_second = c.search_second;
-  s.has_search = c.has_search;
-  f = ContactForce<Dim>{c.force, c.moment_first, c.moment_second};
+void restore_row(const ContactSnapshotT<Dim>& c, ContactRows<Dim>& rows, std::size_t r) {
+  rows.flags[r] = static_cast<std::uint8_t>((c.touching ? kTouching : 0) | (c.sliding ? kSliding : 0));
+  rows.shear[r] = c.shear_force;
+  if (rows.columns.normal_force) rows.normal_force[r] = c.normal_force;
+  if (rows.columns.mindlin) rows.mindlin[r] = {c.mindlin, c.mindlin_axis, c.mindlin_theta};
+  if (rows.columns.dashpot) rows.dashpot[r] = {c.dashpot_force, c.tangential_spring, c.relative_velocity};
+  if (rows.columns.search) rows.search[r] = {c.search_first, c.search_second, c.has_search};
+  rows.formed_cycle[r] = c.formed_cycle;
 }
 
 void check(bool ok, const std::string& message) {
   if (!ok) throw DefinitionError("snapshot: " + message);
 }
 
-// The table row of a saved contact; every touching pair is within the
-// tolerance, so the broad phase has put it in the table.
-template <typename Contact, typename Key>
-std::size_t find_row(const std::vector<Contact>& rows, ParticleId first, std::int32_t second, Key key) {
-  const auto it = std::lower_bound(rows.begin(), rows.end(), std::pair{first, second},
-                                   [&](const Contact& c, const std::pair<ParticleId, std::int32_t>& k) {
-                                     return key(c) < k;
-                                   });
-  check(it != rows.end() && key(*it) == std::pair{first, second},
-        "contact (" + std::to_string(first) + ", " + std::to_string(second) + ") does not touch");
-  return static_cast<std::size_t>(it - rows.begin());
+// The row of a key in a sorted table.
+template <int Dim>
+std::size_t find_row(const ContactRows<Dim>& rows, const ContactKey& key, const std::string& what) {
+  const auto it = std::lower_bound(rows.first.begin(), rows.first.end(), key.first);
+  for (auto r = static_cast<std::size_t>(it - rows.first.begin()); r < rows.size() && rows.first[r] == key.first; ++r) {
+    if (rows.second[r] == key.second) return r;
+  }
+  check(false, "contact " + what + " does not touch");
+  return 0;
 }
 
 // The table's rows as saved, so the contact search and the next rebuild
@@ -79,7 +73,14 @@ std::size_t find_row(const std::vector<Contact>& rows, ParticleId first, std::in
 // which every touching contact must be in.
 template <int Dim>
 void restore_contact_table(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) {
-  const auto n = static_cast<ParticleId>(s.particles.size());
+  const Particles<Dim>& p = s.particles;
+  const auto n = static_cast<ParticleId>(p.size());
+  auto name = [](const ContactSnapshotT<Dim>& c) {
+    return "(" + std::to_string(c.first) + ", " + std::to_string(c.second) + ")";
+  };
+  auto key = [&](const ContactSnapshotT<Dim>& c) {
+    return ContactKey{p.slot[c.first], c.with_wall ? c.second : p.slot[c.second]};
+  };
   for (const ContactSnapshotT<Dim>& c : snap.contacts) {
     check(c.first >= 0 && c.first < n, "contact names particle " + std::to_string(c.first));
     if (c.with_wall) {
@@ -91,38 +92,46 @@ void restore_contact_table(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) 
   const bool saved_rows = !snap.reference_positions.empty();
   ContactTable<Dim>& t = s.contacts;
   if (saved_rows) {
-    check(snap.reference_positions.size() == s.particles.size(),
+    check(snap.reference_positions.size() == p.size(),
           "reference positions do not match the " + std::to_string(n) + " particles");
-    std::vector<Candidate> pairs, walls;
-    for (const ContactSnapshotT<Dim>& c : snap.contacts) (c.with_wall ? walls : pairs).push_back({c.first, c.second});
-    auto key = [](const Candidate& c) { return std::pair{c.first, c.second}; };
+    std::vector<ContactKey> pairs, walls;
+    for (const ContactSnapshotT<Dim>& c : snap.contacts) (c.with_wall ? walls : pairs).push_back(key(c));
     for (auto* keys : {&pairs, &walls}) {
-      std::sort(keys->begin(), keys->end(), [&](const Candidate& a, const Candidate& b) { return key(a) < key(b); });
-      for (std::size_t k = 1; k < keys->size(); ++k) {
-        check(key((*keys)[k]) != key((*keys)[k - 1]), "contact (" + std::to_string((*keys)[k].first) + ", " +
-                                                          std::to_string((*keys)[k].second) + ") appears twice");
-      }
+      std::sort(keys->begin(), keys->end());
+      const auto twice = std::adjacent_find(keys->begin(), keys->end());
+      check(twice == keys->end(), "a contact appears twice");
     }
-    rebuild_contacts(t, pairs, walls, static_cast<int>(n));
-    s.reference_positions = snap.reference_positions;
+    merge_rows(t.pairs, pairs);
+    merge_rows(t.walls, walls);
+    for (ParticleId id = 0; id < n; ++id) s.particles.reference_position[p.slot[id]] = snap.reference_positions[id];
     s.particle_travel = snap.particle_travel;
     s.wall_travel = snap.wall_travel;
     s.contacts_stale = snap.contacts_stale;
+    plan_blocks(s.blocks, t, p.size(), block_size(s));
   } else {
     find_contacts(s);
   }
   for (const ContactSnapshotT<Dim>& c : snap.contacts) {
     if (!saved_rows && !c.touching) continue;  // only history matters in a rebuilt table
-    if (c.with_wall) {
-      const std::size_t k =
-          find_row(t.walls, c.first, c.second, [](const WallContact<Dim>& w) { return std::pair{w.particle, w.wall}; });
-      restore_contact(c, t.walls[k].state, t.wall_forces[k]);
-    } else {
-      const std::size_t k =
-          find_row(t.pairs, c.first, c.second, [](const PairContact<Dim>& p) { return std::pair{p.first, p.second}; });
-      restore_contact(c, t.pairs[k].state, t.pair_forces[k]);
-    }
+    ContactRows<Dim>& rows = c.with_wall ? t.walls : t.pairs;
+    restore_row(c, rows, find_row(rows, key(c), name(c)));
   }
+}
+
+// Puts the particles in the saved storage order.
+template <int Dim>
+void restore_order(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) {
+  if (snap.particle_order.empty()) return;
+  const std::size_t n = s.particles.size();
+  check(snap.particle_order.size() == n, "particle order does not match the " + std::to_string(n) + " particles");
+  std::vector<bool> seen(n, false);
+  for (ParticleId id : snap.particle_order) {
+    check(id >= 0 && static_cast<std::size_t>(id) < n && !seen[id], "particle order is not a permutation of the ids");
+    seen[id] = true;
+  }
+  // The state was just built in id order: slot k takes particle order[k].
+  reorder_particles(s.particles, s.contacts, snap.particle_order);
+  s.sorted_cycle = snap.sorted_cycle;
 }
 
 }  // namespace
@@ -141,14 +150,26 @@ WorldSnapshotT<Dim> save_snapshot(const WorldState<Dim>& s) {
   def.threads = s.threads;
   def.fixed_time_step = s.fixed_time_step;
   def.time_step_fraction = s.time_step_fraction;
+  def.energy_budget = s.energy_budget;
   const Particles<Dim>& p = s.particles;
-  for (std::size_t i = 0; i < p.size(); ++i) {
+  const std::size_t n = p.size();
+  def.particles.reserve(n);
+  snap.rotation.reserve(n);
+  snap.force.reserve(n);
+  snap.moment.reserve(n);
+  snap.reference_positions.reserve(n);
+  for (std::size_t id = 0; id < n; ++id) {
+    const auto i = static_cast<std::size_t>(p.slot[id]);
     def.particles.push_back(ParticleDefT<Dim>{p.position[i], p.radius[i], p.material[i], p.velocity[i],
-                                              p.angular_velocity[i], p.shape[i]});
+                                              p.angular_velocity[i], p.shape.empty() ? ShapeDefT<Dim>{} : p.shape[i]});
+    snap.rotation.push_back(p.rotation[i]);
+    snap.force.push_back(p.force[i]);
+    snap.moment.push_back(p.moment[i]);
+    snap.reference_positions.push_back(p.reference_position[i]);
   }
-  snap.rotation = p.rotation;
-  snap.force = p.force;
-  snap.moment = p.moment;
+  snap.particle_order = p.id;
+  snap.sorted_cycle = s.sorted_cycle == kNeverSorted ? 0 : s.sorted_cycle;
+  if (s.sorted_cycle == kNeverSorted) snap.particle_order.clear();
   const Walls<Dim>& walls = s.walls;
   def.walls = walls.def;
   for (int w = 0; w < walls.size(); ++w) {
@@ -157,20 +178,23 @@ WorldSnapshotT<Dim> save_snapshot(const WorldState<Dim>& s) {
                                             walls.normal_force[w], walls.contacts[w], walls.normal_force_arm[w]});
   }
   const ContactTable<Dim>& t = s.contacts;
-  for (std::size_t k = 0; k < t.pairs.size(); ++k) {
-    ContactSnapshotT<Dim> c = save_contact(t.pairs[k].state, t.pair_forces[k]);
-    c.first = t.pairs[k].first;
-    c.second = t.pairs[k].second;
-    snap.contacts.push_back(c);
-  }
-  for (std::size_t k = 0; k < t.walls.size(); ++k) {
-    ContactSnapshotT<Dim> c = save_contact(t.walls[k].state, t.wall_forces[k]);
-    c.first = t.walls[k].particle;
-    c.second = t.walls[k].wall;
-    c.with_wall = true;
-    snap.contacts.push_back(c);
-  }
-  snap.reference_positions = s.reference_positions;
+  snap.contacts.reserve(t.pairs.size() + t.walls.size());
+  for (std::size_t r = 0; r < t.pairs.size(); ++r) snap.contacts.push_back(save_row(t.pairs, r, p, false));
+  for (std::size_t r = 0; r < t.walls.size(); ++r) snap.contacts.push_back(save_row(t.walls, r, p, true));
+  // What the last pass made of the touching rows, for readers.
+  visit_touching_rows<Dim>(s, [&](const RowReport<Dim>& report) {
+    ContactSnapshotT<Dim>& c = snap.contacts[report.wall ? t.pairs.size() + report.row : report.row];
+    const ContactRecordT<Dim>& record = report.record;
+    c.normal_force = record.normal_force;
+    c.overlap = record.overlap;
+    c.normal_damping = record.normal_damping;
+    c.shear_damping = report.shear_damping;
+    c.normal = record.normal;
+    c.point = record.point;
+    c.force = report.force;
+    c.moment_first = report.moment_first;
+    c.moment_second = report.moment_second;
+  });
   snap.particle_travel = s.particle_travel;
   snap.wall_travel = s.wall_travel;
   snap.contacts_stale = s.contacts_stale;
@@ -190,9 +214,14 @@ void restore_snapshot(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) {
         "per-particle arrays do not match the " + std::to_string(n) + " particles");
   check(snap.walls.size() == s.walls.def.size(), "per-wall records do not match the walls");
   check(snap.time_step > 0.0 && snap.critical_time_step > 0.0, "time step must be > 0");
-  s.particles.rotation = snap.rotation;
-  s.particles.force = snap.force;
-  s.particles.moment = snap.moment;
+  restore_order(s, snap);
+  Particles<Dim>& p = s.particles;
+  for (std::size_t id = 0; id < n; ++id) {
+    const auto i = static_cast<std::size_t>(p.slot[id]);
+    p.rotation[i] = snap.rotation[id];
+    p.force[i] = snap.force[id];
+    p.moment[i] = snap.moment[id];
+  }
   for (std::size_t w = 0; w < snap.walls.size(); ++w) {
     const WallSnapshotT<Dim>& ws = snap.walls[w];
     s.walls.initial_point[w] = ws.initial_point;
@@ -210,7 +239,6 @@ void restore_snapshot(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) {
   s.time = snap.time;
   s.time_step = snap.time_step;
   s.critical_time_step = snap.critical_time_step;
-
   restore_contact_table(s, snap);
 }
 

@@ -37,14 +37,21 @@ class Hasher {
   std::uint64_t hash_ = 14695981039346656037ULL;
 };
 
+// Every touching row's key (by particle id) and history.
 template <int Dim>
-void add_contact(Hasher& h, const ContactState<Dim>& s, const ContactForce<Dim>& f) {
-  h.add(s.normal_force);
-  h.add(s.shear);
-  h.add(f.force);
-  h.add(s.mindlin.t_star);
-  h.add(s.mindlin.t_star2);
-  h.add(s.mindlin.lag);
+void add_rows(Hasher& h, const ContactRows<Dim>& rows, const Particles<Dim>& p, bool wall) {
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    if (!rows.touching(r)) continue;
+    h.add(p.id[rows.first[r]]);
+    h.add(wall ? rows.second[r] : p.id[rows.second[r]]);
+    h.add(rows.shear[r]);
+    if (rows.columns.normal_force) h.add(rows.normal_force[r]);
+    if (rows.columns.mindlin) {
+      h.add(rows.mindlin[r].history.t_star);
+      h.add(rows.mindlin[r].history.t_star2);
+      h.add(rows.mindlin[r].history.lag);
+    }
+  }
 }
 
 }  // namespace
@@ -54,23 +61,17 @@ std::uint64_t hash_state(const WorldState<Dim>& s) {
   Hasher h;
   h.add(s.cycle);
   h.add(s.time);
-  h.add_all(s.particles.position);
-  h.add_all(s.particles.velocity);
-  h.add_all(s.particles.angular_velocity);
-  h.add_all(s.particles.rotation);
-  const ContactTable<Dim>& t = s.contacts;
-  for (std::size_t k = 0; k < t.pairs.size(); ++k) {
-    if (!t.pairs[k].state.touching) continue;
-    h.add(t.pairs[k].first);
-    h.add(t.pairs[k].second);
-    add_contact(h, t.pairs[k].state, t.pair_forces[k]);
+  const Particles<Dim>& p = s.particles;
+  // By id, so the hash names the physical state whatever the storage order.
+  for (const Slot i : p.slot) {
+    h.add(p.position[i]);
+    h.add(p.velocity[i]);
+    h.add(p.angular_velocity[i]);
+    h.add(p.rotation[i]);
+    h.add(p.force[i]);
   }
-  for (std::size_t k = 0; k < t.walls.size(); ++k) {
-    if (!t.walls[k].state.touching) continue;
-    h.add(t.walls[k].particle);
-    h.add(t.walls[k].wall);
-    add_contact(h, t.walls[k].state, t.wall_forces[k]);
-  }
+  add_rows(h, s.contacts.pairs, p, false);
+  add_rows(h, s.contacts.walls, p, true);
   for (const WallDefT<Dim>& w : s.walls.def) {
     h.add(w.point);
     h.add(w.direction);

@@ -16,8 +16,31 @@ Vec2 rotate(const Vec2& v, double angle) {
   return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
 }
 
-// |t|^p with the sign of t.
-double signed_power(double t, double p) { return std::copysign(std::pow(std::abs(t), p), t); }
+// A turn by a fixed angle, its cosine and sine taken once.
+struct Turn {
+  double c, s;
+  explicit Turn(double angle) : c(std::cos(angle)), s(std::sin(angle)) {}
+  Vec2 operator()(const Vec2& v) const { return {c * v.x() - s * v.y(), s * v.x() + c * v.y()}; }
+};
+
+// |t|^p with the sign of t. The exponents the shapes use most (2/n for
+// n = 4 and n = 2) have roots and products that cost far less than pow.
+double signed_power(double t, double p) {
+  if (p == 0.5) return std::copysign(std::sqrt(std::abs(t)), t);
+  if (p == 1.0) return t;
+  return std::copysign(std::pow(std::abs(t), p), t);
+}
+
+// t^n for t >= 0, by products when n is 0, 2 or 4.
+double power(double t, double n) {
+  if (n == 4.0) {
+    const double t2 = t * t;
+    return t2 * t2;
+  }
+  if (n == 2.0) return t * t;
+  if (n == 0.0) return 1.0;
+  return std::pow(t, n);
+}
 
 // Brent's minimisation (Brent 1973, the golden section with parabolic
 // steps) of f on [lo, hi], starting from x inside it.
@@ -67,15 +90,36 @@ double brent_minimise(F f, double lo, double hi, double x, double tolerance) {
   return x;
 }
 
-// The parametric angle of body i's boundary that minimises body j's
-// function (eqs. 36-37): a coarse scan (or the previous cycle's answer)
-// brackets the minimum, Brent's method refines it.
+// The boundary point in direction t from the centre, in the particle's
+// frame: p(t) = (a cos t, b sin t) / (|cos t|^n + |sin t|^n)^(1/n). It
+// traces the same boundary as eq. 35 but is smooth in t (eq. 35's
+// |cos|^(2/n) has an infinite slope where the long sides are flattest, the
+// likeliest place to touch), so Newton steps converge on it.
+Vec2 radial_point(const Superquadric& s, double t) {
+  const double c = std::cos(t), sn = std::sin(t);
+  const double w = power(std::abs(c), s.n) + power(std::abs(sn), s.n);
+  double scale;  // w^(-1/n)
+  if (s.n == 4.0) {
+    scale = 1.0 / std::sqrt(std::sqrt(w));
+  } else if (s.n == 2.0) {
+    scale = 1.0 / std::sqrt(w);
+  } else {
+    scale = std::pow(w, -1.0 / s.n);
+  }
+  return {s.a * c * scale, s.b * sn * scale};
+}
+
+// The boundary point of body i (by its radial parameter t) that minimises
+// body j's function (eqs. 36-37). From the last cycle's answer (or, without
+// one, the best of a coarse scan), Newton steps on central differences;
+// where they cannot be trusted (a curvature that is not positive, a step
+// that would leave the neighbourhood) Brent's method finishes the search.
 double minimise_potential(const PlacedSuperquadric& i, const PlacedSuperquadric& j, double hint, bool use_hint) {
   // j's frame: rotate by -(theta_j), about j's centre.
-  const double relative = i.angle - j.angle;
+  const Turn relative(i.angle - j.angle);
   const Vec2 offset = rotate(i.centre - j.centre, -j.angle);
-  auto potential = [&](double alpha) {
-    return superquadric_function(j.shape, rotate(superquadric_point(i.shape, alpha), relative) + offset);
+  auto potential = [&](double t) {
+    return superquadric_function(j.shape, relative(radial_point(i.shape, t)) + offset);
   };
   constexpr int kSamples = 24;
   constexpr double kStep = kTwoPi / kSamples;
@@ -88,14 +132,31 @@ double minimise_potential(const PlacedSuperquadric& i, const PlacedSuperquadric&
       if (value < best_value) best_value = value, best = k * kStep;
     }
   }
-  const double alpha = brent_minimise(potential, best - kStep, best + kStep, best, 1e-10);
-  return std::fmod(std::fmod(alpha, kTwoPi) + kTwoPi, kTwoPi);
+  // A step of 1e-5 keeps the differences' truncation (h^2) and round-off
+  // (1e-16 / h) near 1e-10 in t; a Newton step below it leaves an error of
+  // its square, so the search ends there. From the last cycle's answer one
+  // step usually suffices.
+  double t = best;
+  constexpr double kDifference = 1e-5;
+  bool converged = false;
+  for (int iteration = 0; iteration < 8 && !converged; ++iteration) {
+    const double h = kDifference;
+    const double f0 = potential(t), fp = potential(t + h), fm = potential(t - h);
+    const double slope = (fp - fm) / (2.0 * h), curvature = (fp - 2.0 * f0 + fm) / (h * h);
+    if (!(curvature > 0.0)) break;
+    const double step = -slope / curvature;
+    if (std::abs(step) > 0.5 * kStep) break;
+    t += step;
+    converged = std::abs(step) < kDifference;
+  }
+  if (!converged) t = brent_minimise(potential, best - kStep, best + kStep, best, 1e-10);
+  return std::fmod(std::fmod(t, kTwoPi) + kTwoPi, kTwoPi);
 }
 
 }  // namespace
 
 double superquadric_function(const Superquadric& s, const Vec2& p) {
-  return std::pow(std::abs(p.x()) / s.a, s.n) + std::pow(std::abs(p.y()) / s.b, s.n) - 1.0;
+  return power(std::abs(p.x()) / s.a, s.n) + power(std::abs(p.y()) / s.b, s.n) - 1.0;
 }
 
 Vec2 superquadric_point(const Superquadric& s, double alpha) {
@@ -107,10 +168,12 @@ Curvature superquadric_curvature(const Superquadric& s, const Vec2& p) {
   // Derivatives of f (eq. 34) at p; eq. 39 with them, eq. 40 for the normal.
   const double n = s.n;
   const double x = std::abs(p.x()), y = std::abs(p.y());
-  const double fx = std::copysign(n / s.a * std::pow(x / s.a, n - 1.0), p.x());
-  const double fy = std::copysign(n / s.b * std::pow(y / s.b, n - 1.0), p.y());
-  const double fxx = n * (n - 1.0) / (s.a * s.a) * std::pow(x / s.a, n - 2.0);
-  const double fyy = n * (n - 1.0) / (s.b * s.b) * std::pow(y / s.b, n - 2.0);
+  const double xa = x / s.a, yb = y / s.b;
+  const double xa2 = power(xa, n - 2.0), yb2 = power(yb, n - 2.0);  // n = 4: squares
+  const double fx = std::copysign(n / s.a * xa2 * xa, p.x());
+  const double fy = std::copysign(n / s.b * yb2 * yb, p.y());
+  const double fxx = n * (n - 1.0) / (s.a * s.a) * xa2;
+  const double fyy = n * (n - 1.0) / (s.b * s.b) * yb2;
   const double gradient = std::hypot(fx, fy);
   const double denominator = fxx * fy * fy + fyy * fx * fx;  // f_xy = 0 for eq. 34
   const double cap = 1e3 * std::max(s.a, s.b);
@@ -124,7 +187,7 @@ SuperquadricContact superquadric_contact(const PlacedSuperquadric& i, const Plac
   c.alpha_i = minimise_potential(i, j, alpha_i_hint, use_hints);
   c.alpha_j = minimise_potential(j, i, alpha_j_hint, use_hints);
   // Circles of curvature at P_i and P_j (eqs. 38-41), in the plane.
-  const Vec2 pi = superquadric_point(i.shape, c.alpha_i), pj = superquadric_point(j.shape, c.alpha_j);
+  const Vec2 pi = radial_point(i.shape, c.alpha_i), pj = radial_point(j.shape, c.alpha_j);
   const Curvature ki = superquadric_curvature(i.shape, pi), kj = superquadric_curvature(j.shape, pj);
   const Vec2 ci = i.centre + rotate(pi - ki.radius * ki.normal, i.angle);
   const Vec2 cj = j.centre + rotate(pj - kj.radius * kj.normal, j.angle);

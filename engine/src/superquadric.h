@@ -2,7 +2,9 @@
 //   f(x, y) = (|x|/a)^n + (|y|/b)^n - 1   (eq. 34), 1 < n <= 10,
 // with the boundary point P(alpha) = (a sgn(cos) |cos|^(2/n), b sgn(sin) |sin|^(2/n))
 // (eq. 35). Contact between bodies i and j: the point of i's boundary that
-// minimises j's function (Brent's method, eqs. 36-37) and the point of j's
+// minimises j's function (eqs. 36-37; Newton steps in a smooth
+// parametrisation of the same boundary, Brent's method where they cannot
+// be trusted) and the point of j's
 // boundary that minimises i's; their circles of curvature (eqs. 38-41) then
 // overlap by rho_i + rho_j - |C_j - C_i| along the line C_i -> C_j (eq. 42).
 #pragma once
@@ -45,9 +47,10 @@ struct Curvature {
 };
 Curvature superquadric_curvature(const Superquadric& s, const Vec2& local);
 
-// The contact of eq. 42 between two placed superquadrics. The parametric
-// angles that minimised the potentials are returned, and may be passed
-// back in (alpha_i, alpha_j) to start the next search near them.
+// The contact of eq. 42 between two placed superquadrics. Where the
+// searches ended (the boundary points' directions from the centres, in
+// each body's frame) is returned, and may be passed back in (alpha_i,
+// alpha_j) to start the next search near them.
 struct SuperquadricContact {
   double overlap;       // delta_n = rho_i + rho_j - d; > 0 in contact
   Vec2 normal;          // from C_i towards C_j

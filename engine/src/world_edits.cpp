@@ -1,8 +1,12 @@
 // Edits to a world between cycles: removing particles (trimming a sample)
-// and placing a wall (a loading plate on the sample's top).
+// and placing a wall (a loading plate on the sample's top). Both change
+// which contacts act, so the force sums are evaluated again from the
+// contacts' histories: between cycles the sums always belong to the
+// contacts as they stand.
 #include <algorithm>
 #include <string>
 
+#include "contact_forces.h"
 #include "dem/error.h"
 #include "dem/world.h"
 #include "walls.h"
@@ -12,20 +16,23 @@ namespace dem {
 
 namespace {
 
-// Keeps the entries of v whose flag is set, in order.
-template <typename T>
-void compact(std::vector<T>& v, const std::vector<bool>& keep) {
-  std::size_t out = 0;
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    if (keep[i]) v[out++] = std::move(v[i]);
-  }
-  v.resize(out);
-}
-
 template <int Dim>
 double held_energy(const WorldState<Dim>& s) {
   const EnergyBudget e = measure_assembly(s).energy;
   return e.kinetic + e.strain;
+}
+
+// Keeps the rows for which keep(row) holds, in order.
+template <int Dim, typename Keep>
+void keep_rows(ContactRows<Dim>& rows, Keep keep) {
+  std::vector<std::int32_t> from;
+  std::vector<ContactKey> keys;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    if (!keep(r)) continue;
+    from.push_back(static_cast<std::int32_t>(r));
+    keys.push_back({rows.first[r], rows.second[r]});
+  }
+  gather_rows(rows, from, keys);
 }
 
 }  // namespace
@@ -33,55 +40,44 @@ double held_energy(const WorldState<Dim>& s) {
 template <int Dim>
 void BasicWorld<Dim>::remove_particles(std::span<const ParticleId> ids) {
   WorldState<Dim>& s = *state_;
-  const auto n = static_cast<ParticleId>(s.particles.size());
-  std::vector<bool> keep(static_cast<std::size_t>(n), true);
+  Particles<Dim>& p = s.particles;
+  const auto n = static_cast<ParticleId>(p.size());
+  std::vector<bool> keep_id(static_cast<std::size_t>(n), true);
   for (ParticleId id : ids) {
     if (id < 0 || id >= n) throw DefinitionError("remove particles: no particle " + std::to_string(id));
-    keep[id] = false;
+    keep_id[id] = false;
   }
-  if (std::all_of(keep.begin(), keep.end(), [](bool k) { return k; })) return;
-  const double held_before = held_energy(s);
+  if (std::all_of(keep_id.begin(), keep_id.end(), [](bool k) { return k; })) return;
+  if (std::none_of(keep_id.begin(), keep_id.end(), [](bool k) { return k; })) {
+    throw DefinitionError("remove particles: cannot remove every particle");
+  }
+  const double held_before = s.energy_budget ? held_energy(s) : 0.0;
 
-  // New dense ids, in the old order.
-  std::vector<ParticleId> renumbered(static_cast<std::size_t>(n), kInvalidId);
+  // The kept particles get new dense ids in the old id order, and keep
+  // their storage order.
+  std::vector<ParticleId> new_id(static_cast<std::size_t>(n), kInvalidId);
   ParticleId next = 0;
-  for (ParticleId i = 0; i < n; ++i) {
-    if (keep[i]) renumbered[i] = next++;
+  for (ParticleId id = 0; id < n; ++id) {
+    if (keep_id[id]) new_id[id] = next++;
   }
-  Particles<Dim>& p = s.particles;
-  compact(p.position, keep);
-  compact(p.velocity, keep);
-  compact(p.angular_velocity, keep);
-  compact(p.rotation, keep);
-  compact(p.force, keep);
-  compact(p.moment, keep);
-  compact(p.previous_force, keep);
-  compact(p.radius, keep);
-  compact(p.mass, keep);
-  compact(p.inertia, keep);
-  compact(p.material, keep);
-  compact(p.shape, keep);
-  compact(p.principal_inertia, keep);
-  compact(s.reference_positions, keep);
+  std::vector<Slot> kept_slots, renamed(static_cast<std::size_t>(n), -1);
+  for (Slot i = 0; i < n; ++i) {
+    if (!keep_id[p.id[i]]) continue;
+    renamed[i] = static_cast<Slot>(kept_slots.size());
+    kept_slots.push_back(i);
+  }
+  p.for_each_slot_array([&](auto& values) { gather(values, kept_slots); });
+  for (ParticleId& id : p.id) id = new_id[id];
+  p.index_ids();
 
-  // Contacts between kept particles keep their history; the renumbering
-  // keeps the order, so the tables stay sorted.
-  ContactTable<Dim>& t = s.contacts;
-  std::vector<bool> keep_pair(t.pairs.size()), keep_wall(t.walls.size());
-  for (std::size_t k = 0; k < t.pairs.size(); ++k) keep_pair[k] = keep[t.pairs[k].first] && keep[t.pairs[k].second];
-  for (std::size_t k = 0; k < t.walls.size(); ++k) keep_wall[k] = keep[t.walls[k].particle];
-  compact(t.pairs, keep_pair);
-  compact(t.pair_forces, keep_pair);
-  compact(t.walls, keep_wall);
-  compact(t.wall_forces, keep_wall);
-  for (PairContact<Dim>& c : t.pairs) {
-    c.first = renumbered[c.first];
-    c.second = renumbered[c.second];
-  }
-  for (WallContact<Dim>& c : t.walls) c.particle = renumbered[c.particle];
-  reindex_contacts(t, next);
+  // Contacts between kept particles keep their history; a pair row's first
+  // particle still has the lower id.
+  rename_slots(s.contacts.pairs, renamed, true);
+  rename_slots(s.contacts.walls, renamed, false);
+  plan_blocks(s.blocks, s.contacts, p.size(), block_size(s));
+  evaluate_contacts(s);
   s.contacts_stale = true;
-  s.energy.removed += held_before - held_energy(s);
+  if (s.energy_budget) s.energy.removed += held_before - held_energy(s);
 }
 
 template <int Dim>
@@ -94,12 +90,10 @@ void BasicWorld<Dim>::place_wall(WallId id, const Vec<Dim>& point) {
   s.walls.last_velocity[id] = Vec<Dim>::Zero();
   s.walls.last_angular_velocity[id] = Space<Dim>::zero_spin();
   // Its contacts start afresh where it now stands.
-  ContactTable<Dim>& t = s.contacts;
-  std::vector<bool> keep(t.walls.size());
-  for (std::size_t k = 0; k < t.walls.size(); ++k) keep[k] = t.walls[k].wall != id;
-  compact(t.walls, keep);
-  compact(t.wall_forces, keep);
-  reindex_contacts(t, particle_count());
+  ContactRows<Dim>& rows = s.contacts.walls;
+  keep_rows(rows, [&](std::size_t r) { return rows.second[r] != id; });
+  plan_blocks(s.blocks, s.contacts, s.particles.size(), block_size(s));
+  evaluate_contacts(s);
   s.contacts_stale = true;
 }
 

@@ -191,6 +191,7 @@ class Converter {
     def.world.contact_tolerance = case_.numerics().contact_tolerance();
     check_contact_tolerance(def.world);
     def.world.threads = static_cast<int>(case_.numerics().threads());
+    def.world.energy_budget = case_.output().energy_budget();
     add_stages(def.stages);
     add_output(def.output, def.world.particles.size());
     return def;
@@ -433,6 +434,13 @@ class Converter {
         def.wall_motions.emplace_back(walls_.at(command.wall()), to_motion<Dim>(command.motion()));
       }
       if (stage.has_damping()) def.damping = to_damping(stage.damping());
+      if (stage.has_time_step()) {
+        const proto::TimeStep& step = stage.time_step();
+        def.time_step = step.fixed() > 0 ? TimeStepSetting{0.0, step.fixed()} : TimeStepSetting{step.fraction(), 0.0};
+      }
+      for (const proto::MaterialFriction& friction : stage.friction()) {
+        def.frictions.emplace_back(materials_.at(friction.material()), friction.friction());
+      }
       if (stage.has_trim()) def.trim = to_trim(stage.trim());
       if (stage.has_place_wall()) {
         def.place_wall = PlaceWallDef{walls_.at(stage.place_wall().wall()), stage.place_wall().clearance()};
@@ -448,6 +456,7 @@ class Converter {
   void add_output(OutputSettings& output, std::size_t particle_count) const {
     if (case_.output().interval() > 0) output.interval = case_.output().interval();
     output.contacts_file = !case_.output().no_contacts_file();
+    output.vtk_interval = case_.output().vtk_interval();
     if (case_.output().has_compression()) output.compression = to_compression(case_, walls_);
     std::vector<std::string> problems;
     for (int i = 0; i < case_.output().probe_size(); ++i) {

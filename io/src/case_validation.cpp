@@ -536,14 +536,20 @@ class CaseChecker {
     }
   }
 
-  void check_time_step() {
-    const double fraction = case_.time_step().fraction();
+  void check_time_step() { check_time_step("time_step", case_.time_step(), false); }
+
+  // A stage's time step replaces the case's: it must say what it is.
+  void check_time_step(const std::string& path, const proto::TimeStep& step, bool in_stage) {
+    const double fraction = step.fraction();
     // 0 means the default, 0.1.
-    if (problems_.finite("time_step.fraction", fraction) && fraction != 0 && !(fraction > 0 && fraction <= 1)) {
-      problems_.add("time_step.fraction",
+    if (problems_.finite(path + ".fraction", fraction) && fraction != 0 && !(fraction > 0 && fraction <= 1)) {
+      problems_.add(path + ".fraction",
                     "must be in (0, 1] (got " + format_number(fraction) + "); leave it out for the default 0.1");
     }
-    problems_.non_negative("time_step.fixed", case_.time_step().fixed());
+    problems_.non_negative(path + ".fixed", step.fixed());
+    if (in_stage && fraction == 0 && step.fixed() == 0) {
+      problems_.add(path, "set fraction (of the critical step) or fixed (s)");
+    }
   }
 
   void check_stages() {
@@ -581,6 +587,12 @@ class CaseChecker {
         problems_.non_negative(path + ".place_wall.clearance", stage.place_wall().clearance());
       }
       if (stage.has_damping()) check_damping(path + ".damping", stage.damping());
+      if (stage.has_time_step()) check_time_step(path + ".time_step", stage.time_step(), true);
+      for (int j = 0; j < stage.friction_size(); ++j) {
+        const std::string friction = indexed(path + ".friction", j);
+        find_material(problems_, materials_, friction + ".material", stage.friction(j).material());
+        problems_.non_negative(friction + ".friction", stage.friction(j).friction());
+      }
       if (stage.has_until()) {
         check_until(path, stage, std::ranges::count(servo, true) > 0);
       }

@@ -5,19 +5,20 @@
 namespace dem::io {
 namespace {
 
-constexpr const char* kWallsHeader2 = "cycle,time,wall,fx,fy,moment,normal_force,contacts,eccentricity,x,y,dx,dy";
+constexpr const char* kWallsHeader2 =
+    "cycle,time,wall,fx,fy,moment,normal_force,contacts,eccentricity,x,y,dx,dy,normal_stress,settlement";
 constexpr const char* kWallsHeader3 =
     "cycle,time,wall,fx,fy,fz,moment_x,moment_y,moment_z,normal_force,contacts,eccentricity_u,eccentricity_v,"
-    "x,y,z,dx,dy,dz";
+    "x,y,z,dx,dy,dz,normal_stress,settlement";
 constexpr const char* kContactsHeader2 =
     "first,second_kind,second,x,y,nx,ny,overlap,normal_force,shear_force,normal_damping,shear_damping,sliding";
 constexpr const char* kContactsHeader3 =
     "first,second_kind,second,x,y,z,nx,ny,nz,overlap,normal_force,shear_force,tangential_x,tangential_y,"
     "tangential_z,normal_damping,shear_damping,sliding";
-constexpr const char* kParticlesHeader2 = "id,x,y,radius,vx,vy,angular_velocity,rotation";
+constexpr const char* kParticlesHeader2 = "id,x,y,radius,vx,vy,angular_velocity,rotation,material,a,b,n";
 constexpr const char* kParticlesHeader3 =
     "id,x,y,z,radius,vx,vy,vz,angular_velocity_x,angular_velocity_y,angular_velocity_z,rotation_w,rotation_x,"
-    "rotation_y,rotation_z";
+    "rotation_y,rotation_z,material,a1,a2,a3";
 
 }  // namespace
 
@@ -29,14 +30,17 @@ template <int Dim>
 void WallsCsvT<Dim>::write(const BasicWorld<Dim>& world) {
   for (const WallMeasureT<Dim>& m : world.wall_measures()) {
     const std::string& name = world.wall(m.wall).name;
+    const double stress = m.normal_force / world.wall_area(m.wall);
+    const double settlement = world.wall_settlement(m.wall);
     if constexpr (Dim == 2) {
       file_.write_row(world.cycle_count(), world.time(), name, m.force.x(), m.force.y(), m.moment, m.normal_force,
-                      m.contacts, m.eccentricity, m.point.x(), m.point.y(), m.displacement.x(), m.displacement.y());
+                      m.contacts, m.eccentricity, m.point.x(), m.point.y(), m.displacement.x(), m.displacement.y(),
+                      stress, settlement);
     } else {
       file_.write_row(world.cycle_count(), world.time(), name, m.force.x(), m.force.y(), m.force.z(), m.moment.x(),
                       m.moment.y(), m.moment.z(), m.normal_force, m.contacts, m.eccentricity.x(), m.eccentricity.y(),
                       m.point.x(), m.point.y(), m.point.z(), m.displacement.x(), m.displacement.y(),
-                      m.displacement.z());
+                      m.displacement.z(), stress, settlement);
     }
   }
   file_.flush();
@@ -51,10 +55,19 @@ template <int Dim>
 AssemblyMeasures AssemblyCsv::write(const BasicWorld<Dim>& world) {
   const AssemblyMeasures measures = world.assembly_measures();
   const EnergyBudget& e = measures.energy;
-  file_.write_row(world.cycle_count(), world.time(), measures.kinetic_energy, measures.out_of_balance,
-                  measures.max_contact_force, measures.contacts, measures.sliding_contacts, measures.time_step_ratio,
-                  e.gravity_work, e.wall_work, e.strain, e.contact_damping, e.friction, e.global_damping,
-                  e.local_damping, e.residual());
+  if (world.energy_budget()) {
+    file_.write_row(world.cycle_count(), world.time(), measures.kinetic_energy, measures.out_of_balance,
+                    measures.max_contact_force, measures.contacts, measures.sliding_contacts, measures.time_step_ratio,
+                    e.gravity_work, e.wall_work, e.strain, e.contact_damping, e.friction, e.global_damping,
+                    e.local_damping, e.residual());
+  } else {
+    // A world keeps its energy budget only when the case asks for it
+    // (output.energy_budget): the budget's columns stay empty.
+    const std::string_view none;
+    file_.write_row(world.cycle_count(), world.time(), measures.kinetic_energy, measures.out_of_balance,
+                    measures.max_contact_force, measures.contacts, measures.sliding_contacts, measures.time_step_ratio,
+                    none, none, none, none, none, none, none, none);
+  }
   file_.flush();
   return measures;
 }
@@ -102,15 +115,26 @@ template <int Dim>
 void write_particles_csv(const std::filesystem::path& directory, const BasicWorld<Dim>& world) {
   CsvFile file(directory, "particles.csv", Dim == 2 ? kParticlesHeader2 : kParticlesHeader3);
   const ParticleViewT<Dim> p = world.particles();
+  // The particles' materials and shapes are in the snapshot only (the
+  // particle view has the dynamic state); a particles.csv is written once.
+  const WorldSnapshotT<Dim> snapshot = world.snapshot();
   for (ParticleId id = 0; id < world.particle_count(); ++id) {
+    const ParticleDefT<Dim>& def = snapshot.def.particles[id];
+    const std::string& material = snapshot.def.materials[def.material].name;
+    const double r = p.radius[id];
     if constexpr (Dim == 2) {
-      file.write_row(id, p.position[id].x(), p.position[id].y(), p.radius[id], p.velocity[id].x(), p.velocity[id].y(),
-                     p.angular_velocity[id], p.rotation[id]);
+      // A superquadric's semi-axes and exponent (Miyata eq. 34; its angle is the rotation); a disc's R, R, 2.
+      const bool shaped = def.shape.superquadric();
+      file.write_row(id, p.position[id].x(), p.position[id].y(), r, p.velocity[id].x(), p.velocity[id].y(),
+                     p.angular_velocity[id], p.rotation[id], material, shaped ? def.shape.a : r,
+                     shaped ? def.shape.b : r, shaped ? def.shape.n : 2.0);
     } else {
+      // An ellipsoid's semi-axes along its body axes (eq. 43; turned by the rotation); a sphere's R, R, R.
       const Quaternion& q = p.rotation[id];
-      file.write_row(id, p.position[id].x(), p.position[id].y(), p.position[id].z(), p.radius[id], p.velocity[id].x(),
+      const Vec3 axes = def.shape.ellipsoid() ? def.shape.axes : Vec3(r, r, r);
+      file.write_row(id, p.position[id].x(), p.position[id].y(), p.position[id].z(), r, p.velocity[id].x(),
                      p.velocity[id].y(), p.velocity[id].z(), p.angular_velocity[id].x(), p.angular_velocity[id].y(),
-                     p.angular_velocity[id].z(), q.w(), q.x(), q.y(), q.z());
+                     p.angular_velocity[id].z(), q.w(), q.x(), q.y(), q.z(), material, axes.x(), axes.y(), axes.z());
     }
   }
   file.flush();

@@ -37,7 +37,7 @@ struct ServoMirror { double target_force, gain, max_speed; };
 template <int Dim> struct WorldDefMirror {
   std::vector<MaterialDef> m; std::vector<ContactModelDef> c; std::vector<ParticleDefT<Dim>> p;
   std::vector<WallDefT<Dim>> w; PeriodicDefT<Dim> periodic; DampingDef d; Vec<Dim> g; PlanarParticle pp;
-  double f, fixed, tol; int threads;
+  double f, fixed, tol; int threads; bool energy_budget;
 };
 template <int Dim> struct ParticleMirror {
   Vec<Dim> position; double radius; MaterialId material; Vec<Dim> velocity; Spin<Dim> angular_velocity;
@@ -56,7 +56,8 @@ template <int Dim> struct ContactSnapshotMirror {
   ParticleId first; std::int32_t second; bool with_wall; double normal_force; ShearForce<Dim> shear_force; bool sliding;
   double overlap, normal_damping; ShearForce<Dim> shear_damping; Vec<Dim> normal, point, force;
   Spin<Dim> moment_first, moment_second; std::uint64_t formed_cycle; bool touching; MindlinHistory mindlin;
-  Vec<Dim> mindlin_axis, dashpot_force, relative_velocity; double search_first, search_second; bool has_search;
+  Vec<Dim> mindlin_axis; double mindlin_theta; Vec<Dim> dashpot_force, tangential_spring, relative_velocity;
+  double search_first, search_second; bool has_search;
 };
 template <int Dim> struct WallSnapshotMirror {
   Vec<Dim> initial_point, last_velocity; Spin<Dim> last_angular_velocity; Vec<Dim> force; Spin<Dim> moment;
@@ -66,6 +67,7 @@ template <int Dim> struct WorldSnapshotMirror {
   WorldDefT<Dim> def; std::vector<Orientation<Dim>> rotation; std::vector<Vec<Dim>> force;
   std::vector<Spin<Dim>> moment; std::vector<WallSnapshotT<Dim>> walls; std::vector<ContactSnapshotT<Dim>> contacts;
   std::vector<Vec<Dim>> reference_positions; double particle_travel, wall_travel; bool contacts_stale;
+  std::vector<ParticleId> particle_order; std::uint64_t sorted_cycle;
   EnergyBudget energy; double tangential_work; std::uint64_t cycle; double time, time_step, critical_time_step;
 };
 DEM_SNAPSHOT_COVERS(ContactSnapshotT<2>, ContactSnapshotMirror<2>);
@@ -206,6 +208,7 @@ void put_settings(const WorldDefT<Dim>& def, proto::SnapshotSettings& settings) 
   settings.set_fixed_time_step(def.fixed_time_step);
   settings.set_contact_tolerance(def.contact_tolerance);
   settings.set_threads(def.threads);
+  settings.set_energy_budget(def.energy_budget);
   settings.set_planar_spheres(def.planar_particle == PlanarParticle::kSphere);
   for (const bool axis : def.periodic.axes) settings.add_periodic_axes(axis);
   put(settings.mutable_periodic_min(), def.periodic.min);
@@ -308,7 +311,9 @@ void put_contacts(const std::vector<ContactSnapshotT<Dim>>& contacts, proto::Sna
     out.add_mindlin_t_star2(c.mindlin.t_star2);
     out.add_mindlin_lag(c.mindlin.lag);
     put(out.mutable_mindlin_axis(), c.mindlin_axis);
+    out.add_mindlin_theta(c.mindlin_theta);
     put(out.mutable_dashpot_force(), c.dashpot_force);
+    put(out.mutable_tangential_spring(), c.tangential_spring);
     put(out.mutable_relative_velocity(), c.relative_velocity);
     out.add_search_first(c.search_first);
     out.add_search_second(c.search_second);
@@ -487,6 +492,13 @@ void check_contacts(Problems& problems, const proto::SnapshotContacts& c, const 
         {"search_second", &c.search_second(), std::size_t{1}}}) {
     sizes = check_array(problems, std::string("contacts.") + name, *values, n.contacts, item_width) && sizes;
   }
+  // Added after version 1 was first written: empty in older snapshots.
+  for (const auto& [name, values, item_width] : {std::tuple{"mindlin_theta", &c.mindlin_theta(), std::size_t{1}},
+                                                 {"tangential_spring", &c.tangential_spring(), std::size_t{Dim}}}) {
+    if (values->size() > 0) {
+      sizes = check_array(problems, std::string("contacts.") + name, *values, n.contacts, item_width) && sizes;
+    }
+  }
   if (!sizes) return;
   for (int i = 0; i < c.first_size(); ++i) {
     const std::string path = "contacts[" + std::to_string(i) + "]";
@@ -538,6 +550,22 @@ void check(const proto::Snapshot& m, Problems& problems, const ResourceLimits& l
   if (m.reference_positions_size() > 0) {
     check_array(problems, "reference_positions", m.reference_positions(), n.particles, Dim);
   }
+  if (m.particle_order_size() > 0) {
+    if (static_cast<std::size_t>(m.particle_order_size()) != n.particles) {
+      problems.add("particle_order", "has " + std::to_string(m.particle_order_size()) + " entries for " +
+                                         std::to_string(n.particles) + " particles");
+    } else {
+      std::vector<bool> seen(n.particles, false);
+      for (int i = 0; i < m.particle_order_size(); ++i) {
+        const std::int32_t id = m.particle_order(i);
+        if (!in_range(id, n.particles) || seen[static_cast<std::size_t>(id)]) {
+          problems.add("particle_order[" + std::to_string(i) + "]", "is not a permutation of the particle ids");
+          break;
+        }
+        seen[static_cast<std::size_t>(id)] = true;
+      }
+    }
+  }
   check_finite(problems, "particle_travel", m.particle_travel());
   check_finite(problems, "wall_travel", m.wall_travel());
   check_finite(problems, "time", m.time());
@@ -578,6 +606,7 @@ void get_settings(const proto::SnapshotSettings& settings, WorldDefT<Dim>& def) 
   def.fixed_time_step = settings.fixed_time_step();
   def.contact_tolerance = settings.contact_tolerance();
   def.threads = settings.threads();
+  def.energy_budget = settings.energy_budget();
   def.planar_particle = settings.planar_spheres() ? PlanarParticle::kSphere : PlanarParticle::kDisc;
   for (int axis = 0; axis < Dim; ++axis) def.periodic.axes[static_cast<std::size_t>(axis)] = settings.periodic_axes(axis);
   def.periodic.min = get<Vec<Dim>>(settings.periodic_min(), 0);
@@ -662,7 +691,9 @@ void get_contacts(const proto::SnapshotContacts& c, WorldSnapshotT<Dim>& s) {
     contact.mindlin = MindlinHistory{c.mindlin_direction(i), c.mindlin_unloading(i), c.mindlin_reloading(i),
                                      c.mindlin_t_star(i),    c.mindlin_t_star2(i),   c.mindlin_lag(i)};
     contact.mindlin_axis = get<Vec<Dim>>(c.mindlin_axis(), i);
+    if (c.mindlin_theta_size() > 0) contact.mindlin_theta = c.mindlin_theta(i);
     contact.dashpot_force = get<Vec<Dim>>(c.dashpot_force(), i);
+    if (c.tangential_spring_size() > 0) contact.tangential_spring = get<Vec<Dim>>(c.tangential_spring(), i);
     contact.relative_velocity = get<Vec<Dim>>(c.relative_velocity(), i);
     contact.search_first = c.search_first(i);
     contact.search_second = c.search_second(i);
@@ -701,6 +732,8 @@ proto::Snapshot snapshot_to_proto(const WorldSnapshotT<Dim>& s, const SnapshotIn
   m.set_particle_travel(s.particle_travel);
   m.set_wall_travel(s.wall_travel);
   m.set_contacts_stale(s.contacts_stale);
+  for (ParticleId id : s.particle_order) m.add_particle_order(id);
+  m.set_sorted_cycle(s.sorted_cycle);
   m.set_cycle(s.cycle);
   m.set_time(s.time);
   m.set_time_step(s.time_step);
@@ -731,6 +764,8 @@ WorldSnapshotT<Dim> snapshot_from_proto(const proto::Snapshot& m, SnapshotInfo* 
   s.particle_travel = m.particle_travel();
   s.wall_travel = m.wall_travel();
   s.contacts_stale = m.contacts_stale();
+  s.particle_order.assign(m.particle_order().begin(), m.particle_order().end());
+  s.sorted_cycle = m.sorted_cycle();
   s.cycle = m.cycle();
   s.time = m.time();
   s.time_step = m.time_step();

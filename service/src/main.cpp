@@ -20,6 +20,7 @@
 #include <thread>
 
 #include "dem/io/resource_limits.h"
+#include "dem/version.h"
 #include "dem/protocol/topics.h"
 #include "dem/service/background_load.h"
 #include "dem/service/command_error.h"
@@ -89,6 +90,7 @@ int main(int argc, char** argv) {
   dem::service::ServerOptions options;
   CLI::App app{"Runs one DEM simulation as a service on Cyclone DDS (loopback by default), driven by commands and "
                "publishing plate forces, contact statistics and its status."};
+  app.set_version_flag("--version", "dem_server " DEM_VERSION);
   std::string log_level = "info";
   std::string initial_case;
   int threads = -1;
@@ -124,6 +126,13 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber)
       ->envname("DEM_THREADS");
   app.add_flag("--no-csv", no_csv, "write no CSV tables");
+  std::uint64_t vtk_interval = 0;
+  CLI::Option* vtk_option =
+      app.add_option("--vtk-interval", vtk_interval,
+                     "cycles between the ParaView files (particles.pvd, contacts.pvd, walls.pvd, vtk/) of the "
+                     "programmes it runs; 0 = none (default: each case's output.vtk_interval)")
+          ->check(CLI::NonNegativeNumber)
+          ->envname("DEM_VTK_INTERVAL");
   app.add_option("--read-dir", options.read_directories,
                  "a directory load_case may read cases (and cases their particle files) from; repeat for more "
                  "(default: the current directory; the --case file's directory is always allowed)")
@@ -209,6 +218,7 @@ int main(int argc, char** argv) {
     options.threads = threads;
   }
   options.record_csv = !no_csv;
+  if (vtk_option->count() > 0) options.vtk_interval = vtk_interval;
   options.load_time_limit = std::chrono::seconds(load_seconds);
   options.name_wait = std::chrono::milliseconds(static_cast<std::int64_t>(name_wait * 1000));
 

@@ -20,8 +20,9 @@ std::filesystem::path OutputRecorder::case_directory_of(const std::filesystem::p
   return output / directory_name(case_name);
 }
 
-OutputRecorder::OutputRecorder(std::filesystem::path output_directory, bool enabled)
-    : output_directory_(std::move(output_directory)), enabled_(enabled) {}
+OutputRecorder::OutputRecorder(std::filesystem::path output_directory, bool enabled,
+                               std::optional<std::uint64_t> vtk_interval)
+    : output_directory_(std::move(output_directory)), enabled_(enabled), vtk_override_(vtk_interval) {}
 
 template <int Dim>
 std::unique_ptr<OutputRecorder::Compression<Dim>>& OutputRecorder::compression() {
@@ -44,10 +45,12 @@ void OutputRecorder::make_compression(const BasicWorld<Dim>& world) {
 
 template <int Dim>
 void OutputRecorder::start(const std::string& case_name, const BasicWorld<Dim>& world,
-                           std::optional<io::CompressionSettings> compression, const io::ResumePoint* resume) {
+                           std::optional<io::CompressionSettings> compression, std::uint64_t vtk_interval,
+                           const io::ResumePoint* resume) {
   close();
   directory_ = case_directory_of(output_directory_, case_name);
   compression_settings_ = std::move(compression);
+  vtk_interval_ = vtk_override_.value_or(vtk_interval);
   if (resume) resume_ = *resume;
   if (!enabled_) return;
   try {
@@ -106,6 +109,10 @@ void OutputRecorder::record(const BasicWorld<Dim>& world, std::optional<std::siz
       if (!c) make_compression(world);
       io::record_compression(c->analysis, c->csv, world, static_cast<int>(*stage));
     }
+    if (stage && vtk_interval_ > 0) {
+      if (!vtk_) vtk_ = std::make_unique<io::VtkSeries>(directory_, vtk_interval_);
+      vtk_->record(world);
+    }
   } catch (const std::exception& error) {
     fail(error);
     return;
@@ -151,6 +158,11 @@ void OutputRecorder::finish(const BasicWorld<Dim>& world) {
       spdlog::info("wrote the plate loading analyses in {} (compression.csv, compression_states.csv, ...)",
                    directory_.string());
     }
+    if (vtk_) {
+      vtk_->record(world, true);
+      spdlog::info("wrote {} ParaView steps in {} (particles.pvd, contacts.pvd, walls.pvd)", vtk_->steps(),
+                   directory_.string());
+    }
   } catch (const std::exception& error) {
     fail(error);
   }
@@ -170,14 +182,15 @@ void OutputRecorder::close() {
   stages_.reset();
   compression2_.reset();
   compression3_.reset();
+  vtk_.reset();
   last_cycle_.reset();
   resume_.reset();
 }
 
 template void OutputRecorder::start(const std::string&, const BasicWorld<2>&, std::optional<io::CompressionSettings>,
-                                   const io::ResumePoint*);
+                                    std::uint64_t, const io::ResumePoint*);
 template void OutputRecorder::start(const std::string&, const BasicWorld<3>&, std::optional<io::CompressionSettings>,
-                                   const io::ResumePoint*);
+                                    std::uint64_t, const io::ResumePoint*);
 template void OutputRecorder::record(const BasicWorld<2>&, std::optional<std::size_t>);
 template void OutputRecorder::record(const BasicWorld<3>&, std::optional<std::size_t>);
 template void OutputRecorder::finish(const BasicWorld<2>&);

@@ -39,7 +39,8 @@ Simulation::Prepared prepared_case(const io::CaseDefinitionT<Dim>& definition, c
   Simulation::Prepared prepared;
   BasicWorld<Dim> built(definition.world);
   io::check_built_world(built, case_source);
-  prepared.world = make_session(std::move(built), definition.stages, definition.output.compression);
+  prepared.world = make_session(std::move(built), definition.stages, definition.output.compression,
+                                definition.output.vtk_interval);
   prepared.output_interval = definition.output.interval;
   prepared.case_name = definition.name.empty() ? std::string("unnamed") : definition.name;
   prepared.description = definition.description;

@@ -47,7 +47,7 @@ SimulationRunner::SimulationRunner(const ServerOptions& options, CommandQueue& q
       cache_(cache),
       simulation_(options.threads, io::limits_with_budget(options.max_particles, options.memory_budget_bytes),
                   options.limits.max_query_contacts, read_access(options)),
-      recorder_(options.output_directory, options.record_csv),
+      recorder_(options.output_directory, options.record_csv, options.vtk_interval),
       schedule_(options.telemetry_cycles, options.telemetry_seconds),
       checkpoints_(options.checkpoints) {}
 
@@ -528,11 +528,12 @@ void SimulationRunner::run_chunk() {
     const double rate = static_cast<double>(cycles) / seconds;
     cycles_per_second_ = cycles_per_second_ > 0.0 ? 0.5 * (cycles_per_second_ + rate) : rate;
   }
-  // Non-finite kinetic energy is looked for after every chunk: it is what
-  // a blow-up reaches between two paced assessments.
+  // A blow-up's motion (not finite, a particle flung out) is looked for
+  // after every chunk: it is what a blow-up reaches between two paced
+  // assessments.
   const bool finished = active_->advance(cycles, world);
-  const bool finite = std::isfinite(world.kinetic_energy());
-  if (const auto problem = active_health_->check(world, finished || !finite)) {
+  const bool suspect = world.motion_suspect();
+  if (const auto problem = active_health_->check(world, finished || suspect)) {
     fail_unhealthy(*problem);
     return;
   }

@@ -136,11 +136,11 @@ bool SimulationRunner::between_programme_cycles() {
 }
 
 bool SimulationRunner::programme_unhealthy(bool always) {
-  // Non-finite kinetic energy is looked for at every call: it is what a
-  // blow-up reaches between two paced assessments.
+  // A blow-up's motion (not finite, a particle flung out) is looked for at
+  // every call: it is what a blow-up reaches between two paced assessments.
   WorldSession& world = simulation_.world();
-  const bool finite = std::isfinite(world.kinetic_energy());
-  const std::optional<StepHealth> problem = programme_->health().check(world, always || !finite);
+  const bool suspect = world.motion_suspect();
+  const std::optional<StepHealth> problem = programme_->health().check(world, always || suspect);
   if (!problem) return false;
   programme_->fail("the run is unhealthy in " + stage_label(programme_->stage()) + " " + problem->message);
   return true;

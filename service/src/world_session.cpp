@@ -41,8 +41,12 @@ template <int Dim>
 class WorldSessionT final : public WorldSession {
  public:
   WorldSessionT(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages,
-                std::optional<io::CompressionSettings> compression)
-      : world_(std::move(world)), health_(world_), stages_(std::move(stages)), compression_(std::move(compression)) {}
+                std::optional<io::CompressionSettings> compression, std::uint64_t vtk_interval)
+      : world_(std::move(world)),
+        health_(world_),
+        stages_(std::move(stages)),
+        compression_(std::move(compression)),
+        vtk_interval_(vtk_interval) {}
 
   std::uint8_t dimension() const override { return Dim; }
   void cycle(std::uint64_t cycles) override { world_.cycle(cycles); }
@@ -53,6 +57,7 @@ class WorldSessionT final : public WorldSession {
   int wall_count() const override { return world_.wall_count(); }
   std::uint64_t state_hash() const override { return world_.state_hash(); }
   double kinetic_energy() const override { return world_.assembly_measures().kinetic_energy; }
+  bool motion_suspect() const override { return health_.motion_suspect(world_); }
 
   WallId find_wall(std::string_view name) const override { return world_.find_wall(name); }
   std::string wall_name(WallId wall) const override { return world_.wall(wall).name; }
@@ -141,7 +146,7 @@ class WorldSessionT final : public WorldSession {
 
   void start_tables(OutputRecorder& recorder, const std::string& case_name,
                     const io::ResumePoint* resume) const override {
-    recorder.start(case_name, world_, compression_, resume);
+    recorder.start(case_name, world_, compression_, vtk_interval_, resume);
   }
   void record_tables(OutputRecorder& recorder, std::optional<std::size_t> stage) const override {
     recorder.record(world_, stage);
@@ -154,19 +159,22 @@ class WorldSessionT final : public WorldSession {
   HealthMonitorT<Dim> health_;
   std::vector<StageDefT<Dim>> stages_;
   std::optional<io::CompressionSettings> compression_;
+  std::uint64_t vtk_interval_;
 };
 
 }  // namespace
 
 template <int Dim>
 std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages,
-                                           std::optional<io::CompressionSettings> compression) {
-  return std::make_unique<WorldSessionT<Dim>>(std::move(world), std::move(stages), std::move(compression));
+                                           std::optional<io::CompressionSettings> compression,
+                                           std::uint64_t vtk_interval) {
+  return std::make_unique<WorldSessionT<Dim>>(std::move(world), std::move(stages), std::move(compression),
+                                              vtk_interval);
 }
 
 template std::unique_ptr<WorldSession> make_session<2>(BasicWorld<2>, std::vector<StageDefT<2>>,
-                                                       std::optional<io::CompressionSettings>);
+                                                       std::optional<io::CompressionSettings>, std::uint64_t);
 template std::unique_ptr<WorldSession> make_session<3>(BasicWorld<3>, std::vector<StageDefT<3>>,
-                                                       std::optional<io::CompressionSettings>);
+                                                       std::optional<io::CompressionSettings>, std::uint64_t);
 
 }  // namespace dem::service

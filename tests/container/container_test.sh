@@ -146,6 +146,13 @@ podman run --rm --network host --entrypoint dem_run "$image" --help >/dev/null 2
   fail "dem_run --help fails in the image"
 [ "$(podman run --rm --network host --entrypoint id "$image" -u 2>>"$work/podman.log")" = 10001 ] ||
   fail "the container's uid is not 10001"
+# The image holds the project as the Debian package CPack built, installed by apt.
+[ "$(podman run --rm --network host --entrypoint dpkg-query "$image" -W -f '${Version}' dem 2>>"$work/podman.log")" = \
+  "$version" ] || fail "the image's package dem is not version $version"
+podman run --rm --network host --entrypoint python3 "$image" -c \
+  "import dem, dem._client; assert dem.__version__ == '$version'; print(dem.paths.server_program())" \
+  >"$work/python.out" 2>>"$work/podman.log" || fail "the Python package does not import in the image"
+[ "$(cat "$work/python.out")" = /usr/bin/dem_server ] || fail "the Python package finds $(cat "$work/python.out"), not /usr/bin/dem_server"
 
 step "server container: dem_server \"ctest\" on domain $domain, /data = $work/server"
 data_dir "$work/server"

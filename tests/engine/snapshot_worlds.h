@@ -30,6 +30,7 @@ inline WorldDef settling_box() {
   def.gravity = {0.0, -9.81};
   def.damping = {1e-4, 0.5};
   def.threads = 1;
+  def.energy_budget = true;  // the dashpot-work columns restore too
   return def;
 }
 
@@ -69,6 +70,7 @@ inline WorldDef3 sphere_stack(ContactLaw law) {
   def.gravity = {0.0, 0.0, -9.81};
   def.time_step_fraction = 0.2;
   def.threads = 1;
+  def.energy_budget = true;
   return def;
 }
 

@@ -39,8 +39,7 @@ TEST(ContactLaw, Fig1HandCalculationOfTheFirstCycles) {
   const double m = kDensity * std::numbers::pi * kRadius * kRadius;
   const double v = kWallSpeed, dt = kTimeStep, k = kStiffness;
 
-  // Cycle 0 -> 1: everything touches, nothing overlaps (eq. 8 is strict); the walls move v dt.
-  world.cycle();
+  // Cycle 0: everything touches, nothing overlaps (eq. 8 is strict).
   ASSERT_TRUE(world.contacts().empty());
 
   // The hand calculation, eqs. 2-7: forces from the accumulated relative
@@ -48,15 +47,14 @@ TEST(ContactLaw, Fig1HandCalculationOfTheFirstCycles) {
   double force_a = 0.0, force_b = 0.0, force_c = 0.0;  // contacts A (left wall), B (discs), C (right wall)
   double velocity_x = 0.0, velocity_y = 0.0;
   for (int cycle = 1; cycle <= 6; ++cycle) {
+    // The walls and discs move over one step at the velocities of the
+    // last one; the forces follow from the new relative displacements.
+    world.cycle();
     force_a += k * (v - velocity_x) * dt;          // eq. 2 with eq. 5
     force_b += k * (velocity_x - velocity_y) * dt;  // eq. 6
     force_c += k * (v + velocity_y) * dt;          // eq. 7
-    const double sum_x = force_a - force_b;         // eq. 2 (force sums)
-    const double sum_y = force_b - force_c;
-    world.cycle();  // the engine's forces at this cycle, positions moved after
-    const auto a = world.contacts();
     double engine_a = 0.0, engine_b = 0.0, engine_c = 0.0;
-    for (const ContactRecord& c : a) {
+    for (const ContactRecord& c : world.contacts()) {
       if (c.second_wall == 0) engine_a = c.normal_force;
       if (c.second_wall == 1) engine_c = c.normal_force;
       if (c.second_particle == 1) engine_b = c.normal_force;
@@ -68,12 +66,13 @@ TEST(ContactLaw, Fig1HandCalculationOfTheFirstCycles) {
     EXPECT_NEAR(engine_a, force_a, tol) << "contact A, cycle " << cycle;
     EXPECT_NEAR(engine_b, force_b, tol) << "contact B, cycle " << cycle;
     EXPECT_NEAR(engine_c, force_c, tol) << "contact C, cycle " << cycle;
-    velocity_x += sum_x / m * dt;  // eqs. 3-4
-    velocity_y += sum_y / m * dt;
+    // The velocities over the step just taken came from the last cycle's force sums.
     EXPECT_NEAR(world.particles().velocity[0].x(), velocity_x, 2.0 * tol / m * dt * cycle) << "cycle " << cycle;
     EXPECT_NEAR(world.particles().velocity[1].x(), velocity_y, 2.0 * tol / m * dt * cycle) << "cycle " << cycle;
     std::printf("cycle %d: F_A=%.6e F_B=%.6e F_C=%.6e (hand: %.6e %.6e %.6e)\n", cycle, engine_a, engine_b,
                 engine_c, force_a, force_b, force_c);
+    velocity_x += (force_a - force_b) / m * dt;  // eqs. 2-4: force sums, then Newton's second law
+    velocity_y += (force_b - force_c) / m * dt;
   }
 }
 

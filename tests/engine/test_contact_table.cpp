@@ -1,31 +1,76 @@
-// Contact persistence (BALL's TOL): shear history survives neighbour-list
-// rebuilds while a pair stays in contact, and the index gathers in order.
+// The contact table: history survives neighbour-list rebuilds while a pair
+// stays close (BALL's TOL) and survives the particles' re-sorting; the
+// blocks of the force pass set aside exactly the rows that cross them.
 #include <gtest/gtest.h>
 
+#include "contact_blocks.h"
 #include "contact_table.h"
 
 namespace dem {
 namespace {
 
-TEST(ContactTable, RebuildKeepsHistoryOfSurvivingPairs) {
+TEST(ContactTable, MergeKeepsTheHistoryOfSurvivingPairs) {
+  ContactRows<2> rows;
+  rows.columns.normal_force = true;
+  merge_rows(rows, {{0, 1}, {0, 2}, {1, 2}});
+  rows.shear[1] = 42.0;  // (0, 2)
+  rows.flags[1] = kTouching;
+  rows.normal_force[1] = 7.0;
+  rows.formed_cycle[1] = 12;
+  merge_rows(rows, {{0, 2}, {1, 2}, {1, 3}});
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows.first[0], 0);
+  EXPECT_EQ(rows.second[0], 2);
+  EXPECT_EQ(rows.shear[0], 42.0);
+  EXPECT_EQ(rows.normal_force[0], 7.0);
+  EXPECT_EQ(rows.formed_cycle[0], 12u);
+  EXPECT_TRUE(rows.touching(0));
+  EXPECT_EQ(rows.first[2], 1);  // the new pair (1, 3) starts afresh
+  EXPECT_EQ(rows.second[2], 3);
+  EXPECT_EQ(rows.shear[2], 0.0);
+  EXPECT_FALSE(rows.touching(2));
+  EXPECT_TRUE(rows.mindlin.empty()) << "columns a world does not use stay empty";
+}
+
+TEST(ContactTable, RenamedSlotsKeepHistoryAndOrientation) {
+  ContactRows<3> rows;
+  merge_rows(rows, {{0, 1}, {0, 2}, {2, 1}});  // (2, 1): the lower id sits in slot 2
+  for (std::size_t r = 0; r < 3; ++r) rows.shear[r] = Vec3(r + 1.0, 0.0, 0.0);
+  // Slots 0 -> 2, 1 -> 0, 2 -> 1.
+  rename_slots(rows, {2, 0, 1}, true);
+  ASSERT_EQ(rows.size(), 3u);
+  // Sorted by the new keys: (1, 0) was (2, 1), (2, 0) was (0, 1), (2, 1) was (0, 2).
+  EXPECT_EQ(rows.first[0], 1);
+  EXPECT_EQ(rows.second[0], 0);
+  EXPECT_EQ(rows.shear[0].x(), 3.0);
+  EXPECT_EQ(rows.first[1], 2);
+  EXPECT_EQ(rows.second[1], 0);
+  EXPECT_EQ(rows.shear[1].x(), 1.0);
+  EXPECT_EQ(rows.shear[2].x(), 2.0);
+  // A slot renamed to -1 (a removed particle) drops its rows.
+  rename_slots(rows, {0, -1, 1}, true);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows.first[0], 1);  // was (2, 0)
+  EXPECT_EQ(rows.second[0], 0);
+  EXPECT_EQ(rows.shear[0].x(), 1.0);
+}
+
+TEST(ContactBlocks, CrossRowsAreSetAsideInRowOrderForTheirBlock) {
   ContactTable<2> table;
-  rebuild_contacts(table, {{0, 1}, {0, 2}, {1, 2}}, {{2, 0}}, 3);
-  table.pairs[1].state.shear = 42.0;  // (0, 2)
-  table.pairs[1].state.touching = true;
-  table.walls[0].state.normal_force = 7.0;
-  rebuild_contacts(table, {{0, 2}, {1, 2}, {1, 3}}, {{1, 0}, {2, 0}}, 4);
-  ASSERT_EQ(table.pairs.size(), 3u);
-  EXPECT_EQ(table.pairs[0].first, 0);
-  EXPECT_EQ(table.pairs[0].second, 2);
-  EXPECT_EQ(table.pairs[0].state.shear, 42.0);
-  EXPECT_EQ(table.pairs[2].state.shear, 0.0);  // new pair (1, 3)
-  EXPECT_EQ(table.walls[1].state.normal_force, 7.0);
-  EXPECT_EQ(table.walls[0].state.normal_force, 0.0);
-  // Particle 2 sees contacts 0 (as second) and 1 (as second), in table order.
-  const ContactIndex& index = table.index;
-  ASSERT_EQ(index.pair_offsets[3] - index.pair_offsets[2], 2);
-  EXPECT_EQ(index.pair_entries[index.pair_offsets[2]], 2 * 0 + 1);
-  EXPECT_EQ(index.pair_entries[index.pair_offsets[2] + 1], 2 * 1 + 1);
+  // Six particles in three blocks of two: {0, 1}, {2, 3}, {4, 5}.
+  merge_rows(table.pairs, {{0, 1}, {0, 4}, {1, 2}, {2, 3}, {3, 0}, {4, 2}, {5, 4}});
+  merge_rows(table.walls, {{1, 0}, {4, 0}});
+  ContactBlocks<2> blocks;
+  plan_blocks(blocks, table, 6, 2);
+  ASSERT_EQ(blocks.count(), 3);
+  EXPECT_EQ(blocks.pair_begin, (std::vector<std::int32_t>{0, 3, 5, 7}));
+  EXPECT_EQ(blocks.wall_begin, (std::vector<std::int32_t>{0, 1, 1, 2}));
+  // Rows crossing blocks: 1 (0 -> 4), 2 (1 -> 2), 4 (3 -> 0), 5 (4 -> 2).
+  EXPECT_EQ(blocks.cross_row, (std::vector<std::int32_t>{1, 2, 4, 5}));
+  EXPECT_EQ(blocks.deferred_begin, (std::vector<std::int32_t>{0, 1, 3, 4}));
+  // Block 1 (particles 2, 3) receives rows 2 and 5, in that order.
+  EXPECT_EQ(blocks.deferred_particle, (std::vector<Slot>{0, 2, 2, 4}));
+  EXPECT_EQ(blocks.cross_slot, (std::vector<std::int32_t>{3, 1, 0, 2}));
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // The health of a step (dem/health.h): a sound run stays healthy; a state
 // that is not finite, a step above the critical step, energy appearing
-// from nowhere and particles passing through each other are each named.
+// from nowhere, a particle flung out and particles passing through each
+// other are each named.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -42,6 +43,7 @@ TEST(NumericalHealth, ASoundRunStaysHealthy) {
     world.cycle(50);
     const StepHealth health = monitor.assess(world);
     ASSERT_TRUE(health.ok()) << health.message;
+    EXPECT_FALSE(monitor.motion_suspect(world));
     EXPECT_EQ(health.cycle, world.cycle_count());
   }
 }
@@ -77,6 +79,7 @@ TEST(NumericalHealth, AStepAboveTheCriticalStepIsNamed) {
 TEST(NumericalHealth, EnergyFromNowhereIsNamedBeforeItOverflows) {
   WorldDef def = box();
   def.gravity = {0.0, 0.0};
+  def.energy_budget = true;
   def.fixed_time_step = 0.98 * World(def).critical_time_step();
   // Squeeze the rows between the walls: every disc starts pressed.
   for (auto& wall : def.walls) wall.point -= 0.02 * (wall.point - Vec2(1.5, 1.0)).normalized();
@@ -92,12 +95,49 @@ TEST(NumericalHealth, EnergyFromNowhereIsNamedBeforeItOverflows) {
   EXPECT_TRUE(std::isfinite(world.assembly_measures().kinetic_energy));
 }
 
+// Without the energy budget no work is booked: discs falling under gravity
+// gain kinetic energy that is not energy from nowhere.
+TEST(NumericalHealth, AWorldWithoutTheEnergyBudgetIsNotCheckedForEnergyGrowth) {
+  WorldDef def = box();
+  def.particles.resize(3);  // the bottom row, lifted half a diameter
+  for (auto& particle : def.particles) particle.position.y() += 0.5;
+  World world(def);
+  ASSERT_FALSE(world.energy_budget());
+  HealthMonitor monitor(world);
+  for (int i = 0; i < 100; ++i) {
+    world.cycle(5);
+    const StepHealth health = monitor.assess(world);
+    ASSERT_TRUE(health.ok()) << health.message;
+  }
+  EXPECT_GT(world.assembly_measures().kinetic_energy, 0.0);
+}
+
+// A blow-up in a world without the energy budget: the particle it flings
+// travels several radii a step (the nine discs of
+// tests/service/data/blows_up.case.txtpb reach 6). Sound runs move a
+// thousandth of a radius (docs/RELIABILITY.md).
+TEST(NumericalHealth, AParticleFlungOutIsNamed) {
+  WorldDef def = box();
+  def.gravity = {0.0, 0.0};
+  World probe(def);
+  const double speed = 0.6 * def.particles[4].radius / probe.time_step();
+  def.particles[4].velocity = {0.0, speed};
+  World world(def);
+  ASSERT_FALSE(world.energy_budget());
+  HealthMonitor monitor(world);
+  EXPECT_TRUE(monitor.motion_suspect(world));  // the pass over the particles between assessments sees it too
+  const StepHealth health = monitor.assess(world);
+  EXPECT_EQ(health.problem, HealthProblem::kRunaway) << health.message;
+  EXPECT_THAT(health.message, HasSubstr("particle 4 moves 0.6 of its radius in a step (the limit is 0.5)"));
+}
+
+// The constructor's force pass finds the contacts where the particles
+// stand (cycle 0), so the overlap is the one placed.
 TEST(NumericalHealth, ParticlesPassingThroughEachOtherAreNamed) {
   WorldDef def = box();
   def.particles.resize(2);
   def.particles[1].position = def.particles[0].position + Vec2(0.6, 0.0);  // 0.4 deep: 80% of a radius
-  World world(def);
-  world.cycle(1);
+  const World world(def);
   const StepHealth health = HealthMonitor(world).assess(world);
   EXPECT_EQ(health.problem, HealthProblem::kOverlap) << health.message;
   EXPECT_THAT(health.message, HasSubstr("the contact of particle 0 and particle 1 overlaps 0.8"));

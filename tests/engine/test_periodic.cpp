@@ -52,6 +52,7 @@ void expect_brute_force_pairs(int per_side, double period) {
   lattice.columns = lattice.rows = per_side;
   lattice.origin = {0.001, 0.002};
   for (const ParticleDef& d : generate_lattice(lattice)) {
+    p.id.push_back(static_cast<ParticleId>(p.position.size()));
     p.position.push_back(d.position);
     p.radius.push_back(d.radius * (1.0 + 0.3 * std::sin(37.0 * d.position.x())));
   }
@@ -60,8 +61,8 @@ void expect_brute_force_pairs(int per_side, double period) {
   def.max = {period, period};
   const Periodic<2> periodic = Periodic<2>::from(def);
   const double tolerance = 0.004;
-  const auto found = find_pair_candidates(p, periodic, tolerance, 1);
-  std::vector<Candidate> expected;
+  const auto found = find_pair_keys(p, periodic, tolerance, 1);
+  std::vector<ContactKey> expected;
   for (int i = 0; i < static_cast<int>(p.size()); ++i) {
     for (int j = i + 1; j < static_cast<int>(p.size()); ++j) {
       if (periodic.separation(p.position[i], p.position[j]).norm() - p.radius[i] - p.radius[j] < tolerance) {

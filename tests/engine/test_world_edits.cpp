@@ -33,6 +33,7 @@ World settled_box() {
                WallDef{"left", {0.0, 3.0}, {0, -1}, 0.0, 3.0, 0, {}},
                WallDef{"plate", {0.5, 2.5}, {-1, 0}, -0.5, 0.5, 0, {}}};
   def.gravity = {0.0, -9.81};
+  def.energy_budget = true;
   def.damping.local_alpha = 0.3;
   World world(def);
   StageDef settle;

@@ -10,6 +10,7 @@
 #include <variant>
 
 #include "dem/io/case_conversion.h"
+#include "dem/programme.h"
 #include "dem/world.h"
 #include "io_test_support.h"
 
@@ -236,6 +237,37 @@ TEST_F(CaseConversion, Stages) {
   EXPECT_FALSE(stages[2].wall_motions[0].second.servo);
   EXPECT_FALSE(stages[2].until.kinetic_energy_below);
   EXPECT_EQ(stages[2].until.check_interval, StopConditions{}.check_interval);
+}
+
+TEST_F(CaseConversion, AStageSetsTheTimeStepAndFrictionFromThenOn) {
+  case_.mutable_stage(0)->mutable_time_step()->set_fixed(2e-5);
+  case_.mutable_stage(2)->mutable_time_step()->set_fraction(0.05);
+  auto* friction = case_.mutable_stage(2)->add_friction();
+  friction->set_material(case_.material(1).name());
+  friction->set_friction(0.25);
+  const CaseDefinition def = convert_case(case_);
+  ASSERT_TRUE(def.stages[0].time_step);
+  EXPECT_EQ(def.stages[0].time_step->fixed, 2e-5);
+  EXPECT_FALSE(def.stages[1].time_step);
+  EXPECT_TRUE(def.stages[1].frictions.empty());
+  ASSERT_TRUE(def.stages[2].time_step);
+  EXPECT_EQ(def.stages[2].time_step->fixed, 0.0);
+  EXPECT_EQ(def.stages[2].time_step->fraction, 0.05);
+  ASSERT_EQ(def.stages[2].frictions.size(), 1u);
+  EXPECT_EQ(def.stages[2].frictions[0], (std::pair<MaterialId, double>{1, 0.25}));
+
+  // The world takes them when the stage starts.
+  World world(def.world);
+  StageDef first = def.stages[0];
+  first.until = {};
+  first.cycles = 1;
+  run_stage(world, first);
+  EXPECT_EQ(world.time_step(), 2e-5);
+  StageDef third = def.stages[2];
+  third.cycles = 1;
+  run_stage(world, third);
+  EXPECT_EQ(world.time_step(), 0.05 * world.critical_time_step());
+  EXPECT_EQ(world.materials()[1].friction, 0.25);
 }
 
 TEST_F(CaseConversion, Output) {

@@ -401,6 +401,24 @@ const Mistake kMistakes[] = {
     {"StageWithoutCycles", [](auto& c) { c.mutable_stage(2)->clear_cycles(); }, "stage[2].cycles: must be > 0"},
     {"StageNegativeDamping", [](auto& c) { c.mutable_stage(1)->mutable_damping()->set_global_alpha(-1); },
      "stage[1].damping.global_alpha: must be >= 0 (got -1)"},
+    {"StageTimeStepWithoutValue", [](auto& c) { c.mutable_stage(1)->mutable_time_step(); },
+     "stage[1].time_step: set fraction (of the critical step) or fixed (s)"},
+    {"StageTimeStepFractionTooLarge", [](auto& c) { c.mutable_stage(1)->mutable_time_step()->set_fraction(1.5); },
+     "stage[1].time_step.fraction: must be in (0, 1] (got 1.5)"},
+    {"StageFrictionOfUnknownMaterial",
+     [](auto& c) {
+       auto* friction = c.mutable_stage(0)->add_friction();
+       friction->set_material("granite");
+       friction->set_friction(0.1);
+     },
+     "stage[0].friction[0].material: unknown material \"granite\""},
+    {"StageNegativeFriction",
+     [](auto& c) {
+       auto* friction = c.mutable_stage(0)->add_friction();
+       friction->set_material(c.material(0).name());
+       friction->set_friction(-0.2);
+     },
+     "stage[0].friction[0].friction: must be >= 0 (got -0.2)"},
     {"UntilWithoutCondition", [](auto& c) { until(c, 0).clear_kinetic_energy_below(); },
      "stage[0].until: sets no stop condition"},
     {"UntilNegativeKineticEnergy", [](auto& c) { until(c, 0).set_kinetic_energy_below(-1); },

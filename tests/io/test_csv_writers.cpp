@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "dem/io/case_conversion.h"
+#include "dem/io/case_loader.h"
 #include "dem/io/csv_writers.h"
 #include "io_test_support.h"
 
@@ -27,6 +29,7 @@ std::vector<Row> read_csv(const std::filesystem::path& path) {
     Row row;
     std::istringstream fields(line);
     for (std::string field; std::getline(fields, field, ',');) row.push_back(field);
+    if (!line.empty() && line.back() == ',') row.emplace_back();  // getline drops a last empty field
     rows.push_back(row);
   }
   return rows;
@@ -59,6 +62,7 @@ class CsvWriters : public ::testing::Test {
     floor.h2 = 0.2;
     def.walls.push_back(floor);
     def.fixed_time_step = 1e-6;
+    def.energy_budget = true;
     return def;
   }
 
@@ -75,7 +79,7 @@ TEST_F(CsvWriters, WallsAreLongFormat) {
   const auto rows = read_csv(directory_ / "nested" / "out" / "walls.csv");
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[0], (Row{"cycle", "time", "wall", "fx", "fy", "moment", "normal_force", "contacts", "eccentricity",
-                          "x", "y", "dx", "dy"}));
+                          "x", "y", "dx", "dy", "normal_stress", "settlement"}));
   EXPECT_EQ((Row{rows[1][0], rows[1][1], rows[1][2]}), (Row{"1", "1e-06", "floor"}));
   const WallMeasure measure = world_.wall_measures()[0];
   const Row& row = rows[2];
@@ -88,7 +92,23 @@ TEST_F(CsvWriters, WallsAreLongFormat) {
   EXPECT_EQ(number(row[8]), measure.eccentricity);
   EXPECT_EQ(number(row[9]), measure.point.x());
   EXPECT_EQ(number(row[12]), measure.displacement.y());
+  EXPECT_EQ(number(row[13]), measure.normal_force / world_.wall_area(0));
+  EXPECT_EQ(number(row[14]), world_.wall_settlement(0));
   EXPECT_GT(measure.normal_force, 0);
+}
+
+TEST_F(CsvWriters, AssemblyLeavesTheEnergyColumnsEmptyWithoutABudget) {
+  WorldDef def = make_world();
+  def.energy_budget = false;
+  World world(def);
+  world.cycle(1);
+  AssemblyCsv assembly(directory_);
+  assembly.write(world);
+  const auto rows = read_csv(directory_ / "assembly.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  ASSERT_EQ(rows[1].size(), 16u);
+  EXPECT_EQ(number(rows[1][2]), world.assembly_measures().kinetic_energy);
+  for (std::size_t column = 8; column < 16; ++column) EXPECT_EQ(rows[1][column], "") << rows[0][column];
 }
 
 TEST_F(CsvWriters, AssemblyRoundTripsEveryDigit) {
@@ -143,7 +163,8 @@ TEST_F(CsvWriters, ParticlesRoundTrip) {
   write_particles_csv(directory_, world_);
   const auto rows = read_csv(directory_ / "particles.csv");
   ASSERT_EQ(rows.size(), 4u);
-  EXPECT_EQ(rows[0], (Row{"id", "x", "y", "radius", "vx", "vy", "angular_velocity", "rotation"}));
+  EXPECT_EQ(rows[0],
+            (Row{"id", "x", "y", "radius", "vx", "vy", "angular_velocity", "rotation", "material", "a", "b", "n"}));
   const ParticleView particles = world_.particles();
   for (int id = 0; id < 3; ++id) {
     const Row& row = rows[id + 1];
@@ -155,7 +176,34 @@ TEST_F(CsvWriters, ParticlesRoundTrip) {
     EXPECT_EQ(number(row[5]), particles.velocity[id].y());
     EXPECT_EQ(number(row[6]), particles.angular_velocity[id]);
     EXPECT_EQ(number(row[7]), particles.rotation[id]);
+    // Discs: material, and the shape a = b = R, n = 2.
+    EXPECT_EQ(row[8], "disc");
+    EXPECT_EQ(number(row[9]), particles.radius[id]);
+    EXPECT_EQ(number(row[10]), particles.radius[id]);
+    EXPECT_EQ(number(row[11]), 2.0);
   }
+}
+
+// Superquadrics keep their semi-axes and exponent; ellipsoids their three semi-axes.
+TEST(CsvWritersShapes, SuperquadricsAndEllipsoidsKeepTheirShapes) {
+  const auto directory = test::fresh_directory("particles_shapes");
+  const LoadedCase superquadrics = load_case_file(std::filesystem::path(DEM_IO_TEST_DATA) / "superquadrics.case.txtpb");
+  World world(convert_case(superquadrics.message).world);
+  write_particles_csv(directory / "2d", world);
+  const auto rows = read_csv(directory / "2d" / "particles.csv");
+  ASSERT_EQ(rows.size(), 1u + 22u);
+  EXPECT_EQ((Row{rows[1][8], rows[1][9], rows[1][10], rows[1][11]}), (Row{"rock", "0.05", "0.025", "4"}));
+  EXPECT_EQ((Row{rows[2][9], rows[2][10], rows[2][11]}), (Row{"0.03", "0.04", "2.5"}));
+  EXPECT_EQ((Row{rows[3][9], rows[3][10], rows[3][11]}), (Row{"0.04", "0.02", "4"}));
+  EXPECT_EQ(number(rows[1][7]), world.particles().rotation[0]);  // the angle, 90 degrees
+
+  const LoadedCase ellipsoids = load_case_file(std::filesystem::path(DEM_IO_TEST_DATA) / "ellipsoids.case.txtpb");
+  World3 world3(convert_case<3>(ellipsoids.message).world);
+  write_particles_csv(directory / "3d", world3);
+  const auto rows3 = read_csv(directory / "3d" / "particles.csv");
+  ASSERT_EQ(rows3.size(), 1u + 13u);
+  EXPECT_EQ((Row{rows3[1][15], rows3[1][16], rows3[1][17], rows3[1][18]}), (Row{"rock", "0.1", "0.07", "0.05"}));
+  EXPECT_EQ((Row{rows3[2][16], rows3[2][17], rows3[2][18]}), (Row{"0.08", "0.06", "0.04"}));
 }
 
 TEST_F(CsvWriters, AnUnwritableDirectoryIsNamed) {
@@ -217,7 +265,8 @@ TEST_F(CsvWriters3d, WallsHaveThreeComponentsAndTwoEccentricities) {
   const auto rows = read_csv(directory_ / "walls.csv");
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[0], (Row{"cycle", "time", "wall", "fx", "fy", "fz", "moment_x", "moment_y", "moment_z", "normal_force",
-                          "contacts", "eccentricity_u", "eccentricity_v", "x", "y", "z", "dx", "dy", "dz"}));
+                          "contacts", "eccentricity_u", "eccentricity_v", "x", "y", "z", "dx", "dy", "dz",
+                          "normal_stress", "settlement"}));
   const WallMeasure3 measure = world_.wall_measures()[0];
   const Row& row = rows[1];
   EXPECT_EQ(row[2], "floor");
@@ -230,6 +279,8 @@ TEST_F(CsvWriters3d, WallsHaveThreeComponentsAndTwoEccentricities) {
   EXPECT_EQ(number(row[12]), measure.eccentricity.y());
   EXPECT_EQ(number(row[13]), -0.05);
   EXPECT_EQ(number(row[18]), measure.displacement.z());
+  EXPECT_EQ(number(row[19]), measure.normal_force / world_.wall_area(0));
+  EXPECT_EQ(number(row[20]), world_.wall_settlement(0));
   EXPECT_GT(measure.normal_force, 0);
 }
 
@@ -274,7 +325,8 @@ TEST_F(CsvWriters3d, ParticlesHaveVectorsAndQuaternions) {
   const auto rows = read_csv(directory_ / "particles.csv");
   ASSERT_EQ(rows.size(), 4u);
   EXPECT_EQ(rows[0], (Row{"id", "x", "y", "z", "radius", "vx", "vy", "vz", "angular_velocity_x", "angular_velocity_y",
-                          "angular_velocity_z", "rotation_w", "rotation_x", "rotation_y", "rotation_z"}));
+                          "angular_velocity_z", "rotation_w", "rotation_x", "rotation_y", "rotation_z", "material",
+                          "a1", "a2", "a3"}));
   const ParticleViewT<3> particles = world_.particles();
   for (int id = 0; id < 3; ++id) {
     const Row& row = rows[id + 1];
@@ -284,6 +336,8 @@ TEST_F(CsvWriters3d, ParticlesHaveVectorsAndQuaternions) {
     EXPECT_EQ(number(row[10]), particles.angular_velocity[id].z());
     EXPECT_EQ(number(row[11]), particles.rotation[id].w());
     EXPECT_EQ(number(row[14]), particles.rotation[id].z());
+    EXPECT_EQ(row[15], "sphere");
+    EXPECT_EQ(number(row[18]), particles.radius[id]);
   }
   EXPECT_NE(number(rows[1][14]), 0);  // the first sphere spins about z
 }

@@ -10,7 +10,8 @@ import dem
 
 # One domain per test, distinct across this suite by construction, and
 # apart from the others: tests/service 40-119, bench_service 125, the demo
-# 30, tests/container 150-153; the Python suite has 160-179, its examples
+# 30 and its bridge's, tests/container 150-153, tests/docs 186-187,
+# tests/ros2 190; the Python suite has 160-174 and 180-185, its examples
 # 175-178.
 DOMAINS = {
     "cases_built_in_python": 160,
@@ -27,9 +28,13 @@ DOMAINS = {
     "telemetry_iteration": 169,
     "telemetry_callback": 170,
     "telemetry_gil_released": 171,
+    "recording_demctl_record": 174,
+    "bridge_page": 180,
+    "bridge_foxglove": 181,
 }
 assert len(set(DOMAINS.values())) == len(DOMAINS), "two tests share a DDS domain"
-assert all(160 <= d <= 174 for d in DOMAINS.values()), "the Python tests' domains are 160-174"
+assert all(160 <= d <= 174 or 180 <= d <= 185 for d in DOMAINS.values()), \
+    "the Python tests' domains are 160-174 and 180-185"
 
 CASES = dem.paths.cases_dir()
 

@@ -2,6 +2,9 @@
 rewrites its PNG and frames as samples come; the force-chain rectangles have
 BALL's geometry (Cundall & Strack 1979, Fig. 5(b))."""
 
+import csv
+import subprocess
+import sys
 import types
 
 import numpy as np
@@ -148,3 +151,32 @@ def test_a_monitor_recording_becomes_a_stress_settlement_png(out):
     main([str(recording), str(out / "curve.png")])
     assert_png(out / "curve.png")
     assert len(StressSettlementSeries.from_monitor_csv(recording)) == 60  # both plates
+
+
+def test_dem_runs_own_tables_become_stress_settlement_pngs(out):
+    # Miyata's reduced case CS through dem_run: walls.csv and compression.csv.
+    subprocess.run([str(dem.paths.run_program()), str(dem.paths.cases_dir() / "miyata" / "cs_reduced.case.txtpb"),
+                    "--out", str(out / "run"), "--quiet"], check=True, timeout=120)
+    with open(out / "run" / "walls.csv", newline="") as source:
+        top = [row for row in csv.DictReader(source) if row["wall"] == "top"]
+    series = StressSettlementSeries.from_file(out / "run" / "walls.csv", ["top"])
+    np.testing.assert_array_equal(series.column("top", "stress"), [float(r["normal_stress"]) for r in top])
+    np.testing.assert_array_equal(series.column("top", "settlement"), [float(r["settlement"]) for r in top])
+    assert series.column("top", "stress").max() >= 900e3  # loaded to 900 kPa
+    loading = StressSettlementSeries.from_file(out / "run" / "compression.csv")
+    assert loading.names() == ["loading plate"]
+    assert loading.column("loading plate", "stress").max() >= 900e3
+    for table in ("walls.csv", "compression.csv"):
+        result = subprocess.run([sys.executable, "-m", "dem.plots", "stress-settlement", str(out / "run" / table),
+                                 str(out / f"{table}.png")], capture_output=True, text=True, timeout=120)
+        assert result.returncode == 0, result.stderr
+        assert_png(out / f"{table}.png")
+
+
+def test_a_file_without_stress_and_settlement_is_named(out):
+    table = out / "assembly.csv"
+    table.write_text("cycle,time,kinetic_energy\n1,0.1,2\n")
+    result = subprocess.run([sys.executable, "-m", "dem.plots", "stress-settlement", str(table), str(out / "x.png")],
+                            capture_output=True, text=True, timeout=60)
+    assert result.returncode == 2
+    assert f"{table}: no plate stress and settlement in it (columns: cycle, time, kinetic_energy)" in result.stderr

@@ -92,8 +92,15 @@ expect 0 "contacts" "${d[@]}" contacts --csv "$out/contacts.csv" --wall top
 said "contacts at cycle"
 head -1 "$out/contacts.csv" | grep -q "^first,second_kind,second,x,y,z," || fail "contacts.csv header"
 grep -q ",wall,top," "$out/contacts.csv" || fail "contacts.csv names the wall"
-expect 0 "run-until" "${d[@]}" run-until --wall top --settlement 1e9 --max-cycles 50 --wait
+# A condition never met: the cap ends the run, and the exit code says so.
+expect 6 "run-until at its cap" "${d[@]}" run-until --wall top --settlement 1e9 --max-cycles 50 --wait
 said "ran 50 cycles"
+said "the cycle cap (50 cycles) came before the condition"
+expect 0 "run-until meeting its condition" "${d[@]}" run-until --kinetic-energy 1e30 --max-cycles 50 --wait
+said "after 1 cycles"
+expect 0 "status --json" "${d[@]}" status --json
+/usr/bin/python3 -c "import json, sys; s = json.load(open(sys.argv[1])); assert s['status']['server'] == 'cli'" \
+  "$out/last.out" || fail "status --json is not JSON naming the server"
 expect 0 "snapshot save" "${d[@]}" snapshot save "$out/state.snapshot"
 [ -s "$out/state.snapshot" ] || fail "no snapshot file"
 expect 0 "snapshot save --on-server" "${d[@]}" snapshot save kept.snapshot --on-server

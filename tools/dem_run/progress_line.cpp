@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <string>
 
+#include "run_summary.h"
+
 namespace dem::run {
 namespace {
 
@@ -16,21 +18,51 @@ void ProgressLine::show(int stage_index, int stage_count, const StageDefT<Dim>& 
   if (!enabled_) return;
   const auto now = std::chrono::steady_clock::now();
   if (now - last_shown_ < kRedrawInterval) return;
+  const std::uint64_t cycle = world.cycle_count();
+  if (last_shown_ != std::chrono::steady_clock::time_point{} && cycle >= last_cycle_) {
+    const double seconds = std::chrono::duration<double>(now - last_shown_).count();
+    const double rate = static_cast<double>(cycle - last_cycle_) / seconds;
+    // A few redraws' worth of memory: steady enough to read, quick to follow a change of pace.
+    rate_ = rate_ > 0.0 ? 0.7 * rate_ + 0.3 * rate : rate;
+  }
   last_shown_ = now;
+  last_cycle_ = cycle;
 
   const AssemblyMeasures measures = world.assembly_measures();
   const double percent =
       stage.cycles > 0 ? 100.0 * static_cast<double>(stage_cycles) / static_cast<double>(stage.cycles) : 0.0;
-  char line[256];
-  std::snprintf(
-      line, sizeof line, "stage %d/%d %s: cycle %llu of %llu (%.0f%%)  kinetic energy %.3g  out-of-balance %.3g",
-      stage_index + 1, stage_count, stage.name.c_str(), static_cast<unsigned long long>(stage_cycles),
-      static_cast<unsigned long long>(stage.cycles), percent, measures.kinetic_energy, measures.out_of_balance);
+  std::string pace;
+  if (rate_ > 0.0) {
+    char text[96];
+    const double left = static_cast<double>(stage.cycles > stage_cycles ? stage.cycles - stage_cycles : 0) / rate_;
+    std::snprintf(text, sizeof text, "  %.0f cycles/s, %s%s left", rate_, has_condition(stage.until) ? "at most " : "",
+                  duration(left).c_str());
+    pace = text;
+  }
+  char line[320];
+  std::snprintf(line, sizeof line,
+                "stage %d/%d %s: cycle %llu of %llu (%.0f%%)%s  kinetic energy %.3g  out-of-balance %.3g",
+                stage_index + 1, stage_count, stage.name.c_str(), static_cast<unsigned long long>(stage_cycles),
+                static_cast<unsigned long long>(stage.cycles), percent, pace.c_str(), measures.kinetic_energy,
+                measures.out_of_balance);
   const std::string text = line;
   // Pad over the previous, possibly longer, line.
   std::fprintf(stderr, "\r%s%*s", text.c_str(), static_cast<int>(width_ > text.size() ? width_ - text.size() : 0), "");
   std::fflush(stderr);
   width_ = text.size();
+}
+
+std::string ProgressLine::duration(double seconds) {
+  const auto whole = static_cast<long long>(seconds + 0.5);
+  char text[48];
+  if (whole < 60) {
+    std::snprintf(text, sizeof text, "%lld s", whole);
+  } else if (whole < 3600) {
+    std::snprintf(text, sizeof text, "%lld min %02lld s", whole / 60, whole % 60);
+  } else {
+    std::snprintf(text, sizeof text, "%lld h %02lld min", whole / 3600, (whole % 3600) / 60);
+  }
+  return text;
 }
 
 template void ProgressLine::show(int, int, const StageDef&, std::uint64_t, const World&);

@@ -1,11 +1,14 @@
 // A one-line progress report on a terminal, rewritten in place with a
 // carriage return, so a long run shows it is alive without filling the
-// scrollback. Disabled, it prints nothing.
+// scrollback: the stage, its cycles, the rate in cycles per second and the
+// time left to the stage's end (to its cycle cap, "at most", when a stop
+// condition may end it sooner). Disabled, it prints nothing.
 #pragma once
 
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 #include "dem/programme.h"
 #include "dem/world.h"
@@ -25,10 +28,15 @@ class ProgressLine {
   // Blanks the line so the summary that follows starts clean.
   void clear();
 
+  // "42 s", "3 min 05 s", "2 h 05 min".
+  static std::string duration(double seconds);
+
  private:
   bool enabled_;
   std::size_t width_ = 0;  // of the line on screen, to blank it
   std::chrono::steady_clock::time_point last_shown_{};
+  std::uint64_t last_cycle_ = 0;
+  double rate_ = 0.0;  // cycles per second, averaged over the last few redraws
 };
 
 extern template void ProgressLine::show(int, int, const StageDef&, std::uint64_t, const World&);

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -13,6 +14,7 @@
 #include "dem/io/world_checks.h"
 #include "dem/programme.h"
 #include "dem/world.h"
+#include "interrupt.h"
 #include "progress_line.h"
 #include "run_checkpoints.h"
 #include "run_health.h"
@@ -69,13 +71,14 @@ std::pair<BasicWorld<Dim>, io::ResumePoint> resume_from(const RunOptions& option
 
 // The run itself, once per dimension.
 template <int Dim>
-void run_definition(io::CaseDefinitionT<Dim>& definition, const io::CaseSource& source, const RunOptions& options,
-                    const std::string& digest) {
+RunOutcome run_definition(io::CaseDefinitionT<Dim>& definition, const io::CaseSource& source,
+                          const RunOptions& options, const std::string& digest) {
   if (definition.stages.empty()) {
     throw io::CaseError(
         io::describe_problem(source, "stage", "the case defines no stages, so there is nothing to run"));
   }
   if (options.threads) definition.world.threads = *options.threads;
+  if (options.vtk_interval) definition.output.vtk_interval = *options.vtk_interval;
 
   std::optional<BasicWorld<Dim>> built;
   std::optional<io::ResumePoint> resumed;
@@ -103,43 +106,61 @@ void run_definition(io::CaseDefinitionT<Dim>& definition, const io::CaseSource& 
 
   if (!resumed) recorder.record(world, 0);
   const auto stage_count = static_cast<int>(definition.stages.size());
-  for (int i = resumed ? static_cast<int>(resumed->stage) : 0; i < stage_count; ++i) {
-    const std::uint64_t done = resumed && i == static_cast<int>(resumed->stage) ? resumed->stage_cycles : 0;
+  const std::uint64_t interval = std::max<std::uint64_t>(definition.output.interval, 1);
+  for (int i = resumed ? static_cast<int>(resumed->stage) : 0; i < stage_count && !interrupted(); ++i) {
+    const std::uint64_t done_before = resumed && i == static_cast<int>(resumed->stage) ? resumed->stage_cycles : 0;
     const StageDefT<Dim>& stage = definition.stages[i];
-    const StageDefT<Dim> running = done > 0 ? remainder(stage, done) : stage;
-    const std::uint64_t start = world.cycle_count() - done;
+    const StageDefT<Dim> running = done_before > 0 ? remainder(stage, done_before) : stage;
+    const std::uint64_t start = world.cycle_count() - done_before;
     std::optional<StepHealth> problem;
-    StageResult result = run_stage(world, running, definition.output.interval, [&](const BasicWorld<Dim>& w) {
-      // Nothing is recorded of an unhealthy state.
-      if ((problem = health.check(w))) return false;
-      recorder.record(w, i);
-      progress.show(i, stage_count, stage, w.cycle_count() - start, w);
-      const std::uint64_t stage_cycles = w.cycle_count() - start;
-      if (checkpoints.due(w, stage, stage_cycles)) {
-        // Only a state found healthy is kept.
-        if ((problem = health.check(w, true))) return false;
-        checkpoints.write(w, info, recorder, static_cast<std::size_t>(i), stage_cycles);
+    // Observed every cycle, so Ctrl-C is answered at once; a row every
+    // output interval counted from the stage's start (as run_stage counts).
+    StageResult result = run_stage(world, running, 1, [&](const BasicWorld<Dim>& w) {
+      const std::uint64_t done = w.cycle_count() - start;
+      const bool row = done % interval == 0;
+      // Nothing is recorded of an unhealthy state. The check is paced; at a
+      // row, a blow-up's motion brings it at once.
+      if ((problem = health.check(w, row && health.suspect(w)))) return false;
+      if (row) {
+        recorder.record(w, i);
+        if (checkpoints.due(w, stage, done)) {
+          // Only a state found healthy is kept.
+          if ((problem = health.check(w, true))) return false;
+          checkpoints.write(w, info, recorder, static_cast<std::size_t>(i), done);
+        }
       }
-      return true;
+      progress.show(i, stage_count, stage, done, w);
+      return !interrupted();
     });
-    result.cycles_run += done;
+    result.cycles_run += done_before;
     progress.clear();
     if (!problem) problem = health.check(world, true);
     if (problem) fail(health, definition, options, i, *problem);
     recorder.record(world, i);
-    if (summary) print_stage_result(std::cout, i, stage_count, stage, result);
+    if (interrupted()) {
+      std::cerr << "interrupted in stage " << i + 1 << '/' << stage_count << " at cycle " << world.cycle_count()
+                << ": writing the tables and the snapshot of the state reached\n";
+    } else if (summary) {
+      print_stage_result(std::cout, i, stage_count, stage, result);
+    }
   }
   recorder.finish(world);
-  if (summary) print_final_state(std::cout, world, recorder.files());
+  const std::filesystem::path snapshot = options.output_directory / "final.snapshot";
+  io::write_snapshot_file(snapshot, world.snapshot(), info);
+  std::vector<std::filesystem::path> files = recorder.files();
+  files.push_back(snapshot);
+  if (summary) print_final_state(std::cout, world, files);
+  return interrupted() ? RunOutcome::kInterrupted : RunOutcome::kCompleted;
 }
 
 }  // namespace
 
-void run_case(const RunOptions& options) {
+RunOutcome run_case(const RunOptions& options) {
   const io::LoadedCase loaded = io::load_case_file(options.case_path);
   io::AnyCaseDefinition definition = io::convert_any_case(loaded.message, loaded.source);
   const std::string digest = io::file_digest(options.case_path);
-  std::visit([&](auto& def) { run_definition(def, loaded.source, options, digest); }, definition);
+  watch_interrupts();
+  return std::visit([&](auto& def) { return run_definition(def, loaded.source, options, digest); }, definition);
 }
 
 }  // namespace dem::run

@@ -1,6 +1,7 @@
 // dem_run's side of the engine's health status (dem/health.h): the world
-// assessed at a pace that costs at most about 1/20 of the run, and every
-// stage's end; a copy of the state kept after each healthy assessment, so
+// assessed at a pace that costs about 1/100 of the run (an assessment and
+// the copy of the state after it take some cycles' time: io/pacing.h), and
+// every stage's end; a copy of the state kept after each healthy assessment, so
 // an unhealthy run leaves its last good state as last_good.snapshot.
 #pragma once
 
@@ -39,12 +40,16 @@ class RunHealth {
     return health;
   }
 
+  // A blow-up's motion (HealthMonitorT::motion_suspect): a pass over the
+  // particles, for every output row; check(world, true) then says what.
+  bool suspect(const BasicWorld<Dim>& world) const { return monitor_.motion_suspect(world); }
+
   const WorldSnapshotT<Dim>& last_good() const { return last_good_; }
 
  private:
   HealthMonitorT<Dim> monitor_;
   WorldSnapshotT<Dim> last_good_;
-  io::Pacing pacing_;
+  io::Pacing pacing_{100};
 };
 
 }  // namespace dem::run

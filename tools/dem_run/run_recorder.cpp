@@ -1,5 +1,6 @@
 #include "run_recorder.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace dem::run {
@@ -17,6 +18,7 @@ RunRecorder<Dim>::RunRecorder(const std::filesystem::path& directory, const io::
     probes_.emplace(directory, output.probes, tables);
     files_.push_back(probes_->path());
   }
+  if (output.vtk_interval > 0) vtk_.emplace(directory, output.vtk_interval);
   if (output.compression) {
     compression_.emplace(*output.compression);
     compression_csv_.emplace(directory, world.wall(output.compression->loading_plate).name,
@@ -46,19 +48,40 @@ void RunRecorder<Dim>::fill(io::ResumePoint& point) {
 template <int Dim>
 void RunRecorder<Dim>::record(const BasicWorld<Dim>& world, int stage) {
   if (compression_) io::record_compression(*compression_, *compression_csv_, world, stage);
+  if (vtk_) vtk_->record(world);
   if (last_cycle_ == world.cycle_count()) return;
   last_cycle_ = world.cycle_count();
   walls_.write(world);
   const AssemblyMeasures measures = assembly_.write(world);
   if (probes_) probes_->write(world);
   // Randall (1989) 4.35-4.40: above 0.3 of the particle-wise critical step
-  // the step is too large for the stiffness the particles meet. Said once.
-  if (measures.time_step_ratio > 0.3 && !warned_time_step_) {
+  // the step is too large for the stiffness the particles meet. The
+  // estimate K = d|sum F| / dx with dx = |v| dt is meaningless for a
+  // particle nearly at rest that is struck (dx -> 0): a settling sample
+  // shows isolated spikes at the seed's own time step (Miyata's CS: 3 rows
+  // of 506 above 0.3, none adjacent, the largest 0.59; the nine-disc test
+  // holding still, 3 rows of 10 cycles). A step really too large keeps the
+  // ratio high, so the warning waits until it has been above 0.3 at every
+  // row for kSustainedCycles cycles - or until it exceeds 1 at once: the
+  // step is then longer than a particle's critical step, and the run is
+  // blowing up. Said once.
+  if (measures.time_step_ratio > 0.3) {
+    if (rows_above_ == 0) first_above_ = world.cycle_count();
+    ++rows_above_;
+    largest_ratio_ = std::max(largest_ratio_, measures.time_step_ratio);
+  } else {
+    rows_above_ = 0;
+    largest_ratio_ = 0.0;
+  }
+  const bool sustained = rows_above_ > 1 && world.cycle_count() - first_above_ >= kSustainedCycles;
+  if ((sustained || measures.time_step_ratio > 1.0) && !warned_time_step_) {
     warned_time_step_ = true;
     std::fprintf(stderr,
-                 "warning: at cycle %llu the time step is %.2f of the smallest particle-wise critical step "
-                 "(Randall 1989, 4.35-4.40; keep it below 0.3): reduce time_step.fraction\n",
-                 static_cast<unsigned long long>(world.cycle_count()), measures.time_step_ratio);
+                 "warning: from cycle %llu to %llu the time step was %.2f (at most) of the smallest particle-wise "
+                 "critical step (Randall 1989, 4.35-4.40; keep it below 0.3): reduce the time step "
+                 "(time_step.fraction or time_step.fixed)\n",
+                 static_cast<unsigned long long>(first_above_), static_cast<unsigned long long>(world.cycle_count()),
+                 largest_ratio_);
   }
 }
 
@@ -70,6 +93,10 @@ void RunRecorder<Dim>::finish(const BasicWorld<Dim>& world) {
   }
   io::write_particles_csv(directory_, world);
   files_.push_back(directory_ / "particles.csv");
+  if (vtk_) {
+    vtk_->record(world, true);
+    for (const auto& file : vtk_->collections()) files_.push_back(file);
+  }
   if (compression_) {
     compression_csv_->write_results(compression_->results(world));
     for (const auto& file : compression_csv_->files()) files_.push_back(file);

@@ -1,7 +1,8 @@
 // The CSV tables of one run: the time series (walls, assembly, probes) as the
 // run goes, and the contact and particle snapshots at its end, with the
 // columns of the run's dimension; and the plate loading analyses when the
-// case asks for them (output.compression).
+// case asks for them (output.compression); and the ParaView files every
+// output.vtk_interval cycles (io/vtk_series.h) and at the end.
 #pragma once
 
 #include <cstdint>
@@ -14,6 +15,7 @@
 #include "dem/io/compression_analysis.h"
 #include "dem/io/compression_csv.h"
 #include "dem/io/csv_writers.h"
+#include "dem/io/vtk_series.h"
 #include "dem/world.h"
 
 namespace dem::run {
@@ -36,8 +38,8 @@ class RunRecorder {
   // row; `stage` is the index of the stage running.
   void record(const BasicWorld<Dim>& world, int stage);
 
-  // Writes contacts.csv (unless the case turned it off), particles.csv and
-  // the compression summaries.
+  // Writes contacts.csv (unless the case turned it off), particles.csv,
+  // the compression summaries and the last ParaView step.
   void finish(const BasicWorld<Dim>& world);
 
   // Every file written so far, for the summary.
@@ -51,8 +53,14 @@ class RunRecorder {
   std::optional<io::ProbesCsv> probes_;
   std::optional<io::CompressionAnalysisT<Dim>> compression_;
   std::optional<io::CompressionCsvT<Dim>> compression_csv_;
+  std::optional<io::VtkSeries> vtk_;
   std::optional<std::uint64_t> last_cycle_;
   std::vector<std::filesystem::path> files_;
+  // Randall's time-step check, over consecutive rows (run_recorder.cpp says why).
+  static constexpr std::uint64_t kSustainedCycles = 100;
+  int rows_above_ = 0;
+  std::uint64_t first_above_ = 0;
+  double largest_ratio_ = 0.0;
   bool warned_time_step_ = false;
 };
 

@@ -15,10 +15,14 @@ std::string brief(double value) {
   return text;
 }
 
+}  // namespace
+
 bool has_condition(const StopConditions& until) {
   return until.kinetic_energy_below || until.out_of_balance_below || until.servo_tolerance ||
          until.wall_stress_above || until.wall_settlement_above;
 }
+
+namespace {
 
 // What the particles are, for the header line (a world's particles are
 // all round or all shaped).
@@ -101,10 +105,12 @@ void print_final_state(std::ostream& out, const BasicWorld<Dim>& world,
       << brief(assembly.kinetic_energy) << " J, out-of-balance " << brief(assembly.out_of_balance) << ", "
       << assembly.contacts << " contacts (" << assembly.sliding_contacts << " sliding)\n";
   const EnergyBudget& e = assembly.energy;
-  out << "energy (J): gravity " << brief(e.gravity_work) << ", walls " << brief(e.wall_work) << " -> kinetic "
-      << brief(e.kinetic) << ", strain " << brief(e.strain) << ", dashpots " << brief(e.contact_damping)
-      << ", friction " << brief(e.friction) << ", global damping " << brief(e.global_damping) << ", local damping "
-      << brief(e.local_damping) << "; residual " << brief(e.residual()) << '\n';
+  if (world.energy_budget()) {
+    out << "energy (J): gravity " << brief(e.gravity_work) << ", walls " << brief(e.wall_work) << " -> kinetic "
+        << brief(e.kinetic) << ", strain " << brief(e.strain) << ", dashpots " << brief(e.contact_damping)
+        << ", friction " << brief(e.friction) << ", global damping " << brief(e.global_damping) << ", local damping "
+        << brief(e.local_damping) << "; residual " << brief(e.residual()) << '\n';
+  }
   // The whole state in 16 hex digits: a resumed run must end at the same.
   char hash[17];
   std::snprintf(hash, sizeof(hash), "%016llx", static_cast<unsigned long long>(world.state_hash()));

@@ -1,5 +1,6 @@
 #include "contact_mechanics.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -44,7 +45,8 @@ ContactModelDef restitution_model(double restitution) {
   return m;
 }
 
-void report_hertz_impact(const std::filesystem::path& out) {
+Verdict report_hertz_impact(const std::filesystem::path& out) {
+  Verdict verdict;
   const Sphere s = maw_sphere();
   auto csv = open_csv(out / "hertz_impact.csv");
   csv << "case,speed,contact_duration,theory_duration,duration_error,peak_force,theory_peak_force,"
@@ -68,13 +70,25 @@ void report_hertz_impact(const std::filesystem::path& out) {
                   "e = %.6f\n",
                   which, v, r.contact_duration, t.contact_duration, 100.0 * de, r.peak_normal_force,
                   t.peak_normal_force, 100.0 * fe, r.restitution);
+      // Randall 5.12: Hertz's duration and peak force within 1%; elastic and
+      // undamped, the sphere leaves as fast as it came.
+      char label[64];
+      std::snprintf(label, sizeof label, "%s V = %.1f m/s", which, v);
+      verdict.near(std::string(label) + ": contact duration / Hertz's", 1.0 + de, 1.0, 0.01);
+      verdict.near(std::string(label) + ": peak force / Hertz's", 1.0 + fe, 1.0, 0.01);
+      verdict.near(std::string(label) + ": restitution", r.restitution, 1.0, 1e-4);
     }
   }
+  return verdict;
 }
 
-void report_oblique_impact(const std::filesystem::path& out) {
+Verdict report_oblique_impact(const std::filesystem::path& out) {
+  Verdict verdict;
   const Sphere s = maw_sphere();
   const double chi = maw_chi(s.poisson_ratio);
+  const double boundary = 4.0 * chi - 1.0;
+  int below_one = 0, middle = 0, sliding = 0;
+  double min_restitution = 2.0, psi1_at_min = 0.0;
   auto csv = open_csv(out / "oblique_impact.csv");
   csv << "angle_deg,psi1,psi2,restitution,sliding_throughout\n";
   auto forces = open_csv(out / "oblique_impact_forces.csv");
@@ -95,6 +109,28 @@ void report_oblique_impact(const std::filesystem::path& out) {
     csv << angle << ',' << psi1 << ',' << psi2 << ',' << r.restitution << ',' << r.sliding_throughout << '\n';
     std::printf("  %5.1f  %7.3f  %+7.3f  %.5f      %s\n", angle, psi1, psi2, r.restitution,
                 r.sliding_throughout ? "yes" : "no");
+    // Maw et al.'s three regimes (Randall 5.4): psi2 > 0 below psi1 = 1;
+    // psi2 < 0 without sliding throughout up to 4 chi - 1; sliding
+    // throughout (|T| = mu N at every step) above.
+    char label[48];
+    std::snprintf(label, sizeof label, "%.1f deg (psi1 %.2f)", angle, psi1);
+    if (angle == 0.0) {
+      verdict.near("normal impact: restitution", r.restitution, 1.0, 1e-4);
+    } else if (psi1 < 1.0) {
+      verdict.above(std::string(label) + ": psi2", psi2, 0.0);
+      ++below_one;
+    } else if (psi1 < boundary) {
+      verdict.below(std::string(label) + ": psi2", psi2, 0.0);
+      verdict.expect(std::string(label) + ": not sliding throughout", !r.sliding_throughout);
+      ++middle;
+    } else {
+      verdict.expect(std::string(label) + ": sliding throughout", r.sliding_throughout);
+      ++sliding;
+    }
+    if (angle > 0.0 && r.restitution < min_restitution) {
+      min_restitution = r.restitution;
+      psi1_at_min = psi1;
+    }
     // Randall Fig. 5.9: T / (mu N_max) against t / T_c for a few angles.
     if (angle == 5.0 || angle == 20.0 || angle == 40.0 || angle == 60.0) {
       for (const ImpactSample& sample : r.history) {
@@ -104,9 +140,19 @@ void report_oblique_impact(const std::filesystem::path& out) {
       }
     }
   }
+  verdict.at_least("angles with psi1 < 1", below_one, 2);
+  verdict.at_least("angles with 1 <= psi1 < 4 chi - 1", middle, 5);
+  verdict.at_least("angles sliding throughout", sliding, 10);
+  // The least restitution lies where sliding lasts throughout, as in Randall
+  // Fig. 5.17 (50 deg; he relates it to psi1 of about 4 chi - 1).
+  verdict.at_least("psi1 at the least restitution", psi1_at_min, boundary);
+  verdict.at_least("2 (4 chi - 1) against psi1 at the least restitution", 2.0 * boundary, psi1_at_min);
+  verdict.below("the least restitution", min_restitution, 0.95);
+  return verdict;
 }
 
-void report_restitution(const std::filesystem::path& out) {
+Verdict report_restitution(const std::filesystem::path& out) {
+  Verdict verdict;
   const Sphere s = maw_sphere();
   auto csv = open_csv(out / "restitution.csv");
   csv << "case,requested,measured,error\n";
@@ -119,11 +165,16 @@ void report_restitution(const std::filesystem::path& out) {
       csv << name << ',' << e << ',' << r.restitution << ',' << r.restitution / e - 1.0 << '\n';
       std::printf("  %-13s e = %.1f: measured %.5f (%+.3f%%)\n", name, e, r.restitution,
                   100.0 * (r.restitution / e - 1.0));
+      char label[64];
+      std::snprintf(label, sizeof label, "%s e = %.1f: measured / requested", name, e);
+      verdict.near(label, r.restitution / e, 1.0, 0.01);  // Miyata eq. 17 within 1%
     }
   }
+  return verdict;
 }
 
-void report_mindlin_loading(const std::filesystem::path& out) {
+Verdict report_mindlin_loading(const std::filesystem::path& out) {
+  Verdict verdict;
   const MindlinLoadingResult r = mindlin_constant_normal_force(2000);
   auto csv = open_csv(out / "mindlin_loading.csv");
   csv << "branch,displacement,simulated,theory\n";
@@ -138,9 +189,32 @@ void report_mindlin_loading(const std::filesystem::path& out) {
   std::printf("  varying N: largest |T|/(mu N) = %.6f, %d sliding steps, %d lagging steps with theta = 1 "
               "(largest error %.2e)\n",
               v.largest_ratio, v.sliding_steps, v.lagging_checks, v.largest_lag_error);
+  verdict.near("normal force reached, N", r.normal_force, 88.0, 1e-6);
+  verdict.near("points on the loading, unloading and reloading branches", static_cast<double>(r.points.size()), 60.0,
+               0.0);
+  // Each point within 2% of the closed form (or of 0.1 mu N near T = 0,
+  // where a relative error means nothing).
+  int off = 0;
+  for (const MindlinPoint& p : r.points) {
+    off += std::abs(p.simulated - p.theory) > 0.02 * std::max(std::abs(p.theory), 0.1 * r.friction_force) ? 1 : 0;
+  }
+  verdict.expect("points within 2% of the closed form", off == 0,
+                 std::to_string(off) + " of " + std::to_string(r.points.size()) + " off");
+  // The loop closes inside the first: unloading passed through zero and reloading went back up.
+  if (r.points.size() == 60) {
+    verdict.below("unloading's last force, N", r.points[39].simulated, 0.0);
+    verdict.above("reloading's last force over 0.99 of loading's, N", r.points.back().simulated,
+                  0.99 * r.points[19].simulated);
+  }
+  verdict.at_least("1 + 1e-12 against the largest |T| / (mu N) under varying N", 1.0 + 1e-12, v.largest_ratio);
+  verdict.above("sliding steps under varying N", v.sliding_steps, 0);
+  verdict.above("steps with dT < mu dN", v.lagging_checks, 100);
+  verdict.below("largest error of those steps (Randall 3.98, theta = 1)", v.largest_lag_error, 1e-9);
+  return verdict;
 }
 
-void report_box_settle(const std::filesystem::path& case_file, const std::filesystem::path& out) {
+Verdict report_box_settle(const std::filesystem::path& case_file, const std::filesystem::path& out) {
+  Verdict verdict;
   const BoxSettleResult r = box_settle(case_file);
   const EnergyBudget& e = r.energy;
   auto csv = open_csv(out / "box_settle.csv");
@@ -158,6 +232,12 @@ void report_box_settle(const std::filesystem::path& case_file, const std::filesy
               "local damping %.6e + global damping %.3e; residual %+.3e J (%+.4f%% of the potential energy drop)\n",
               e.gravity_work, e.kinetic, e.strain, e.contact_damping, e.friction, e.local_damping, e.global_damping,
               e.residual(), 100.0 * e.residual() / e.gravity_work);
+  verdict.near("spheres", r.particles, 2000, 0);
+  verdict.expect("at rest within the stage's cycles", r.at_rest);
+  verdict.near("floor force / weight", r.floor_force / r.weight, 1.0, 0.005);
+  verdict.below("|energy residual| / potential energy drop", std::abs(e.residual()) / e.gravity_work, 0.01);
+  verdict.below("kinetic energy / potential energy drop", e.kinetic / e.gravity_work, 1e-6);
+  return verdict;
 }
 
 }  // namespace dem::validation

@@ -6,6 +6,7 @@
 
 #include "dem/definitions.h"
 #include "impact.h"
+#include "verdict.h"
 
 namespace dem::validation {
 
@@ -14,12 +15,14 @@ Sphere maw_sphere();
 ContactModelDef hertz_mindlin_model();
 ContactModelDef restitution_model(double restitution);
 
-// Each runs its check, writes its CSV files under out and prints the figures.
-void report_hertz_impact(const std::filesystem::path& out);
-void report_oblique_impact(const std::filesystem::path& out);
-void report_restitution(const std::filesystem::path& out);
-void report_mindlin_loading(const std::filesystem::path& out);
-void report_box_settle(const std::filesystem::path& case_file, const std::filesystem::path& out);
+// Each runs its check, writes its CSV files under out, prints the figures
+// and returns the verdict: the bounds the seed and the theory set, which
+// tests/validation asserts as well.
+Verdict report_hertz_impact(const std::filesystem::path& out);
+Verdict report_oblique_impact(const std::filesystem::path& out);
+Verdict report_restitution(const std::filesystem::path& out);
+Verdict report_mindlin_loading(const std::filesystem::path& out);
+Verdict report_box_settle(const std::filesystem::path& case_file, const std::filesystem::path& out);
 
 // The time-step fraction (of the Rayleigh step) the impact runs use: about
 // 400 steps per contact at 0.4 m/s.

@@ -14,6 +14,7 @@
 #include <exception>
 #include <filesystem>
 
+#include "dem/version.h"
 #include "contact_mechanics.h"
 #include "miyata_compression.h"
 #include "nine_disc.h"
@@ -41,22 +42,43 @@ void report_nine_disc(const dem::validation::CompressionReport& c, const dem::va
   }
 }
 
+// The repository's cases when this is a build; an installed program's
+// beside it (<prefix>/bin/dem_validate -> <prefix>/share/dem/cases).
+std::filesystem::path default_cases() {
+  if (std::filesystem::exists(DEM_DEFAULT_CASES_DIR)) return DEM_DEFAULT_CASES_DIR;
+  std::error_code error;
+  const auto program = std::filesystem::read_symlink("/proc/self/exe", error);
+  return program.parent_path().parent_path() / "share" / "dem" / "cases";
+}
+
 }  // namespace
+
+// Exit codes: 0 every check passed; 1 a check failed (the verdict says
+// which) or the run could not be done; 2 a bad command line.
+constexpr int kCheckFailed = 1;
+constexpr int kFailure = 1;
 
 int main(int argc, char** argv) {
   CLI::App app{"dem_validate: reproduce the seeds' validation checks and write their figures"};
+  app.set_version_flag("--version", "dem_validate " DEM_VERSION);
   app.require_subcommand(1);
-  std::filesystem::path out = "validation";
-  std::filesystem::path cases = DEM_DEFAULT_CASES_DIR;
+  app.footer("Every subcommand writes its figures as CSV files into --out DIR (required: nothing is written\n"
+             "where it was not asked for), prints them and ends with its verdict: each check against the seed's\n"
+             "or the theory's bound, pass or FAIL. dem_validate SUBCOMMAND --help lists its options.\n"
+             "Exit codes: 0 every check passed, 1 a check failed or the run failed, 2 bad arguments.");
+  std::filesystem::path out;
+  std::filesystem::path cases = default_cases();
   auto* nine = app.add_subcommand("nine-disc", "Cundall & Strack (1979) nine-disc test, Figs. 6-9");
-  nine->add_option("--out", out, "directory for nine_disc.csv and nine_disc_distortion.csv");
+  nine->add_option("--out", out, "directory for nine_disc.csv and nine_disc_distortion.csv")->required();
   nine->add_option("--cases", cases, "directory holding the cases/ball case files")->check(CLI::ExistingDirectory);
   auto* hertz = app.add_subcommand("hertz-impact", "Hertz normal impact, sphere-wall and sphere-sphere (Randall 5.3.1)");
   auto* oblique = app.add_subcommand("oblique-impact", "oblique impact sweep 0-90 degrees (Randall 5.4, Maw et al.)");
   auto* restitution = app.add_subcommand("restitution", "linear spring-dashpot restitution (Miyata eq. 17)");
   auto* mindlin = app.add_subcommand("mindlin-loading", "Mindlin-Deresiewicz loading history (Randall 5.2)");
   auto* box = app.add_subcommand("box-settle", "spheres settle in a 3D box: weight on the floor, energy budget");
-  for (auto* sub : {hertz, oblique, restitution, mindlin, box}) sub->add_option("--out", out, "directory for the CSV files");
+  for (auto* sub : {hertz, oblique, restitution, mindlin, box}) {
+    sub->add_option("--out", out, "directory for the CSV files (created)")->required();
+  }
   box->add_option("--cases", cases, "directory holding cases/validation")->check(CLI::ExistingDirectory);
   std::filesystem::path miyata_case;
   auto* miyata = app.add_subcommand("miyata-compression",
@@ -65,20 +87,26 @@ int main(int argc, char** argv) {
   miyata->add_option("--case", miyata_case, "the case file (it must set output.compression)")
       ->required()
       ->check(CLI::ExistingFile);
-  miyata->add_option("--out", out, "directory for the analyses' CSV files and miyata_summary.csv");
-  CLI11_PARSE(app, argc, argv);
+  miyata->add_option("--out", out, "directory for the analyses' CSV files and miyata_summary.csv")->required();
   try {
-    if (*hertz) dem::validation::report_hertz_impact(out);
-    if (*oblique) dem::validation::report_oblique_impact(out);
-    if (*restitution) dem::validation::report_restitution(out);
-    if (*mindlin) dem::validation::report_mindlin_loading(out);
-    if (*box) dem::validation::report_box_settle(cases / "validation" / "box_settle.case.txtpb", out);
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return app.exit(error) == 0 ? 0 : 2;  // --help is not a mistake; a bad command line is exit code 2
+  }
+  dem::validation::Verdict verdict;
+  try {
+    if (*hertz) verdict = dem::validation::report_hertz_impact(out);
+    if (*oblique) verdict = dem::validation::report_oblique_impact(out);
+    if (*restitution) verdict = dem::validation::report_restitution(out);
+    if (*mindlin) verdict = dem::validation::report_mindlin_loading(out);
+    if (*box) verdict = dem::validation::report_box_settle(cases / "validation" / "box_settle.case.txtpb", out);
     if (*miyata) {
       const dem::validation::MiyataRun run = dem::validation::run_miyata_compression(miyata_case, out);
       const dem::validation::MiyataFigures figures = dem::validation::miyata_figures(run);
       dem::validation::print_miyata_report(stdout, run, figures);
       dem::validation::write_miyata_summary(out, run, figures);
       std::printf("wrote the analyses and miyata_summary.csv to %s\n", out.c_str());
+      verdict = dem::validation::judge_miyata(run, figures);
     }
     if (*nine) {
       const auto compression = dem::validation::run_compression(cases / "ball");
@@ -86,10 +114,14 @@ int main(int argc, char** argv) {
       dem::validation::write_nine_disc_csv(compression, distortion, out);
       report_nine_disc(compression, distortion);
       std::printf("wrote %s and %s\n", (out / "nine_disc.csv").c_str(), (out / "nine_disc_distortion.csv").c_str());
+      verdict = dem::validation::judge_nine_disc(compression, distortion);
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
-    return 1;
+    return kFailure;
   }
-  return 0;
+  // The verdict: each check against the seed's or the theory's bound.
+  std::printf("\n");
+  verdict.print(stdout, app.get_subcommands().front()->get_name());
+  return verdict.passed() ? 0 : kCheckFailed;
 }

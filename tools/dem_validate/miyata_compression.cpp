@@ -21,7 +21,12 @@ template <int Dim>
 MiyataRun run_definition(const io::CaseDefinitionT<Dim>& def, const std::optional<std::filesystem::path>& out) {
   MiyataRun run;
   run.name = def.name;
+  run.dimension = Dim;
   run.settings = *def.output.compression;
+  for (const StageDefT<Dim>& stage : def.stages) {
+    run.rough = run.rough || (stage.trim && stage.trim->amplitude > 0.0);
+    if (stage.until.wall_stress_above) run.target_stress = stage.until.wall_stress_above->value;
+  }
   BasicWorld<Dim> world(def.world);
   io::CompressionAnalysisT<Dim> analysis(run.settings);
   std::optional<io::CompressionCsvT<Dim>> csv;
@@ -177,6 +182,30 @@ void write_miyata_summary(const std::filesystem::path& directory, const MiyataRu
                  f.bottom_decay_rate_error, f.bottom_excess_cv, f.largest_f[0], f.near_tail_share[0],
                  f.far_tail_share[0], f.largest_f[1], f.near_tail_share[1], f.far_tail_share[1], f.drops,
                  f.largest_drop);
+}
+
+Verdict judge_miyata(const MiyataRun& run, const MiyataFigures& f) {
+  Verdict verdict;
+  if (run.target_stress > 0.0) verdict.at_least("stress reached, Pa", run.results.last.stress, run.target_stress);
+  verdict.above("final stiffness / initial stiffness", f.initial_softness, 4.0);
+  const double straight = run.dimension == 3 ? 0.95 : run.rough ? 0.85 : 0.99;
+  verdict.above("final state's R²", f.final_r_squared, straight);
+  verdict.above("initial contact rate over 3x the final one, contacts per kPa", f.initial_contact_rate,
+                3.0 * f.final_contact_rate);
+  verdict.above("contacts on the loading plate at the end", f.final_loading_contacts, 4);
+  // The tail in 2D only: the 3D cell's plates carry some eight contacts,
+  // too few for a tail (its distribution is printed; docs/VALIDATION.md).
+  if (run.results.force_distribution && run.dimension == 2) {
+    for (std::size_t plate = 0; plate < 2; ++plate) {
+      const io::PlateForceDistribution& d = (*run.results.force_distribution)[plate];
+      const std::string name = plate == 0 ? "loading plate" : "bottom plate";
+      verdict.above(name + ": contacts in the tail", d.tail.contacts, 0);
+      verdict.at_least(name + ": the tail's decay rate", d.tail.decay_rate, 1.0);
+      verdict.above(name + ": share with 1 < f <= 2 over the share with f > 2", f.near_tail_share[plate],
+                    f.far_tail_share[plate]);
+    }
+  }
+  return verdict;
 }
 
 }  // namespace dem::validation

@@ -16,11 +16,16 @@
 #include <vector>
 
 #include "dem/io/compression_analysis.h"
+#include "verdict.h"
 
 namespace dem::validation {
 
 struct MiyataRun {
   std::string name;
+  int dimension = 2;
+  bool rough = false;         // a stage trims the surface with an amplitude (eq. 60)
+  double target_stress = 0.0;  // Pa: the stress the last stage that has one loads the plate to; 0 without
+
   int particles = 0;  // after trimming
   std::uint64_t cycles = 0;
   double seconds = 0.0;  // wall clock
@@ -85,6 +90,16 @@ struct MiyataFigures {
 MiyataFigures miyata_figures(const MiyataRun& run);
 
 void print_miyata_report(std::FILE* out, const MiyataRun& run, const MiyataFigures& figures);
+
+// What the seed's text states (3.2(3), 3.3; docs/VALIDATION.md lists the
+// bounds): the plate reaches its stress; the initial state is over four
+// times softer than the final one, which is straight (R² above 0.99 for a
+// smooth 2D surface, 0.85 for a rough one, 0.95 in 3D); the loading plate
+// gains contacts three times faster in the initial state than in the final
+// one, and ends with more than four; with a force distribution, in 2D,
+// each plate's tail above f = 1 falls with f (decay rate at least 1, more
+// contacts in (1, 2] than above 2).
+Verdict judge_miyata(const MiyataRun& run, const MiyataFigures& figures);
 // One row of the figures, miyata_summary.csv, in `directory`.
 void write_miyata_summary(const std::filesystem::path& directory, const MiyataRun& run, const MiyataFigures& f);
 

@@ -108,4 +108,62 @@ void write_nine_disc_csv(const CompressionReport& c, const DistortionReport& d, 
   if (!dist) throw std::runtime_error("cannot write " + distortion_path.string());
 }
 
+namespace {
+
+// The largest |a - b| / a of two histories' normal forces from `from` on.
+double largest_relative_difference(const ContactHistory& a, const ContactHistory& b, std::size_t from) {
+  double worst = 0.0;
+  for (std::size_t k = from; k < a.normal_force.size() && k < b.normal_force.size(); ++k) {
+    worst = std::max(worst, std::abs(a.normal_force[k] - b.normal_force[k]) / a.normal_force[k]);
+  }
+  return worst;
+}
+
+}  // namespace
+
+Verdict judge_nine_disc(const CompressionReport& c, const DistortionReport& d) {
+  Verdict verdict;
+  const double feq = c.equilibrium_force;
+  // Fig. 6: contact, global and both dampings reach the same F_eq within 1%;
+  // without damping the force oscillates about F_eq and does not settle.
+  verdict.below("Fig. 6: damped runs' spread about F_eq", c.damped_spread, 0.01);
+  verdict.near("Fig. 6: undamped mean / F_eq", c.undamped_mean / feq, 1.0, 0.01);
+  verdict.above("Fig. 6: undamped amplitude / F_eq", c.undamped_amplitude / feq, 0.05);
+  verdict.below("Fig. 6: undamped amplitude / F_eq (seed: about 0.15)", c.undamped_amplitude / feq, 0.5);
+  // Damped: settled at the end (the last 500 cycles vary by under 1e-4 F_eq).
+  const auto& f = c.damped.normal_force;
+  if (f.size() >= 500) {
+    const auto [lo, hi] = std::minmax_element(f.end() - 500, f.end());
+    verdict.below("Fig. 6: damped variation over the last 500 cycles / F_eq", (*hi - *lo) / feq, 1e-4);
+  } else {
+    verdict.expect("Fig. 6: 500 cycles of the damped run", false, std::to_string(f.size()) + " cycles");
+  }
+  // Fig. 7: faster loading, larger oscillation.
+  verdict.above("Fig. 7: amplitude at 0.12 over 3x the amplitude at 0.04", c.undamped_amplitude,
+                3.0 * c.slow_amplitude);
+  // Fig. 9(a): at 15 deg the two stiffness ratios nearly coincide; (b) at 30 deg they deviate significantly.
+  const std::size_t s = d.distortion_start;
+  const double d15 = largest_relative_difference(d.phi15_ks2_3, d.phi15_ks1, s);
+  const double d30 = largest_relative_difference(d.phi30_ks2_3, d.phi30_ks1, s);
+  verdict.below("Fig. 9a: ks/kn 2/3 against 1 at 15 deg, largest relative difference", d15, 0.03);
+  verdict.above("Fig. 9b: that difference at 30 deg over twice the one at 15 deg", d30, 2.0 * d15);
+  // Fig. 9(b): after undistorted compression F_n is less for ks/kn = 1 (the
+  // walls' shear carries more load); as shearing proceeds it overtakes the
+  // 2/3 one, peaks, and slip sets in and the force falls back.
+  const auto& low = d.phi30_ks2_3.normal_force;
+  const auto& high = d.phi30_ks1.normal_force;
+  if (s < high.size() && s < low.size()) {
+    verdict.below("Fig. 9b: F_n at the start of distortion, ks/kn 1 against 2/3", high[s], low[s]);
+    bool overtakes = false;
+    for (std::size_t k = s; k < high.size() && k < low.size(); ++k) overtakes = overtakes || high[k] > low[k];
+    verdict.expect("Fig. 9b: ks/kn 1 overtakes 2/3 under shear", overtakes);
+    const auto peak = std::max_element(high.begin() + static_cast<std::ptrdiff_t>(s), high.end());
+    verdict.above("Fig. 9b: ks/kn 1 peak over 1.05 of its end", *peak, 1.05 * high.back());
+    verdict.above("Fig. 9b: cycles after the peak", static_cast<double>(high.end() - peak), 100.0);
+  } else {
+    verdict.expect("Fig. 9b: distortion cycles recorded", false);
+  }
+  return verdict;
+}
+
 }  // namespace dem::validation

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "verdict.h"
+
 namespace dem::validation {
 
 // One case's history of the force at contact C (one entry per cycle, from cycle 1).
@@ -36,6 +38,13 @@ struct DistortionReport {
   std::size_t distortion_start = 0;  // index of the first distortion cycle in the histories
 };
 DistortionReport run_distortion(const std::filesystem::path& cases_dir);
+
+// What the seed's Figs. 6-9 show, as checks: the damped runs settle to one
+// F_eq, the undamped one oscillates about it (more when loaded faster),
+// and under distortion the stiffness ratio matters more at the higher
+// friction angle, the stiffer shear spring starting lower, overtaking,
+// peaking and then slipping.
+Verdict judge_nine_disc(const CompressionReport& compression, const DistortionReport& distortion);
 
 // Writes nine_disc.csv (cycle and the normal force at C for each compression
 // variant) and nine_disc_distortion.csv (cycle, F_n and F_s for each distortion variant).

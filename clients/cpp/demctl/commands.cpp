@@ -15,6 +15,7 @@
 #include "dem/client/errors.h"
 #include "exit_codes.h"
 #include "interrupt.h"
+#include "json.h"
 
 namespace demctl {
 
@@ -39,32 +40,73 @@ std::string read_file(const std::string& path) {
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
-// A progress bar on stderr, drawn only for a person (a terminal).
+// A progress bar on stderr, drawn only for a person (a terminal): the
+// share done, the rate in cycles per second (averaged over the last few
+// status updates) and the time left at that rate - "at most" for
+// run-until and run-programme, which may end before their cap.
 class ProgressBar {
  public:
   explicit ProgressBar(bool enabled) : enabled_(enabled && isatty(STDERR_FILENO) == 1) {}
   ~ProgressBar() { clear(); }
   void show(const Status& s) {
     if (!enabled_) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (seen_ && s.command_cycles_done > last_cycles_ && now > last_) {
+      const double rate = static_cast<double>(s.command_cycles_done - last_cycles_) /
+                          std::chrono::duration<double>(now - last_).count();
+      rate_ = rate_ > 0.0 ? 0.7 * rate_ + 0.3 * rate : rate;
+    }
+    if (!seen_ || s.command_cycles_done != last_cycles_) {
+      seen_ = true;
+      last_ = now;
+      last_cycles_ = s.command_cycles_done;
+    }
     constexpr int kWidth = 30;
     const int filled = static_cast<int>(s.progress * kWidth + 0.5);
-    std::fprintf(stderr, "\r[%s%s] %3.0f%%  cycle %llu, %llu of %llu", std::string(filled, '#').c_str(),
-                 std::string(kWidth - filled, '-').c_str(), 100.0 * s.progress,
-                 static_cast<unsigned long long>(s.cycle), static_cast<unsigned long long>(s.command_cycles_done),
-                 static_cast<unsigned long long>(s.command_cycles_total));
+    char pace[96] = "";
+    if (rate_ > 0.0) {
+      const auto left = s.command_cycles_total > s.command_cycles_done ? s.command_cycles_total - s.command_cycles_done : 0;
+      std::snprintf(pace, sizeof pace, ", %.0f cycles/s, %s%s left", rate_, s.command == "cycle" ? "" : "at most ",
+                    duration(static_cast<double>(left) / rate_).c_str());
+    }
+    const int width = std::fprintf(stderr, "\r[%s%s] %3.0f%%  cycle %llu, %llu of %llu%s%*s",
+                                   std::string(filled, '#').c_str(), std::string(kWidth - filled, '-').c_str(),
+                                   100.0 * s.progress, static_cast<unsigned long long>(s.cycle),
+                                   static_cast<unsigned long long>(s.command_cycles_done),
+                                   static_cast<unsigned long long>(s.command_cycles_total), pace, 4, "");
     std::fflush(stderr);
+    width_ = std::max(width_, width);
     shown_ = true;
   }
   void clear() {
     if (!shown_) return;
-    std::fprintf(stderr, "\r%80s\r", "");
+    std::fprintf(stderr, "\r%*s\r", width_, "");
     std::fflush(stderr);
     shown_ = false;
   }
 
  private:
+  // "42 s", "3 min 05 s", "2 h 05 min".
+  static std::string duration(double seconds) {
+    const auto whole = static_cast<long long>(seconds + 0.5);
+    char text[48];
+    if (whole < 60) {
+      std::snprintf(text, sizeof text, "%lld s", whole);
+    } else if (whole < 3600) {
+      std::snprintf(text, sizeof text, "%lld min %02lld s", whole / 60, whole % 60);
+    } else {
+      std::snprintf(text, sizeof text, "%lld h %02lld min", whole / 3600, (whole % 3600) / 60);
+    }
+    return text;
+  }
+
   bool enabled_;
   bool shown_ = false;
+  int width_ = 80;
+  bool seen_ = false;  // a status of this run was shown
+  std::chrono::steady_clock::time_point last_{};
+  std::uint64_t last_cycles_ = 0;
+  double rate_ = 0.0;
 };
 
 bool runs(const Status& status, const Client& client, std::uint64_t request) {
@@ -75,7 +117,7 @@ bool runs(const Status& status, const Client& client, std::uint64_t request) {
 // A cycle, run_until or run_programme just sent: with `wait`, shows progress until its
 // reply (Ctrl-C stops the run); without, returns once the server has
 // accepted it (it shows in the status) or refused it (a reply).
-int follow_run(const Global& global, Client& client, std::uint64_t request, bool wait) {
+int follow_run(const Global& global, Client& client, std::uint64_t request, bool wait, bool until = false) {
   if (!wait) {
     const auto deadline = std::chrono::steady_clock::now() + milliseconds(global.timeout);
     while (std::chrono::steady_clock::now() < deadline) {
@@ -99,6 +141,10 @@ int follow_run(const Global& global, Client& client, std::uint64_t request, bool
       bar.clear();
       if (!reply->ok()) throw dem::client::ServerError(std::move(*reply));
       print(*reply);
+      if (until && !reply->condition_met) {
+        std::cerr << "run-until: the cycle cap (" << reply->cycles_run << " cycles) came before the condition\n";
+        return kConditionNotMet;
+      }
       return kOk;
     }
     if (interrupted()) {
@@ -155,9 +201,13 @@ int servers(const Global& global, double discovery) {
   return kOk;
 }
 
-int status(const Global& global) {
+int status(const Global& global, bool json) {
   Client client = connect(global);
   const Reply reply = client.get_state();
+  if (json) {
+    std::cout << state_json(reply) << '\n';
+    return kOk;
+  }
   const Status& s = reply.state;
   std::cout << "server     " << s.server << "\nstate      " << dem::protocol::to_string(s.state) << '\n';
   if (!s.case_name.empty()) {
@@ -228,7 +278,7 @@ int run_until(const Global& global, const dem::protocol::RunUntilArgs& args, boo
     throw BadArguments("run-until: --stress and --settlement need --wall");
   }
   Client client = connect(global);
-  return follow_run(global, client, client.start_run_until(args), wait);
+  return follow_run(global, client, client.start_run_until(args), wait, true);
 }
 
 int stop(const Global& global, bool force) {

@@ -30,7 +30,7 @@ struct Global {
 dem::client::ConnectOptions connect_options(const Global& global);
 
 int servers(const Global& global, double discovery);
-int status(const Global& global);
+int status(const Global& global, bool json = false);
 int load(const Global& global, const std::string& file, bool on_server, bool binary);
 int wall_velocity(const Global& global, const std::string& wall, const std::vector<double>& values);
 int servo(const Global& global, const std::string& wall, double stress, double gain, double max_speed);
@@ -50,5 +50,12 @@ struct MonitorOptions {
   std::vector<std::string> walls;        // the plates to show; default: every wall
 };
 int monitor(const Global& global, const MonitorOptions& options);
+
+struct RecordOptions {
+  std::string file;                      // the MCAP file to write
+  std::optional<std::uint64_t> samples;  // stop after this many plate forces samples
+  std::optional<double> duration;        // stop after this many seconds
+};
+int record(const Global& global, const RecordOptions& options);
 
 }  // namespace demctl

@@ -2,11 +2,13 @@
 //   demctl [--server NAME] [--domain ID] SUBCOMMAND ...
 // Exit codes (exit_codes.h): 0 done; 1 other failure; 2 bad arguments;
 // 3 no such server within --timeout; 4 the server replied with an error;
-// 5 no reply in time; 130 interrupted.
+// 5 no reply in time; 6 run-until --wait ended at its cycle cap without
+// meeting its condition; 130 interrupted.
 #include <CLI/CLI.hpp>
 #include <cstdlib>
 #include <iostream>
 
+#include "dem/version.h"
 #include "commands.h"
 #include "dem/client/errors.h"
 #include "dem/dds/error.h"
@@ -27,9 +29,11 @@ int main(int argc, char** argv) {
   demctl::Global global;
   environment_defaults(global);
   CLI::App app{"Drives and watches dem_server simulations over DDS (loopback only by default)."};
+  app.set_version_flag("--version", "demctl " DEM_VERSION);
   app.require_subcommand(1);
   app.footer("Exit codes: 0 done, 1 other failure, 2 bad arguments, 3 no such server within --timeout,\n"
-             "4 the server replied with an error, 5 no reply in time, 130 interrupted.");
+             "4 the server replied with an error, 5 no reply in time, 6 run-until --wait reached its cycle cap\n"
+             "before its condition, 130 interrupted.");
   app.fallthrough();  // --server and --domain may also follow the subcommand
   app.add_option("-s,--server", global.server, "server name (default $DEM_SERVER, else dem)")->capture_default_str();
   app.add_option("-d,--domain", global.domain, "DDS domain id (default $DEM_DOMAIN, else 0)")
@@ -49,9 +53,10 @@ int main(int argc, char** argv) {
   servers->add_option("--wait", discovery, "seconds of discovery")->capture_default_str()->check(CLI::PositiveNumber);
   servers->callback([&] { action = [&] { return demctl::servers(global, discovery); }; });
 
-  app.add_subcommand("status", "the server's state, plates and contacts")->callback([&] {
-    action = [&] { return demctl::status(global); };
-  });
+  bool json = false;
+  auto* status = app.add_subcommand("status", "the server's state, plates and contacts");
+  status->add_flag("--json", json, "one JSON object with the messages' field names (docs/SERVICE.md), for scripts");
+  status->callback([&] { action = [&] { return demctl::status(global, json); }; });
 
   std::string case_file;
   bool on_server = false;
@@ -98,7 +103,8 @@ int main(int argc, char** argv) {
   auto* energy_option = run_until->add_option("--kinetic-energy", until_energy, "J: stop below");
   run_until->add_option("--max-cycles", until.max_cycles, "cycle cap")->required();
   run_until->add_option("--check-interval", until.check_interval, "cycles between checks (default every cycle)");
-  run_until->add_flag("-w,--wait", wait, "wait for the end, with a progress bar");
+  run_until->add_flag("-w,--wait", wait,
+                      "wait for the end, with a progress bar; exit 6 when the cycle cap comes before the condition");
   run_until->callback([&] {
     if (stress_option->count() > 0) until.stress = until_stress;
     if (settlement_option->count() > 0) until.settlement = until_settlement;
@@ -173,6 +179,23 @@ int main(int argc, char** argv) {
   monitor->callback([&] {
     if (samples_option->count() > 0) monitor_options.samples = samples;
     action = [&] { return demctl::monitor(global, monitor_options); };
+  });
+
+  demctl::RecordOptions record_options;
+  std::uint64_t record_samples = 0;
+  double record_duration = 0.0;
+  auto* record = app.add_subcommand("record", "record the telemetry to an MCAP file (ros2msg schemas, CDR messages: "
+                                              "a ROS 2 bag, for Foxglove and Python's dem.recording)");
+  record->add_option("FILE", record_options.file, "the .mcap file to write")->required();
+  auto* record_samples_option =
+      record->add_option("-n,--samples", record_samples, "stop after N plate forces samples (default: Ctrl-C or the "
+                                                          "server stopping)");
+  auto* record_duration_option =
+      record->add_option("--duration", record_duration, "stop after this many seconds")->check(CLI::PositiveNumber);
+  record->callback([&] {
+    if (record_samples_option->count() > 0) record_options.samples = record_samples;
+    if (record_duration_option->count() > 0) record_options.duration = record_duration;
+    action = [&] { return demctl::record(global, record_options); };
   });
 
   bool no_wait = false;

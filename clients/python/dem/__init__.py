@@ -10,12 +10,12 @@ case's stages run through the service (dem.programme); the seeds' figures
     import dem
     with dem.ServerProcess("press", domain=21, out="out/press") as server, server.connect() as press:
         press.load_case("cases/ball/nine_disc_damped.case.txtpb")
-        press.set_wall_velocity("top", (0, -12))
-        press.cycle(3000)
+        press.set_wall_velocity("top", (0, -0.5))     # lower the top wall at 0.5 m/s
+        press.run_until(wall="top", stress=1e6, max_cycles=2000)   # until it carries 1 MPa
         contacts = press.contacts(wall="top")
 """
 
-from . import cases, errors
+from . import _build_info, cases, errors
 from ._client import CONTACT_DTYPE, ContactStats, PlateForces, Reply, Status, WallForce
 from .client import Client, list_servers
 from .errors import (CaseFileError, DdsError, DemError, NoSuchServer, ProgrammeError, ReplyTimeout,
@@ -24,6 +24,9 @@ from .paths import use_loopback
 from .programme import run_programme
 from .server_process import ServerProcess
 from .telemetry import Subscription
+
+# The project's version (CMakeLists.txt's project(VERSION)), as every program's --version.
+__version__ = _build_info.VERSION
 
 __all__ = [
     "CONTACT_DTYPE",

@@ -5,8 +5,8 @@ over rcl; the GIL is released while a reply is awaited.
 
     with dem.Client("press", domain=7) as press:
         press.load_case("cases/ball/nine_disc_damped.case.txtpb")
-        press.set_wall_velocity("top", (0, -12))
-        press.cycle(3000)
+        press.set_wall_velocity("top", (0, -0.5))     # lower the top wall at 0.5 m/s
+        press.run_until(wall="top", stress=1e6, max_cycles=2000)   # until it carries 1 MPa
         contacts = press.contacts(wall="top")    # numpy structured array
 
 A reply with an error status raises dem.ServerError carrying the server's

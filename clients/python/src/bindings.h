@@ -11,5 +11,6 @@ void bind_messages(pybind11::module_& module);   // Status, WallForce, PlateForc
 void bind_errors(pybind11::module_& module);     // C++ client exceptions -> dem.errors
 void bind_client(pybind11::module_& module);     // Client, list_servers
 void bind_telemetry(pybind11::module_& module);  // Telemetry (a queue of samples)
+void bind_tap(pybind11::module_& module);        // TelemetryTap (every server's telemetry as CDR bytes)
 
 }  // namespace dem::python

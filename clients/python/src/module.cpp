@@ -11,4 +11,5 @@ PYBIND11_MODULE(_client, module) {
   dem::python::bind_errors(module);
   dem::python::bind_client(module);
   dem::python::bind_telemetry(module);
+  dem::python::bind_tap(module);
 }

@@ -238,6 +238,10 @@ struct WorldDefT {
   // 0 = a tenth of the mean particle radius.
   double contact_tolerance = 0.0;  // m
   int threads = 0;                 // 0 = OMP_NUM_THREADS if set, else all the machine's cores
+  // Keep the energy budget (EnergyBudget: work of gravity, walls, dashpots,
+  // friction, damping). It costs a little on every contact and particle in
+  // every cycle, so a world keeps it only when asked.
+  bool energy_budget = false;
 };
 
 using ParticleDef = ParticleDefT<2>;

@@ -71,11 +71,16 @@ struct AssemblyMeasures {
   double out_of_balance = 0.0;
   double max_contact_force = 0.0;  // N
   int contacts = 0;                // touching particle-particle and particle-wall pairs
+  int particle_contacts = 0;       // of which particle-particle: the coordination number is twice this over N
   int sliding_contacts = 0;        // those at the Coulomb limit (eq. 19)
   // Randall (1989) 4.35-4.40: the time step over the smallest particle-wise
   // critical step 2 (m dx / d|sum F|)^(1/2) seen in the last cycle. Above
   // 0.3 the step is too large for the stiffness the particles meet.
   double time_step_ratio = 0.0;
+  // The deepest contact: its overlap over the smaller radius of its bodies
+  // (a wall contact's: the particle's; shaped particles: the bounding
+  // radius), for the health check (dem/health.h); 0 without contacts.
+  double deepest_overlap = 0.0;
   EnergyBudget energy;
 };
 

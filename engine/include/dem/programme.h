@@ -53,6 +53,12 @@ struct PlaceWallDef {
   double clearance = 0.0;  // m
 };
 
+// A time step: fixed seconds, or a fraction of the critical step.
+struct TimeStepSetting {
+  double fraction = 0.0;  // (0, 1] when fixed is 0
+  double fixed = 0.0;     // s, > 0 overrides the fraction
+};
+
 template <int Dim>
 struct StageDefT {
   std::string name;
@@ -61,6 +67,8 @@ struct StageDefT {
   std::optional<PlaceWallDef> place_wall;
   std::vector<std::pair<WallId, WallMotionT<Dim>>> wall_motions;  // applied when the stage starts
   std::optional<DampingDef> damping;                              // applied when the stage starts
+  std::optional<TimeStepSetting> time_step;                       // from this stage on
+  std::vector<std::pair<MaterialId, double>> frictions;           // materials' friction from this stage on
   std::uint64_t cycles = 0;  // the stage's length, or its cap when conditions are set
   StopConditions until;
 };

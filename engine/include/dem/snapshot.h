@@ -39,9 +39,13 @@ struct MindlinHistory {
 };
 
 // One row of the contact table: its history (Cundall & Strack eq. 18) and
-// what the last force pass made of it. Rows that do not touch carry no
-// force history; they are stored for the contact search of non-round
-// particles, which starts where the last cycle's ended.
+// what the last force pass made of it. A pair row's `first` is the particle
+// with the lower id. Rows that do not touch carry no force history; they
+// are stored for the contact search of non-round particles, which starts
+// where the last cycle's ended. The history restores the row; overlap,
+// normal, point, dashpots, force and moments are what the pass made of it
+// (for readers of the snapshot) and are not read back: the restored world
+// computes the same from the same state.
 template <int Dim>
 struct ContactSnapshotT {
   ParticleId first = kInvalidId;
@@ -62,9 +66,12 @@ struct ContactSnapshotT {
   bool touching = true;
   MindlinHistory mindlin;                     // Hertz-Mindlin law only
   Vec<Dim> mindlin_axis = Vec<Dim>::Zero();   // its loading axis in the tangent plane
-  // The dashpot force of the last cycle and the relative velocity it came
-  // from: their work is booked in the next cycle (energy budget).
+  double mindlin_theta = 1.0;                 // the stiffness factor of the last step (sizes the tangential dashpot)
+  // The dashpot force and the tangential spring force of the last cycle and
+  // the relative velocity they came from: their work is booked in the next
+  // cycle (energy budget).
   Vec<Dim> dashpot_force = Vec<Dim>::Zero();
+  Vec<Dim> tangential_spring = Vec<Dim>::Zero();
   Vec<Dim> relative_velocity = Vec<Dim>::Zero();
   // Where the last contact search ended (superquadric parametric angles,
   // ellipsoid Lagrange multipliers), if there was one.
@@ -104,6 +111,12 @@ struct WorldSnapshotT {
   double particle_travel = 0.0;
   double wall_travel = 0.0;
   bool contacts_stale = false;
+  // The order the engine stores the particles in (ids, closest in space
+  // closest together) and the cycle it was last sorted; empty: id order,
+  // sorted at the next rebuild. Float sums follow this order, so an exact
+  // restart needs it.
+  std::vector<ParticleId> particle_order;
+  std::uint64_t sorted_cycle = 0;
   EnergyBudget energy;              // the accumulated terms since the world was first built
   double tangential_work = 0.0;     // J, done on the tangential springs since then
   std::uint64_t cycle = 0;

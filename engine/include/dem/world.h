@@ -3,7 +3,9 @@
 // Written once over the dimension: World is the 2D world, World3 the 3D one.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <memory>
 #include <optional>
 #include <span>
@@ -20,16 +22,59 @@ namespace dem {
 template <int Dim>
 struct WorldState;  // engine/src: particles, walls, contacts
 
-// Read-only views of the particles' state arrays (structure of arrays,
-// indexed by ParticleId). Valid until the next call that changes the World.
+// One particle quantity read by ParticleId. The engine stores particles in
+// its own order (close in space, close in memory), so this looks each id up;
+// iterating goes through the ids in order.
+template <typename T>
+class ById {
+ public:
+  ById(std::span<const T> values, std::span<const std::int32_t> slots) : values_(values), slots_(slots) {}
+  const T& operator[](ParticleId id) const { return values_[static_cast<std::size_t>(slots_[static_cast<std::size_t>(id)])]; }
+  std::size_t size() const { return slots_.size(); }
+  bool empty() const { return slots_.empty(); }
+
+  class iterator {
+   public:
+    using iterator_category = std::forward_iterator_tag;
+    using value_type = T;
+    using difference_type = std::ptrdiff_t;
+    using pointer = const T*;
+    using reference = const T&;
+    iterator(const ById* view, ParticleId id) : view_(view), id_(id) {}
+    const T& operator*() const { return (*view_)[id_]; }
+    iterator& operator++() {
+      ++id_;
+      return *this;
+    }
+    iterator operator++(int) {
+      iterator old = *this;
+      ++id_;
+      return old;
+    }
+    bool operator==(const iterator& o) const { return id_ == o.id_; }
+
+   private:
+    const ById* view_;
+    ParticleId id_;
+  };
+  iterator begin() const { return {this, 0}; }
+  iterator end() const { return {this, static_cast<ParticleId>(slots_.size())}; }
+
+ private:
+  std::span<const T> values_;
+  std::span<const std::int32_t> slots_;
+};
+
+// Read-only views of the particles' state, by ParticleId. Valid until the
+// next call that changes the World.
 template <int Dim>
 struct ParticleViewT {
-  std::span<const Vec<Dim>> position;
-  std::span<const Vec<Dim>> velocity;  // at the last half step, m/s
-  std::span<const Spin<Dim>> angular_velocity;
-  std::span<const Orientation<Dim>> rotation;  // 2D: accumulated angle, rad; 3D: unit quaternion
-  std::span<const double> radius;
-  std::span<const double> mass;
+  ById<Vec<Dim>> position;
+  ById<Vec<Dim>> velocity;  // at the last half step, m/s
+  ById<Spin<Dim>> angular_velocity;
+  ById<Orientation<Dim>> rotation;  // 2D: accumulated angle, rad; 3D: unit quaternion
+  ById<double> radius;
+  ById<double> mass;
 };
 
 template <int Dim>
@@ -54,6 +99,8 @@ class BasicWorld {
   BasicWorld& operator=(const BasicWorld&) = delete;
 
   // Runs n calculation cycles (Cundall & Strack, The calculation cycle).
+  // Between cycles the contact forces, wall forces and force sums belong to
+  // the particles' current positions.
   void cycle(std::uint64_t n = 1);
 
   std::uint64_t cycle_count() const;
@@ -102,11 +149,17 @@ class BasicWorld {
   int threads() const;
   void set_threads(int threads);  // 0 = all cores; results do not depend on it
 
+  // Whether the world keeps the energy budget (WorldDefT::energy_budget);
+  // without it AssemblyMeasures::energy holds only the kinetic energy.
+  bool energy_budget() const;
+
   // Everything needed to continue this run exactly (see snapshot.h).
   Snapshot snapshot() const;
 
   // The time step as a fraction of the critical step (0, 1]; recomputes the step.
   void set_time_step_fraction(double fraction);
+  // A fixed time step, s (> 0).
+  void set_fixed_time_step(double seconds);
   // Friction coefficient tan(phi) of a material; recomputes the pair table
   // (contact models that set their own friction keep it).
   void set_friction(MaterialId material, double friction);

@@ -1,6 +1,6 @@
 """python3 -m dem.plots FIGURE ...: a figure from files, without a server.
 
-    stress-settlement MONITOR_CSV PNG [--wall W ...]   a demctl monitor recording
+    stress-settlement FILE PNG [--wall W ...]   from monitor.csv, walls.csv, compression.csv or a .mcap recording
 """
 
 import sys

@@ -62,6 +62,77 @@ class StressSettlementSeries:
                      float(row[f"{wall}_stress"]), 0))
         return series
 
+    @classmethod
+    def from_walls_csv(cls, path, walls=None):
+        """walls.csv of dem_run or dem_server: one row per wall per output
+        interval with its normal_stress and settlement."""
+        with open(path, newline="") as source:
+            rows = list(csv.DictReader(source))
+        shown = list(dict.fromkeys(row["wall"] for row in rows))
+        unknown = [w for w in walls or [] if w not in shown]
+        if unknown:
+            raise ValueError(f"{path}: no wall {', '.join(unknown)} (walls: {', '.join(shown)})")
+        series = cls(walls or shown)
+        for row in rows:
+            if row["wall"] in series.walls:
+                series._rows.setdefault(row["wall"], []).append(
+                    (int(row["cycle"]), float(row["time"]), float(row["settlement"]), float(row["normal_stress"]),
+                     int(row["contacts"])))
+        return series
+
+    @classmethod
+    def from_compression_csv(cls, path, walls=None):
+        """compression.csv of the plate loading analyses: the loading plate's
+        stress and settlement from the loading stage on (its name is not in
+        the file: the curve is called "loading plate")."""
+        if walls:
+            raise ValueError(f"{path}: compression.csv holds the loading plate only; leave out --wall "
+                             "(walls.csv has every wall)")
+        with open(path, newline="") as source:
+            rows = list(csv.DictReader(source))
+        series = cls(["loading plate"])
+        series._rows["loading plate"] = [(int(row["cycle"]), float(row["time"]), float(row["settlement"]),
+                                          float(row["stress"]), int(row["loading_contacts"])) for row in rows]
+        return series
+
+    @classmethod
+    def from_recording(cls, path, walls=None):
+        """A `demctl record` recording (MCAP): every plate forces sample in it."""
+        from ..recording import Recording
+
+        recording = Recording(path)
+        topics = [t for t, schema in recording.topics().items() if schema == "dem_interfaces/msg/PlateForces"]
+        if not topics:
+            raise ValueError(f"{path}: no plate forces in this recording (topics: {', '.join(recording.topics())})")
+        series = cls(walls)
+        for topic in topics:
+            for message in recording.messages(topic):
+                series.add(message.data)
+        shown = list(series._rows)
+        unknown = [w for w in walls or [] if w not in shown]
+        if unknown:
+            raise ValueError(f"{path}: no wall {', '.join(unknown)} in the plate forces (walls: {', '.join(shown)})")
+        return series
+
+    @classmethod
+    def from_file(cls, path, walls=None):
+        """Any file that holds plates' stress and settlement: a `demctl
+        monitor --csv` table, walls.csv or compression.csv of dem_run and
+        dem_server, or a `demctl record` recording (.mcap)."""
+        path = pathlib.Path(path)
+        if path.suffix == ".mcap":
+            return cls.from_recording(path, walls)
+        with open(path, newline="") as source:
+            columns = next(csv.reader(source), [])
+        if {"wall", "normal_stress", "settlement"} <= set(columns):
+            return cls.from_walls_csv(path, walls)
+        if {"stress", "settlement", "loading_contacts"} <= set(columns):
+            return cls.from_compression_csv(path, walls)
+        if any(c.endswith("_stress") for c in columns) and any(c.endswith("_settlement") for c in columns):
+            return cls.from_monitor_csv(path, walls)
+        raise ValueError(f"{path}: no plate stress and settlement in it (columns: {', '.join(columns) or 'none'}); "
+                         "give a demctl monitor --csv table, walls.csv, compression.csv or a demctl record .mcap")
+
     def names(self):
         return list(self.walls) if self.walls is not None else list(self._rows)
 
@@ -181,16 +252,21 @@ class LiveStressSettlement:
 
 
 def main(argv=None):
-    """python3 -m dem.plots stress-settlement MONITOR_CSV PNG [--wall W ...]:
-    the stress-settlement curve of a ``demctl monitor --csv`` recording."""
+    """python3 -m dem.plots stress-settlement FILE PNG [--wall W ...]: the
+    stress-settlement curve from a ``demctl monitor --csv`` table, walls.csv
+    or compression.csv (dem_run, dem_server), or a ``demctl record``
+    recording (.mcap)."""
     import argparse
 
     parser = argparse.ArgumentParser(prog="python3 -m dem.plots stress-settlement", description=main.__doc__)
-    parser.add_argument("monitor_csv")
+    parser.add_argument("file", help="monitor.csv, walls.csv, compression.csv or a .mcap recording")
     parser.add_argument("png")
     parser.add_argument("--wall", action="append", help="plates to draw (default: every plate recorded)")
     parser.add_argument("--title")
     args = parser.parse_args(argv)
-    series = StressSettlementSeries.from_monitor_csv(args.monitor_csv, args.wall)
+    try:
+        series = StressSettlementSeries.from_file(args.file, args.wall)
+    except (OSError, ValueError) as error:
+        parser.exit(2, f"{parser.prog}: error: {error}\n")
     plot_stress_settlement(series, png=args.png, title=args.title)
     print(f"wrote {args.png} ({len(series)} points)")

@@ -17,7 +17,8 @@
 
 namespace dem::dds {
 
-// The compiled-in default: "file://<source>/config/cyclonedds-loopback.xml".
+// The compiled-in default: "file://<source>/config/cyclonedds-loopback.xml",
+// or that file's text when it is gone (an installed program).
 std::string default_config();
 
 // Turns an option value into a Cyclone configuration string: empty -> the

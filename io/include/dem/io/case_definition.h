@@ -27,6 +27,7 @@ struct OutputSettings {
   bool contacts_file = true;     // write contacts.csv at the end
   std::vector<Probe> probes;
   std::optional<CompressionSettings> compression;  // the plate loading analyses, when asked for
+  std::uint64_t vtk_interval = 0;  // cycles between ParaView files; 0 = none
 };
 
 // Written once over the dimension, like the engine's definitions: the 2D

@@ -6,14 +6,24 @@
 //
 // Time series, one row per call (dem_run calls them every output interval):
 //   walls.csv     2D: cycle,time,wall,fx,fy,moment,normal_force,contacts,
-//                     eccentricity,x,y,dx,dy
+//                     eccentricity,x,y,dx,dy,normal_stress,settlement
 //                 3D: cycle,time,wall,fx,fy,fz,moment_x,moment_y,moment_z,
 //                     normal_force,contacts,eccentricity_u,eccentricity_v,
-//                     x,y,z,dx,dy,dz
+//                     x,y,z,dx,dy,dz,normal_stress,settlement
 //                 long format: one row per wall; wall is the wall's name,
 //                 x,y(,z) its reference point P and dx,dy(,dz) P's
 //                 displacement; the 3D eccentricities are along the wall's
-//                 two sides, u (direction) and v (direction2).
+//                 two sides, u (direction) and v (direction2);
+//                 normal_stress is normal_force over the wall's area (Pa;
+//                 World::wall_area) and settlement how far it has moved
+//                 along its normal into the particles since it was built or
+//                 placed (m), as the service's telemetry reports them.
+//                 The forces of a row at cycle N come from the force pass
+//                 that ends cycle N, on the positions the particles and
+//                 walls have at that moment: forces, positions,
+//                 displacements and settlement belong to the same instant.
+//                 (The same holds for probes.csv and contacts.csv against
+//                 particles.csv.)
 //   assembly.csv  cycle,time,kinetic_energy,out_of_balance,max_contact_force,
 //                 contacts,sliding_contacts,time_step_ratio,gravity_work,
 //                 wall_work,strain_energy,contact_damping,friction,
@@ -35,11 +45,17 @@
 //                 (second is the wall's name, as in walls.csv). In 3D the
 //                 shear force and damping are magnitudes and tangential_* is
 //                 the shear spring's force on the first particle.
-//   particles.csv 2D: id,x,y,radius,vx,vy,angular_velocity,rotation
+//   particles.csv 2D: id,x,y,radius,vx,vy,angular_velocity,rotation,
+//                     material,a,b,n
 //                 3D: id,x,y,z,radius,vx,vy,vz,angular_velocity_x,
 //                     angular_velocity_y,angular_velocity_z,rotation_w,
-//                     rotation_x,rotation_y,rotation_z
-//                 (the 3D rotation is a unit quaternion).
+//                     rotation_x,rotation_y,rotation_z,material,a1,a2,a3
+//                 (the 3D rotation is a unit quaternion; material is the
+//                 material's name). The shape: a 2D superquadric's
+//                 semi-axes a, b and exponent n (Miyata eq. 34), turned by
+//                 the rotation; a disc's R, R, 2. A 3D ellipsoid's
+//                 semi-axes along its body axes (eq. 43); a sphere's R, R, R.
+//                 radius is a shaped particle's bounding radius.
 // Units are the engine's (SI); booleans (touching, sliding) are 0 or 1.
 #pragma once
 

@@ -1,7 +1,7 @@
 // The engine's health status (dem/health.h) as the server acts on it, the
 // same for a cycle or run_until command, a run_programme command and the
-// one-shot mode: the world assessed at a pace that costs at most about
-// 1/40 of the run (and whenever asked), its state copied after a healthy
+// one-shot mode: the world assessed at a pace that costs about 1/100 of
+// the run (and whenever asked), its state copied after a healthy
 // assessment, so an unhealthy run can be stopped with the last good state
 // kept (docs/RELIABILITY.md).
 #pragma once
@@ -27,7 +27,7 @@ class HealthWatch {
 
  private:
   std::unique_ptr<StateCheckpoint> last_good_;
-  io::Pacing pacing_{40};  // at most 1/40 of the run: it runs beside the StateCache refresh
+  io::Pacing pacing_{100};  // about 1/100 of the run, beside the StateCache refresh's 1/40
 };
 
 }  // namespace dem::service

@@ -6,7 +6,10 @@
 // stages.csv, a row per stage of a programme (one-shot or run_programme);
 // when the case asks for them (output.compression), the plate loading
 // analyses of a programme, the same files as dem_run writes
-// (io/compression_csv.h). A file that
+// (io/compression_csv.h); and while a programme runs, its ParaView files
+// (io/vtk_series.h) every vtk_interval cycles - the case's
+// output.vtk_interval unless the server was given one - and at its end.
+// A file that
 // cannot be written is logged and recording stops; the simulation goes on
 // (a one-shot run then fails: failed()).
 #pragma once
@@ -23,6 +26,7 @@
 #include "dem/io/compression_settings.h"
 #include "dem/io/csv_file.h"
 #include "dem/io/csv_writers.h"
+#include "dem/io/vtk_series.h"
 #include "dem/programme.h"
 #include "dem/world.h"
 
@@ -30,20 +34,22 @@ namespace dem::service {
 
 class OutputRecorder {
  public:
-  OutputRecorder(std::filesystem::path output_directory, bool enabled);
+  // `vtk_interval`, when set, replaces every case's output.vtk_interval.
+  OutputRecorder(std::filesystem::path output_directory, bool enabled,
+                 std::optional<std::uint64_t> vtk_interval = std::nullopt);
 
   // After a load; `resume`: a checkpoint's, whose tables are cut back to
   // it and appended to, and whose analyses carry on (io/checkpoint_store.h).
   template <int Dim>
   void start(const std::string& case_name, const BasicWorld<Dim>& world,
              std::optional<io::CompressionSettings> compression = std::nullopt,
-             const io::ResumePoint* resume = nullptr);
+             std::uint64_t vtk_interval = 0, const io::ResumePoint* resume = nullptr);
   // The tables' lengths (rows flushed) and the analyses' state, for a checkpoint.
   void fill(io::ResumePoint& point);
   // A row of the time series, unless this cycle has one already (a load
   // and its first telemetry, a stage's end and the next stage's start);
   // with the stage of a programme running, a sample of the plate loading
-  // analyses too.
+  // analyses and the ParaView step when one is due too.
   template <int Dim>
   void record(const BasicWorld<Dim>& world, std::optional<std::size_t> stage = std::nullopt);
   // A stage of a one-shot run's programme has ended, at `cycle` and `time`.
@@ -83,6 +89,9 @@ class OutputRecorder {
   std::unique_ptr<io::AssemblyCsv> assembly_;
   std::unique_ptr<io::CsvFile> stages_;
   std::optional<io::CompressionSettings> compression_settings_;
+  std::optional<std::uint64_t> vtk_override_;
+  std::uint64_t vtk_interval_ = 0;
+  std::unique_ptr<io::VtkSeries> vtk_;  // made at a programme's first row
   std::unique_ptr<Compression<2>> compression2_;
   std::unique_ptr<Compression<3>> compression3_;
   std::optional<std::uint64_t> last_cycle_;

@@ -49,7 +49,12 @@ class WorldSession {
   virtual int particle_count() const = 0;
   virtual int wall_count() const = 0;
   virtual std::uint64_t state_hash() const = 0;
-  virtual double kinetic_energy() const = 0;  // J
+  virtual double kinetic_energy() const = 0;  // J (a pass over the particles and the contacts)
+  // A motion not finite or a particle flung out (HealthMonitorT::
+  // motion_suspect): a pass over the particles alone, cheap enough after
+  // every chunk, for what a blow-up reaches between two paced health
+  // assessments.
+  virtual bool motion_suspect() const = 0;
 
   virtual WallId find_wall(std::string_view name) const = 0;  // kInvalidId when unknown
   virtual std::string wall_name(WallId wall) const = 0;
@@ -113,9 +118,12 @@ class WorldSession {
   virtual void finish_tables(OutputRecorder& recorder) const = 0;
 };
 
-// `compression`: the case's plate loading analyses (output.compression), if any.
+// `compression`: the case's plate loading analyses (output.compression), if
+// any; `vtk_interval`: the case's cycles between ParaView files of a
+// programme (output.vtk_interval; 0 = none).
 template <int Dim>
 std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages = {},
-                                           std::optional<io::CompressionSettings> compression = std::nullopt);
+                                           std::optional<io::CompressionSettings> compression = std::nullopt,
+                                           std::uint64_t vtk_interval = 0);
 
 }  // namespace dem::service

@@ -1,0 +1,243 @@
+// The force pass over the pair rows of round particles, in batches. In a
+// dense assembly about half the rows of the neighbour list touch, in no
+// order a branch predictor could learn, and each touching row is a long
+// chain of dependent roots and divisions. So a batch of rows is taken in
+// three sweeps: which rows touch (squared distances, no branches; the
+// touching ones are packed together), the contact law on the packed rows
+// (one straight loop over arrays, which the compiler turns into vector
+// instructions, so several contacts share each chain), then the shares
+// added into the sums in row order, exactly as the row-by-row pass adds
+// them. The law and the geometry are the same functions as there, so the
+// rows come out bit for bit as the row-by-row pass and the reports compute
+// them.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+
+#include "contact_blocks.h"
+#include "contact_row.h"
+
+namespace dem {
+
+// The batched pass serves round particles whose law is branch-free enough
+// (Law::kBatchable), sharing one parameter set, without the energy
+// budget's bookkeeping (contact_forces.cpp chooses).
+template <typename Shape>
+constexpr bool kBatchableShape = Shape::round;
+
+template <typename Law, int Dim>
+void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows,
+                        ContactBlocks<Dim>& blocks, int b) {
+  constexpr int kBatch = 64;
+  const ContactParams& params = *in.shared_params;
+  const double dt = in.dt;
+  // The packed rows of one batch, structure of arrays.
+  alignas(64) double dx[Dim][kBatch], v1[Dim][kBatch], v2[Dim][kBatch];
+  alignas(64) double w1[3][kBatch], w2[3][kBatch], shear[3][kBatch];
+  alignas(64) double distance2[kBatch], rx[kBatch], ry[kBatch], mx[kBatch], my[kBatch], normal_force[kBatch];
+  alignas(64) double force[Dim][kBatch], lever[3][kBatch], overlap[kBatch];
+  // Flags travel as doubles: one byte-sized array would make the compiler
+  // take 32 contacts per vector step, far more than the registers hold.
+  alignas(64) double was_touching[kBatch], sliding[kBatch];
+  std::int32_t row[kBatch];
+  Slot first_of[kBatch], second_of[kBatch];
+
+  // Plain pointers: the flag bytes stored below could alias any vector's
+  // own pointer, so reading through the vectors would reload them all.
+  const Slot* first = rows.first.data();
+  const std::int32_t* second = rows.second.data();
+  std::uint8_t* row_flags = rows.flags.data();
+  ShearForce<Dim>* row_shear = rows.shear.data();
+  double* row_normal_force = rows.normal_force.data();
+  std::uint64_t* formed_cycle = rows.formed_cycle.data();
+  const Vec<Dim>* position = p.position.data();
+  const Vec<Dim>* velocity = p.velocity.data();
+  const Spin<Dim>* angular_velocity = p.angular_velocity.data();
+  const double* radius = p.radius.data();
+  const double* mass = p.mass.data();
+  Vec<Dim>* particle_force = p.force.data();
+  Spin<Dim>* particle_moment = p.moment.data();
+  const std::int32_t* cross_row = blocks.cross_row.data();
+  const std::int32_t* cross_slot = blocks.cross_slot.data();
+  Vec<Dim>* deferred_force = blocks.deferred_force.data();
+  Spin<Dim>* deferred_moment = blocks.deferred_moment.data();
+  const Periodic<Dim> periodic = in.periodic;
+  const std::uint64_t cycle = in.cycle;
+
+  std::int32_t cross = blocks.cross_begin[b];
+  const std::int32_t cross_end = blocks.cross_begin[b + 1];
+  Slot pending = -1;  // the first particle of the rows being summed
+  Vec<Dim> pending_force = Vec<Dim>::Zero();
+  Spin<Dim> pending_moment = Space<Dim>::zero_spin();
+  auto flush_pending = [&] {
+    if (pending < 0) return;
+    particle_force[pending] += pending_force;
+    particle_moment[pending] += pending_moment;
+  };
+  // Rows crossing blocks up to `r` that did not touch: nothing to set aside.
+  auto skip_crossing_before = [&](std::int32_t r) {
+    while (cross < cross_end && cross_row[cross] < r) {
+      deferred_force[cross_slot[cross]] = Vec<Dim>::Zero();
+      deferred_moment[cross_slot[cross]] = Space<Dim>::zero_spin();
+      ++cross;
+    }
+  };
+  // The rows to test: the near rows, or, when they are to be sorted out
+  // again, every row of the block, keeping those within the margin.
+  const std::int32_t begin = blocks.pair_begin[b], end = blocks.pair_begin[b + 1];
+  const bool sort_out = blocks.near_stale;
+  std::int32_t* near = blocks.near_rows.data() + begin;
+  const std::int32_t listed = sort_out ? end - begin : blocks.near_count[b];
+  const double margin = in.near_margin;
+  std::int32_t kept = 0;
+  for (std::int32_t k0 = 0; k0 < listed; k0 += kBatch) {
+    const std::int32_t k1 = std::min(listed, k0 + kBatch);
+    // 1. Which rows touch (eq. 8): pack them; a row that stopped touching
+    // loses its history.
+    int count = 0;
+    for (std::int32_t k = k0; k < k1; ++k) {
+      const std::int32_t r = sort_out ? begin + k : near[k];
+      const Slot x = first[r], y = second[r];
+      const Vec<Dim> d = periodic.separation(position[x], position[y]);
+      const double reach = radius[x] + radius[y];
+      const double d2 = d.squaredNorm();
+      for (int c = 0; c < Dim; ++c) dx[c][count] = d[c];
+      distance2[count] = d2;
+      row[count] = r;
+      first_of[count] = x;
+      second_of[count] = y;
+      const bool touch = d2 < reach * reach;
+      // Whether a row touches follows no pattern: no branch on it, only on
+      // the rare row that has just stopped touching.
+      if ((row_flags[r] & kTouching) & !touch) separate(rows, r);
+      count += touch;
+      if (sort_out) {  // (kept <= k: the list is rewritten behind the reading)
+        near[kept] = r;
+        kept += d2 < (reach + margin) * (reach + margin);
+      }
+    }
+    // Gather what the law needs of each packed row's two particles.
+    for (int j = 0; j < count; ++j) {
+      const std::int32_t r = row[j];
+      const Slot x = first_of[j], y = second_of[j];
+      rx[j] = radius[x];
+      ry[j] = radius[y];
+      mx[j] = mass[x];
+      my[j] = mass[y];
+      for (int k = 0; k < Dim; ++k) {
+        v1[k][j] = velocity[x][k];
+        v2[k][j] = velocity[y][k];
+      }
+      if constexpr (Dim == 3) {
+        for (int k = 0; k < 3; ++k) {
+          w1[k][j] = angular_velocity[x][k];
+          w2[k][j] = angular_velocity[y][k];
+          shear[k][j] = row_shear[r][k];
+        }
+      } else {
+        w1[0][j] = angular_velocity[x];
+        w2[0][j] = angular_velocity[y];
+        shear[0][j] = row_shear[r];
+      }
+      if constexpr (Law::kNormalHistory) normal_force[j] = row_normal_force[r];
+      was_touching[j] = (row_flags[r] & kTouching) != 0 ? 1.0 : 0.0;
+    }
+    // 2. The contact law on the packed rows (Cundall & Strack eqs. 9-19).
+    for (int j = 0; j < count; ++j) {
+      Vec<Dim> d, va, vb;
+      for (int k = 0; k < Dim; ++k) {
+        d[k] = dx[k][j];
+        va[k] = v1[k][j];
+        vb[k] = v2[k][j];
+      }
+      Spin<Dim> wa, wb;
+      ContactHistory<Dim> h;
+      if constexpr (Dim == 3) {
+        wa = Vec3(w1[0][j], w1[1][j], w1[2][j]);
+        wb = Vec3(w2[0][j], w2[1][j], w2[2][j]);
+        h.shear = Vec3(shear[0][j], shear[1][j], shear[2][j]);
+      } else {
+        wa = w1[0][j];
+        wb = w2[0][j];
+        h.shear = shear[0][j];
+      }
+      h.touching = was_touching[j] != 0.0;
+      if constexpr (Law::kNormalHistory) h.normal_force = normal_force[j];
+      const ContactGeometry<Dim> g = RoundShape::geometry<Dim>(d, distance2[j], rx[j], ry[j], Vec<Dim>::Zero());
+      const Vec<Dim> relative = relative_contact_velocity(va, wa, rx[j], vb, wb, ry[j], g.normal);
+      carry_shear(h.shear, g.normal);  // a row that did not touch has no shear to carry
+      const PairProperties pair{g.effective_radius, mx[j] * my[j] / (mx[j] + my[j])};  // Randall 4.5-4.6
+      const ContactKinematics<Dim> kin = kinematics(g.overlap, relative, g.normal);
+      Law::advance(h, kin, pair, params, dt);
+      const ContactForces<Dim> f = Law::forces(h, kin, pair, params);
+      const ShearForce<Dim> total = f.shear + f.shear_damping;
+      const Vec<Dim> on_first = -(f.normal + f.normal_damping) * g.normal - shear_vector(total, g.normal);
+      const Spin<Dim> turn = shear_lever(total, g.normal);
+      for (int k = 0; k < Dim; ++k) force[k][j] = on_first[k];
+      if constexpr (Dim == 3) {
+        for (int k = 0; k < 3; ++k) {
+          lever[k][j] = turn[k];
+          shear[k][j] = h.shear[k];
+        }
+      } else {
+        lever[0][j] = turn;
+        shear[0][j] = h.shear;
+      }
+      sliding[j] = h.sliding ? 1.0 : 0.0;
+      overlap[j] = g.overlap;
+      if constexpr (Law::kNormalHistory) normal_force[j] = h.normal_force;
+    }
+    // 3. History back to the rows, shares into the sums in row order; the
+    // second particle's share of a row crossing blocks is set aside.
+    for (int j = 0; j < count; ++j) {
+      const std::int32_t r = row[j];
+      const Slot x = first_of[j], y = second_of[j];
+      if (overlap[j] <= 0.0) {  // the root rounded up to the reach: apart after all
+        if (was_touching[j] != 0.0) separate(rows, r);
+        continue;
+      }
+      if constexpr (Dim == 3) {
+        row_shear[r] = Vec3(shear[0][j], shear[1][j], shear[2][j]);
+      } else {
+        row_shear[r] = shear[0][j];
+      }
+      if constexpr (Law::kNormalHistory) row_normal_force[r] = normal_force[j];
+      if (was_touching[j] == 0.0) formed_cycle[r] = cycle;
+      row_flags[r] = sliding[j] != 0.0 ? kTouching | kSliding : kTouching;
+      Vec<Dim> on_first;
+      for (int k = 0; k < Dim; ++k) on_first[k] = force[k][j];
+      Spin<Dim> turn;
+      if constexpr (Dim == 3) {
+        turn = Vec3(lever[0][j], lever[1][j], lever[2][j]);
+      } else {
+        turn = lever[0][j];
+      }
+      // A block's rows come grouped by their first particle: its shares
+      // are summed here and added to it once the group ends.
+      if (x != pending) {
+        flush_pending();
+        pending = x;
+        pending_force = on_first;
+        pending_moment = rx[j] * turn;
+      } else {
+        pending_force += on_first;
+        pending_moment += rx[j] * turn;
+      }
+      skip_crossing_before(r);
+      if (cross < cross_end && cross_row[cross] == r) {
+        deferred_force[cross_slot[cross]] = -on_first;
+        deferred_moment[cross_slot[cross]] = ry[j] * turn;
+        ++cross;
+      } else {
+        particle_force[y] -= on_first;
+        particle_moment[y] += ry[j] * turn;
+      }
+    }
+  }
+  flush_pending();
+  skip_crossing_before(end);
+  if (sort_out) blocks.near_count[b] = kept;
+}
+
+}  // namespace dem

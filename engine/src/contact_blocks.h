@@ -1,0 +1,56 @@
+// Force sums in parallel that come out bit for bit the same for any number
+// of threads. The particle slots are cut into fixed blocks of consecutive
+// slots (a compact patch of the assembly, particle_order.h); the cut depends
+// on the particle count only. A block's pair rows are those whose first
+// particle it holds, its wall rows those of its particles. One task per
+// block computes its rows and adds each share straight into its own
+// particles' sums, in row order; a share for a particle of another block
+// (a cross row) is set aside and added after all blocks are done, in row
+// order. So every sum has one fixed order: its own block's rows, then the
+// cross rows, whatever thread ran which block.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "contact_table.h"
+
+namespace dem {
+
+template <int Dim>
+struct ContactBlocks {
+  std::vector<Slot> particle_begin;         // block b holds slots [particle_begin[b], particle_begin[b + 1])
+  std::vector<std::int32_t> pair_begin;     // its pair rows [pair_begin[b], pair_begin[b + 1])
+  std::vector<std::int32_t> wall_begin;     // its wall rows
+  // Cross rows, by the block holding their first particle, ascending:
+  // row cross_row[k] sets its second particle's share aside in deferred[cross_slot[k]].
+  std::vector<std::int32_t> cross_begin;
+  std::vector<std::int32_t> cross_row;
+  std::vector<std::int32_t> cross_slot;
+  // The shares set aside, grouped by the block of the particle they go to
+  // (deferred_begin), in row order within each group.
+  std::vector<std::int32_t> deferred_begin;
+  std::vector<Slot> deferred_particle;
+  std::vector<Vec<Dim>> deferred_force;
+  std::vector<Spin<Dim>> deferred_moment;
+  // The near rows: of the pair rows within the tolerance, those whose gap
+  // was below a margin when last sorted out. The others cannot touch until
+  // particles have moved that margin, so the batched force pass
+  // (contact_batch.h) leaves them out; which rows it reads changes nothing
+  // it computes, as apart rows carry no force and no history. Block b's
+  // near rows, ascending, are near_rows[pair_begin[b] .. pair_begin[b] +
+  // near_count[b]); `near_stale` asks the next pass to sort them out again.
+  std::vector<std::int32_t> near_rows;
+  std::vector<std::int32_t> near_count;
+  bool near_stale = true;
+
+  int count() const { return static_cast<int>(particle_begin.size()) - 1; }
+  int block_of(Slot s) const;
+};
+
+// Cuts `particles` slots into blocks of about `block_size` and sorts the
+// table's rows into them; call after every change to the table's keys.
+template <int Dim>
+void plan_blocks(ContactBlocks<Dim>& blocks, const ContactTable<Dim>& table, std::size_t particles, int block_size);
+
+}  // namespace dem

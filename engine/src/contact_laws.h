@@ -1,0 +1,28 @@
+// One contact law serves all particle-particle contacts of a world and one
+// all particle-wall contacts (they may differ), so the force passes choose
+// each once, not per contact. Which laws a world's materials resolve to.
+#pragma once
+
+#include <vector>
+
+#include "contact_params.h"
+#include "dem/definitions.h"
+
+namespace dem {
+
+struct WorldLaws {
+  ContactLaw pair = ContactLaw::kLinear;
+  ContactLaw wall = ContactLaw::kLinear;
+};
+
+// Every pair of materials that can touch needs a contact law, and all
+// particle-particle pairs (and all particle-wall pairs) must share one.
+// Hertz laws need the elastic constants of the particles' materials.
+// Throws DefinitionError naming the materials otherwise.
+WorldLaws resolve_contact_laws(const std::vector<MaterialDef>& materials, const ContactParamTable& params,
+                               const std::vector<MaterialId>& particle_materials,
+                               const std::vector<MaterialId>& wall_materials);
+
+bool is_hertz(ContactLaw law);
+
+}  // namespace dem

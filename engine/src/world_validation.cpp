@@ -1,0 +1,137 @@
+#include "world_validation.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "dem/error.h"
+
+namespace dem {
+
+void check(bool ok, const std::string& message) {
+  if (!ok) throw DefinitionError(message);
+}
+
+std::string quoted(const MaterialDef& m) { return "\"" + m.name + "\""; }
+
+namespace {
+
+void validate_wall(const WallDefT<2>& wall, const std::string& where) {
+  check(std::abs(wall.direction.norm() - 1.0) < 1e-9, where + ": direction must be a unit vector");
+  check(wall.h2 > wall.h1, where + ": h2 must be greater than h1");
+}
+
+void validate_wall(const WallDefT<3>& wall, const std::string& where) {
+  check(std::abs(wall.direction.norm() - 1.0) < 1e-9 && std::abs(wall.direction2.norm() - 1.0) < 1e-9,
+        where + ": direction and direction2 must be unit vectors");
+  check(std::abs(wall.direction.dot(wall.direction2)) < 1e-9, where + ": direction2 must be perpendicular to direction");
+  check(wall.h2 > wall.h1, where + ": h2 must be greater than h1");
+  check(wall.k2 > wall.k1, where + ": k2 must be greater than k1");
+  for (std::size_t k = 0; k < wall.triangles.size(); ++k) {
+    const auto& t = wall.triangles[k];
+    const double scale = std::max({(t[1] - t[0]).squaredNorm(), (t[2] - t[0]).squaredNorm(), 1e-300});
+    check((t[1] - t[0]).cross(t[2] - t[0]).norm() > 1e-9 * scale && t[0].allFinite() && t[1].allFinite() &&
+              t[2].allFinite(),
+          where + ": triangle " + std::to_string(k) + " is degenerate (its corners are on one line)");
+  }
+}
+
+}  // namespace
+
+void check_damping(const DampingDef& d) {
+  check(d.contact_beta >= 0.0 && d.global_alpha >= 0.0 && d.global_alpha_rotation.value_or(0.0) >= 0.0,
+        "damping: contact_beta and global_alpha must be >= 0");
+  check(d.local_alpha >= 0.0 && d.local_alpha < 1.0 && d.local_alpha_rotation.value_or(0.0) >= 0.0 &&
+            d.local_alpha_rotation.value_or(0.0) < 1.0,
+        "damping: local_alpha must be in [0, 1)");
+}
+
+template <int Dim>
+void validate_world(const WorldDefT<Dim>& def) {
+  const auto materials = static_cast<MaterialId>(def.materials.size());
+  check(materials > 0, "world: no materials defined");
+  for (MaterialId m = 0; m < materials; ++m) {
+    const MaterialDef& mat = def.materials[m];
+    const std::string where = "material " + std::to_string(m) + " (" + quoted(mat) + ")";
+    check(mat.friction >= 0.0, where + ": friction must be >= 0");
+    check(mat.cohesion >= 0.0, where + ": cohesion must be >= 0");
+  }
+  for (std::size_t k = 0; k < def.contact_models.size(); ++k) {
+    const ContactModelDef& model = def.contact_models[k];
+    const std::string where = "contact model " + std::to_string(k);
+    const bool both_default = model.material_a == kInvalidId && model.material_b == kInvalidId;
+    const bool both_valid = model.material_a >= 0 && model.material_a < materials && model.material_b >= 0 &&
+                            model.material_b < materials;
+    check(both_default || both_valid, where + ": unknown material id");
+    const bool linear = model.law == ContactLaw::kLinear || model.law == ContactLaw::kLinearRestitution;
+    if (linear) {
+      check(model.linear.normal_stiffness > 0.0, where + ": normal stiffness must be > 0");
+      check(model.linear.shear_stiffness >= 0.0, where + ": shear stiffness must be >= 0");
+    }
+    if (model.law == ContactLaw::kLinearRestitution) {
+      check(model.restitution > 0.0 && model.restitution <= 1.0, where + ": restitution must be in (0, 1]");
+    }
+    if (!linear) {
+      check(model.hertz.damping_ratio >= 0.0, where + ": damping ratio must be >= 0");
+      check(!model.hertz.restitution || (*model.hertz.restitution > 0.0 && *model.hertz.restitution <= 1.0),
+            where + ": restitution must be in (0, 1]");
+    }
+    check(model.friction.value_or(0.0) >= 0.0, where + ": friction must be >= 0");
+    check(model.cohesion.value_or(0.0) >= 0.0, where + ": cohesion must be >= 0");
+  }
+  check(!def.particles.empty(), "world: no particles defined");
+  for (std::size_t i = 0; i < def.particles.size(); ++i) {
+    const ParticleDefT<Dim>& p = def.particles[i];
+    const std::string where = "particle " + std::to_string(i);
+    if constexpr (Dim == 3) {
+      const ShapeDefT<3>& shape = p.shape;
+      check(shape.ellipsoid() == def.particles[0].shape.ellipsoid(),
+            where + ": the particles must be all spheres or all ellipsoids");
+      if (shape.ellipsoid()) {
+        check((shape.axes.array() > 0.0).all() && shape.axes.allFinite(), where + ": ellipsoid axes must be > 0");
+        check(shape.orientation.norm() > 0.0, where + ": ellipsoid orientation must be a rotation");
+        continue;  // an ellipsoid's radius comes from its axes
+      }
+    }
+    if constexpr (Dim == 2) {
+      const ShapeDefT<2>& shape = p.shape;
+      check(shape.superquadric() == def.particles[0].shape.superquadric(),
+            where + ": the particles must be all discs or all superquadrics");
+      if (shape.superquadric()) {
+        check(shape.b > 0.0, where + ": superquadric semi-axis b must be > 0");
+        check(shape.n > 1.0 && shape.n <= 10.0, where + ": superquadric exponent n must be in (1, 10]");
+        check(def.planar_particle == PlanarParticle::kDisc, where + ": superquadrics have unit thickness, not spheres");
+        continue;  // a superquadric's radius comes from its axes
+      }
+    }
+    check(p.radius > 0.0 && std::isfinite(p.radius), where + ": radius must be > 0");
+    check(p.material >= 0 && p.material < materials, where + ": unknown material id");
+    const MaterialDef& mat = def.materials[p.material];
+    check(mat.density > 0.0, "material " + std::to_string(p.material) + " (" + quoted(mat) + "): density must be > 0");
+    check(p.position.allFinite() && p.velocity.allFinite(), where + ": position and velocity must be finite");
+  }
+  for (std::size_t w = 0; w < def.walls.size(); ++w) {
+    const WallDefT<Dim>& wall = def.walls[w];
+    const std::string where = "wall " + std::to_string(w) + " (\"" + wall.name + "\")";
+    validate_wall(wall, where);
+    check(wall.material >= 0 && wall.material < materials, where + ": unknown material id");
+    if (wall.motion.servo) {
+      check(wall.motion.servo->gain > 0.0, where + ": servo gain must be > 0");
+      check(wall.motion.servo->max_speed > 0.0, where + ": servo max_speed must be > 0");
+    }
+  }
+  for (int d = 0; d < Dim; ++d) {
+    if (!def.periodic.axes[d]) continue;
+    check(def.periodic.max[d] > def.periodic.min[d],
+          "periodic: max must exceed min along axis " + std::to_string(d));
+  }
+  check(def.time_step_fraction > 0.0 && def.time_step_fraction <= 1.0,
+        "world: time_step_fraction must be in (0, 1]");
+  check(def.fixed_time_step >= 0.0, "world: fixed_time_step must be >= 0");
+  check(def.contact_tolerance >= 0.0, "world: contact_tolerance must be >= 0");
+  check_damping(def.damping);
+}
+
+template void validate_world(const WorldDefT<2>&);
+template void validate_world(const WorldDefT<3>&);
+
+}  // namespace dem
