@@ -38,7 +38,7 @@ Simulation::Prepared prepared_case(const io::CaseDefinitionT<Dim>& definition, c
                                    const std::string& source) {
   Simulation::Prepared prepared;
   BasicWorld<Dim> built(definition.world);
-  io::check_built_world(built, case_source);
+  io::check_built_world(built, definition.stages, case_source);
   prepared.world = make_session(std::move(built), definition.stages, definition.output.compression,
                                 definition.output.vtk_interval);
   prepared.output_interval = definition.output.interval;

@@ -16,7 +16,7 @@ namespace dem::fuzz {
 template <int Dim>
 void build_and_step(const io::CaseDefinitionT<Dim>& definition, const io::CaseSource& source) {
   BasicWorld<Dim> world(definition.world);
-  io::check_built_world(world, source);
+  io::check_built_world(world, definition.stages, source);
   HealthMonitorT<Dim> health(world);
   world.cycle(3);
   (void)health.assess(world);

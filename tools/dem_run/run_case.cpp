@@ -89,7 +89,7 @@ RunOutcome run_definition(io::CaseDefinitionT<Dim>& definition, const io::CaseSo
     if (options.threads) built->set_threads(*options.threads);
   } else {
     built.emplace(definition.world);
-    io::check_built_world(*built, source);
+    io::check_built_world(*built, definition.stages, source);
   }
   BasicWorld<Dim>& world = *built;
   RunHealth<Dim> health(world);

@@ -3,8 +3,11 @@
 // targets call it between building a world and running it.
 #pragma once
 
+#include <vector>
+
 #include "dem/io/case_error.h"
 #include "dem/io/case_source.h"
+#include "dem/programme.h"
 #include "dem/world.h"
 
 namespace dem::io {
@@ -16,8 +19,16 @@ namespace dem::io {
 // the run would blow up. Also refuses a step that is not a finite number > 0.
 template <int Dim>
 void check_built_world(const BasicWorld<Dim>& world, const CaseSource& source = {});
+// And each stage's own fixed step (stage[i].time_step.fixed), which the
+// stage sets from its start on: the critical step depends on the masses
+// and stiffnesses alone, which no stage changes.
+template <int Dim>
+void check_built_world(const BasicWorld<Dim>& world, const std::vector<StageDefT<Dim>>& stages,
+                       const CaseSource& source = {});
 
 extern template void check_built_world<2>(const BasicWorld<2>&, const CaseSource&);
 extern template void check_built_world<3>(const BasicWorld<3>&, const CaseSource&);
+extern template void check_built_world<2>(const BasicWorld<2>&, const std::vector<StageDefT<2>>&, const CaseSource&);
+extern template void check_built_world<3>(const BasicWorld<3>&, const std::vector<StageDefT<3>>&, const CaseSource&);
 
 }  // namespace dem::io
