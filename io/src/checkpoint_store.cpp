@@ -50,6 +50,12 @@ std::string resume_text(const ResumePoint& point) {
   text += "\ncycle " + std::to_string(point.cycle) + "\nstage " + std::to_string(point.stage) + "\nstage_cycles " +
           std::to_string(point.stage_cycles) + "\ncase " + point.case_digest + '\n';
   for (const auto& [name, bytes] : point.tables) text += "table " + name + ' ' + std::to_string(bytes) + '\n';
+  for (const VtkSeries::Step& step : point.vtk_steps) {
+    // The shortest text that reads back as the same double: the .pvd lists the time.
+    char time[32];
+    const auto written = std::to_chars(time, time + sizeof(time), step.time);
+    text += "vtk " + std::to_string(step.cycle) + ' ' + std::string(time, written.ptr) + '\n';
+  }
   text += "analysis " + std::to_string(point.analysis.size()) + '\n' + point.analysis;
   return text;
 }
@@ -76,6 +82,16 @@ ResumePoint parse_resume(std::string_view text) {
       const auto split = value.rfind(' ');
       if (split == std::string::npos) throw std::runtime_error("resume file: a table without its size");
       point.tables[value.substr(0, split)] = number(value.substr(split + 1), "a table's size");
+    } else if (key == "vtk") {
+      const auto split = value.find(' ');
+      if (split == std::string::npos) throw std::runtime_error("resume file: a ParaView step without its time");
+      const std::string time = value.substr(split + 1);
+      VtkSeries::Step step{number(value.substr(0, split), "a ParaView step's cycle"), 0.0};
+      const auto [end, error] = std::from_chars(time.data(), time.data() + time.size(), step.time);
+      if (error != std::errc{} || end != time.data() + time.size()) {
+        throw std::runtime_error("resume file: a ParaView step's time is not a number: \"" + time + '"');
+      }
+      point.vtk_steps.push_back(step);
     } else if (key == "analysis") {
       const std::uint64_t size = number(value, key);
       point.analysis.resize(size);

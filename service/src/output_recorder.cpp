@@ -94,6 +94,13 @@ void OutputRecorder::fill(io::ResumePoint& point) {
   };
   add_compression(compression2_);
   add_compression(compression3_);
+  // A resumed run's series not made again yet still has the checkpoint's steps.
+  point.vtk_steps.clear();
+  if (vtk_) {
+    point.vtk_steps = vtk_->step_list();
+  } else if (resume_) {
+    point.vtk_steps = resume_->vtk_steps;
+  }
   for (io::CsvFile* table : tables) {
     table->flush();
     point.tables[table->path().filename().string()] = table->bytes();
@@ -110,7 +117,11 @@ void OutputRecorder::record(const BasicWorld<Dim>& world, std::optional<std::siz
       io::record_compression(c->analysis, c->csv, world, static_cast<int>(*stage));
     }
     if (stage && vtk_interval_ > 0) {
-      if (!vtk_) vtk_ = std::make_unique<io::VtkSeries>(directory_, vtk_interval_);
+      if (!vtk_) {
+        // A resumed run keeps the steps before its checkpoint, as it keeps the tables' rows.
+        vtk_ = resume_ ? std::make_unique<io::VtkSeries>(directory_, vtk_interval_, resume_->vtk_steps)
+                       : std::make_unique<io::VtkSeries>(directory_, vtk_interval_);
+      }
       vtk_->record(world);
     }
   } catch (const std::exception& error) {

@@ -1,7 +1,7 @@
 // Crash recovery of dem_server (docs/RELIABILITY.md): a server killed with
 // SIGKILL and started again with --resume continues from its newest
-// checkpoint - a one-shot run ends with the same final state and the same
-// tables, byte for byte, as one never interrupted; an interactive server
+// checkpoint - a one-shot run ends with the same final state, the same
+// tables and ParaView files, byte for byte, as one never interrupted; an interactive server
 // takes up the world of the checkpoint, and the same commands then end in
 // the same state.
 #include <gtest/gtest.h>
@@ -44,12 +44,13 @@ TEST(Checkpoints, AOneShotRunKilledAndResumedEndsAsOneNeverInterrupted) {
   const fs::path whole = output_directory("checkpoints_whole");
   const fs::path killed = output_directory("checkpoints_killed");
   const std::uint32_t domain = kCheckpointsOneShot;
-  ServerProcess first(server_arguments("whole", domain, whole, case_path, {"--run-and-exit"}));
+  ServerProcess first(server_arguments("whole", domain, whole, case_path, {"--run-and-exit", "--vtk-interval", "5000"}));
   ASSERT_EQ(first.wait(120s), 0);
 
   // Killed in the loading stage (from cycle 25,100), the analyses under way.
   ServerProcess second(
-      server_arguments("killed", domain, killed, case_path, {"--run-and-exit", "--checkpoint-cycles", "5000"}));
+      server_arguments("killed", domain, killed, case_path,
+                       {"--run-and-exit", "--vtk-interval", "5000", "--checkpoint-cycles", "5000"}));
   const fs::path directory = killed / "miyata_cs_reduced";
   ASSERT_TRUE(eventually([&] { return newest_checkpoint(directory) >= 40000; }, 120s));
   second.signal(SIGKILL);
@@ -58,7 +59,8 @@ TEST(Checkpoints, AOneShotRunKilledAndResumedEndsAsOneNeverInterrupted) {
 
   // Another name: the killed server's stays on the domain until its lease runs out.
   ServerProcess third(server_arguments("resumed", domain, killed, case_path,
-                                       {"--run-and-exit", "--resume", "--checkpoint-cycles", "5000"}));
+                                       {"--run-and-exit", "--vtk-interval", "5000", "--resume", "--checkpoint-cycles",
+                                        "5000"}));
   ASSERT_EQ(third.wait(120s), 0);
   int compared = 0;
   for (const auto& entry : fs::directory_iterator(whole / "miyata_cs_reduced")) {
@@ -67,7 +69,18 @@ TEST(Checkpoints, AOneShotRunKilledAndResumedEndsAsOneNeverInterrupted) {
     EXPECT_EQ(read_text(entry.path()), read_text(directory / name)) << name << " differs";
     ++compared;
   }
-  EXPECT_GE(compared, 13);  // every table, the analyses, final.snapshot
+  EXPECT_GE(compared, 16);  // every table, the analyses, final.snapshot, the ParaView series
+  // The ParaView steps: those before the checkpoint kept, none the killed server wrote after it left over.
+  int steps = 0;
+  for (const auto& entry : fs::directory_iterator(whole / "miyata_cs_reduced" / "vtk")) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_EQ(read_text(entry.path()), read_text(directory / "vtk" / name)) << name << " differs";
+    ++steps;
+  }
+  EXPECT_GE(steps, 3 * 8);
+  int resumed_steps = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(directory / "vtk")) ++resumed_steps;
+  EXPECT_EQ(resumed_steps, steps);
 }
 
 TEST(Checkpoints, AnInteractiveServerKilledAndResumedTakesUpItsWorld) {

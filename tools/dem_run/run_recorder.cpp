@@ -18,7 +18,14 @@ RunRecorder<Dim>::RunRecorder(const std::filesystem::path& directory, const io::
     probes_.emplace(directory, output.probes, tables);
     files_.push_back(probes_->path());
   }
-  if (output.vtk_interval > 0) vtk_.emplace(directory, output.vtk_interval);
+  if (output.vtk_interval > 0) {
+    // A resumed run keeps the steps before its checkpoint, as it keeps the tables' rows.
+    if (resume) {
+      vtk_.emplace(directory, output.vtk_interval, resume->vtk_steps);
+    } else {
+      vtk_.emplace(directory, output.vtk_interval);
+    }
+  }
   if (output.compression) {
     compression_.emplace(*output.compression);
     compression_csv_.emplace(directory, world.wall(output.compression->loading_plate).name,
@@ -43,6 +50,7 @@ void RunRecorder<Dim>::fill(io::ResumePoint& point) {
     point.tables[table->path().filename().string()] = table->bytes();
   }
   point.analysis = compression_ ? compression_->state() : std::string();
+  point.vtk_steps = vtk_ ? vtk_->step_list() : std::vector<io::VtkSeries::Step>{};
 }
 
 template <int Dim>

@@ -2,7 +2,7 @@
 // in a directory, each checkpoint is a snapshot (checksummed frame, written
 // with fsync and renamed into place) and a resume file naming where the
 // run stood - the stage, the cycles done in it, how long each table was,
-// the plate loading analyses' state - written the same way after it, so a
+// the plate loading analyses' state, the ParaView steps written - written the same way after it, so a
 // checkpoint whose resume file exists is whole. The last `keep` are kept.
 // A run restarted with --resume takes the newest whole one (an older one
 // when the newest is damaged) and continues from it, bit for bit, into the
@@ -15,6 +15,7 @@
 #include <string>
 
 #include "dem/io/csv_file.h"
+#include "dem/io/vtk_series.h"
 
 namespace dem::io {
 
@@ -26,6 +27,7 @@ struct ResumePoint {
   std::string case_digest;         // SHA-256 of the case's bytes, hex: --resume refuses another case
   TableSizes tables;               // each table's length
   std::string analysis;            // the plate loading analyses' state (CompressionAnalysisT::state), or empty
+  std::vector<VtkSeries::Step> vtk_steps;  // the ParaView series' steps so far (none: no series yet)
 };
 
 // When a checkpoint is due: every `cycles` cycles and/or every `seconds`
