@@ -351,6 +351,7 @@ class Converter {
     }
     def.seed = packing.seed();
     if (packing.max_attempts() > 0) def.max_attempts = static_cast<int>(packing.max_attempts());
+    def.stopped = limits_.stop_packing;
     return def;
   }
 

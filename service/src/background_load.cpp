@@ -20,7 +20,7 @@ BackgroundLoad::BackgroundLoad(Prepare prepare) : shared_(std::make_shared<Share
     std::optional<Simulation::Prepared> result;
     std::exception_ptr error;
     try {
-      result.emplace(prepare());
+      result.emplace(prepare([shared] { return shared->stopped.load(std::memory_order_relaxed); }));
     } catch (...) {
       error = std::current_exception();
     }
@@ -36,6 +36,8 @@ BackgroundLoad::BackgroundLoad(Prepare prepare) : shared_(std::make_shared<Share
 BackgroundLoad::~BackgroundLoad() {
   if (thread_.joinable()) thread_.join();
 }
+
+void BackgroundLoad::stop() { shared_->stopped = true; }
 
 bool BackgroundLoad::wait_for(std::chrono::milliseconds timeout) {
   std::unique_lock lock(shared_->mutex);

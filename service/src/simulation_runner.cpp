@@ -212,8 +212,8 @@ void SimulationRunner::execute(ReceivedCommand received) {
         return;  // replied to when the stages end
       case CommandKind::kLoadCase:
         reply.message = install(prepare_in_background(
-            "load_case", [preparer = simulation_.preparer(), args = command.load_case] {
-              return preparer.prepare_case(args);
+            "load_case", [preparer = simulation_.preparer(), args = command.load_case](std::function<bool()> stopped) {
+              return preparer.stopped_by(std::move(stopped)).prepare_case(args);
             }));
         reply.path = command.load_case.path;
         break;
@@ -366,7 +366,8 @@ protocol::Reply SimulationRunner::save_snapshot(const protocol::SnapshotArgs& ar
 std::string SimulationRunner::load_snapshot(const protocol::SnapshotArgs& args) {
   if (args.transfer) {
     require(!args.data.empty(), "load_snapshot with transfer needs the snapshot's bytes");
-    return install(prepare_in_background("load_snapshot", [preparer = simulation_.preparer(), data = args.data] {
+    return install(prepare_in_background("load_snapshot", [preparer = simulation_.preparer(), data = args.data](
+                                                              std::function<bool()>) {
       return preparer.prepare_snapshot(data, "<transferred snapshot>");
     }));
   }
@@ -383,7 +384,8 @@ std::string SimulationRunner::load_snapshot(const protocol::SnapshotArgs& args) 
     throw CommandError(ReplyStatus::kFailed, read_error.what());
   }
   return install(prepare_in_background(
-      "load_snapshot", [preparer = simulation_.preparer(), bytes = std::move(bytes), source = path.string()] {
+      "load_snapshot",
+      [preparer = simulation_.preparer(), bytes = std::move(bytes), source = path.string()](std::function<bool()>) {
         return preparer.prepare_snapshot(bytes, source);
       }));
 }
@@ -392,8 +394,7 @@ Simulation::Prepared SimulationRunner::prepare_in_background(const std::string& 
                                                             BackgroundLoad::Prepare prepare) {
   if (abandoned_ && abandoned_->finished()) abandoned_.reset();
   if (abandoned_) {
-    throw CommandError(ReplyStatus::kBusy, "busy: an abandoned load is still running to its end (its "
-                                           "preparation cannot be interrupted); send " + what + " again later");
+    throw CommandError(ReplyStatus::kBusy, "busy: an abandoned load is still ending; send " + what + " again later");
   }
   auto load = std::make_unique<BackgroundLoad>(std::move(prepare));
   const auto deadline = std::chrono::steady_clock::now() + options_.load_time_limit;
@@ -426,6 +427,7 @@ Simulation::Prepared SimulationRunner::prepare_in_background(const std::string& 
   queue_.put_back(std::move(later));
   if (abandon) {
     spdlog::warn("{}", *abandon);
+    load->stop();
     abandoned_ = std::move(load);
     throw CommandError(abandon->find("stopped") != std::string::npos ? ReplyStatus::kCancelled : ReplyStatus::kFailed,
                        *abandon);

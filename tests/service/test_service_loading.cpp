@@ -1,7 +1,8 @@
 // A load that takes long - here a random packing close to jamming - does
 // not hold the server: get_state is answered while it prepares, stop
 // abandons it at once, and one that outlasts the time limit is refused,
-// the world left as it was (service/include/dem/service/background_load.h).
+// the world left as it was; the abandoned packing itself stops too
+// (service/include/dem/service/background_load.h).
 #include <gtest/gtest.h>
 
 #include "dem/service/background_load.h"
@@ -20,10 +21,11 @@ std::uint64_t start_slow_load(client::Client& client) {
   return client.send(load);
 }
 
-// The abandoned preparation runs to its end; the test waits for it, so
-// nothing outlives the test process's exit.
+// An abandoned packing is told to stop and ends within a few thousand
+// attempts, where it would have run on for seconds (the case takes some
+// 2.6 s, and is abandoned after 0.3).
 void wait_for_abandoned_loads() {
-  ASSERT_TRUE(eventually([] { return service::BackgroundLoad::running() == 0; }, 120s));
+  ASSERT_TRUE(eventually([] { return service::BackgroundLoad::running() == 0; }, 1s));
 }
 
 TEST(Loading, GetStateIsAnsweredAndStopAbandonsALongLoad) {
@@ -64,15 +66,9 @@ TEST(Loading, ALoadOutlastingItsTimeLimitIsRefused) {
   EXPECT_EQ(failed->status, ReplyStatus::kFailed);
   EXPECT_EQ(failed->message, "load_case: preparing it took more than 0.3 s (--load-seconds); is there a random "
                              "packing that nearly cannot fit?");
-  // While the abandoned preparation runs on, another load is answered busy.
-  const std::optional<protocol::Reply> busy = client.await(start_slow_load(client), 20s);
-  ASSERT_TRUE(busy);
-  if (service::BackgroundLoad::running() > 0) {
-    EXPECT_EQ(busy->status, ReplyStatus::kBusy) << busy->message;
-  }
   EXPECT_EQ(client.get_state().state.case_name, "nine_disc_damped");
   wait_for_abandoned_loads();
-  // Once it has ended, loads work again.
+  // Once it has ended, loads work again (while it ends, another is answered busy).
   EXPECT_TRUE(client.load_case_file(case_file("nine_disc_damped")).ok());
 }
 

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -28,6 +29,10 @@ struct ResourceLimits {
   // cannot fit costs up to its count times this many tries. The engine's
   // default is 100,000; the machine's limit allows 100 times that.
   std::uint64_t max_packing_attempts = 10'000'000;
+  // Asked while a random packing is placed (RandomPackingDefT::stopped):
+  // true ends the conversion with an error. dem_server sets it for a load
+  // it may abandon (stop, --load-seconds), so the work ends with it.
+  std::function<bool()> stop_packing;
 };
 
 // Measured on the shared 100,000-sphere benchmark packing (3D, Hertz laws,

@@ -3,12 +3,14 @@
 // answering while it runs: get_state as always, stop (which abandons the
 // load) and shutdown at once; other commands wait their turn, in order. A
 // load that outlasts its time limit is abandoned too. An abandoned
-// preparation cannot be interrupted (the engine's generators take no
-// cancellation), so its thread runs to its end - bounded by the resource
-// limits - and its result is dropped; until it has ended, another load is
-// answered busy (docs/RELIABILITY.md).
+// preparation is told to stop: a random packing ends at its next question
+// (every few thousand attempts); parsing and building the world are not
+// interrupted but bounded by the resource limits. Its result is dropped;
+// until its thread has ended, another load is answered busy
+// (docs/RELIABILITY.md).
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <exception>
@@ -24,7 +26,8 @@ namespace dem::service {
 
 class BackgroundLoad {
  public:
-  using Prepare = std::function<Simulation::Prepared()>;
+  // Given what to ask whether the load was abandoned (stop()).
+  using Prepare = std::function<Simulation::Prepared(std::function<bool()> stopped)>;
 
   explicit BackgroundLoad(Prepare prepare);
   ~BackgroundLoad();  // joins the thread unless detached
@@ -35,6 +38,9 @@ class BackgroundLoad {
   static int running();
   BackgroundLoad(const BackgroundLoad&) = delete;
   BackgroundLoad& operator=(const BackgroundLoad&) = delete;
+
+  // Tells the preparation to end (it was abandoned).
+  void stop();
 
   // Waits up to `timeout` for the preparation; true when it has ended.
   bool wait_for(std::chrono::milliseconds timeout);
@@ -49,6 +55,7 @@ class BackgroundLoad {
     bool done = false;
     std::optional<Simulation::Prepared> result;
     std::exception_ptr error;
+    std::atomic<bool> stopped{false};
   };
   std::shared_ptr<Shared> shared_;
   std::thread thread_;

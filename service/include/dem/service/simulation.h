@@ -6,6 +6,7 @@
 // once it is complete. Used by the engine thread only.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -63,6 +64,13 @@ class Simulation {
     // the resource limits; INVALID_SNAPSHOT when it is not one or is
     // inconsistent. `source` names it in messages.
     Prepared prepare_snapshot(std::string_view bytes, const std::string& source) const;
+    // The same preparer, its random packings ended when `stopped` says so
+    // (io::ResourceLimits::stop_packing).
+    Preparer stopped_by(std::function<bool()> stopped) const {
+      Preparer copy = *this;
+      copy.limits_.stop_packing = std::move(stopped);
+      return copy;
+    }
 
    private:
     io::ResourceLimits limits_;
