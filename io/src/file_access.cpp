@@ -38,6 +38,21 @@ std::filesystem::path inside_directory(const std::filesystem::path& root, const 
   return target;
 }
 
+std::filesystem::path own_directory(const std::filesystem::path& root, const std::filesystem::path& requested) {
+  const std::filesystem::path directory = inside_directory(root, requested);
+  const auto refuse = [&](const std::filesystem::path& link) {
+    throw FileAccessError(link.string() + " is a link; the server writes only files of its own in " + root.string());
+  };
+  std::error_code error;
+  for (const std::filesystem::path& part : {directory, directory / "vtk", directory / "checkpoints"}) {
+    if (std::filesystem::is_symlink(std::filesystem::symlink_status(part, error))) refuse(part);
+    for (const auto& entry : std::filesystem::directory_iterator(part, error)) {
+      if (entry.is_symlink(error)) refuse(entry.path());
+    }
+  }
+  return directory;
+}
+
 FileAccess::FileAccess(const std::vector<std::filesystem::path>& roots) {
   for (const auto& root : roots) {
     std::error_code error;

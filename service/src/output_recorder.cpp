@@ -2,6 +2,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "dem/io/file_access.h"
+
 namespace dem::service {
 
 namespace {
@@ -52,6 +54,14 @@ void OutputRecorder::start(const std::string& case_name, const BasicWorld<Dim>& 
   compression_settings_ = std::move(compression);
   vtk_interval_ = vtk_override_.value_or(vtk_interval);
   if (resume) resume_ = *resume;
+  directory_problem_.reset();
+  try {
+    io::own_directory(output_directory_, directory_.filename());
+  } catch (const io::FileAccessError& error) {
+    directory_problem_ = error.what();
+    if (enabled_) fail(error);
+    return;
+  }
   if (!enabled_) return;
   try {
     const io::TableSizes* tables = resume ? &resume->tables : nullptr;
@@ -76,6 +86,11 @@ void OutputRecorder::start(const std::string& case_name, const BasicWorld<Dim>& 
   } catch (const std::exception& error) {
     fail(error);
   }
+}
+
+std::filesystem::path OutputRecorder::own_file(std::string_view name) const {
+  if (directory_problem_) throw io::FileAccessError(*directory_problem_);
+  return directory_ / name;
 }
 
 void OutputRecorder::fill(io::ResumePoint& point) {

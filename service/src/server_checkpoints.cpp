@@ -7,7 +7,8 @@ namespace dem::service {
 void ServerCheckpoints::begin(const std::filesystem::path& case_directory, std::string case_digest,
                               std::uint64_t cycle) {
   store_.reset();
-  if (settings_.enabled()) store_.emplace(case_directory / "checkpoints", settings_.keep);
+  // No directory: the case's is not the server's own (OutputRecorder::directory_problem).
+  if (settings_.enabled() && !case_directory.empty()) store_.emplace(case_directory / "checkpoints", settings_.keep);
   case_digest_ = std::move(case_digest);
   last_cycle_ = cycle;
   last_time_ = std::chrono::steady_clock::now();

@@ -274,7 +274,9 @@ std::string SimulationRunner::install(Simulation::Prepared prepared, const io::R
   const WorldSession& world = simulation_.world();
   schedule_.published(world.cycle_count(), world.time());
   world.start_tables(recorder_, simulation_.case_name(), resume);
-  checkpoints_.begin(recorder_.case_directory(), simulation_.case_digest(), world.cycle_count());
+  if (const auto& problem = recorder_.directory_problem()) spdlog::error("no tables or checkpoints: {}", *problem);
+  checkpoints_.begin(recorder_.directory_problem() ? std::filesystem::path() : recorder_.case_directory(),
+                     simulation_.case_digest(), world.cycle_count());
   publish_telemetry();
   return message;
 }
@@ -563,7 +565,7 @@ void SimulationRunner::fail_unhealthy(const StepHealth& problem) {
   const std::filesystem::path path = recorder_.case_directory() / "last_good.snapshot";
   std::string kept = "; the world is back at the last good state, cycle " + std::to_string(good.cycle());
   try {
-    io::write_snapshot_bytes(path, good.bytes(simulation_.snapshot_info()));
+    io::write_snapshot_bytes(recorder_.own_file("last_good.snapshot"), good.bytes(simulation_.snapshot_info()));
     kept += ", which is in " + path.string();
   } catch (const std::exception& error) {
     kept += " (it could not be written: " + std::string(error.what()) + ")";

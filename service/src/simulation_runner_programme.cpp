@@ -165,11 +165,12 @@ void SimulationRunner::end_stage(std::size_t stage, const StageResult& result) {
 void SimulationRunner::end_programme() {
   const WorldSession& world = simulation_.world();
   const bool failed = programme_->outcome() == ProgrammeOutcome::kFailed;
-  const std::filesystem::path path = recorder_.case_directory() / (failed ? "last_good.snapshot" : "final.snapshot");
+  const std::string name = failed ? "last_good.snapshot" : "final.snapshot";
+  const std::filesystem::path path = recorder_.case_directory() / name;
   const std::uint64_t snapshot_cycle = failed ? programme_->last_good().cycle() : world.cycle_count();
   bool written = true;
   try {
-    io::write_snapshot_bytes(path, failed ? programme_->last_good().bytes(simulation_.snapshot_info())
+    io::write_snapshot_bytes(recorder_.own_file(name), failed ? programme_->last_good().bytes(simulation_.snapshot_info())
                                           : simulation_.snapshot_bytes());
   } catch (const std::exception& error) {
     written = false;

@@ -108,5 +108,33 @@ TEST(Files, SnapshotsAreNotWrittenOrReadThroughLinks) {
   EXPECT_TRUE(client.save_snapshot("inside/kept.snapshot").ok());  // its own files still work
 }
 
+// The files a server writes under fixed names - a case's tables, ParaView
+// files, snapshots beside them and checkpoints - are not written through a
+// link planted in its output directory: not a table that is a link to
+// another file, not a case directory that leads elsewhere.
+TEST(Files, TablesAndCheckpointsAreNotWrittenThroughLinks) {
+  service::ServerOptions options = server_options("own", kFilesOwnDirectory);
+  options.checkpoints.cycles = 10;
+  const fs::path outside = output_directory("files_own_outside");
+  const fs::path secret = secret_file(outside);
+  fs::create_directories(options.output_directory / "nine_disc_damped");
+  fs::create_symlink(secret, options.output_directory / "nine_disc_damped" / "walls.csv");
+  fs::create_directory_symlink(outside, options.output_directory / "nine_disc_undamped");
+  {
+    InProcessServer server(options);
+    client::Client client(connect_options("own", kFilesOwnDirectory));
+    client.load_case_file(case_file("nine_disc_damped"));
+    EXPECT_TRUE(client.cycle(50).ok());  // the simulation goes on; only its files are not written
+    client.load_case_file(case_file("nine_disc_undamped"));
+    EXPECT_TRUE(client.cycle(50).ok());
+    EXPECT_TRUE(client.save_snapshot("inside/kept.snapshot").ok());  // its own files still work
+  }
+  EXPECT_EQ(read_text(secret), "the-secret-first-line\n1,2,3\n");
+  std::vector<std::string> written;
+  for (const auto& entry : fs::directory_iterator(outside)) written.push_back(entry.path().filename().string());
+  EXPECT_EQ(written, std::vector<std::string>{"secret.txt"});
+  EXPECT_FALSE(fs::exists(options.output_directory / "nine_disc_damped" / "checkpoints"));
+}
+
 }  // namespace
 }  // namespace dem::test

@@ -4,7 +4,8 @@
 // so neither a relative path, an absolute one nor a link planted in an
 // allowed directory reaches anything else. Errors name the request and the
 // allowed directories, never a byte of the file. (Writing - snapshots in
-// the output directory - is in snapshot_file.h.)
+// the output directory - is in snapshot_file.h; the output directory's
+// own files are checked by own_directory below.)
 #pragma once
 
 #include <filesystem>
@@ -40,6 +41,14 @@ class FileAccess {
 // link in the place of the file itself is refused. Returns root/requested;
 // throws FileAccessError otherwise.
 std::filesystem::path inside_directory(const std::filesystem::path& root, const std::filesystem::path& requested);
+
+// A directory of the server's own files inside `root` (a case's tables,
+// ParaView files and checkpoints, written under fixed names): as
+// inside_directory, and no link in it, in its vtk/ or checkpoints/, nor
+// either of those a link - a link planted there would have the server
+// write, or truncate, a file elsewhere. Checked when the server starts
+// writing there. Returns root/requested; throws FileAccessError.
+std::filesystem::path own_directory(const std::filesystem::path& root, const std::filesystem::path& requested);
 
 // Whether `path` (canonical) lies inside `root` (canonical), component by component.
 bool lies_within(const std::filesystem::path& path, const std::filesystem::path& root);

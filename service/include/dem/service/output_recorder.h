@@ -19,6 +19,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "dem/io/checkpoint_store.h"
 #include "dem/io/compression_analysis.h"
@@ -61,6 +62,12 @@ class OutputRecorder {
   // <output>/<case>/ of the case loaded last: its tables and a one-shot
   // run's final snapshot (also when the tables are off).
   const std::filesystem::path& case_directory() const { return directory_; }
+  // A file of the server's own there (a snapshot beside the tables), or
+  // FileAccessError when that directory leads out of the output directory
+  // or holds a link (io::own_directory, checked by start(): the tables are
+  // then not written either).
+  std::filesystem::path own_file(std::string_view name) const;
+  const std::optional<std::string>& directory_problem() const { return directory_problem_; }
   static std::filesystem::path case_directory_of(const std::filesystem::path& output, const std::string& case_name);
   // A table could not be written (the error was logged).
   bool failed() const { return failed_; }
@@ -84,6 +91,7 @@ class OutputRecorder {
   bool enabled_;
   bool failed_ = false;
   std::filesystem::path directory_;
+  std::optional<std::string> directory_problem_;
   std::unique_ptr<io::WallsCsvT<2>> walls2_;
   std::unique_ptr<io::WallsCsvT<3>> walls3_;
   std::unique_ptr<io::AssemblyCsv> assembly_;

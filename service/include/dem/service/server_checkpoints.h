@@ -20,7 +20,8 @@ class ServerCheckpoints {
  public:
   explicit ServerCheckpoints(io::CheckpointSettings settings) : settings_(settings) {}
 
-  // A world was loaded: its checkpoints go in `case_directory`/checkpoints.
+  // A world was loaded: its checkpoints go in `case_directory`/checkpoints
+  // (none when it is empty).
   void begin(const std::filesystem::path& case_directory, std::string case_digest, std::uint64_t cycle);
   bool due(std::uint64_t cycle) const;
   // `stage`, `stage_cycles`: where a programme stands (0, 0 outside one).
