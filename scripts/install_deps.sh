@@ -12,9 +12,9 @@ packages=(
   # toolchain
   cmake g++ make ccache
   # engine and case layer
-  libeigen3-dev libprotobuf-dev protobuf-compiler libspdlog-dev libfmt-dev libcli11-dev
-  # tests and benchmarks
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libeigen3-dev libprotobuf-dev protobuf-compiler libspdlog-dev libfmt-dev libcli11-dev libssl-dev
+  # tests and benchmarks; the fuzz targets (clang's libFuzzer, OpenMP for clang)
+  libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev libomp-dev
   # service (DDS) and its IDL compiler
   cyclonedds-dev cyclonedds-tools
   # Python client

@@ -51,7 +51,7 @@ deb="$work/deb/dem_${version}_amd64.deb"
 [ -f "$deb" ] || fail "no $deb"
 dpkg-deb --info "$deb" >"$work/deb_info.txt"
 dpkg-deb --contents "$deb" >"$work/deb_contents.txt"
-for dependency in libddsc0debian libprotobuf python3-numpy python3-protobuf; do
+for dependency in libddsc0debian libprotobuf libssl3 python3-numpy python3-protobuf; do
   grep -q "Depends:.*$dependency" "$work/deb_info.txt" || fail "the package does not depend on $dependency"
 done
 for file in ./usr/bin/dem_server ./usr/bin/demctl ./usr/bin/dem_run ./usr/share/dem/cases/miyata/cs.case.txtpb \

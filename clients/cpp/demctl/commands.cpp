@@ -281,8 +281,8 @@ int run_until(const Global& global, const dem::protocol::RunUntilArgs& args, boo
   return follow_run(global, client, client.start_run_until(args), wait, true);
 }
 
-int stop(const Global& global) {
-  print(connect(global).stop());
+int stop(const Global& global, bool force) {
+  print(connect(global).stop(force));
   return kOk;
 }
 
@@ -372,9 +372,9 @@ int set(const Global& global, const std::string& parameter, const std::string& v
   return kOk;
 }
 
-int shutdown(const Global& global, bool wait) {
+int shutdown(const Global& global, bool wait, bool force) {
   Client client = connect(global);
-  print(client.shutdown());
+  print(client.shutdown(force));
   if (!wait) return kOk;
   // The server is gone when its status writer is.
   const auto deadline = std::chrono::steady_clock::now() + std::max(milliseconds(global.timeout), 10000ms);

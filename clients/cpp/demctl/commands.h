@@ -37,12 +37,12 @@ int servo(const Global& global, const std::string& wall, double stress, double g
 int cycle(const Global& global, std::int64_t cycles, bool wait);
 int run_until(const Global& global, const dem::protocol::RunUntilArgs& args, bool wait);
 int run_programme(const Global& global, std::uint32_t first_stage, std::uint32_t stage_count, bool wait);
-int stop(const Global& global);
+int stop(const Global& global, bool force);
 int contacts(const Global& global, const dem::protocol::ContactQueryArgs& query, const std::string& csv, int limit);
 int snapshot_save(const Global& global, const std::string& file, bool on_server);
 int snapshot_load(const Global& global, const std::string& file, bool on_server);
 int set(const Global& global, const std::string& parameter, const std::string& value);
-int shutdown(const Global& global, bool wait);
+int shutdown(const Global& global, bool wait, bool force);
 
 struct MonitorOptions {
   std::optional<std::uint64_t> samples;  // stop after this many rows; default: until Ctrl-C

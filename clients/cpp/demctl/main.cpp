@@ -121,9 +121,10 @@ int main(int argc, char** argv) {
   programme->add_flag("-w,--wait", wait, "wait for the end, with a progress bar (Ctrl-C stops the run)");
   programme->callback([&] { action = [&] { return demctl::run_programme(global, first_stage, stage_count, wait); }; });
 
-  app.add_subcommand("stop", "stop the running cycle, run-until or run-programme")->callback([&] {
-    action = [&] { return demctl::stop(global); };
-  });
+  bool force = false;
+  auto* stop = app.add_subcommand("stop", "stop the running cycle, run-until or run-programme");
+  stop->add_flag("--force", force, "also another client's run (docs/SERVICE.md)");
+  stop->callback([&] { action = [&] { return demctl::stop(global, force); }; });
 
   dem::protocol::ContactQueryArgs query;
   std::vector<double> box;
@@ -200,7 +201,8 @@ int main(int argc, char** argv) {
   bool no_wait = false;
   auto* shutdown = app.add_subcommand("shutdown", "stop the server cleanly (waits until it has stopped)");
   shutdown->add_flag("--no-wait", no_wait, "return once the server accepted");
-  shutdown->callback([&] { action = [&] { return demctl::shutdown(global, !no_wait); }; });
+  shutdown->add_flag("--force", force, "also while another client's run is going on");
+  shutdown->callback([&] { action = [&] { return demctl::shutdown(global, !no_wait, force); }; });
 
   try {
     app.parse(argc, argv);

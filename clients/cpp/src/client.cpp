@@ -322,9 +322,17 @@ protocol::Reply Client::run_programme(std::uint32_t first_stage, std::uint32_t s
   return call(std::move(c), timeout);
 }
 
-protocol::Reply Client::stop() { return call(command(CommandKind::kStop)); }
+protocol::Reply Client::stop(bool force) {
+  protocol::Command c = command(CommandKind::kStop);
+  c.force = force;
+  return call(std::move(c));
+}
 protocol::Reply Client::get_state() { return call(command(CommandKind::kGetState)); }
-protocol::Reply Client::shutdown() { return call(command(CommandKind::kShutdown)); }
+protocol::Reply Client::shutdown(bool force) {
+  protocol::Command c = command(CommandKind::kShutdown);
+  c.force = force;
+  return call(std::move(c));
+}
 
 protocol::Reply Client::query_contacts(const protocol::ContactQueryArgs& args) {
   protocol::Command c = command(CommandKind::kQueryContacts);

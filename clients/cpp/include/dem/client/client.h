@@ -91,9 +91,10 @@ class Client {
   protocol::Reply run_programme(std::uint32_t first_stage = 0, std::uint32_t stage_count = 0,
                                 std::chrono::milliseconds timeout = std::chrono::hours(24));
   std::uint64_t start_run_programme(std::uint32_t first_stage = 0, std::uint32_t stage_count = 0);
-  protocol::Reply stop();
+  // `force`: also when another client's run is going on (docs/SERVICE.md).
+  protocol::Reply stop(bool force = false);
   protocol::Reply get_state();
-  protocol::Reply shutdown();
+  protocol::Reply shutdown(bool force = false);
   protocol::Reply query_contacts(const protocol::ContactQueryArgs& args = {});
   // On the server: a file in its output directory. transfer: the bytes come back in the reply's data.
   protocol::Reply save_snapshot(std::string server_path, bool transfer = false);
