@@ -20,7 +20,7 @@
 #
 # A task runs once at a time: it holds tasks/NNNN/task.lock (flock) while
 # it runs, and so does its server, so a second copy (a resubmission while
-# the first still runs) exits 75 at once and leaves the first alone.
+# the first still runs) exits 75 and leaves the first alone.
 #
 # Exit code: the server's (0 done, 1 failed, 3 invalid case, 4 stopped;
 # docs/SERVICE.md; 1 also when it exited 0 without its final snapshot), 2
@@ -28,7 +28,15 @@
 # running already.
 set -uo pipefail
 
-fail() { echo "dem_sweep_task: $*" >&2; exit 2; }
+status_file=""
+# An error before the server starts; once the task is known, its status says it too.
+fail() {
+  echo "dem_sweep_task: $*" >&2
+  if [ -n "$status_file" ] && mkdir -p "${status_file%/*}" 2>/dev/null; then
+    printf 'state=failed\nexit_code=2\nerror=%s\n' "$*" >"$status_file.tmp" && mv -f "$status_file.tmp" "$status_file"
+  fi
+  exit 2
+}
 
 [ $# -ge 1 ] && [ $# -le 2 ] || fail "usage: dem_sweep_task.sh SWEEP_DIR [INDEX] (INDEX defaults to \$SLURM_ARRAY_TASK_ID)"
 [ -d "$1" ] || fail "no sweep directory $1"
@@ -68,17 +76,18 @@ done
 task_id=$(printf '%04d' "$index")
 case_file="$sweep/cases/$task_id.case.txtpb"
 out="$sweep/tasks/$task_id"
+mkdir -p "$out" || fail "cannot make $out"
+exec 9>>"$out/task.lock"
+# A few seconds' grace: dem.sweep probes the lock for an instant to see whether a task runs.
+if ! flock -w 5 9; then
+  echo "dem_sweep_task: task $task_id is running already (another process holds $out/task.lock)" >&2
+  exit 75
+fi
 status_file="$out/task.status"
 [ -f "$case_file" ] || fail "$case_file is missing"
 server="${DEM_SERVER_PROGRAM:-${server_program:-dem_server}}"
 command -v "$server" >/dev/null || fail "no dem_server at \"$server\" (sweep.conf server_program, or \$DEM_SERVER_PROGRAM)"
 [ -n "$dds_config" ] && export CYCLONEDDS_URI="$dds_config"
-mkdir -p "$out"
-exec 9>>"$out/task.lock"
-if ! flock -n 9; then
-  echo "dem_sweep_task: task $task_id is running already (another process holds $out/task.lock)" >&2
-  exit 75
-fi
 
 status_value() { sed -n "s/^$1=//p" "$status_file" 2>/dev/null | tail -1; }
 now() { date -u +%Y-%m-%dT%H:%M:%SZ; }
@@ -98,7 +107,7 @@ fi
 previous_attempt="$(status_value attempt)"
 attempt=$((${previous_attempt:-0} + 1))
 resume=()
-if [ "$checkpoint_cycles" != 0 ] || [ "$checkpoint_seconds" != 0 ]; then
+if [ "$checkpoint_cycles" -gt 0 ] || ! [[ "$checkpoint_seconds" =~ ^0*(\.0*)?$ ]]; then
   "$server" --help 2>/dev/null | grep -q -- --checkpoint-cycles ||
     fail "sweep.conf asks for checkpoints, but $server has no --checkpoint-cycles"
   checkpoints=(--checkpoint-cycles "$checkpoint_cycles" --checkpoint-seconds "$checkpoint_seconds")
