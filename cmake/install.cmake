@@ -84,6 +84,10 @@ install(FILES ${PROJECT_BINARY_DIR}/demConfig.cmake ${PROJECT_BINARY_DIR}/demCon
 # --- data and documents --------------------------------------------------
 install(DIRECTORY cases config DESTINATION ${CMAKE_INSTALL_DATADIR}/dem)
 install(FILES tools/paraview/force_chains.py DESTINATION ${CMAKE_INSTALL_DATADIR}/dem/paraview)
+# Sweeps (docs/SWEEPS.md): the task script dem.sweep copies into each sweep, and a
+# one-machine Slurm cluster.
+install(PROGRAMS scripts/slurm/dem_sweep_task.sh scripts/slurm/local_cluster.sh
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/dem/scripts/slurm)
 install(DIRECTORY ros2/dem_interfaces DESTINATION ${CMAKE_INSTALL_DATADIR}/dem/ros2)
 install(FILES README.md LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR})
