@@ -65,9 +65,10 @@ class LocalHandle:
                         return
                     index = self._queue.pop(0)
                     log = open(self._sweep.directory / "logs" / f"local-{index:04d}.out", "ab")
-                    # Started under the lock, so cancel() sees every process there is.
+                    # Started under the lock, so cancel() sees every process there is; in a session of
+                    # its own, so Ctrl-C reaches this process alone, which then stops them in order.
                     process = subprocess.Popen(_command(self._sweep, index), stdout=log, stderr=subprocess.STDOUT,
-                                               stdin=subprocess.DEVNULL)
+                                               stdin=subprocess.DEVNULL, start_new_session=True)
                     self._running[index] = process
                 code = process.wait()
                 log.close()
