@@ -129,6 +129,9 @@ start() {
     command -v "$program" >/dev/null || { log "$program is missing: run scripts/install_deps.sh"; exit 1; }
   done
 
+  # munged runs as the user munge, which must reach DIR (a private temporary directory will not do).
+  runuser -u munge -- test -x "$dir" ||
+    { log "the user munge cannot enter $dir: use a directory every user may traverse"; exit 1; }
   write_munge_key
   if ! alive_pid "$dir/munge/munged.pid" >/dev/null; then
     runuser -u munge -- munged --force --socket="$dir/munge/munge.socket" \
