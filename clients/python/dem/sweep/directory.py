@@ -110,6 +110,8 @@ class Progress:
             status = self.live.get(task.index)
             if task.state == "running" and status is not None:
                 running.append(f"{task.index:04d} cycle {status.cycle}")
+        if len(running) > 6:
+            running = running[:6] + [f"{len(running) - 6} more"]
         text = f"{self.sweep.name}: {len(self.tasks)} tasks: " + ", ".join(parts)
         return text + (f" ({'; '.join(running)})" if running else "")
 
