@@ -14,7 +14,7 @@ import argparse
 import pathlib
 import sys
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "idl"))
 import idl_types  # noqa: E402
 
 PACKAGE = "dem_interfaces"
