@@ -260,3 +260,11 @@ def ros2msg_schema(message, messages):
     for dependency in dependencies(message, messages):
         parts.append("=" * 80 + "\n" + f"MSG: {dependency.full_name}\n" + msg_text(dependency, comments=False))
     return "".join(parts)
+
+
+def write_if_changed(path, text):
+    """Writes a generated file only when its text changes, so what depends on it is not rebuilt."""
+    path = pathlib.Path(path)
+    if not path.exists() or path.read_text() != text:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)

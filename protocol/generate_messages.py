@@ -330,13 +330,6 @@ def conversions(model, idl_files):
     return "\n".join(out)
 
 
-def write_if_changed(path, text):
-    path = pathlib.Path(path)
-    if not path.exists() or path.read_text() != text:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(text)
-
-
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("idl_dir", type=pathlib.Path)
@@ -351,9 +344,9 @@ def main(argv):
     except idl_types.IdlError as error:
         sys.exit(f"generate_messages.py: {error}")
     if args.header:
-        write_if_changed(args.header, header(model, "idl/dem/*.idl"))
+        idl_types.write_if_changed(args.header, header(model, "idl/dem/*.idl"))
     if args.conversions:
-        write_if_changed(args.conversions, conversions(model, idl_files))
+        idl_types.write_if_changed(args.conversions, conversions(model, idl_files))
     return 0
 
 
