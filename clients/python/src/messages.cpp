@@ -66,7 +66,6 @@ void bind_members(py::class_<Message>& cls, const std::set<std::string_view>& ow
 }  // namespace
 
 void bind_messages(py::module_& m) {
-  register_contact_dtype();
   m.attr("CONTACT_DTYPE") = contact_dtype();
 
   py::class_<Status> status(m, "Status", "The server's status (durable topic rt/dem/<server>/status)");
