@@ -122,19 +122,19 @@ class Model:
         for table, keys in (("TYPE_NAMES", TYPE_NAMES), ("ENUMS", ENUMS), ("METHODS", METHODS)):
             for key in keys:
                 if key not in self.messages:
-                    raise idl_types.IdlError(f"generate_messages.py: {table} names {key}, no IDL struct")
+                    raise idl_types.IdlError(f"{table} names {key}, no IDL struct")
         for table, keys in (("ENUM_MEMBERS", ENUM_MEMBERS), ("OPTIONALS", OPTIONALS), ("NAMES_OF", NAMES_OF),
                             ("DEFAULTS", DEFAULTS)):
             for key in keys:
                 if key not in members:
-                    raise idl_types.IdlError(f"generate_messages.py: {table} names {key}, no IDL member")
+                    raise idl_types.IdlError(f"{table} names {key}, no IDL member")
         for key, flag in OPTIONALS.items():
             if f"{key.rsplit('.', 1)[0]}.{flag}" not in members:
-                raise idl_types.IdlError(f"generate_messages.py: OPTIONALS: {key}'s flag {flag} is no IDL member")
+                raise idl_types.IdlError(f"OPTIONALS: {key}'s flag {flag} is no IDL member")
         for full_name, (enum, fallback) in ENUMS.items():
             names = [c.name for c in self.messages[full_name].constants]
             if fallback is not None and fallback not in names:
-                raise idl_types.IdlError(f"generate_messages.py: ENUMS: {enum} has no constant {fallback}")
+                raise idl_types.IdlError(f"ENUMS: {enum} has no constant {fallback}")
 
     def struct_of(self, message, field):
         if field.type in CPP_PRIMITIVES:
