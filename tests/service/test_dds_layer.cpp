@@ -89,7 +89,7 @@ protocol::Command full_command() {
   c.request_id = 42;
   c.kind = static_cast<std::uint8_t>(protocol::CommandKind::kRunUntil);
   c.load_case = {"p.case", "name: \"x\"", std::string("\0\1\2bin", 6), "file.txtpb"};
-  c.wall_velocity = {"top", 3, {1.0, -2.0, 0.0}, {0.0, 0.0, 0.5}};
+  c.wall_velocity = {"top", 3, {{1.0, -2.0, 0.0}, {0.0, 0.0, 0.5}}};
   c.wall_servo = {"top", -1, 1e6, 1e-9, 0.1};
   c.cycle.cycles = -5;
   c.run_until = {"top", -1, 2e6, std::nullopt, 0.5, 1000, 10};
