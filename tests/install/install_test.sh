@@ -41,6 +41,8 @@ assert dem.__version__ == version, dem.__version__
 assert pathlib.Path(dem._client.__file__).is_relative_to(prefix), dem._client.__file__
 assert dem.paths.server_program() == prefix / "bin" / "dem_server", dem.paths.server_program()
 assert (dem.paths.cases_dir() / "ball" / "nine_disc_damped.case.txtpb").is_file(), dem.paths.cases_dir()
+assert dem.paths.sweep_task_script().is_file(), dem.paths.sweep_task_script()
+import dem.sweep
 print(f"ok: import dem {dem.__version__} from {pathlib.Path(dem.__file__).parent}")
 PY
 

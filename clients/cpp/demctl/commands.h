@@ -28,8 +28,11 @@ struct Global {
 };
 
 dem::client::ConnectOptions connect_options(const Global& global);
+// Whether a server belongs to a sweep: a sweep's servers are named <sweep>_<task>, the task a number (docs/SWEEPS.md).
+bool in_sweep(const std::string& server, const std::string& sweep);
 
-int servers(const Global& global, double discovery);
+// The servers on the domain; with `sweep`, those of that sweep only (named <sweep>_<task>).
+int servers(const Global& global, double discovery, const std::string& sweep = {});
 int status(const Global& global, bool json = false);
 int load(const Global& global, const std::string& file, bool on_server, bool binary);
 int wall_velocity(const Global& global, const std::string& wall, const std::vector<double>& values);
@@ -48,6 +51,9 @@ struct MonitorOptions {
   std::optional<std::uint64_t> samples;  // stop after this many rows; default: until Ctrl-C
   std::string csv;                       // record the rows here too
   std::vector<std::string> walls;        // the plates to show; default: every wall
+  std::string sweep;                     // follow every server of this sweep (<sweep>_<task>) instead of one
+  bool all = false;                      // follow every server of the domain instead of one
+  double idle_exit = 0.0;                // with sweep or all: end once no such server was there for this long, s
 };
 int monitor(const Global& global, const MonitorOptions& options);
 

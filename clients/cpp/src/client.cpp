@@ -377,18 +377,22 @@ protocol::Reply Client::set_gravity(protocol::Vector3 gravity) {
 
 // --- discovery -------------------------------------------------------------
 
+std::set<std::string> server_names(const std::vector<dds::Publication>& publications) {
+  std::set<std::string> names;
+  for (const dds::Publication& publication : publications) {
+    if (publication.type_name != protocol::kStatusTypeName) continue;
+    if (auto name = protocol::server_of_status_topic(publication.topic_name)) names.insert(*name);
+  }
+  return names;
+}
+
 std::vector<ServerInfo> list_servers(std::uint32_t domain, const std::string& dds_config,
                                      std::chrono::milliseconds discovery) {
   dds::Participant participant(domain, dds_config);
   dds::PublicationMonitor publications(participant);
   std::this_thread::sleep_for(discovery);
-  std::set<std::string> names;
-  for (const dds::Publication& publication : publications.alive()) {
-    if (publication.type_name != protocol::kStatusTypeName) continue;
-    if (auto name = protocol::server_of_status_topic(publication.topic_name)) names.insert(*name);
-  }
   std::vector<ServerInfo> servers;
-  for (const std::string& name : names) {
+  for (const std::string& name : server_names(publications.alive())) {
     dds::Topic<protocol::Status> topic(participant, protocol::topic_name(name, TopicKind::kStatus));
     dds::Reader<protocol::Status> reader(participant, topic, protocol::status_qos());
     ServerInfo info{name, std::nullopt};

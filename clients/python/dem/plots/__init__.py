@@ -9,7 +9,9 @@ axes (or a new headless figure) and writes a PNG when given a path:
   5(b), 11);
 - plot_contact_force_history: the nine-disc force at contact C against
   cycles (Cundall & Strack Figs. 6, 7, 9);
-- plot_psi2_against_psi1: the oblique impact sweep (Randall Fig. 5.10).
+- plot_psi2_against_psi1: the oblique impact sweep (Randall Fig. 5.10);
+- plot_stress_settlement_family, plot_final_measure: a parameter sweep's
+  stress-settlement curves and final measures (dem.sweep.Results).
 
 Figures are drawn on matplotlib's Agg canvas (figure.py), so nothing here
 needs a display.
@@ -21,6 +23,7 @@ from .force_chains import plot_force_chains
 from .force_distribution import plot_force_distribution
 from .oblique_impact import plot_psi2_against_psi1
 from .stress_settlement import LiveStressSettlement, StressSettlementSeries, plot_stress_settlement
+from .sweep import plot_final_measure, plot_stress_settlement_family
 
 __all__ = [
     "LiveStressSettlement",
@@ -28,8 +31,10 @@ __all__ = [
     "new_axes",
     "plot_contact_force_history",
     "plot_force_chains",
+    "plot_final_measure",
     "plot_force_distribution",
     "plot_psi2_against_psi1",
     "plot_stress_settlement",
+    "plot_stress_settlement_family",
     "save_png",
 ]

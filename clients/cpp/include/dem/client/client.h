@@ -17,10 +17,13 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "dem/client/errors.h"
+#include "dem/dds/discovery.h"
 #include "dem/dds/participant.h"
 #include "dem/dds/topic.h"
 #include "dem/dds/waitset.h"
@@ -137,6 +140,10 @@ struct ServerInfo {
   std::string name;
   std::optional<protocol::Status> status;  // nothing when it did not arrive in time
 };
+
+// The names of the servers among these publications: the writers of a
+// Status on rt/dem/<name>/status.
+std::set<std::string> server_names(const std::vector<dds::Publication>& publications);
 
 // The servers alive on a domain: those whose status topic has a writer,
 // found through DDS discovery within `discovery` and read from their
