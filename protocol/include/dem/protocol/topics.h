@@ -9,9 +9,11 @@
 
 namespace dem::protocol {
 
-enum class TopicKind { kCommand, kReply, kStatus, kPlateForces, kContactStats };
+enum class TopicKind { kCommand, kReply, kStatus, kPlateForces, kContactStats, kNameClaim };
 
-// "rt/dem/<server>/command", ".../reply", ".../status", ".../plate_forces", ".../contact_stats".
+// "rt/dem/<server>/command", ".../reply", ".../status", ".../plate_forces", ".../contact_stats",
+// ".../_name_claim" (a server's claim to its name, a writer that never writes: service/name_claim.h;
+// hidden from `ros2 topic list` by the leading underscore, as ROS 2 hides such names).
 std::string topic_name(std::string_view server, TopicKind kind);
 
 // A server name is one ROS 2 name token: a letter, then letters, digits and
