@@ -89,8 +89,8 @@ class Liggghts:
 
     def prepare(self, size):
         data = self.work / f"N{SIZES[size]}.data"
-        stl = self.work / "plate.stl"
-        if not data.exists():
+        stl = self.work / f"plate_N{SIZES[size]}.stl"  # each size has its own plate: footprint and height differ
+        if not (data.exists() and stl.exists()):
             subprocess.run(["/usr/bin/python3", str(PEERS / "packing.py"), "csv2data",
                             str(SHARED / f"packing_N{SIZES[size]}.csv"), str(data), "--gap", "2e-5", "--stl", str(stl)],
                            check=True, stdout=subprocess.DEVNULL)

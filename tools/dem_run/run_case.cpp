@@ -93,7 +93,11 @@ RunOutcome run_definition(io::CaseDefinitionT<Dim>& definition, const io::CaseSo
   }
   BasicWorld<Dim>& world = *built;
   RunHealth<Dim> health(world);
-  RunRecorder<Dim> recorder(options.output_directory, definition.output, world, resumed ? &*resumed : nullptr);
+  const bool hertz = std::ranges::any_of(definition.world.contact_models, [](const ContactModelDef& m) {
+    return m.law == ContactLaw::kHertzMindlin || m.law == ContactLaw::kHertzLinearTangential;
+  });
+  RunRecorder<Dim> recorder(options.output_directory, definition.output, world, hertz,
+                            resumed ? &*resumed : nullptr);
   RunCheckpoints<Dim> checkpoints(options.output_directory, options.checkpoints, digest, world.cycle_count());
   const io::SnapshotInfo info{definition.name, definition.description};
   ProgressLine progress(!options.quiet && isatty(fileno(stderr)) == 1);

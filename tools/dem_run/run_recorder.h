@@ -26,9 +26,11 @@ class RunRecorder {
   // Creates the directory and the time-series files (probes.csv only when
   // the case has probes; the compression files only when it asks for them).
   // `resume`: a checkpoint's; the tables are cut back to it and appended
-  // to, the analyses carry on from its state.
+  // to, the analyses carry on from its state. `stiffness_varies`: some
+  // contact law's stiffness depends on the overlap (the Hertz laws), so
+  // Randall's running time-step check applies (run_recorder.cpp).
   RunRecorder(const std::filesystem::path& directory, const io::OutputSettings& output, const BasicWorld<Dim>& world,
-              const io::ResumePoint* resume = nullptr);
+              bool stiffness_varies, const io::ResumePoint* resume = nullptr);
 
   // The tables' lengths (their rows flushed) and the analyses' state, for a checkpoint.
   void fill(io::ResumePoint& point);
@@ -57,6 +59,7 @@ class RunRecorder {
   std::optional<std::uint64_t> last_cycle_;
   std::vector<std::filesystem::path> files_;
   // Randall's time-step check, over consecutive rows (run_recorder.cpp says why).
+  bool check_time_step_;
   static constexpr std::uint64_t kSustainedCycles = 100;
   int rows_above_ = 0;
   std::uint64_t first_above_ = 0;
