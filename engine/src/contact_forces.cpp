@@ -124,8 +124,19 @@ const ContactParams* shared_params(const WorldState<Dim>& s) {
 }
 
 template <int Dim>
-PassInputs<Dim> inputs(const WorldState<Dim>& s) {
-  return {s.particles, s.walls, s.periodic, s.params, shared_params(s), s.time_step, s.cycle, near_margin(s)};
+PassInputs<Dim> inputs(const WorldState<Dim>& s, const std::vector<EllipsoidFrame>& frames) {
+  return {s.particles, s.walls, s.periodic, s.params,          shared_params(s),
+          s.time_step, s.cycle, near_margin(s), frames.data()};
+}
+
+// Each ellipsoid's matrices, once per pass rather than once per contact
+// (a body has about ten rows): particles begin to end.
+template <int Dim>
+void frame_ellipsoids(const Particles<Dim>& p, std::vector<EllipsoidFrame>& frames, std::int64_t begin,
+                      std::int64_t end) {
+  if constexpr (Dim == 3) {
+    for (std::int64_t i = begin; i < end; ++i) frames[i] = ellipsoid_frame(p.shape[i].axes, p.rotation[i]);
+  }
 }
 
 template <typename Law, int Dim, bool kPrefetch>
@@ -138,7 +149,9 @@ void batched_pair_rows(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows
 // then sums the walls' shares in block order.
 template <Pass kPass, int Dim>
 ContactEnergy run_pass(WorldState<Dim>& s) {
-  const PassInputs<Dim> in = inputs(s);
+  const bool ellipsoids = s.shape == ShapeKind::kEllipsoid;
+  if (ellipsoids) s.ellipsoid_frames.resize(s.particles.size());
+  const PassInputs<Dim> in = inputs(s, s.ellipsoid_frames);
   PairBlockFn<Dim> pair_fn = nullptr;
   WallBlockFn<Dim> wall_fn = nullptr;
   const bool energy = s.energy_budget && kPass == Pass::kAdvance;
@@ -166,6 +179,12 @@ ContactEnergy run_pass(WorldState<Dim>& s) {
   const int threads = count > 1 ? s.threads : 1;
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
+    if (ellipsoids) {
+#pragma omp for schedule(static)
+      for (int b = 0; b < count; ++b) {
+        frame_ellipsoids(p, s.ellipsoid_frames, blocks.particle_begin[b], blocks.particle_begin[b + 1]);
+      }
+    }
 #pragma omp for schedule(dynamic, 1)
     for (int b = 0; b < count; ++b) {
       for (Slot i = blocks.particle_begin[b]; i < blocks.particle_begin[b + 1]; ++i) {
@@ -235,7 +254,12 @@ ContactRecordT<Dim> to_record(const RowResult<Dim>& c, ParticleId first, std::ui
 template <int Dim, typename Visit>
 void visit_rows(const WorldState<Dim>& s, std::optional<std::size_t> only_pair_row, Visit visit,
                 std::optional<WallId> only_wall = std::nullopt) {
-  const PassInputs<Dim> in = inputs(s);
+  std::vector<EllipsoidFrame> frames;
+  if (s.shape == ShapeKind::kEllipsoid) {
+    frames.resize(s.particles.size());
+    frame_ellipsoids(s.particles, frames, 0, static_cast<std::int64_t>(frames.size()));
+  }
+  const PassInputs<Dim> in = inputs(s, frames);
   ContactEnergy unused;
   const Particles<Dim>& p = s.particles;
   auto report = [&](bool wall, std::size_t r, const RowResult<Dim>& c, const ContactRows<Dim>& rows) {

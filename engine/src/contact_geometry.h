@@ -9,6 +9,7 @@
 #include "contact_table.h"
 #include "ellipsoid.h"
 #include "particles.h"
+#include "pass_inputs.h"
 #include "periodic.h"
 #include "superquadric.h"
 #include "walls.h"
@@ -38,9 +39,9 @@ struct RoundShape {
   static constexpr bool round = true;
 
   template <bool kApartGeometry, int Dim>
-  static ContactGeometry<Dim> pair(const Particles<Dim>& p, const Periodic<Dim>& periodic, Slot x, Slot y,
-                                   ContactSearch&) {
-    const Vec<Dim> d = periodic.separation(p.position[x], p.position[y]);
+  static ContactGeometry<Dim> pair(const PassInputs<Dim>& in, Slot x, Slot y, ContactSearch&) {
+    const Particles<Dim>& p = in.particles;
+    const Vec<Dim> d = in.periodic.separation(p.position[x], p.position[y]);
     const double rx = p.radius[x], ry = p.radius[y];
     const double distance2 = d.squaredNorm();
     if (!kApartGeometry && distance2 >= (rx + ry) * (rx + ry)) {
@@ -69,10 +70,10 @@ struct RoundShape {
   }
 
   template <int Dim>
-  static ContactGeometry<Dim> wall(const Particles<Dim>& p, const WallDefT<Dim>& wall, Slot x) {
+  static ContactGeometry<Dim> wall(const PassInputs<Dim>& in, const WallDefT<Dim>& wall, Slot x) {
     ContactGeometry<Dim> g;
-    const Vec<Dim>& centre = p.position[x];
-    const double r = p.radius[x];
+    const Vec<Dim>& centre = in.particles.position[x];
+    const double r = in.particles.radius[x];
     // The wall point A_(w) on the perpendicular through the particle centre (Fig. 1).
     const Vec<Dim> q = closest_point(wall, centre).point;
     const Vec<Dim> d = q - centre;
@@ -121,10 +122,10 @@ struct SuperquadricShape {
   }
 
   template <bool>
-  static ContactGeometry<2> pair(const Particles<2>& p, const Periodic<2>& periodic, Slot x, Slot y,
-                                 ContactSearch& search) {
+  static ContactGeometry<2> pair(const PassInputs<2>& in, Slot x, Slot y, ContactSearch& search) {
+    const Particles<2>& p = in.particles;
     const Vec2& cx = p.position[x];
-    const Vec2 d = periodic.separation(cx, p.position[y]);
+    const Vec2 d = in.periodic.separation(cx, p.position[y]);
     if (!bounding_circles_meet(p, x, y, d, search)) return apart(p, x, y, d);
     const Vec2 cy = cx + d;  // the nearest image of y
     const SuperquadricContact c =
@@ -140,7 +141,8 @@ struct SuperquadricShape {
     return g;
   }
 
-  static ContactGeometry<2> wall(const Particles<2>& p, const WallDefT<2>& wall, Slot x) {
+  static ContactGeometry<2> wall(const PassInputs<2>& in, const WallDefT<2>& wall, Slot x) {
+    const Particles<2>& p = in.particles;
     ContactGeometry<2> g;
     const Vec2 towards_particles = wall_normal(wall);
     const SupportContact s = superquadric_line_contact(placed(p, x, p.position[x]), wall.point, -towards_particles);
@@ -161,37 +163,34 @@ struct SuperquadricShape {
 struct EllipsoidShape {
   static constexpr bool round = false;
 
-  static PlacedEllipsoid placed(const Particles<3>& p, Slot i, const Vec3& centre) {
-    return {p.shape[i].axes, centre, p.rotation[i]};
-  }
-
-  // How far the ellipsoid reaches from its centre along the unit vector u
-  // (or -u): |diag(a) R^T u|.
-  static double support(const Particles<3>& p, Slot i, const Vec3& u) {
-    return (p.shape[i].axes.cwiseProduct(p.rotation[i].conjugate() * u)).norm();
-  }
-
-  template <bool>
-  static ContactGeometry<3> pair(const Particles<3>& p, const Periodic<3>& periodic, Slot x, Slot y,
-                                 ContactSearch& search) {
+  template <bool kApartGeometry>
+  static ContactGeometry<3> pair(const PassInputs<3>& in, Slot x, Slot y, ContactSearch& search) {
+    const Particles<3>& p = in.particles;
     const Vec3& cx = p.position[x];
-    const Vec3 d = periodic.separation(cx, p.position[y]);
-    if (!bounding_circles_meet(p, x, y, d, search)) return apart(p, x, y, d);
+    const Vec3 d = in.periodic.separation(cx, p.position[y]);
+    // Most rows are neighbours apart: they get no root and no normal
+    // unless kApartGeometry asks (see RoundShape).
+    ContactGeometry<3> none;
+    none.overlap = -1.0;
+    if (!bounding_circles_meet(p, x, y, d, search)) return kApartGeometry ? apart(p, x, y, d) : none;
     // An elongated body's bounding sphere reaches far past it. How far each
     // reaches along the line of centres (its support) tells most pairs
-    // whose spheres meet apart, for the price of two rotations: the plane
-    // across that line between the two supports separates them.
-    const double distance = d.norm();
-    const Vec3 u = d / distance;
-    const double reach = support(p, x, u) + support(p, y, u);
-    if (reach < distance) {
+    // whose spheres meet apart: the plane across that line between the two
+    // supports separates them. sqrt(d^T M^-1 d) is a body's reach times |d|.
+    const EllipsoidFrame& fx = in.ellipsoid_frames[x];
+    const EllipsoidFrame& fy = in.ellipsoid_frames[y];
+    const double reach_times_distance = std::sqrt(d.dot(fx.reach * d)) + std::sqrt(d.dot(fy.reach * d));
+    const double distance2 = d.squaredNorm();
+    if (reach_times_distance < distance2) {
+      if (!kApartGeometry) return none;
+      const double distance = std::sqrt(distance2);
       ContactGeometry<3> g;
-      g.overlap = reach - distance;
-      g.normal = u;
+      g.overlap = reach_times_distance / distance - distance;
+      g.normal = d / distance;
       return g;
     }
     const Vec3 cy = cx + d;  // the nearest image of y
-    const EllipsoidContact c = ellipsoid_contact(placed(p, x, cx), placed(p, y, cy), search.valid ? search.first : 0.0,
+    const EllipsoidContact c = ellipsoid_contact(fx, cx, fy, cy, search.valid ? search.first : 0.0,
                                                  search.valid ? search.second : 0.0);
     search = {c.multiplier_i, c.multiplier_j, true};
     ContactGeometry<3> g;
@@ -204,11 +203,13 @@ struct EllipsoidShape {
     return g;
   }
 
-  static ContactGeometry<3> wall(const Particles<3>& p, const WallDefT<3>& wall, Slot x) {
-    if (!wall.triangles.empty()) return faces(p, wall, x);
+  static ContactGeometry<3> wall(const PassInputs<3>& in, const WallDefT<3>& wall, Slot x) {
+    if (!wall.triangles.empty()) return faces(in, wall, x);
+    const Particles<3>& p = in.particles;
     ContactGeometry<3> g;
     const Vec3 towards_particles = wall_normal(wall);
-    const EllipsoidFaceContact c = ellipsoid_plane_contact(placed(p, x, p.position[x]), wall.point, towards_particles);
+    const EllipsoidFaceContact c =
+        ellipsoid_plane_contact(in.ellipsoid_frames[x], p.position[x], wall.point, towards_particles);
     // The projected point must fall inside the rectangle (eqs. 57-59 for a
     // triangle; its two coordinates here); past its edges there is no contact.
     const Vec3 d = c.projected - wall.point;
@@ -228,15 +229,16 @@ struct EllipsoidShape {
   // contact. A point on the edge two faces share has a zero coordinate (to
   // round-off) in both, so the edge counts as inside: with eq. 59's strict
   // > 0 a particle centred over the seam would touch neither face.
-  static ContactGeometry<3> faces(const Particles<3>& p, const WallDefT<3>& wall, Slot x) {
+  static ContactGeometry<3> faces(const PassInputs<3>& in, const WallDefT<3>& wall, Slot x) {
     constexpr double kOnTheEdge = 1e-12;  // triangular coordinates are area fractions
+    const Particles<3>& p = in.particles;
     ContactGeometry<3> g;
     g.overlap = -1.0;
-    const PlacedEllipsoid body = placed(p, x, p.position[x]);
+    const EllipsoidFrame& body = in.ellipsoid_frames[x];
     for (const auto& t : wall.triangles) {
       Vec3 towards = (t[1] - t[0]).cross(t[2] - t[0]).normalized();
       if ((p.position[x] - t[0]).dot(towards) < 0.0) towards = -towards;
-      const EllipsoidFaceContact c = ellipsoid_plane_contact(body, t[0], towards);
+      const EllipsoidFaceContact c = ellipsoid_plane_contact(body, p.position[x], t[0], towards);
       if (c.overlap <= g.overlap || (triangular_coordinates(t, c.projected).array() < -kOnTheEdge).any()) continue;
       g.overlap = c.overlap;
       g.normal = -towards;

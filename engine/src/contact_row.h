@@ -12,6 +12,7 @@
 #include "contact_geometry.h"
 #include "contact_history.h"
 #include "contact_params.h"
+#include "pass_inputs.h"
 #include "tangential.h"
 
 namespace dem {
@@ -19,23 +20,6 @@ namespace dem {
 // What a pass does to a row: advance its history (the force pass), or read
 // it as it stands (re-evaluating the sums after an edit; reports).
 enum class Pass { kAdvance, kEvaluate };
-
-// What the rows of one pass read.
-template <int Dim>
-struct PassInputs {
-  const Particles<Dim>& particles;
-  const Walls<Dim>& walls;
-  const Periodic<Dim>& periodic;
-  const ContactParamTable& params;
-  const ContactParams* shared_params;  // when every pair of bodies has the same parameters
-  double dt;
-  std::uint64_t cycle;
-  double near_margin;  // the gap within which a pair row counts as near (contact_blocks.h)
-
-  const ContactParams& pair_params(MaterialId a, MaterialId b) const {
-    return shared_params ? *shared_params : params(a, b);
-  }
-};
 
 // One row's contact this cycle: the share of force and moment each body
 // receives, and what a report shows.
@@ -123,7 +107,7 @@ RowResult<Dim> pair_row(const PassInputs<Dim>& in, RowsOf<kPass, Dim> rows, std:
   RowResult<Dim> out;
   ContactSearch search;
   if constexpr (!Shape::round) search = rows.search[r];
-  const ContactGeometry<Dim> g = Shape::template pair<kEnergy>(p, in.periodic, x, y, search);
+  const ContactGeometry<Dim> g = Shape::template pair<kEnergy>(in, x, y, search);
   if constexpr (kPass == Pass::kAdvance && !Shape::round) rows.search[r] = search;
   ContactHistory<Dim> h = load_history<Law>(rows, r);
   if (g.overlap <= 0.0 && (!h.touching || kPass == Pass::kEvaluate)) return out;  // eq. 8: apart
@@ -170,7 +154,7 @@ RowResult<Dim> wall_row(const PassInputs<Dim>& in, RowsOf<kPass, Dim> rows, std:
   const WallId w = rows.second[r];
   const WallDefT<Dim>& wall = in.walls.def[w];
   RowResult<Dim> out;
-  const ContactGeometry<Dim> g = Shape::wall(p, wall, x);
+  const ContactGeometry<Dim> g = Shape::wall(in, wall, x);
   ContactHistory<Dim> h = load_history<Law>(rows, r);
   if (g.overlap <= 0.0 && (!h.touching || kPass == Pass::kEvaluate)) return out;
   if (kPass == Pass::kEvaluate && !h.touching) return out;

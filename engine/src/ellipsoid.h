@@ -17,6 +17,32 @@ struct PlacedEllipsoid {
   Quaternion orientation = Quaternion::Identity();  // body axes -> world
 };
 
+// A symmetric 3x3 matrix by its six entries: a product with one costs what
+// a general one does, its cofactor inverse half.
+struct SymmetricMatrix {
+  double xx, xy, xz, yy, yz, zz;
+
+  Vec3 operator*(const Vec3& v) const {
+    return {xx * v.x() + xy * v.y() + xz * v.z(), xy * v.x() + yy * v.y() + yz * v.z(),
+            xz * v.x() + yz * v.y() + zz * v.z()};
+  }
+  SymmetricMatrix plus(double s, const SymmetricMatrix& o) const {  // this + s o
+    return {xx + s * o.xx, xy + s * o.xy, xz + s * o.xz, yy + s * o.yy, yz + s * o.yz, zz + s * o.zz};
+  }
+  SymmetricMatrix scaled(double s) const { return {s * xx, s * xy, s * xz, s * yy, s * yz, s * zz}; }
+};
+
+// An ellipsoid's matrices in world axes, worked out once per body and force
+// pass and shared by all its contacts: its potential's M = R A^-2 R^T,
+// f(x) = (x - c)^T M (x - c) - 1 (eqs. 43-44), and M^-1 = R A^2 R^T, whose
+// quadratic form u^T M^-1 u is the square of how far the body reaches from
+// its centre along the unit vector u.
+struct EllipsoidFrame {
+  SymmetricMatrix potential;
+  SymmetricMatrix reach;
+};
+EllipsoidFrame ellipsoid_frame(const Vec3& axes, const Quaternion& orientation);
+
 struct EllipsoidContact {
   double overlap;            // > 0 in contact
   Vec3 normal;               // from the first body towards the second
@@ -28,6 +54,8 @@ struct EllipsoidContact {
 
 // The contact between two ellipsoids; mu_i, mu_j start the searches (0:
 // no previous value).
+EllipsoidContact ellipsoid_contact(const EllipsoidFrame& i, const Vec3& centre_i, const EllipsoidFrame& j,
+                                   const Vec3& centre_j, double mu_i = 0.0, double mu_j = 0.0);
 EllipsoidContact ellipsoid_contact(const PlacedEllipsoid& i, const PlacedEllipsoid& j, double mu_i = 0.0,
                                    double mu_j = 0.0);
 
@@ -41,6 +69,8 @@ struct EllipsoidFaceContact {
   Vec3 projected;           // Q, on the plane
   double effective_radius;  // sqrt(R' R'') of the ellipsoid at P
 };
+EllipsoidFaceContact ellipsoid_plane_contact(const EllipsoidFrame& body, const Vec3& centre, const Vec3& on_plane,
+                                             const Vec3& towards);
 EllipsoidFaceContact ellipsoid_plane_contact(const PlacedEllipsoid& body, const Vec3& on_plane,
                                              const Vec3& towards);
 

@@ -13,6 +13,7 @@
 #include "dem/measures.h"
 #include "dem/profile.h"
 #include "dem/snapshot.h"
+#include "ellipsoid.h"
 #include "particles.h"
 #include "periodic.h"
 #include "walls.h"
@@ -60,6 +61,9 @@ struct WorldState {
   // the largest particle speed times each step since.
   double near_slack = 0.0;
   StepProfile profile;
+  // Scratch of the force pass, derived from the particles' shapes and
+  // rotations at its start (contact_forces.cpp): each ellipsoid's matrices.
+  std::vector<EllipsoidFrame> ellipsoid_frames;
   // Accumulated energy terms (the held terms, kinetic and strain, are
   // measured when asked) and the last cycle's particle-wise step check.
   EnergyBudget energy;

@@ -189,7 +189,7 @@ Verdict judge_miyata(const MiyataRun& run, const MiyataFigures& f) {
   if (run.target_stress > 0.0) verdict.at_least("stress reached, Pa", run.results.last.stress, run.target_stress);
   verdict.above("final stiffness / initial stiffness", f.initial_softness, 4.0);
   const double straight = run.dimension == 3 ? 0.95 : run.rough ? 0.85 : 0.99;
-  verdict.above("final state's R²", f.final_r_squared, straight);
+  verdict.above(kFinalRSquaredCheck, f.final_r_squared, straight);
   verdict.above("initial contact rate over 3x the final one, contacts per kPa", f.initial_contact_rate,
                 3.0 * f.final_contact_rate);
   verdict.above("contacts on the loading plate at the end", f.final_loading_contacts, 4);

@@ -100,6 +100,9 @@ void print_miyata_report(std::FILE* out, const MiyataRun& run, const MiyataFigur
 // each plate's tail above f = 1 falls with f (decay rate at least 1, more
 // contacts in (1, 2] than above 2).
 Verdict judge_miyata(const MiyataRun& run, const MiyataFigures& figures);
+// The name of judge_miyata's check on the final state's R², for a test
+// that judges it over several packings (tests/validation: the 3D case).
+inline constexpr const char* kFinalRSquaredCheck = "final state's R²";
 // One row of the figures, miyata_summary.csv, in `directory`.
 void write_miyata_summary(const std::filesystem::path& directory, const MiyataRun& run, const MiyataFigures& f);
 

@@ -1,0 +1,35 @@
+// What the rows of one force pass read: the particles, walls and periodic
+// cell, the contact parameters, the step, and what the pass works out once
+// for all its rows.
+#pragma once
+
+#include <cstdint>
+
+#include "contact_params.h"
+#include "ellipsoid.h"
+#include "particles.h"
+#include "periodic.h"
+#include "walls.h"
+
+namespace dem {
+
+// What the rows of one pass read.
+template <int Dim>
+struct PassInputs {
+  const Particles<Dim>& particles;
+  const Walls<Dim>& walls;
+  const Periodic<Dim>& periodic;
+  const ContactParamTable& params;
+  const ContactParams* shared_params;  // when every pair of bodies has the same parameters
+  double dt;
+  std::uint64_t cycle;
+  double near_margin;  // the gap within which a pair row counts as near (contact_blocks.h)
+  // Ellipsoid worlds: each body's matrices for this pass, by slot.
+  const EllipsoidFrame* ellipsoid_frames = nullptr;
+
+  const ContactParams& pair_params(MaterialId a, MaterialId b) const {
+    return shared_params ? *shared_params : params(a, b);
+  }
+};
+
+}  // namespace dem
