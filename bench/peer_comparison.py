@@ -100,11 +100,17 @@ class Liggghts:
         data, stl = self.data[size]
         log = self.work / f"log_{size}_{ranks}.txt"
         env = dict(os.environ, **MPI_ENV)
-        command = ["mpirun", "-np", str(ranks), "--bind-to", "none", *TIME, "liggghts",
+        # Each rank's /usr/bin/time appends its own line to one file: on the
+        # shared stderr two ranks' lines interleave mid-line.
+        rss_file = self.work / f"rss_{size}_{ranks}.txt"
+        rss_file.unlink(missing_ok=True)
+        time = ["/usr/bin/time", "-a", "-o", str(rss_file), "-f", "PEAK_RSS_KIB %M"]
+        command = ["mpirun", "-np", str(ranks), "--bind-to", "none", *time, "liggghts",
                    "-in", str(PEERS / "in.plate.liggghts"), "-var", "data", str(data), "-var", "stl", str(stl),
                    "-var", "z0", repr(PLATE_Z0[size]), "-var", "nwarm", "200", "-var", "nrun", "2000",
                    "-var", "final", str(self.work / "final.dump"), "-log", str(log)]  # (-screen none crashes LIGGGHTS 3.8 reading the STL)
-        _, rss = run_timed(command, env=env, cwd=self.work)
+        run_timed(command, env=env, cwd=self.work)
+        rss = sum(int(m) for m in re.findall(r"^PEAK_RSS_KIB (\d+)$", rss_file.read_text(), re.M)) / 1024.0
         text = log.read_text()
         loops = re.findall(r"^Loop time of ([0-9.e+-]+) on", text, re.M)
         timed = float(loops[1])  # the second run: the 2000 timed steps
