@@ -83,14 +83,17 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
     particle_force[pending] += pending_force;
     particle_moment[pending] += pending_moment;
   };
-  // Rows crossing blocks up to `r` that did not touch: nothing to set aside.
-  auto skip_crossing_before = [&](std::int32_t r) {
-    while (cross < cross_end && cross_row[cross] < r) {
-      deferred_force[cross_slot[cross]] = Vec<Dim>::Zero();
-      deferred_moment[cross_slot[cross]] = Space<Dim>::zero_spin();
-      ++cross;
-    }
-  };
+  // The block's rows crossing blocks set aside nothing until they touch:
+  // zeroed here in one sweep, so that a touching row finds whether it
+  // crosses from its second slot alone (about 0.8 crossing rows a particle
+  // against 2.4 touching; the search of the row list per touching row cost
+  // 3 % of the pass's instructions).
+  for (std::int32_t k = cross; k < cross_end; ++k) {
+    deferred_force[cross_slot[k]] = Vec<Dim>::Zero();
+    deferred_moment[cross_slot[k]] = Space<Dim>::zero_spin();
+  }
+  const Slot block_first = blocks.particle_begin[b];
+  const auto block_size = static_cast<std::uint32_t>(blocks.particle_begin[b + 1] - block_first);
   // The rows to test: the near rows, or, when they are to be sorted out
   // again, every row of the block, keeping those within the margin.
   const std::int32_t begin = blocks.pair_begin[b], end = blocks.pair_begin[b + 1];
@@ -240,8 +243,8 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
         pending_force += on_first;
         pending_moment += rx[j] * turn;
       }
-      skip_crossing_before(r);
-      if (cross < cross_end && cross_row[cross] == r) {
+      if (static_cast<std::uint32_t>(y - block_first) >= block_size) {  // a crossing row (contact_blocks.h)
+        while (cross_row[cross] != r) ++cross;
         deferred_force[cross_slot[cross]] = -on_first;
         deferred_moment[cross_slot[cross]] = ry[j] * turn;
         ++cross;
@@ -252,7 +255,6 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
     }
   }
   flush_pending();
-  skip_crossing_before(end);
   if (sort_out) blocks.near_count[b] = kept;
 }
 
