@@ -210,6 +210,21 @@ Verdict report_mindlin_loading(const std::filesystem::path& out) {
   verdict.above("sliding steps under varying N", v.sliding_steps, 0);
   verdict.above("steps with dT < mu dN", v.lagging_checks, 100);
   verdict.below("largest error of those steps (Randall 3.98, theta = 1)", v.largest_lag_error, 1e-9);
+  // A contact formed with its whole overlap in one step, then loaded under
+  // a slowly rising N: on the constant-N curve of the current N (Randall
+  // 3.4.1), pair and wall alike.
+  for (const bool wall : {false, true}) {
+    const FreshContactResult f = mindlin_fresh_contact_rising_normal_force(wall);
+    for (const MindlinPoint& p : f.points) {
+      csv << p.branch << ',' << p.displacement << ',' << p.simulated << ',' << p.theory << '\n';
+    }
+    const std::string which = wall ? "fresh wall contact" : "fresh pair contact";
+    std::printf("  %s, N rising %.2f -> %.2f N to delta/delta* = %.3f: largest error %.4f%% of mu N%s\n",
+                which.c_str(), f.initial_normal_force, f.final_normal_force, f.final_ratio,
+                100.0 * f.largest_error, f.sliding ? " (SLID)" : "");
+    verdict.below(which + ": largest |T - mu N (1 - (1 - delta/delta*)^1.5)| / (mu N)", f.largest_error, 0.01);
+    verdict.expect(which + ": no sliding below delta*", !f.sliding);
+  }
   return verdict;
 }
 
