@@ -5,6 +5,7 @@
 //   dem_validate restitution --out DIR      (Miyata et al. 2002, eq. 17)
 //   dem_validate mindlin-loading --out DIR  (Randall 1989, 5.2)
 //   dem_validate box-settle --out DIR       (3D settling: weight on the floor, energy budget)
+//   dem_validate verification --case FILE   (Cundall & Strack 1979, Tables 1-3: stages A and B)
 //   dem_validate miyata-compression --case FILE --out DIR
 //                                           (Miyata et al. 2002, 3.2-3.3: plate loading, Figs. 26-37)
 #include <CLI/CLI.hpp>
@@ -18,6 +19,7 @@
 #include "contact_mechanics.h"
 #include "miyata_compression.h"
 #include "nine_disc.h"
+#include "verification.h"
 
 namespace {
 
@@ -83,6 +85,12 @@ int main(int argc, char** argv) {
     sub->add_option("--out", out, "directory for the CSV files (created)")->required();
   }
   box->add_option("--cases", cases, "directory holding cases/validation")->check(CLI::ExistingDirectory);
+  std::filesystem::path verification_case;
+  auto* verification = app.add_subcommand(
+      "verification", "Cundall & Strack (1979) verification assembly, Tables 1-3: stages A and B (cases/ball)");
+  verification->add_option("--case", verification_case, "a cases/ball/verification_assembly*.case.txtpb file")
+      ->required()
+      ->check(CLI::ExistingFile);
   std::filesystem::path miyata_case;
   auto* miyata = app.add_subcommand("miyata-compression",
                                     "a plate loading case of Miyata et al. (2002) 3.2-3.3 (cases/miyata): three "
@@ -103,6 +111,11 @@ int main(int argc, char** argv) {
     if (*restitution) verdict = dem::validation::report_restitution(out);
     if (*mindlin) verdict = dem::validation::report_mindlin_loading(out);
     if (*box) verdict = dem::validation::report_box_settle(cases / "validation" / "box_settle.case.txtpb", out);
+    if (*verification) {
+      const dem::validation::VerificationRun run = dem::validation::run_verification(verification_case);
+      dem::validation::print_verification(stdout, run);
+      verdict = dem::validation::judge_verification(run);
+    }
     if (*miyata) {
       const dem::validation::MiyataRun run = dem::validation::run_miyata_compression(miyata_case, out);
       const dem::validation::MiyataFigures figures = dem::validation::miyata_figures(run);
