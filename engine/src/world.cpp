@@ -361,6 +361,11 @@ std::optional<ContactRecordT<Dim>> BasicWorld<Dim>::contact_between(ParticleId a
 }
 
 template <int Dim>
+double BasicWorld<Dim>::depth() const { return state_->depth; }
+template <int Dim>
+const PeriodicDefT<Dim>& BasicWorld<Dim>::periodic() const { return state_->periodic_def; }
+
+template <int Dim>
 DampingDef BasicWorld<Dim>::damping() const { return state_->damping; }
 
 template <int Dim>

@@ -101,6 +101,10 @@ struct ContactRecordT {
   double shear_damping = 0.0;          // D_s, N (eq. 27): signed in 2D, the magnitude in 3D
   bool sliding = false;                // |F_s| reached (F_s)max
   std::uint64_t formed_cycle = 0;      // the cycle the contact began touching
+  // The whole force the pass applied to the first particle (springs and
+  // dashpots); the second body received -force. The measures of a region
+  // (stress, its normal and tangential parts) read it.
+  Vec<Dim> force = Vec<Dim>::Zero();
 };
 
 using WallMeasure = WallMeasureT<2>;

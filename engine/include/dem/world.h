@@ -138,6 +138,12 @@ class BasicWorld {
   // The touching contact between two particles, if any.
   std::optional<Record> contact_between(ParticleId a, ParticleId b) const;
 
+  // 2D: the out-of-plane depth that turns forces per unit depth into
+  // stresses (1 for discs; the mean diameter for spheres in the plane,
+  // Randall 1989, 4.4). 3D: 1.
+  double depth() const;
+  const PeriodicDefT<Dim>& periodic() const;
+
   DampingDef damping() const;
   void set_damping(const DampingDef& damping);
   Vec<Dim> gravity() const;
