@@ -172,6 +172,7 @@ WorldSnapshotT<Dim> save_snapshot(const WorldState<Dim>& s) {
   if (s.sorted_cycle == kNeverSorted) snap.particle_order.clear();
   const Walls<Dim>& walls = s.walls;
   def.walls = walls.def;
+  def.box_control = walls.box;
   for (int w = 0; w < walls.size(); ++w) {
     snap.walls.push_back(WallSnapshotT<Dim>{walls.initial_point[w], walls.last_velocity[w],
                                             walls.last_angular_velocity[w], walls.force[w], walls.moment[w],

@@ -75,6 +75,7 @@ std::uint64_t hash_state(const WorldState<Dim>& s) {
   for (const WallDefT<Dim>& w : s.walls.def) {
     h.add(w.point);
     h.add(w.direction);
+    if (w.removed) h.add(w.removed);  // only then, so the hash of a world without removed walls is as it was
   }
   return h.value();
 }

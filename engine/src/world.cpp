@@ -9,6 +9,7 @@
 #include <numbers>
 #include <string>
 
+#include "box_control.h"
 #include "broad_phase.h"
 #include "contact_forces.h"
 #include "contact_laws.h"
@@ -216,6 +217,14 @@ void build(WorldState<Dim>& s, const WorldDefT<Dim>& def) {
   // are taken as a layer one mean diameter deep (Randall 1989, 4.4).
   const bool discs = Dim == 2 && def.planar_particle == PlanarParticle::kDisc;
   s.depth = discs || Dim == 3 ? 1.0 : 2.0 * radius_sum / n;
+  s.walls.depth = s.depth;
+  if (def.box_control) {
+    check_box_control(*def.box_control, def.walls);
+    s.walls.box = def.box_control;
+    if (!(s.walls.box->reference_extent.array() > 0.0).all()) {
+      s.walls.box->reference_extent = box_extent(s.walls, *s.walls.box);
+    }
+  }
 
   std::vector<MaterialId> wall_materials;
   for (const WallDefT<Dim>& w : def.walls) wall_materials.push_back(w.material);

@@ -34,7 +34,8 @@ struct EnergyMirror {
 struct ServoMirror { double target_force, gain, max_speed; };
 template <int Dim> struct WorldDefMirror {
   std::vector<MaterialDef> m; std::vector<ContactModelDef> c; std::vector<ParticleDefT<Dim>> p;
-  std::vector<WallDefT<Dim>> w; PeriodicDefT<Dim> periodic; DampingDef d; Vec<Dim> g; PlanarParticle pp;
+  std::vector<WallDefT<Dim>> w; PeriodicDefT<Dim> periodic; std::optional<BoxControlT<Dim>> box; DampingDef d;
+  Vec<Dim> g; PlanarParticle pp;
   double f, fixed, tol; int threads; bool energy_budget;
 };
 template <int Dim> struct ParticleMirror {
@@ -44,10 +45,16 @@ template <int Dim> struct ParticleMirror {
 struct Shape2Mirror { double a, b, n, angle; };
 struct Shape3Mirror { Vec3 axes; Quaternion orientation; };
 template <int Dim> struct PeriodicMirror { std::array<bool, Dim> axes; Vec<Dim> min, max; };
-struct Wall2Mirror { std::string name; Vec2 point, direction; double h1, h2; MaterialId material; WallMotionT<2> motion; };
+struct Wall2Mirror {
+  std::string name; Vec2 point, direction; double h1, h2; MaterialId material; WallMotionT<2> motion; bool removed;
+};
 struct Wall3Mirror {
   std::string name; Vec3 point, direction; double h1, h2; Vec3 direction2; double k1, k2; MaterialId material;
-  WallMotionT<3> motion; std::vector<std::array<Vec3, 3>> triangles;
+  WallMotionT<3> motion; std::vector<std::array<Vec3, 3>> triangles; bool removed;
+};
+struct BoxAxisMirror { WallId lower, upper; AxisControl control; double strain_rate, stress; };
+template <int Dim> struct BoxControlMirror {
+  std::array<BoxAxisDef, Dim> axes; StressPath path; double path_value, gain, max_speed; Vec<Dim> reference_extent;
 };
 struct MindlinMirror { double direction; bool unloading, reloading; double t_star, t_star2, lag; };
 template <int Dim> struct ContactSnapshotMirror {
@@ -91,6 +98,9 @@ DEM_SNAPSHOT_COVERS(WorldDefT<2>, WorldDefMirror<2>);
 DEM_SNAPSHOT_COVERS(WorldDefT<3>, WorldDefMirror<3>);
 DEM_SNAPSHOT_COVERS(WallDefT<2>, Wall2Mirror);
 DEM_SNAPSHOT_COVERS(WallDefT<3>, Wall3Mirror);
+DEM_SNAPSHOT_COVERS(BoxAxisDef, BoxAxisMirror);
+DEM_SNAPSHOT_COVERS(BoxControlT<2>, BoxControlMirror<2>);
+DEM_SNAPSHOT_COVERS(BoxControlT<3>, BoxControlMirror<3>);
 #undef DEM_SNAPSHOT_COVERS
 
 using Doubles = google::protobuf::RepeatedField<double>;
@@ -281,6 +291,40 @@ void put_wall(const WallDefT<Dim>& def, const WallSnapshotT<Dim>& state, proto::
   out.set_normal_force(state.normal_force);
   out.set_contacts(state.contacts);
   put(out.mutable_normal_force_arm(), state.normal_force_arm);
+  out.set_removed(def.removed);
+}
+
+template <int Dim>
+void put_box_control(const BoxControlT<Dim>& box, proto::SnapshotBoxControl& out) {
+  for (const BoxAxisDef& a : box.axes) {
+    proto::SnapshotBoxAxis& axis = *out.add_axis();
+    axis.set_lower(a.lower);
+    axis.set_upper(a.upper);
+    axis.set_control(static_cast<int>(a.control));
+    axis.set_strain_rate(a.strain_rate);
+    axis.set_stress(a.stress);
+  }
+  out.set_path(static_cast<int>(box.path));
+  out.set_path_value(box.path_value);
+  out.set_gain(box.gain);
+  out.set_max_speed(box.max_speed);
+  put(out.mutable_reference_extent(), box.reference_extent);
+}
+
+template <int Dim>
+BoxControlT<Dim> get_box_control(const proto::SnapshotBoxControl& in) {
+  BoxControlT<Dim> box;
+  for (int i = 0; i < Dim && i < in.axis_size(); ++i) {
+    const proto::SnapshotBoxAxis& a = in.axis(i);
+    box.axes[static_cast<std::size_t>(i)] = {a.lower(), a.upper(), static_cast<AxisControl>(a.control()),
+                                             a.strain_rate(), a.stress()};
+  }
+  box.path = static_cast<StressPath>(in.path());
+  box.path_value = in.path_value();
+  box.gain = in.gain();
+  box.max_speed = in.max_speed();
+  box.reference_extent = get<Vec<Dim>>(in.reference_extent(), 0);
+  return box;
 }
 
 template <int Dim>
@@ -547,6 +591,21 @@ void check(const proto::Snapshot& m, Problems& problems) {
   if (m.reference_positions_size() > 0) {
     check_array(problems, "reference_positions", m.reference_positions(), n.particles, Dim);
   }
+  if (m.has_box_control()) {
+    const proto::SnapshotBoxControl& box = m.box_control();
+    if (box.axis_size() != Dim) {
+      problems.add("box_control.axis", "has " + std::to_string(box.axis_size()) + " axes, expected " +
+                                           std::to_string(Dim));
+    }
+    for (int i = 0; i < box.axis_size(); ++i) {
+      const std::string path = "box_control.axis[" + std::to_string(i) + "]";
+      if (!in_range(box.axis(i).lower(), n.walls)) problems.add(path + ".lower", "names no wall");
+      if (!in_range(box.axis(i).upper(), n.walls)) problems.add(path + ".upper", "names no wall");
+      if (box.axis(i).control() < 0 || box.axis(i).control() > 2) problems.add(path + ".control", "must be 0, 1 or 2");
+    }
+    if (box.path() < 0 || box.path() > 2) problems.add("box_control.path", "must be 0, 1 or 2");
+    check_length(problems, "box_control.reference_extent", box.reference_extent(), Dim);
+  }
   if (m.particle_order_size() > 0) {
     if (static_cast<std::size_t>(m.particle_order_size()) != n.particles) {
       problems.add("particle_order", "has " + std::to_string(m.particle_order_size()) + " entries for " +
@@ -650,6 +709,7 @@ void get_wall(const proto::SnapshotWall& w, WorldSnapshotT<Dim>& s) {
   wall.motion.velocity = get<Vec<Dim>>(w.velocity(), 0);
   wall.motion.angular_velocity = get<Spin<Dim>>(w.angular_velocity(), 0);
   if (w.has_servo()) wall.motion.servo = ServoDef{w.servo().target_force(), w.servo().gain(), w.servo().max_speed()};
+  wall.removed = w.removed();
   s.def.walls.push_back(wall);
 
   WallSnapshotT<Dim> state;
@@ -712,6 +772,7 @@ proto::Snapshot snapshot_to_proto(const WorldSnapshotT<Dim>& s, const SnapshotIn
   put_settings(s.def, *m.mutable_settings());
   put_particles(s, *m.mutable_particles());
   for (std::size_t i = 0; i < s.def.walls.size(); ++i) put_wall(s.def.walls[i], s.walls[i], *m.add_wall());
+  if (s.def.box_control) put_box_control(*s.def.box_control, *m.mutable_box_control());
   put_contacts(s.contacts, *m.mutable_contacts());
   proto::SnapshotEnergy& energy = *m.mutable_energy();
   energy.set_initial_kinetic(s.energy.initial_kinetic);
@@ -748,6 +809,7 @@ WorldSnapshotT<Dim> snapshot_from_proto(const proto::Snapshot& m, SnapshotInfo* 
   get_settings(m.settings(), s.def);
   get_particles(m.particles(), s);
   for (const proto::SnapshotWall& w : m.wall()) get_wall(w, s);
+  if (m.has_box_control()) s.def.box_control = get_box_control<Dim>(m.box_control());
   get_contacts(m.contacts(), s);
   const proto::SnapshotEnergy& energy = m.energy();
   s.energy = EnergyBudget{energy.initial_kinetic(), energy.gravity_work(),   energy.wall_work(),

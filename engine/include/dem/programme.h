@@ -27,8 +27,12 @@ struct WallThreshold {
 struct StopConditions {
   std::optional<double> kinetic_energy_below;  // J
   std::optional<double> out_of_balance_below;  // Delta F / F
-  // Every servo-controlled wall carries its target within this relative error.
+  // Every servo-controlled wall carries its target within this relative
+  // error, and so does every stress-controlled axis of the box control.
   std::optional<double> servo_tolerance;
+  // The box control's deviator strain (its largest axis strain minus its
+  // smallest, BoxMeasureT) has reached this.
+  std::optional<double> deviator_strain_above;
   std::optional<WallThreshold> wall_stress_above;      // Pa: normal force over wall_area
   std::optional<WallThreshold> wall_settlement_above;  // m: wall_settlement
   std::uint64_t min_cycles = 0;
@@ -62,10 +66,17 @@ struct TimeStepSetting {
 template <int Dim>
 struct StageDefT {
   std::string name;
-  // Done when the stage starts, in this order, before the wall motions.
+  // Done when the stage starts, in this order: trim, place a wall, remove
+  // walls, then the wall motions, the box control, damping, time step and
+  // friction.
   std::optional<TrimDef> trim;
   std::optional<PlaceWallDef> place_wall;
+  std::vector<WallId> remove_walls;                               // taken out when the stage starts
   std::vector<std::pair<WallId, WallMotionT<Dim>>> wall_motions;  // applied when the stage starts
+  // The box control from this stage on: set (or replaced) by box_control,
+  // released by release_box_control; otherwise it stays as it was.
+  std::optional<BoxControlT<Dim>> box_control;
+  bool release_box_control = false;
   std::optional<DampingDef> damping;                              // applied when the stage starts
   std::optional<TimeStepSetting> time_step;                       // from this stage on
   std::vector<std::pair<MaterialId, double>> frictions;           // materials' friction from this stage on

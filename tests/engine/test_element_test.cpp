@@ -1,0 +1,235 @@
+// Element-test control of a box of walls (BoxControlT): strain rates that
+// deform the box as asked (Randall 1989, 4.5.2; constant volume, 6.5.2),
+// servos and stress paths that hold stresses (4.1), walls taken out (a
+// hopper's orifice, 6.2), the errors that name a bad control, and exact
+// restart and thread independence with all of it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "dem/error.h"
+#include "dem/packing.h"
+#include "dem/programme.h"
+#include "dem/world.h"
+#include "model_builders.h"
+
+namespace dem {
+namespace {
+
+// 200 discs in a 0.2 m box, four walls: 0 bottom (faces +y), 1 right
+// (faces -x), 2 top (faces -y), 3 left (faces +x). No gravity.
+WorldDef box_of_discs() {
+  WorldDef def;
+  def.materials = {MaterialDef{"disc", 2650.0, 0.3, 0.0}};
+  ContactModelDef model = testing::linear_model(1e7, 1e7);
+  model.law = ContactLaw::kLinearRestitution;
+  model.restitution = 0.5;
+  def.contact_models = {model};
+  RandomPackingDef packing;
+  packing.min = {0.0, 0.0};
+  packing.max = {0.2, 0.2};
+  packing.sizes = {{0.006, 80}, {0.0045, 120}};
+  packing.seed = 3;
+  def.particles = generate_random_packing(packing);
+  def.walls = {WallDef{"bottom", {0.1, 0.0}, {1, 0}, -0.2, 0.2, 0, {}},
+               WallDef{"right", {0.2, 0.1}, {0, 1}, -0.2, 0.2, 0, {}},
+               WallDef{"top", {0.1, 0.2}, {-1, 0}, -0.2, 0.2, 0, {}},
+               WallDef{"left", {0.0, 0.1}, {0, -1}, -0.2, 0.2, 0, {}}};
+  def.damping.local_alpha = 0.5;
+  def.threads = 1;
+  return def;
+}
+
+BoxControl box(AxisControl x, double x_value, AxisControl y, double y_value) {
+  BoxControl control;
+  control.axes[0] = BoxAxisDef{3, 1, x, x_value, x_value};
+  control.axes[1] = BoxAxisDef{0, 2, y, y_value, y_value};
+  // A wall moves 5e-6 m/s per Pa of error: about 20 wall contacts of 1e7
+  // N/m stiffen the box by some 1e9 Pa/m, so the servo's loop gain per step
+  // is 5e-6 x 1e9 x 1.8e-5 s, about 0.1: stable, and quick to compress.
+  control.gain = 5e-6;
+  control.max_speed = 0.05;
+  return control;
+}
+
+std::string error_of(const BoxControl& control) {
+  World world(box_of_discs());
+  try {
+    world.set_box_control(control);
+  } catch (const DefinitionError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// The boundary strain-rate tensor (Randall 4.5.2) in its principal axes:
+// rates e and -e keep the box's area (Randall 6.5.2's constant volume).
+TEST(BoxControl, StrainRatesDeformTheBoxAtConstantArea) {
+  World world(box_of_discs());
+  const double rate = 2.0;  // 1/s
+  world.set_box_control(box(AxisControl::kStrainRate, -rate, AxisControl::kStrainRate, rate));
+  const double dt = world.time_step();
+  const int cycles = 2000;
+  world.cycle(cycles);
+  const BoxMeasure m = world.box_measure();
+  const double t = cycles * dt;
+  // Each step shortens y by rate dt and lengthens x as much: (1 -+ rate dt)^n.
+  const double y = 0.2 * std::pow(1.0 - rate * dt, cycles), x = 0.2 * std::pow(1.0 + rate * dt, cycles);
+  std::printf("after %.4f s at 2/s: extents %.9f x %.9f (expected %.9f x %.9f), area change %.2e, deviator strain "
+              "%.6f (2 x rate x t = %.6f)\n",
+              t, m.extent.x(), m.extent.y(), x, y, m.extent.prod() / 0.04 - 1.0, m.deviator_strain, 2.0 * rate * t);
+  EXPECT_NEAR(m.extent.x(), x, 1e-12);
+  EXPECT_NEAR(m.extent.y(), y, 1e-12);
+  // Constant area to second order: (1 - (rate dt)^2)^n.
+  EXPECT_NEAR(m.extent.prod() / 0.04, std::pow(1.0 - rate * dt * rate * dt, cycles), 1e-12);
+  EXPECT_NEAR(m.volumetric_strain, -cycles * std::log(1.0 - rate * rate * dt * dt), 1e-12);
+  EXPECT_NEAR(m.deviator_strain, 2.0 * rate * t, 2.0 * rate * t * rate * dt * cycles);
+}
+
+// Servos on both axes bring the sample to an isotropic stress, then a
+// constant-mean-stress path holds p while the y axis is compressed.
+TEST(BoxControl, ServosAndAConstantMeanStressPath) {
+  World world(box_of_discs());
+  const double p = 2e4;  // Pa (per unit depth: N/m)
+  world.set_box_control(box(AxisControl::kStress, p, AxisControl::kStress, p));
+  StageDef compress;
+  compress.cycles = 200000;
+  compress.until.servo_tolerance = 0.01;
+  compress.until.out_of_balance_below = 0.05;
+  compress.until.min_cycles = 1000;
+  compress.until.check_interval = 100;
+  ASSERT_TRUE(run_stage(world, compress).condition_met);
+  BoxMeasure m = world.box_measure();
+  std::printf("isotropic: stresses %.1f, %.1f Pa (target %.0f) after %llu cycles\n", m.stress.x(), m.stress.y(), p,
+              static_cast<unsigned long long>(world.cycle_count()));
+  EXPECT_NEAR(m.stress.x() / p, 1.0, 0.01);
+  EXPECT_NEAR(m.stress.y() / p, 1.0, 0.01);
+
+  // Slowly enough for the servos to follow (a wall retreats at most
+  // 5e-6 m/s per Pa; the y walls close at 0.05 x 0.145 / 2 m/s).
+  BoxControl path = box(AxisControl::kStressPath, 0.0, AxisControl::kStrainRate, 0.05);
+  path.path = StressPath::kConstantMeanStress;
+  path.path_value = p;
+  StageDef shear;
+  shear.box_control = path;
+  shear.cycles = 400000;
+  shear.until.deviator_strain_above = 0.01;
+  shear.until.check_interval = 50;
+  double worst = 0.0;
+  const StageResult result = run_stage(world, shear, 500, [&](const World& w) {
+    const BoxMeasure b = w.box_measure();
+    if (b.deviator_strain > 0.002) worst = std::max(worst, std::abs(b.mean_stress / p - 1.0));
+    return true;
+  });
+  ASSERT_TRUE(result.condition_met);
+  m = world.box_measure();
+  std::printf("constant mean stress path to deviator strain %.4f: sigma_x %.1f, sigma_y %.1f, mean %.1f Pa "
+              "(p %.0f; worst %.2f%% off after 0.2%%), x target %.1f\n",
+              m.deviator_strain, m.stress.x(), m.stress.y(), m.mean_stress, p, 100.0 * worst, m.target.x());
+  EXPECT_GT(m.stress.y(), 1.2 * m.stress.x());  // the compressed axis carries more
+  EXPECT_NEAR(m.target.x(), 2.0 * p - m.stress.y(), 1e-9 * p);
+  EXPECT_LT(worst, 0.05);
+}
+
+TEST(BoxControl, AStressRatioPathHoldsSigma1OverSigma3) {
+  World world(box_of_discs());
+  world.set_box_control(box(AxisControl::kStress, 1e4, AxisControl::kStress, 1e4));
+  StageDef compress;
+  compress.cycles = 200000;
+  compress.until.servo_tolerance = 0.02;
+  compress.until.min_cycles = 1000;
+  ASSERT_TRUE(run_stage(world, compress).condition_met);
+  BoxControl ratio = box(AxisControl::kStressPath, 0.0, AxisControl::kStrainRate, 0.05);
+  ratio.path = StressPath::kStressRatio;
+  // Below the sample's strength (at 2, sin phi = 1/3, these discs with
+  // tan phi = 0.3 fail and the walls run away).
+  ratio.path_value = 1.3;
+  world.set_box_control(ratio);
+  world.cycle(20000);
+  const BoxMeasure m = world.box_measure();
+  std::printf("stress ratio path: sigma_y %.1f, sigma_x %.1f Pa, ratio %.4f (1.3)\n", m.stress.y(), m.stress.x(),
+              m.stress.y() / m.stress.x());
+  EXPECT_NEAR(m.stress.y() / m.stress.x(), 1.3, 0.03);
+}
+
+TEST(BoxControl, BadControlsNameTheField) {
+  EXPECT_EQ(error_of(box(AxisControl::kStress, -1.0, AxisControl::kStrainRate, 0.0)),
+            "box control: axes[0] (x).stress: must be > 0 (compression positive)");
+  BoxControl swapped = box(AxisControl::kStrainRate, 0.0, AxisControl::kStrainRate, 0.0);
+  std::swap(swapped.axes[1].lower, swapped.axes[1].upper);
+  EXPECT_EQ(error_of(swapped), "box control: axes[1] (y).lower: wall 2 (\"top\") must face +y (the particles' side)");
+  BoxControl twice = box(AxisControl::kStrainRate, 0.0, AxisControl::kStrainRate, 0.0);
+  twice.axes[1].lower = 3;
+  EXPECT_EQ(error_of(twice), "box control: axes[1] (y).lower: wall 3 (\"left\") already bounds the box");
+  BoxControl no_gain = box(AxisControl::kStress, 1.0, AxisControl::kStrainRate, 0.0);
+  no_gain.gain = 0.0;
+  EXPECT_EQ(error_of(no_gain), "box control: gain must be > 0 when an axis is stress-controlled");
+  EXPECT_EQ(error_of(box(AxisControl::kStressPath, 0.0, AxisControl::kStrainRate, 0.0)),
+            "box control: an axis follows the stress path but no path is set");
+  BoxControl low_ratio = box(AxisControl::kStressPath, 0.0, AxisControl::kStrainRate, 0.0);
+  low_ratio.path = StressPath::kStressRatio;
+  low_ratio.path_value = 0.5;
+  EXPECT_EQ(error_of(low_ratio), "box control: stress_ratio (sigma_1 / sigma_3) must be >= 1");
+  World world(box_of_discs());
+  EXPECT_THROW(world.box_measure(), DefinitionError);
+}
+
+// A hopper's orifice (Randall 6.2): discs resting on a wall fall once it is
+// taken out; it keeps its id, touches nothing and carries nothing.
+TEST(RemoveWall, DiscsFallThroughTheOpenedOrifice) {
+  WorldDef def = box_of_discs();
+  def.gravity = {0.0, -9.81};
+  def.walls.push_back(WallDef{"floor", {0.1, 0.0}, {1, 0}, -0.05, 0.05, 0, {}});
+  def.walls[0].h1 = -0.2;
+  def.walls[0].h2 = -0.05;  // the bottom wall leaves a gap of 0.1 m in the middle, closed by the floor
+  World world(def);
+  world.cycle(20000);
+  ASSERT_GT(world.wall_measures()[4].contacts, 0);
+  world.remove_wall(4);
+  EXPECT_TRUE(world.wall(4).removed);
+  EXPECT_EQ(world.wall_measures()[4].contacts, 0);
+  EXPECT_EQ(world.wall_measures()[4].normal_force, 0.0);
+  world.cycle(20000);
+  int below = 0;
+  for (const Vec2& x : world.particles().position) below += x.y() < 0.0 ? 1 : 0;
+  std::printf("after opening the orifice: %d of %d discs below the floor's line\n", below, world.particle_count());
+  EXPECT_GT(below, 10);
+  EXPECT_EQ(world.wall_measures()[4].contacts, 0);
+  // A wall bounding a controlled box cannot be taken out.
+  World boxed(box_of_discs());
+  boxed.set_box_control(box(AxisControl::kStrainRate, 0.0, AxisControl::kStrainRate, 0.0));
+  EXPECT_THROW(boxed.remove_wall(0), DefinitionError);
+}
+
+// The box's control, a removed wall and the strain reference travel in the
+// snapshot: a restored world continues bit for bit; two threads agree.
+TEST(BoxControl, RestartIsExactAndThreadsAgree) {
+  WorldDef def = box_of_discs();
+  def.particles.resize(150);
+  BoxControl control = box(AxisControl::kStressPath, 0.0, AxisControl::kStrainRate, 1.0);
+  control.path = StressPath::kConstantMeanStress;
+  control.path_value = 1e4;
+  def.box_control = control;
+  def.walls.push_back(WallDef{"spare", {0.1, 0.1}, {1, 0}, -0.01, 0.01, 0, {}});
+  World original(def);
+  original.remove_wall(4);
+  def.threads = 2;
+  World parallel(def);
+  parallel.remove_wall(4);
+  original.cycle(3000);
+  parallel.cycle(3000);
+  World restored(original.snapshot());
+  EXPECT_EQ(restored.state_hash(), original.state_hash());
+  ASSERT_TRUE(restored.box_control().has_value());
+  EXPECT_EQ(restored.box_control()->reference_extent, original.box_control()->reference_extent);
+  EXPECT_TRUE(restored.wall(4).removed);
+  original.cycle(3000);
+  restored.cycle(3000);
+  parallel.cycle(3000);
+  EXPECT_EQ(restored.state_hash(), original.state_hash());
+  EXPECT_EQ(parallel.state_hash(), original.state_hash());
+  EXPECT_EQ(restored.box_measure().deviator_strain, original.box_measure().deviator_strain);
+}
+
+}  // namespace
+}  // namespace dem
