@@ -14,6 +14,12 @@ RunRecorder<Dim>::RunRecorder(const std::filesystem::path& directory, const io::
     probes_.emplace(directory, output.probes);
     files_.push_back(probes_->path());
   }
+  if (!output.regions.empty()) {
+    std::vector<analysis::RegionT<Dim>> regions;
+    for (const io::MeasurementRegion& r : output.regions) regions.push_back(io::region_for<Dim>(r));
+    regions_.emplace(directory, std::move(regions));
+    files_.push_back(regions_->path());
+  }
   if (output.vtk_interval > 0) vtk_.emplace(directory, output.vtk_interval);
   if (output.compression) {
     compression_.emplace(*output.compression);
@@ -31,6 +37,14 @@ void RunRecorder<Dim>::record(const BasicWorld<Dim>& world, int stage) {
   walls_.write(world);
   const AssemblyMeasures measures = assembly_.write(world);
   if (probes_) probes_->write(world);
+  if (regions_) regions_->write(world);
+  if (world.box_control()) {
+    if (!box_) {
+      box_.emplace(directory_);
+      files_.push_back(box_->path());
+    }
+    box_->write(world);
+  }
   // Randall (1989) 4.35-4.40: above 0.3 of the particle-wise critical step
   // the step is too large for the stiffness the particles meet. The
   // estimate K = d|sum F| / dx with dx = |v| dt is meaningless for a
