@@ -46,6 +46,7 @@ void add_rows(Hasher& h, const ContactRows<Dim>& rows, const Particles<Dim>& p, 
     h.add(wall ? rows.second[r] : p.id[rows.second[r]]);
     h.add(rows.shear[r]);
     if (rows.columns.normal_force) h.add(rows.normal_force[r]);
+    if (rows.columns.rolling) h.add(rows.rolling[r]);
     if (rows.columns.mindlin) {
       h.add(rows.mindlin[r].history.t_star);
       h.add(rows.mindlin[r].history.t_star2);

@@ -17,6 +17,7 @@
 #include "ellipsoid.h"
 #include "motion.h"
 #include "particle_order.h"
+#include "rolling_resistance.h"
 #include "superquadric.h"
 #include "world_state.h"
 #include "world_validation.h"
@@ -85,6 +86,7 @@ void step(WorldState<Dim>& s, bool keep, bool check) {
     timer.lap(s.profile.find_contacts);
   }
   book(s, advance_contacts(s));
+  if (s.rolling) apply_rolling_resistance(s);  // its own pass: nothing when off
   timer.lap(s.profile.contact_forces);
   ++s.profile.cycles;
 }
@@ -233,6 +235,8 @@ void build(WorldState<Dim>& s, const WorldDefT<Dim>& def) {
   s.wall_law = laws.wall;
   s.contacts.pairs.columns = columns_for(s.pair_law, s.shape, s.energy_budget);
   s.contacts.walls.columns = columns_for(s.wall_law, s.shape, s.energy_budget);
+  s.rolling = needs_rolling_resistance(s);
+  s.contacts.pairs.columns.rolling = s.contacts.walls.columns.rolling = s.rolling;
 
   s.contact_tolerance = def.contact_tolerance > 0.0 ? def.contact_tolerance : 0.1 * radius_sum / n;
   // Nearest images are unique only while a period holds two interaction ranges.
@@ -280,6 +284,7 @@ BasicWorld<Dim>::BasicWorld(const Def& def) : state_(std::make_unique<WorldState
   // The contacts and forces of cycle 0, for the first step's motion.
   find_contacts(s);
   book(s, advance_contacts(s));
+  if (s.rolling) apply_rolling_resistance(s);
   s.energy.initial_kinetic = measure_assembly(s).kinetic_energy;
 }
 

@@ -9,6 +9,7 @@
 
 #include "box_control.h"
 #include "contact_forces.h"
+#include "rolling_resistance.h"
 #include "dem/error.h"
 #include "dem/world.h"
 #include "walls.h"
@@ -78,6 +79,7 @@ void BasicWorld<Dim>::remove_particles(std::span<const ParticleId> ids) {
   rename_slots(s.contacts.walls, renamed, false);
   plan_blocks(s.blocks, s.contacts, p.size(), block_size(s));
   evaluate_contacts(s);
+  if (s.rolling) add_rolling_moments(s);
   s.contacts_stale = true;
   if (s.energy_budget) s.energy.removed += held_before - held_energy(s);
 }
@@ -96,6 +98,7 @@ void BasicWorld<Dim>::place_wall(WallId id, const Vec<Dim>& point) {
   keep_rows(rows, [&](std::size_t r) { return rows.second[r] != id; });
   plan_blocks(s.blocks, s.contacts, s.particles.size(), block_size(s));
   evaluate_contacts(s);
+  if (s.rolling) add_rolling_moments(s);
   s.contacts_stale = true;
 }
 
@@ -120,6 +123,7 @@ void BasicWorld<Dim>::remove_wall(WallId id) {
   keep_rows(rows, [&](std::size_t r) { return rows.second[r] != id; });
   plan_blocks(s.blocks, s.contacts, s.particles.size(), block_size(s));
   evaluate_contacts(s);
+  if (s.rolling) add_rolling_moments(s);
   // The strain energy its contacts held is gone with them.
   if (s.energy_budget) s.energy.removed += held_before - held_energy(s);
 }

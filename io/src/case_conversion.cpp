@@ -303,6 +303,7 @@ class Converter {
       }
       if (model.has_friction()) def.friction = model.friction();
       if (model.has_cohesion()) def.cohesion = model.cohesion();
+      def.rolling = RollingResistanceDef{model.rolling().friction(), model.rolling().damping_ratio()};
       world.contact_models.push_back(def);
     }
   }

@@ -21,8 +21,9 @@ struct MaterialMirror { std::string name; double density, friction, cohesion, yo
 struct HertzDampingMirror { double damping_ratio; std::optional<double> restitution; bool tangential; };
 struct ContactModelMirror {
   MaterialId a, b; LinearLawDef linear; std::optional<double> friction, cohesion; ContactLaw law;
-  double restitution; HertzDampingDef hertz;
+  double restitution; HertzDampingDef hertz; RollingResistanceDef rolling;
 };
+struct RollingMirror { double friction, damping_ratio; };
 struct DampingMirror {
   double contact_beta, global_alpha; std::optional<double> global_alpha_rotation; double local_alpha;
   std::optional<double> local_alpha_rotation;
@@ -62,7 +63,7 @@ template <int Dim> struct ContactSnapshotMirror {
   double overlap, normal_damping; ShearForce<Dim> shear_damping; Vec<Dim> normal, point, force;
   Spin<Dim> moment_first, moment_second; std::uint64_t formed_cycle; bool touching; MindlinHistory mindlin;
   Vec<Dim> mindlin_axis; double mindlin_theta; Vec<Dim> dashpot_force, tangential_spring, relative_velocity;
-  double search_first, search_second; bool has_search;
+  double search_first, search_second; bool has_search; Spin<Dim> rolling_torque;
 };
 template <int Dim> struct WallSnapshotMirror {
   Vec<Dim> initial_point, last_velocity; Spin<Dim> last_angular_velocity; Vec<Dim> force; Spin<Dim> moment;
@@ -84,6 +85,7 @@ DEM_SNAPSHOT_COVERS(WorldSnapshotT<3>, WorldSnapshotMirror<3>);
 DEM_SNAPSHOT_COVERS(MaterialDef, MaterialMirror);
 DEM_SNAPSHOT_COVERS(HertzDampingDef, HertzDampingMirror);
 DEM_SNAPSHOT_COVERS(ContactModelDef, ContactModelMirror);
+DEM_SNAPSHOT_COVERS(RollingResistanceDef, RollingMirror);
 DEM_SNAPSHOT_COVERS(DampingDef, DampingMirror);
 DEM_SNAPSHOT_COVERS(EnergyBudget, EnergyMirror);
 DEM_SNAPSHOT_COVERS(MindlinHistory, MindlinMirror);
@@ -204,6 +206,8 @@ void put_settings(const WorldDefT<Dim>& def, proto::SnapshotSettings& settings) 
     out.set_hertz_damping_ratio(c.hertz.damping_ratio);
     if (c.hertz.restitution) out.set_hertz_restitution(*c.hertz.restitution);
     out.set_hertz_tangential_damping(c.hertz.tangential);
+    out.set_rolling_friction(c.rolling.friction);
+    out.set_rolling_damping_ratio(c.rolling.damping_ratio);
   }
   proto::SnapshotDamping& damping = *settings.mutable_damping();
   damping.set_contact_beta(def.damping.contact_beta);
@@ -360,6 +364,7 @@ void put_contacts(const std::vector<ContactSnapshotT<Dim>>& contacts, proto::Sna
     out.add_search_first(c.search_first);
     out.add_search_second(c.search_second);
     out.add_has_search(c.has_search);
+    put(out.mutable_rolling_torque(), c.rolling_torque);
   }
 }
 
@@ -536,7 +541,8 @@ void check_contacts(Problems& problems, const proto::SnapshotContacts& c, const 
   }
   // Added after version 1 was first written: empty in older snapshots.
   for (const auto& [name, values, item_width] : {std::tuple{"mindlin_theta", &c.mindlin_theta(), std::size_t{1}},
-                                                 {"tangential_spring", &c.tangential_spring(), std::size_t{Dim}}}) {
+                                                 {"tangential_spring", &c.tangential_spring(), std::size_t{Dim}},
+                                                 {"rolling_torque", &c.rolling_torque(), spin}}) {
     if (values->size() > 0) {
       sizes = check_array(problems, std::string("contacts.") + name, *values, n.contacts, item_width) && sizes;
     }
@@ -649,6 +655,7 @@ void get_settings(const proto::SnapshotSettings& settings, WorldDefT<Dim>& def) 
     c.hertz.damping_ratio = model.hertz_damping_ratio();
     if (model.has_hertz_restitution()) c.hertz.restitution = model.hertz_restitution();
     c.hertz.tangential = model.hertz_tangential_damping();
+    c.rolling = RollingResistanceDef{model.rolling_friction(), model.rolling_damping_ratio()};
     def.contact_models.push_back(c);
   }
   const proto::SnapshotDamping& damping = settings.damping();
@@ -755,6 +762,7 @@ void get_contacts(const proto::SnapshotContacts& c, WorldSnapshotT<Dim>& s) {
     contact.search_first = c.search_first(i);
     contact.search_second = c.search_second(i);
     contact.has_search = c.has_search(i);
+    if (c.rolling_torque_size() > 0) contact.rolling_torque = get<Spin<Dim>>(c.rolling_torque(), i);
     s.contacts.push_back(contact);
   }
 }

@@ -509,6 +509,11 @@ const Mistake kMistakes[] = {
      "output.compression.stress_drop_fraction: must be in [0, 1) (got 1); leave it out for 0.02"},
     {"DuplicateProbe", [](auto& c) { c.mutable_output()->mutable_probe(1)->set_name("corner"); },
      "output.probe[1].name: duplicate probe name \"corner\" (output.probe[0] has it too)"},
+    // Rolling resistance
+    {"NegativeRollingFriction", [](auto& c) { c.mutable_contact_model(0)->mutable_rolling()->set_friction(-0.1); },
+     "contact_model[0].rolling.friction: must be >= 0 (got -0.1)"},
+    {"NegativeRollingDamping", [](auto& c) { c.mutable_contact_model(0)->mutable_rolling()->set_damping_ratio(-1); },
+     "contact_model[0].rolling.damping_ratio: must be >= 0 (got -1)"},
     // Measurement regions
     {"RegionWithoutShape", [](auto& c) { region(c); },
      "output.region[0]: has no shape; set whole: true, box { min ... max ... } or ball { centre ... radius ... }"},

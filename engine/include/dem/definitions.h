@@ -69,6 +69,16 @@ struct HertzDampingDef {
   bool tangential = false;
 };
 
+// Rolling resistance, an option of every law (Iwashita & Oda 1998; Ai et
+// al. 2011, model C; engine/src/rolling_resistance.h): a spring of
+// stiffness 2.25 k_n mu_r^2 R_r^2 on the bodies' relative rotation, its
+// torque capped at mu_r R_r F_n, with a dashpot at a fraction of its
+// critical damping while below the cap.
+struct RollingResistanceDef {
+  double friction = 0.0;       // mu_r, the coefficient of rolling friction (dimensionless); 0 = none
+  double damping_ratio = 0.0;  // eta_r, fraction of the rolling spring's critical damping
+};
+
 // The contact law for one pair of materials (or for every pair not named
 // elsewhere when both ids are kInvalidId). Friction and cohesion default to
 // the smaller of the two materials' values (Cundall & Strack eq. 19 and its
@@ -83,6 +93,7 @@ struct ContactModelDef {
   ContactLaw law = ContactLaw::kLinear;
   double restitution = 1.0;  // kLinearRestitution: e in (0, 1] (Miyata eq. 17)
   HertzDampingDef hertz;     // kHertzMindlin and kHertzLinearTangential
+  RollingResistanceDef rolling;  // any law
 };
 
 // Damping options. Contact damping c = beta * k (Cundall & Strack eq. 28)
