@@ -186,12 +186,12 @@ RegionMeasuresT<Dim> measure_region(const AssemblySampleT<Dim>& s, const RegionT
     }
     if (!region.contains(contact_point(s, c))) continue;
     ++m.contacts;
-    m.sliding_contacts += c.sliding ? 1 : 0;
     const double normal = normal_part(c);
     normal_force_sum += normal;
     m.max_normal_force = std::max(m.max_normal_force, normal);
     if (!pair) continue;
     ++m.particle_contacts;
+    m.sliding_contacts += c.sliding ? 1 : 0;
     const Tensor<Dim> nn = c.normal * c.normal.transpose();
     fabric_sum += nn;  // (4.48)
     weighted_sum += normal * nn;
@@ -199,10 +199,8 @@ RegionMeasuresT<Dim> measure_region(const AssemblySampleT<Dim>& s, const RegionT
   }
   if (m.particles > 0) m.coordination = static_cast<double>(contact_ends) / m.particles;
   if (mechanical_particles > 0) m.mechanical_coordination = static_cast<double>(mechanical_ends) / mechanical_particles;
-  if (m.contacts > 0) {
-    m.sliding_fraction = static_cast<double>(m.sliding_contacts) / m.contacts;
-    m.mean_normal_force = normal_force_sum / m.contacts;
-  }
+  if (m.contacts > 0) m.mean_normal_force = normal_force_sum / m.contacts;
+  if (m.particle_contacts > 0) m.sliding_fraction = static_cast<double>(m.sliding_contacts) / m.particle_contacts;
 
   // The volume the particles inside stand for: their own over the region's
   // solid fraction (times the depth of a 2D layer).

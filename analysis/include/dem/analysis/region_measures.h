@@ -24,8 +24,9 @@
 //   neighbours are taken away (repeated until none is left), anywhere in
 //   the assembly.
 // - the fabric, sliding, force and obliquity figures take the contacts
-//   whose contact point lies in the region (the fabric: particle-particle
-//   contacts only).
+//   whose contact point lies in the region; the fabric and the sliding
+//   share particle-particle contacts only (a wall contact's friction is
+//   the wall's: frictionless walls would count as sliding).
 #pragma once
 
 #include <string>
@@ -57,8 +58,8 @@ struct RegionMeasuresT {
   int rattlers = 0;         // of those, rattlers
   int contacts = 0;         // contact points inside: particle-particle and particle-wall
   int particle_contacts = 0;
-  int sliding_contacts = 0;
-  double sliding_fraction = 0.0;         // sliding_contacts / contacts
+  int sliding_contacts = 0;              // particle-particle contacts at the Coulomb limit
+  double sliding_fraction = 0.0;         // sliding_contacts / particle_contacts
   double coordination = 0.0;             // contacts per particle (centres inside)
   double mechanical_coordination = 0.0;  // the same without rattlers and their contacts
   // Stresses, Pa (N/m in 2D discs of unit thickness: per unit depth),

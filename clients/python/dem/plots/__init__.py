@@ -9,7 +9,9 @@ axes (or a new headless figure) and writes a PNG when given a path:
   5(b), 11);
 - plot_contact_force_history: the nine-disc force at contact C against
   cycles (Cundall & Strack Figs. 6, 7, 9);
-- plot_psi2_against_psi1: the oblique impact sweep (Randall Fig. 5.10).
+- plot_psi2_against_psi1: the oblique impact sweep (Randall Fig. 5.10);
+- plot_rose, plot_obliquity_histogram, plot_shear_series,
+  plot_stress_path, plot_discharge: Randall's chapter 6 (granular.py).
 
 Figures are drawn on matplotlib's Agg canvas (figure.py), so nothing here
 needs a display.
@@ -19,13 +21,21 @@ from .contact_history import plot_contact_force_history
 from .figure import new_axes, save_png
 from .force_chains import plot_force_chains
 from .force_distribution import plot_force_distribution
+from .granular import (draw_randall_directory, plot_discharge, plot_obliquity_histogram, plot_rose, plot_shear_series,
+                       plot_stress_path)
 from .oblique_impact import plot_psi2_against_psi1
 from .stress_settlement import LiveStressSettlement, StressSettlementSeries, plot_stress_settlement
 
 __all__ = [
     "LiveStressSettlement",
     "StressSettlementSeries",
+    "draw_randall_directory",
     "new_axes",
+    "plot_discharge",
+    "plot_obliquity_histogram",
+    "plot_rose",
+    "plot_shear_series",
+    "plot_stress_path",
     "plot_contact_force_history",
     "plot_force_chains",
     "plot_force_distribution",
