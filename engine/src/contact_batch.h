@@ -26,10 +26,18 @@ namespace dem {
 template <typename Shape>
 constexpr bool kBatchableShape = Shape::round;
 
-template <typename Law, int Dim>
+// Beyond this many particles the arrays the pass reads no longer fit the
+// core's own cache (about 150 bytes a particle against 1 MiB of L2), and
+// a row's second particle, which lies anywhere ahead of the first in
+// memory, is fetched some rows early so that its misses overlap. Below it
+// the prefetches are pure overhead (5 % more instructions).
+inline constexpr std::int64_t kPrefetchParticles = 32768;
+
+template <typename Law, int Dim, bool kPrefetch>
 void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows,
                         ContactBlocks<Dim>& blocks, int b) {
   constexpr int kBatch = 64;
+  constexpr int kAhead = 16;  // rows ahead to fetch
   const ContactParams& params = *in.shared_params;
   const double dt = in.dt;
   // The packed rows of one batch, structure of arrays.
@@ -99,6 +107,14 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
     for (std::int32_t k = k0; k < k1; ++k) {
       const std::int32_t r = sort_out ? begin + k : near[k];
       const Slot x = first[r], y = second[r];
+      if constexpr (kPrefetch) {
+        if (k + kAhead < listed) {
+          const Slot ahead = second[sort_out ? begin + k + kAhead : near[k + kAhead]];
+          __builtin_prefetch(&position[ahead]);
+          __builtin_prefetch(&velocity[ahead]);
+          __builtin_prefetch(&angular_velocity[ahead]);
+        }
+      }
       const Vec<Dim> d = periodic.separation(position[x], position[y]);
       const double reach = radius[x] + radius[y];
       const double d2 = d.squaredNorm();

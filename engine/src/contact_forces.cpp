@@ -128,10 +128,10 @@ PassInputs<Dim> inputs(const WorldState<Dim>& s) {
   return {s.particles, s.walls, s.periodic, s.params, shared_params(s), s.time_step, s.cycle, near_margin(s)};
 }
 
-template <typename Law, int Dim>
+template <typename Law, int Dim, bool kPrefetch>
 void batched_pair_rows(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows,
                        ContactBlocks<Dim>& blocks, int b, ContactEnergy&) {
-  batched_pair_block<Law, Dim>(in, p, rows, blocks, b);
+  batched_pair_block<Law, Dim, kPrefetch>(in, p, rows, blocks, b);
 }
 
 // Runs the chosen pass over every block, then adds the shares set aside,
@@ -147,7 +147,11 @@ ContactEnergy run_pass(WorldState<Dim>& s) {
       with_law(s.pair_law, [&]<typename Law>() {
         pair_fn = &pair_block<kPass, kEnergy, Law, Shape, Dim>;
         if constexpr (kPass == Pass::kAdvance && !kEnergy && kBatchableShape<Shape> && Law::kBatchable) {
-          if (in.shared_params) pair_fn = &batched_pair_rows<Law, Dim>;
+          if (in.shared_params) {
+            pair_fn = static_cast<std::int64_t>(s.particles.size()) > kPrefetchParticles
+                          ? &batched_pair_rows<Law, Dim, true>
+                          : &batched_pair_rows<Law, Dim, false>;
+          }
         }
       });
       with_law(s.wall_law, [&]<typename Law>() { wall_fn = &wall_block<kPass, kEnergy, Law, Shape, Dim>; });

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 
@@ -16,6 +17,22 @@ namespace dem {
 // The rare turn through a large angle (a fast spin or a long step): cos h
 // and sin(h)/h in full.
 void large_half_angle(double h2, double& cosine, double& sine_over_h);
+
+// q <- (cos h, a) q, normalised when it drifted from unit length (Cundall &
+// Strack eq. 23a in quaternion form; q holds x, y, z, w).
+[[gnu::always_inline]] inline void turn_by(double* q, double cosine, double ax, double ay, double az) {
+  const double qx = q[0], qy = q[1], qz = q[2], qw = q[3];
+  const double nw = cosine * qw - (ax * qx + ay * qy + az * qz);
+  const double nx = cosine * qx + qw * ax + (ay * qz - az * qy);
+  const double ny = cosine * qy + qw * ay + (az * qx - ax * qz);
+  const double nz = cosine * qz + qw * az + (ax * qy - ay * qx);
+  const double length2 = nw * nw + nx * nx + ny * ny + nz * nz;
+  const double rescale = std::abs(length2 - 1.0) > 1e-12 ? 1.0 / std::sqrt(length2) : 1.0;
+  q[0] = nx * rescale;
+  q[1] = ny * rescale;
+  q[2] = nz * rescale;
+  q[3] = nw * rescale;
+}
 
 template <int Dim>
 void move_plain_block(Particles<Dim>& p, const Vec<Dim>& gravity, const Periodic<Dim>& cell, double dt, double keep,
@@ -62,69 +79,69 @@ void move_plain_block(Particles<Dim>& p, const Vec<Dim>& gravity, const Periodic
   }
   // Across the periodic cell: one period either way; a particle that moved
   // farther, or landed on the edge, is wrapped in full afterwards (the loop
-  // itself has no branch, so it runs as vector code).
+  // itself has no branch, so it runs as vector code; the count of those
+  // outside is an integer sum for the same reason).
   if (cell.any()) {
-    bool any_outside = false;
+    std::int64_t outside = 0;
     for (std::int64_t i = begin; i < end; ++i) {
       for (int k = 0; k < D; ++k) {
         if (!(period[k] > 0.0)) continue;
         double coordinate = x[D * i + k];
         coordinate = coordinate < lo[k] ? coordinate + period[k]
                                         : (coordinate >= lo[k] + period[k] ? coordinate - period[k] : coordinate);
-        any_outside |= coordinate < lo[k] || coordinate >= lo[k] + period[k];
+        outside += (coordinate < lo[k]) | (coordinate >= lo[k] + period[k]);
         x[D * i + k] = coordinate;
       }
     }
-    if (any_outside) {
+    if (outside > 0) {
       for (std::int64_t i = begin; i < end; ++i) cell.wrap(p.position[i]);
     }
   }
   // Orientations (eq. 23a): as turn() in motion.cpp; a turn through a large
   // half angle is redone in full afterwards.
   if constexpr (Dim == 3) {
-    double* __restrict q = p.rotation.data()->coeffs().data();  // x, y, z, w per particle
-    bool any_large = false;
-    for (std::int64_t i = begin; i < end; ++i) {
-      const double hx = 0.5 * dt * w[3 * i], hy = 0.5 * dt * w[3 * i + 1], hz = 0.5 * dt * w[3 * i + 2];
-      const double h2 = hx * hx + hy * hy + hz * hz;
-      any_large |= h2 >= 1e-4;
-      constexpr double k2 = 1.0 / 2.0, k12 = 1.0 / 12.0, k30 = 1.0 / 30.0;
-      constexpr double k6 = 1.0 / 6.0, k20 = 1.0 / 20.0, k42 = 1.0 / 42.0;
-      const double cosine = 1.0 - h2 * k2 * (1.0 - h2 * k12 * (1.0 - h2 * k30));
-      const double sine_over_h = 1.0 - h2 * k6 * (1.0 - h2 * k20 * (1.0 - h2 * k42));
-      const double ax = sine_over_h * hx, ay = sine_over_h * hy, az = sine_over_h * hz;
-      const double qx = q[4 * i], qy = q[4 * i + 1], qz = q[4 * i + 2], qw = q[4 * i + 3];
-      const double nw = cosine * qw - (ax * qx + ay * qy + az * qz);
-      const double nx = cosine * qx + qw * ax + (ay * qz - az * qy);
-      const double ny = cosine * qy + qw * ay + (az * qx - ax * qz);
-      const double nz = cosine * qz + qw * az + (ax * qy - ay * qx);
-      const double length2 = nw * nw + nx * nx + ny * ny + nz * nz;
-      const double rescale = std::abs(length2 - 1.0) > 1e-12 ? 1.0 / std::sqrt(length2) : 1.0;
-      const bool large = h2 >= 1e-4;  // keep the old orientation for the redo below
-      q[4 * i] = large ? qx : nx * rescale;
-      q[4 * i + 1] = large ? qy : ny * rescale;
-      q[4 * i + 2] = large ? qz : nz * rescale;
-      q[4 * i + 3] = large ? qw : nw * rescale;
+    double* __restrict q = reinterpret_cast<double*>(p.rotation.data());  // x, y, z, w per particle
+    // In chunks, two loops: the half-angle turn from the spins (three to a
+    // particle), then the product with the orientations (four to a
+    // particle); one loop over both strides does not vectorise.
+    constexpr std::int64_t kChunk = 256;
+    alignas(64) double cosine[kChunk], ax[kChunk], ay[kChunk], az[kChunk], angle2[kChunk];
+    std::int64_t large_count = 0;
+    for (std::int64_t c0 = begin; c0 < end; c0 += kChunk) {
+      const std::int64_t n = std::min(kChunk, end - c0);
+      std::int64_t chunk_large = 0;
+      const double* __restrict wc = w + 3 * c0;
+      for (std::int64_t i = 0; i < n; ++i) {
+        const double hx = 0.5 * dt * wc[3 * i], hy = 0.5 * dt * wc[3 * i + 1], hz = 0.5 * dt * wc[3 * i + 2];
+        const double h2i = hx * hx + hy * hy + hz * hz;
+        constexpr double k2 = 1.0 / 2.0, k12 = 1.0 / 12.0, k30 = 1.0 / 30.0;
+        constexpr double k6 = 1.0 / 6.0, k20 = 1.0 / 20.0, k42 = 1.0 / 42.0;
+        const double sine_over_h = 1.0 - h2i * k6 * (1.0 - h2i * k20 * (1.0 - h2i * k42));
+        cosine[i] = 1.0 - h2i * k2 * (1.0 - h2i * k12 * (1.0 - h2i * k30));
+        ax[i] = sine_over_h * hx;
+        ay[i] = sine_over_h * hy;
+        az[i] = sine_over_h * hz;
+        angle2[i] = h2i;
+        chunk_large += h2i >= 1e-4;
+      }
+      double* __restrict qc = q + 4 * c0;
+      if (chunk_large == 0) {
+        for (std::int64_t i = 0; i < n; ++i) turn_by(qc + 4 * i, cosine[i], ax[i], ay[i], az[i]);
+      } else {
+        for (std::int64_t i = 0; i < n; ++i) {
+          if (angle2[i] < 1e-4) turn_by(qc + 4 * i, cosine[i], ax[i], ay[i], az[i]);  // the large ones below
+        }
+      }
+      large_count += chunk_large;
     }
-    if (any_large) {
+    if (large_count > 0) {
       for (std::int64_t i = begin; i < end; ++i) {
         const double hx = 0.5 * dt * w[3 * i], hy = 0.5 * dt * w[3 * i + 1], hz = 0.5 * dt * w[3 * i + 2];
         const double h2 = hx * hx + hy * hy + hz * hz;
         if (h2 < 1e-4) continue;
-        double cosine, sine_over_h;
-        large_half_angle(h2, cosine, sine_over_h);
-        const double ax = sine_over_h * hx, ay = sine_over_h * hy, az = sine_over_h * hz;
-        const double qx = q[4 * i], qy = q[4 * i + 1], qz = q[4 * i + 2], qw = q[4 * i + 3];
-        const double nw = cosine * qw - (ax * qx + ay * qy + az * qz);
-        const double nx = cosine * qx + qw * ax + (ay * qz - az * qy);
-        const double ny = cosine * qy + qw * ay + (az * qx - ax * qz);
-        const double nz = cosine * qz + qw * az + (ax * qy - ay * qx);
-        const double length2 = nw * nw + nx * nx + ny * ny + nz * nz;
-        const double rescale = std::abs(length2 - 1.0) > 1e-12 ? 1.0 / std::sqrt(length2) : 1.0;
-        q[4 * i] = nx * rescale;
-        q[4 * i + 1] = ny * rescale;
-        q[4 * i + 2] = nz * rescale;
-        q[4 * i + 3] = nw * rescale;
+        double full_cosine, sine_over_h;
+        large_half_angle(h2, full_cosine, sine_over_h);
+        turn_by(q + 4 * i, full_cosine, sine_over_h * hx, sine_over_h * hy, sine_over_h * hz);
       }
     }
   } else {
@@ -132,7 +149,10 @@ void move_plain_block(Particles<Dim>& p, const Vec<Dim>& gravity, const Periodic
   }
   // How far anything moved, and how fast.
   const double* __restrict reference = p.reference_position.data()->data();
-  double max_travel2 = 0.0, max_speed2 = 0.0;
+  // The largest of non-negative doubles is the largest of their bit
+  // patterns read as integers: an integer maximum vectorises, a double one
+  // does not without giving up NaN and signed-zero semantics.
+  std::int64_t max_travel_bits = 0, max_speed_bits = 0;
   for (std::int64_t i = begin; i < end; ++i) {
     double speed2 = 0.0, travel2 = 0.0;
     for (int k = 0; k < D; ++k) {
@@ -142,9 +162,11 @@ void move_plain_block(Particles<Dim>& p, const Vec<Dim>& gravity, const Periodic
       d = d > 0.5 * period[k] ? d - period[k] : (d < -0.5 * period[k] ? d + period[k] : d);
       travel2 += d * d;
     }
-    max_speed2 = std::max(max_speed2, speed2);
-    max_travel2 = std::max(max_travel2, travel2);
+    max_speed_bits = std::max(max_speed_bits, std::bit_cast<std::int64_t>(speed2));
+    max_travel_bits = std::max(max_travel_bits, std::bit_cast<std::int64_t>(travel2));
   }
+  const double max_travel2 = std::bit_cast<double>(max_travel_bits);
+  const double max_speed2 = std::bit_cast<double>(max_speed_bits);
   step.max_travel = std::sqrt(max_travel2);
   step.max_speed = std::sqrt(max_speed2);
 }

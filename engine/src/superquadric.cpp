@@ -20,7 +20,11 @@ Vec2 rotate(const Vec2& v, double angle) {
 struct Turn {
   double c, s;
   explicit Turn(double angle) : c(std::cos(angle)), s(std::sin(angle)) {}
+  Turn(double cosine, double sine) : c(cosine), s(sine) {}
   Vec2 operator()(const Vec2& v) const { return {c * v.x() - s * v.y(), s * v.x() + c * v.y()}; }
+  Turn inverse() const { return {c, -s}; }
+  // This turn followed by the inverse of `other` (the angle difference).
+  Turn minus(const Turn& other) const { return {c * other.c + s * other.s, s * other.c - c * other.s}; }
 };
 
 // |t|^p with the sign of t. The exponents the shapes use most (2/n for
@@ -95,8 +99,7 @@ double brent_minimise(F f, double lo, double hi, double x, double tolerance) {
 // traces the same boundary as eq. 35 but is smooth in t (eq. 35's
 // |cos|^(2/n) has an infinite slope where the long sides are flattest, the
 // likeliest place to touch), so Newton steps converge on it.
-Vec2 radial_point(const Superquadric& s, double t) {
-  const double c = std::cos(t), sn = std::sin(t);
+Vec2 radial_point(const Superquadric& s, double c, double sn) {
   const double w = power(std::abs(c), s.n) + power(std::abs(sn), s.n);
   double scale;  // w^(-1/n)
   if (s.n == 4.0) {
@@ -114,13 +117,19 @@ Vec2 radial_point(const Superquadric& s, double t) {
 // one, the best of a coarse scan), Newton steps on central differences;
 // where they cannot be trusted (a curvature that is not positive, a step
 // that would leave the neighbourhood) Brent's method finishes the search.
-double minimise_potential(const PlacedSuperquadric& i, const PlacedSuperquadric& j, double hint, bool use_hint) {
+struct RadialAngle {
+  double t;     // in [0, 2 pi)
+  double c, s;  // cos t, sin t
+};
+RadialAngle minimise_potential(const PlacedSuperquadric& i, const Turn& turn_i, const PlacedSuperquadric& j,
+                               const Turn& turn_j, double hint, bool use_hint) {
   // j's frame: rotate by -(theta_j), about j's centre.
-  const Turn relative(i.angle - j.angle);
-  const Vec2 offset = rotate(i.centre - j.centre, -j.angle);
-  auto potential = [&](double t) {
-    return superquadric_function(j.shape, relative(radial_point(i.shape, t)) + offset);
+  const Turn relative = turn_i.minus(turn_j);
+  const Vec2 offset = turn_j.inverse()(i.centre - j.centre);
+  auto potential_at = [&](double c, double s) {
+    return superquadric_function(j.shape, relative(radial_point(i.shape, c, s)) + offset);
   };
+  auto potential = [&](double t) { return potential_at(std::cos(t), std::sin(t)); };
   constexpr int kSamples = 24;
   constexpr double kStep = kTwoPi / kSamples;
   double best = hint;
@@ -138,19 +147,37 @@ double minimise_potential(const PlacedSuperquadric& i, const PlacedSuperquadric&
   // step usually suffices.
   double t = best;
   constexpr double kDifference = 1e-5;
+  // t +- h by the angle-sum formulas: one cosine and sine an iteration
+  // instead of three (they were most of a contact's cost).
+  static const double cos_h = std::cos(kDifference), sin_h = std::sin(kDifference);
   bool converged = false;
+  double c = 0.0, sn = 0.0;
   for (int iteration = 0; iteration < 8 && !converged; ++iteration) {
     const double h = kDifference;
-    const double f0 = potential(t), fp = potential(t + h), fm = potential(t - h);
+    c = std::cos(t), sn = std::sin(t);
+    const double f0 = potential_at(c, sn);
+    const double fp = potential_at(c * cos_h - sn * sin_h, sn * cos_h + c * sin_h);
+    const double fm = potential_at(c * cos_h + sn * sin_h, sn * cos_h - c * sin_h);
     const double slope = (fp - fm) / (2.0 * h), curvature = (fp - 2.0 * f0 + fm) / (h * h);
     if (!(curvature > 0.0)) break;
     const double step = -slope / curvature;
     if (std::abs(step) > 0.5 * kStep) break;
     t += step;
     converged = std::abs(step) < kDifference;
+    if (converged) {
+      // The last step is below 1e-5: its cosine and sine by two terms of
+      // their series are exact in double precision.
+      const double cos_step = 1.0 - 0.5 * step * step, sin_step = step * (1.0 - step * step / 6.0);
+      const double turned_c = c * cos_step - sn * sin_step;
+      sn = sn * cos_step + c * sin_step;
+      c = turned_c;
+    }
   }
-  if (!converged) t = brent_minimise(potential, best - kStep, best + kStep, best, 1e-10);
-  return std::fmod(std::fmod(t, kTwoPi) + kTwoPi, kTwoPi);
+  if (!converged) {
+    t = brent_minimise(potential, best - kStep, best + kStep, best, 1e-10);
+    c = std::cos(t), sn = std::sin(t);
+  }
+  return {std::fmod(std::fmod(t, kTwoPi) + kTwoPi, kTwoPi), c, sn};
 }
 
 }  // namespace
@@ -184,21 +211,24 @@ Curvature superquadric_curvature(const Superquadric& s, const Vec2& p) {
 SuperquadricContact superquadric_contact(const PlacedSuperquadric& i, const PlacedSuperquadric& j,
                                          double alpha_i_hint, double alpha_j_hint, bool use_hints) {
   SuperquadricContact c;
-  c.alpha_i = minimise_potential(i, j, alpha_i_hint, use_hints);
-  c.alpha_j = minimise_potential(j, i, alpha_j_hint, use_hints);
+  const Turn turn_i(i.angle), turn_j(j.angle);
+  const RadialAngle on_i = minimise_potential(i, turn_i, j, turn_j, alpha_i_hint, use_hints);
+  const RadialAngle on_j = minimise_potential(j, turn_j, i, turn_i, alpha_j_hint, use_hints);
+  c.alpha_i = on_i.t;
+  c.alpha_j = on_j.t;
   // Circles of curvature at P_i and P_j (eqs. 38-41), in the plane.
-  const Vec2 pi = radial_point(i.shape, c.alpha_i), pj = radial_point(j.shape, c.alpha_j);
+  const Vec2 pi = radial_point(i.shape, on_i.c, on_i.s), pj = radial_point(j.shape, on_j.c, on_j.s);
   const Curvature ki = superquadric_curvature(i.shape, pi), kj = superquadric_curvature(j.shape, pj);
-  const Vec2 ci = i.centre + rotate(pi - ki.radius * ki.normal, i.angle);
-  const Vec2 cj = j.centre + rotate(pj - kj.radius * kj.normal, j.angle);
+  const Vec2 ci = i.centre + turn_i(pi - ki.radius * ki.normal);
+  const Vec2 cj = j.centre + turn_j(pj - kj.radius * kj.normal);
   const Vec2 between = cj - ci;
   const double d = between.norm();
   c.overlap = ki.radius + kj.radius - d;  // eq. 42
   c.radius_i = ki.radius;
   c.radius_j = kj.radius;
-  c.first_point = i.centre + rotate(pi, i.angle);
-  c.second_point = j.centre + rotate(pj, j.angle);
-  c.normal = d > 0.0 ? Vec2(between / d) : Vec2(rotate(ki.normal, i.angle));
+  c.first_point = i.centre + turn_i(pi);
+  c.second_point = j.centre + turn_j(pj);
+  c.normal = d > 0.0 ? Vec2(between / d) : Vec2(turn_i(ki.normal));
   c.point = ci + (ki.radius - 0.5 * c.overlap) * c.normal;
   return c;
 }
