@@ -23,6 +23,8 @@ using CStatus = dem_interfaces_msg_dds__Status_;
 using CWallForce = dem_interfaces_msg_dds__WallForce_;
 using CPlateForces = dem_interfaces_msg_dds__PlateForces_;
 using CContactStats = dem_interfaces_msg_dds__ContactStats_;
+using CRegionMeasures = dem_interfaces_msg_dds__RegionMeasures_;
+using CRegionTelemetry = dem_interfaces_msg_dds__RegionTelemetry_;
 using CCommand = dem_interfaces_msg_dds__Command_;
 using CContactEntry = dem_interfaces_msg_dds__ContactEntry_;
 using CReply = dem_interfaces_msg_dds__Reply_;
@@ -131,6 +133,58 @@ CContactStats to_c(const protocol::ContactStats& s) {
   c.kinetic_energy = s.kinetic_energy;
   c.out_of_balance = s.out_of_balance;
   return c;
+}
+
+CRegionMeasures to_c(const protocol::RegionMeasure& m) {
+  CRegionMeasures c{};
+  c.name = borrow(m.name);
+  c.particles = m.particles;
+  c.rattlers = m.rattlers;
+  c.contacts = m.contacts;
+  c.particle_contacts = m.particle_contacts;
+  c.sliding_contacts = m.sliding_contacts;
+  c.sliding_fraction = m.sliding_fraction;
+  c.coordination = m.coordination;
+  c.mechanical_coordination = m.mechanical_coordination;
+  c.porosity = m.porosity;
+  c.void_ratio = m.void_ratio;
+  c.stress = borrow_sequence<dds_sequence_double>(m.stress);
+  c.principal_stress = borrow_sequence<dds_sequence_double>(m.principal_stress);
+  c.stress_angle = m.stress_angle;
+  c.mean_stress = m.mean_stress;
+  c.deviator_stress = m.deviator_stress;
+  c.sin_phi = m.sin_phi;
+  c.tangential_share = m.tangential_share;
+  c.fabric = borrow_sequence<dds_sequence_double>(m.fabric);
+  c.principal_fabric = borrow_sequence<dds_sequence_double>(m.principal_fabric);
+  c.fabric_angle = m.fabric_angle;
+  c.anisotropy = m.anisotropy;
+  c.weighted_fabric = borrow_sequence<dds_sequence_double>(m.weighted_fabric);
+  c.principal_weighted_fabric = borrow_sequence<dds_sequence_double>(m.principal_weighted_fabric);
+  c.weighted_fabric_angle = m.weighted_fabric_angle;
+  c.weighted_anisotropy = m.weighted_anisotropy;
+  c.fabric_trace = m.fabric_trace;
+  c.mean_normal_force = m.mean_normal_force;
+  c.max_normal_force = m.max_normal_force;
+  c.mean_rotation = m.mean_rotation;
+  c.mean_abs_rotation = m.mean_abs_rotation;
+  return c;
+}
+
+struct CRegionTelemetryStorage {
+  std::vector<CRegionMeasures> regions;
+  CRegionTelemetry message{};
+};
+
+void to_c(const protocol::RegionTelemetry& t, CRegionTelemetryStorage& out) {
+  out.regions.clear();
+  for (const auto& region : t.regions) out.regions.push_back(to_c(region));
+  out.message.server = borrow(t.server);
+  out.message.cycle = t.cycle;
+  out.message.time = t.time;
+  out.message.stamp = to_c(t.stamp);
+  out.message.dimension = t.dimension;
+  out.message.regions = borrow_sequence<dds_sequence_dem_interfaces_msg_dds__RegionMeasures_>(out.regions);
 }
 
 CContactEntry to_c(const protocol::ContactEntry& e) {
@@ -289,6 +343,56 @@ protocol::ContactStats from_c(const CContactStats& c) {
   return s;
 }
 
+std::vector<double> copy_doubles(const dds_sequence_double& s) { return {s._buffer, s._buffer + s._length}; }
+
+protocol::RegionMeasure from_c(const CRegionMeasures& c) {
+  protocol::RegionMeasure m;
+  m.name = copy(c.name);
+  m.particles = c.particles;
+  m.rattlers = c.rattlers;
+  m.contacts = c.contacts;
+  m.particle_contacts = c.particle_contacts;
+  m.sliding_contacts = c.sliding_contacts;
+  m.sliding_fraction = c.sliding_fraction;
+  m.coordination = c.coordination;
+  m.mechanical_coordination = c.mechanical_coordination;
+  m.porosity = c.porosity;
+  m.void_ratio = c.void_ratio;
+  m.stress = copy_doubles(c.stress);
+  m.principal_stress = copy_doubles(c.principal_stress);
+  m.stress_angle = c.stress_angle;
+  m.mean_stress = c.mean_stress;
+  m.deviator_stress = c.deviator_stress;
+  m.sin_phi = c.sin_phi;
+  m.tangential_share = c.tangential_share;
+  m.fabric = copy_doubles(c.fabric);
+  m.principal_fabric = copy_doubles(c.principal_fabric);
+  m.fabric_angle = c.fabric_angle;
+  m.anisotropy = c.anisotropy;
+  m.weighted_fabric = copy_doubles(c.weighted_fabric);
+  m.principal_weighted_fabric = copy_doubles(c.principal_weighted_fabric);
+  m.weighted_fabric_angle = c.weighted_fabric_angle;
+  m.weighted_anisotropy = c.weighted_anisotropy;
+  m.fabric_trace = c.fabric_trace;
+  m.mean_normal_force = c.mean_normal_force;
+  m.max_normal_force = c.max_normal_force;
+  m.mean_rotation = c.mean_rotation;
+  m.mean_abs_rotation = c.mean_abs_rotation;
+  return m;
+}
+
+protocol::RegionTelemetry from_c(const CRegionTelemetry& c) {
+  protocol::RegionTelemetry t;
+  t.server = copy(c.server);
+  t.cycle = c.cycle;
+  t.time = c.time;
+  t.stamp = from_c(c.stamp);
+  t.dimension = c.dimension;
+  t.regions.reserve(c.regions._length);
+  for (std::uint32_t i = 0; i < c.regions._length; ++i) t.regions.push_back(from_c(c.regions._buffer[i]));
+  return t;
+}
+
 protocol::ContactEntry from_c(const CContactEntry& c) {
   protocol::ContactEntry e;
   e.first = c.first;
@@ -403,6 +507,18 @@ dds_return_t TypeSupport<protocol::ContactStats>::write(dds_entity_t writer, con
 }
 protocol::ContactStats TypeSupport<protocol::ContactStats>::from_sample(const void* sample) {
   return from_c(*static_cast<const CContactStats*>(sample));
+}
+
+const dds_topic_descriptor_t* TypeSupport<protocol::RegionTelemetry>::descriptor() {
+  return &dem_interfaces_msg_dds__RegionTelemetry__desc;
+}
+dds_return_t TypeSupport<protocol::RegionTelemetry>::write(dds_entity_t writer, const protocol::RegionTelemetry& value) {
+  CRegionTelemetryStorage storage;
+  to_c(value, storage);
+  return dds_write(writer, &storage.message);
+}
+protocol::RegionTelemetry TypeSupport<protocol::RegionTelemetry>::from_sample(const void* sample) {
+  return from_c(*static_cast<const CRegionTelemetry*>(sample));
 }
 
 const dds_topic_descriptor_t* TypeSupport<protocol::Command>::descriptor() {

@@ -133,6 +133,53 @@ struct ContactStats {
   friend bool operator==(const ContactStats&, const ContactStats&) = default;
 };
 
+// The measures of one region (idl/dem/telemetry.idl, RegionMeasures_);
+// tensors row by row, dimension x dimension values.
+struct RegionMeasure {
+  std::string name;
+  std::int32_t particles = 0;
+  std::int32_t rattlers = 0;
+  std::int32_t contacts = 0;
+  std::int32_t particle_contacts = 0;
+  std::int32_t sliding_contacts = 0;
+  double sliding_fraction = 0.0;
+  double coordination = 0.0;
+  double mechanical_coordination = 0.0;
+  double porosity = 0.0;
+  double void_ratio = 0.0;
+  std::vector<double> stress;
+  std::vector<double> principal_stress;
+  double stress_angle = 0.0;
+  double mean_stress = 0.0;
+  double deviator_stress = 0.0;
+  double sin_phi = 0.0;
+  double tangential_share = 0.0;
+  std::vector<double> fabric;
+  std::vector<double> principal_fabric;
+  double fabric_angle = 0.0;
+  double anisotropy = 0.0;
+  std::vector<double> weighted_fabric;
+  std::vector<double> principal_weighted_fabric;
+  double weighted_fabric_angle = 0.0;
+  double weighted_anisotropy = 0.0;
+  double fabric_trace = 0.0;
+  double mean_normal_force = 0.0;
+  double max_normal_force = 0.0;
+  double mean_rotation = 0.0;
+  double mean_abs_rotation = 0.0;
+  friend bool operator==(const RegionMeasure&, const RegionMeasure&) = default;
+};
+
+struct RegionTelemetry {
+  std::string server;
+  std::uint64_t cycle = 0;
+  double time = 0.0;
+  Stamp stamp;
+  std::uint8_t dimension = 0;
+  std::vector<RegionMeasure> regions;
+  friend bool operator==(const RegionTelemetry&, const RegionTelemetry&) = default;
+};
+
 // Command arguments, one group per kind (see idl/dem/command.idl).
 struct LoadCaseArgs {
   std::string path;

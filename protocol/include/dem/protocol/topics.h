@@ -9,9 +9,10 @@
 
 namespace dem::protocol {
 
-enum class TopicKind { kCommand, kReply, kStatus, kPlateForces, kContactStats };
+enum class TopicKind { kCommand, kReply, kStatus, kPlateForces, kContactStats, kRegionMeasures };
 
-// "rt/dem/<server>/command", ".../reply", ".../status", ".../plate_forces", ".../contact_stats".
+// "rt/dem/<server>/command", ".../reply", ".../status", ".../plate_forces", ".../contact_stats",
+// ".../region_measures".
 std::string topic_name(std::string_view server, TopicKind kind);
 
 // A server name is one ROS 2 name token: a letter, then letters, digits and
