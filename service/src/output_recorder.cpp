@@ -30,10 +30,12 @@ std::unique_ptr<OutputRecorder::Compression<Dim>>& OutputRecorder::compression()
 
 template <int Dim>
 void OutputRecorder::start(const std::string& case_name, const BasicWorld<Dim>& world,
-                           std::optional<io::CompressionSettings> compression, std::uint64_t vtk_interval) {
+                           std::optional<io::CompressionSettings> compression, std::uint64_t vtk_interval,
+                           const std::vector<io::MeasurementRegion>& regions) {
   close();
   directory_ = output_directory_ / directory_name(case_name);
   compression_settings_ = std::move(compression);
+  regions_ = regions;
   vtk_interval_ = vtk_override_.value_or(vtk_interval);
   if (!enabled_) return;
   try {
@@ -80,8 +82,39 @@ void OutputRecorder::record(const BasicWorld<Dim>& world, std::optional<std::siz
       walls3_->write(world);
     }
     assembly_->write(world);
+    record_regions(world);
   } catch (const std::exception& error) {
     fail(error);
+  }
+}
+
+template <int Dim>
+void OutputRecorder::record_regions(const BasicWorld<Dim>& world) {
+  auto& regions = [&]() -> std::unique_ptr<io::RegionsCsvT<Dim>>& {
+    if constexpr (Dim == 2) {
+      return regions2_;
+    } else {
+      return regions3_;
+    }
+  }();
+  auto& box = [&]() -> std::unique_ptr<io::BoxCsvT<Dim>>& {
+    if constexpr (Dim == 2) {
+      return box2_;
+    } else {
+      return box3_;
+    }
+  }();
+  if (!regions_.empty()) {
+    if (!regions) {
+      std::vector<analysis::RegionT<Dim>> defined;
+      for (const io::MeasurementRegion& r : regions_) defined.push_back(io::region_for<Dim>(r));
+      regions = std::make_unique<io::RegionsCsvT<Dim>>(directory_, std::move(defined));
+    }
+    regions->write(world);
+  }
+  if (world.box_control()) {
+    if (!box) box = std::make_unique<io::BoxCsvT<Dim>>(directory_);
+    box->write(world);
   }
 }
 
@@ -136,14 +169,18 @@ void OutputRecorder::close() {
   stages_.reset();
   compression2_.reset();
   compression3_.reset();
+  regions2_.reset();
+  regions3_.reset();
+  box2_.reset();
+  box3_.reset();
   vtk_.reset();
   last_cycle_.reset();
 }
 
 template void OutputRecorder::start(const std::string&, const BasicWorld<2>&, std::optional<io::CompressionSettings>,
-                                    std::uint64_t);
+                                    std::uint64_t, const std::vector<io::MeasurementRegion>&);
 template void OutputRecorder::start(const std::string&, const BasicWorld<3>&, std::optional<io::CompressionSettings>,
-                                    std::uint64_t);
+                                    std::uint64_t, const std::vector<io::MeasurementRegion>&);
 template void OutputRecorder::record(const BasicWorld<2>&, std::optional<std::size_t>);
 template void OutputRecorder::record(const BasicWorld<3>&, std::optional<std::size_t>);
 template void OutputRecorder::finish(const BasicWorld<2>&);

@@ -35,7 +35,7 @@ template <int Dim>
 Simulation::Prepared prepared_case(const io::CaseDefinitionT<Dim>& definition, const std::string& source) {
   Simulation::Prepared prepared;
   prepared.world = make_session(BasicWorld<Dim>(definition.world), definition.stages, definition.output.compression,
-                                definition.output.vtk_interval);
+                                definition.output.vtk_interval, definition.output.regions);
   prepared.output_interval = definition.output.interval;
   prepared.case_name = definition.name.empty() ? std::string("unnamed") : definition.name;
   prepared.description = definition.description;

@@ -1,0 +1,72 @@
+// The measures of a case's regions through the service (issue 13): a case
+// with measurement regions and a box control, loaded into a server in this
+// process; its region telemetry reaches a C++ subscriber and its tables
+// (regions.csv, box.csv) are written beside walls.csv. DDS domain 220
+// (issue 13's tests use 220-239).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <mutex>
+
+#include "dem/client/telemetry.h"
+#include "service_test_support.h"
+
+namespace dem::test {
+namespace {
+
+constexpr std::uint32_t kRegionTelemetry = 220;
+
+TEST(Regions, TheirMeasuresArePublishedAndWritten) {
+  const service::ServerOptions options = server_options("biaxial", kRegionTelemetry);
+  InProcessServer server(options);
+  client::Client client(connect_options("biaxial", kRegionTelemetry));
+  const auto biaxial = std::filesystem::path(DEM_CASES_DIR) / ".." / "tests" / "io" / "data" / "biaxial.case.txtpb";
+  client.load_case_on_server(biaxial.string());
+
+  std::mutex mutex;
+  std::vector<protocol::RegionTelemetry> samples;
+  client::TelemetrySubscription telemetry(client, {.plate_forces = {},
+                                                   .contact_stats = {},
+                                                   .status = {},
+                                                   .region_measures = [&](const protocol::RegionTelemetry& t) {
+                                                     std::lock_guard lock(mutex);
+                                                     samples.push_back(t);
+                                                   }});
+  ASSERT_TRUE(eventually([&] { return telemetry.matched_publishers() > 0; }, 10s));
+  client.cycle(3000);
+  ASSERT_TRUE(eventually(
+      [&] {
+        std::lock_guard lock(mutex);
+        return !samples.empty() && samples.back().cycle == 3000;
+      },
+      10s));
+  std::lock_guard lock(mutex);
+  const protocol::RegionTelemetry& last = samples.back();
+  EXPECT_EQ(last.server, "biaxial");
+  EXPECT_EQ(last.dimension, 2);
+  ASSERT_EQ(last.regions.size(), 3u);
+  EXPECT_EQ(last.regions[0].name, "all");
+  EXPECT_EQ(last.regions[2].name, "circle");
+  const protocol::RegionMeasure& all = last.regions[0];
+  std::printf("region \"all\" at cycle 3000: %d particles, porosity %.4f, mean stress %.1f Pa, coordination %.3f\n",
+              all.particles, all.porosity, all.mean_stress, all.coordination);
+  EXPECT_EQ(all.particles, 120);
+  ASSERT_EQ(all.stress.size(), 4u);  // 2 x 2, row by row
+  EXPECT_EQ(all.principal_stress.size(), 2u);
+  EXPECT_EQ(all.fabric.size(), 4u);
+  EXPECT_GT(all.porosity, 0.0);
+  EXPECT_LT(all.porosity, 1.0);
+  EXPECT_NEAR(all.mean_stress, 0.5 * (all.stress[0] + all.stress[3]), 1e-9 * std::abs(all.mean_stress) + 1e-12);
+
+  // Beside walls.csv: regions.csv and, the case having a box control, box.csv.
+  const auto directory = options.output_directory / "biaxial";
+  for (const char* file : {"regions.csv", "box.csv"}) {
+    std::ifstream in(directory / file);
+    std::string header;
+    ASSERT_TRUE(std::getline(in, header)) << file;
+    EXPECT_EQ(header.substr(0, 11), "cycle,time,") << file;
+  }
+}
+
+}  // namespace
+}  // namespace dem::test
