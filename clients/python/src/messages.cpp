@@ -129,6 +129,64 @@ void bind_messages(py::module_& m) {
                std::to_string(s.contacts) + " contacts>";
       });
 
+  py::class_<RegionMeasure>(m, "RegionMeasure",
+                            "The state of one measurement region (Randall 1989, 4.6; docs/CASES.md, regions.csv)")
+      .def_readonly("name", &RegionMeasure::name)
+      .def_readonly("particles", &RegionMeasure::particles)
+      .def_readonly("rattlers", &RegionMeasure::rattlers)
+      .def_readonly("contacts", &RegionMeasure::contacts)
+      .def_readonly("particle_contacts", &RegionMeasure::particle_contacts)
+      .def_readonly("sliding_contacts", &RegionMeasure::sliding_contacts)
+      .def_readonly("sliding_fraction", &RegionMeasure::sliding_fraction)
+      .def_readonly("coordination", &RegionMeasure::coordination)
+      .def_readonly("mechanical_coordination", &RegionMeasure::mechanical_coordination)
+      .def_readonly("porosity", &RegionMeasure::porosity)
+      .def_readonly("void_ratio", &RegionMeasure::void_ratio)
+      .def_readonly("stress", &RegionMeasure::stress, "Pa, compression positive, row by row")
+      .def_readonly("principal_stress", &RegionMeasure::principal_stress, "major first")
+      .def_readonly("stress_angle", &RegionMeasure::stress_angle, "2D: the major direction from x, rad")
+      .def_readonly("mean_stress", &RegionMeasure::mean_stress)
+      .def_readonly("deviator_stress", &RegionMeasure::deviator_stress)
+      .def_readonly("sin_phi", &RegionMeasure::sin_phi)
+      .def_readonly("tangential_share", &RegionMeasure::tangential_share)
+      .def_readonly("fabric", &RegionMeasure::fabric, "<n_i n_j>, row by row (Randall 4.48)")
+      .def_readonly("principal_fabric", &RegionMeasure::principal_fabric)
+      .def_readonly("fabric_angle", &RegionMeasure::fabric_angle)
+      .def_readonly("anisotropy", &RegionMeasure::anisotropy)
+      .def_readonly("weighted_fabric", &RegionMeasure::weighted_fabric)
+      .def_readonly("principal_weighted_fabric", &RegionMeasure::principal_weighted_fabric)
+      .def_readonly("weighted_fabric_angle", &RegionMeasure::weighted_fabric_angle)
+      .def_readonly("weighted_anisotropy", &RegionMeasure::weighted_anisotropy)
+      .def_readonly("fabric_trace", &RegionMeasure::fabric_trace)
+      .def_readonly("mean_normal_force", &RegionMeasure::mean_normal_force)
+      .def_readonly("max_normal_force", &RegionMeasure::max_normal_force)
+      .def_readonly("mean_rotation", &RegionMeasure::mean_rotation)
+      .def_readonly("mean_abs_rotation", &RegionMeasure::mean_abs_rotation)
+      .def("__repr__", [](const RegionMeasure& r) {
+        return "<RegionMeasure " + r.name + ": " + std::to_string(r.particles) + " particles, mean stress " +
+               std::to_string(r.mean_stress) + " Pa>";
+      });
+
+  py::class_<RegionTelemetry>(m, "RegionTelemetry", "The measures of a case's regions at one cycle")
+      .def_readonly("server", &RegionTelemetry::server)
+      .def_readonly("cycle", &RegionTelemetry::cycle)
+      .def_readonly("time", &RegionTelemetry::time)
+      .def_property_readonly("stamp", [](const RegionTelemetry& t) { return seconds_of(t.stamp); })
+      .def_readonly("dimension", &RegionTelemetry::dimension)
+      .def_readonly("regions", &RegionTelemetry::regions)
+      .def("region",
+           [](const RegionTelemetry& t, const std::string& name) -> const RegionMeasure& {
+             for (const RegionMeasure& r : t.regions) {
+               if (r.name == name) return r;
+             }
+             throw py::key_error("no region " + name);
+           },
+           py::arg("name"), py::return_value_policy::reference_internal, "The region of that name")
+      .def("__repr__", [](const RegionTelemetry& t) {
+        return "<RegionTelemetry of " + t.server + " at cycle " + std::to_string(t.cycle) + ": " +
+               std::to_string(t.regions.size()) + " regions>";
+      });
+
   py::class_<Reply>(m, "Reply", "The server's complete reply to one command (chunks joined)")
       .def_readonly("server", &Reply::server)
       .def_readonly("client_id", &Reply::client_id)
