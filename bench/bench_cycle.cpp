@@ -5,11 +5,14 @@
 // into the phases of step() and rebuild_every counts cycles per rebuild of
 // the contact table.
 //   bench_cycle --benchmark_filter=Dense
+// Health: the cost of a health assessment (dem/health.h) in cycles.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
+#include "dem/health.h"
 #include "dem/packing.h"
 #include "dem/world.h"
 
@@ -63,7 +66,30 @@ void Dense(benchmark::State& state) {
   state.counters["threads"] = static_cast<double>(world.threads());
 }
 
+// The health check (dem/health.h) of the same assembly, in cycles: what
+// dem_run and dem_server spread out to 1/100 of a run (io/pacing.h).
+void Health(benchmark::State& state) {
+  dem::World world(dense_assembly(static_cast<int>(state.range(0)), 1));
+  world.cycle(200);
+  constexpr int kCycles = 50;
+  const auto start = std::chrono::steady_clock::now();
+  world.cycle(kCycles);
+  const double cycle_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / kCycles;
+  dem::HealthMonitor monitor(world);
+  double seconds = 0.0;
+  for (auto _ : state) {
+    const auto begin = std::chrono::steady_clock::now();
+    const dem::StepHealth health = monitor.assess(world);
+    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    if (!health.ok()) state.SkipWithError(health.message.c_str());
+  }
+  state.counters["cycles_per_assessment"] = seconds / static_cast<double>(state.iterations()) / cycle_seconds;
+  state.counters["discs"] = world.particle_count();
+}
+
 }  // namespace
+
+BENCHMARK(Health)->ArgNames({"discs"})->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 
 BENCHMARK(Dense)
     ->ArgNames({"discs", "threads"})

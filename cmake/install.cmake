@@ -85,6 +85,11 @@ install(FILES ${PROJECT_BINARY_DIR}/demConfig.cmake ${PROJECT_BINARY_DIR}/demCon
 # --- data and documents --------------------------------------------------
 install(DIRECTORY cases config DESTINATION ${CMAKE_INSTALL_DATADIR}/dem)
 install(FILES tools/paraview/force_chains.py DESTINATION ${CMAKE_INSTALL_DATADIR}/dem/paraview)
+# Sweeps (docs/SWEEPS.md): the task script dem.sweep copies into each sweep, and a
+# one-machine Slurm cluster; the DDS configuration for hosts of a real network (DDS.md).
+install(PROGRAMS scripts/slurm/dem_sweep_task.sh scripts/slurm/local_cluster.sh
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/dem/scripts/slurm)
+install(PROGRAMS scripts/dds_network_config.sh DESTINATION ${CMAKE_INSTALL_DATADIR}/dem/scripts)
 install(DIRECTORY ros2/dem_interfaces DESTINATION ${CMAKE_INSTALL_DATADIR}/dem/ros2)
 install(FILES README.md LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR})

@@ -12,9 +12,9 @@ packages=(
   # toolchain
   cmake g++ make ccache
   # engine and case layer
-  libeigen3-dev libprotobuf-dev protobuf-compiler libspdlog-dev libfmt-dev libcli11-dev
-  # tests and benchmarks
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libeigen3-dev libprotobuf-dev protobuf-compiler libspdlog-dev libfmt-dev libcli11-dev libssl-dev
+  # tests and benchmarks; the fuzz targets (clang's libFuzzer, OpenMP for clang)
+  libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev libomp-dev
   # service (DDS) and its IDL compiler
   cyclonedds-dev cyclonedds-tools
   # Python client
@@ -29,6 +29,9 @@ if [ $build_only = 0 ]; then
     python3-vtk9 paraview xvfb xauth
     # the live dashboard (dem.bridge: websockets, Chart.js) and its page test (headless Chromium)
     python3-websockets libjs-chart.js chromium chromium-driver python3-selenium
+    # sweeps (docs/SWEEPS.md): a one-machine Slurm cluster for the job array test, Dask's
+    # distributed scheduler for the Dask backend, ip(8) for the network namespace test
+    slurmctld slurmd slurm-client munge python3-distributed iproute2
   )
   # Node.js and npm for the tests' independent readers (tests/npm), unless a
   # Node.js is installed already (from another source, with its own npm).

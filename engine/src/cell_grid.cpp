@@ -1,27 +1,49 @@
 #include "cell_grid.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace dem {
+
+namespace {
+
+// floor(t) clamped to [0, last] - what truncating and clamping gives for
+// every finite t - without converting a value the integer cannot hold: a
+// position that blew up (NaN, infinite, beyond 2^63 cells) lands in a cell
+// at the edge instead of being undefined behaviour, and the health check
+// stops the run (dem/health.h).
+std::int64_t clamped_cell(double t, std::int64_t last) {
+  if (!(t >= 1.0)) return 0;  // below 1, or NaN
+  if (!(t < static_cast<double>(last))) return last;
+  return static_cast<std::int64_t>(t);
+}
+
+}  // namespace
 
 template <int Dim>
 typename CellGrid<Dim>::Cell CellGrid<Dim>::cell_of(const Vec<Dim>& x) const {
   Cell c;
-  for (int d = 0; d < Dim; ++d) {
-    c[d] = std::clamp<std::int64_t>(static_cast<std::int64_t>((x[d] - origin[d]) / cell_size[d]), 0, counts[d] - 1);
-  }
+  for (int d = 0; d < Dim; ++d) c[d] = clamped_cell((x[d] - origin[d]) / cell_size[d], counts[d] - 1);
   return c;
 }
+
+// More cells along one axis than this cannot be: the grid has at most about
+// 4 per particle (below), and particle counts fit in 32 bits.
+constexpr std::int64_t kMaxAxisCells = std::int64_t{1} << 40;
 
 template <int Dim>
 CellGrid<Dim> build_grid(const Particles<Dim>& particles, const Periodic<Dim>& periodic, double range) {
   const std::size_t n = particles.size();
   CellGrid<Dim> grid;
-  Vec<Dim> lo = particles.position[0], hi = particles.position[0];
+  // Over the finite positions: one that blew up would make the extent NaN.
+  Vec<Dim> lo = Vec<Dim>::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (std::size_t i = 0; i < n; ++i) {
+    if (!particles.position[i].allFinite()) continue;
     lo = lo.cwiseMin(particles.position[i]);
     hi = hi.cwiseMax(particles.position[i]);
   }
+  if (!(lo.array() <= hi.array()).all()) lo = hi = Vec<Dim>::Zero();
   for (int d = 0; d < Dim; ++d) {
     grid.wraps[d] = periodic.repeats(d);
     if (grid.wraps[d]) {
@@ -39,16 +61,18 @@ CellGrid<Dim> build_grid(const Particles<Dim>& particles, const Periodic<Dim>& p
     for (int d = 0; d < Dim; ++d) cells *= extent[d] / size + 1.0;
     return cells;
   };
-  while (cell_count() > max_cells) size *= 2.0;
+  // Finite positions far apart can still overflow the extent to infinity:
+  // the cells then grow to infinity too, and there is one.
+  while (cell_count() > max_cells && std::isfinite(size)) size *= 2.0;
   grid.origin = lo;
   std::int64_t cells = 1;
   for (int d = 0; d < Dim; ++d) {
     if (grid.wraps[d]) {
       // A whole number of cells, each at least `size`, tiles the period.
-      grid.counts[d] = std::max<std::int64_t>(1, static_cast<std::int64_t>(extent[d] / size));
+      grid.counts[d] = std::max<std::int64_t>(1, clamped_cell(extent[d] / size, kMaxAxisCells));
       grid.cell_size[d] = extent[d] / static_cast<double>(grid.counts[d]);
     } else {
-      grid.counts[d] = static_cast<std::int64_t>(extent[d] / size) + 1;
+      grid.counts[d] = clamped_cell(extent[d] / size, kMaxAxisCells) + 1;
       grid.cell_size[d] = size;
     }
     cells *= grid.counts[d];

@@ -46,8 +46,11 @@ AssemblyMeasures measure_assembly(const WorldState<Dim>& s) {
     if (c.second_particle != kInvalidId) ++m.particle_contacts;
     if (c.sliding) ++m.sliding_contacts;
     m.max_contact_force = std::max(m.max_contact_force, std::hypot(c.normal_force, c.tangential_force.norm()));
-    if (!s.energy_budget) return;
     const Slot x = p.slot[c.first];
+    const double smaller =
+        c.second_particle != kInvalidId ? std::min(p.radius[x], p.radius[p.slot[c.second_particle]]) : p.radius[x];
+    m.deepest_overlap = std::max(m.deepest_overlap, c.overlap / smaller);
+    if (!s.energy_budget) return;
     double effective_radius = p.radius[x];
     Strain held;
     if (c.second_particle != kInvalidId) {

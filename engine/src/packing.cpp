@@ -156,6 +156,9 @@ std::vector<ParticleDefT<Dim>> generate_random_packing(const RandomPackingDefT<D
   Random random(def.seed);
   PlacementGrid<Dim> grid(def.min, def.max, 2.0 * largest);
   std::vector<ParticleDefT<Dim>> placed;
+  // Attempts between two questions to def.stopped: a few microseconds' work.
+  constexpr std::uint64_t kStopPoll = 4096;
+  std::uint64_t attempts = 0;
   for (const SizeClassT<Dim>& size : sizes) {
     const Vec<Dim> lo = def.min + Vec<Dim>::Constant(size.radius);
     const Vec<Dim> span = (def.max - def.min) - Vec<Dim>::Constant(2.0 * size.radius);
@@ -165,6 +168,10 @@ std::vector<ParticleDefT<Dim>> generate_random_packing(const RandomPackingDefT<D
     for (int k = 0; k < size.count; ++k) {
       bool done = false;
       for (int attempt = 0; attempt < def.max_attempts && !done; ++attempt) {
+        if (++attempts % kStopPoll == 0 && def.stopped && def.stopped()) {
+          throw DefinitionError("random packing: stopped after placing " + std::to_string(placed.size()) +
+                                " particles");
+        }
         Vec<Dim> x = lo;
         for (int d = 0; d < Dim; ++d) x[d] += random.uniform() * span[d];
         if (!grid.is_free(x, size.radius, placed)) continue;

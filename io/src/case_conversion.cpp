@@ -11,9 +11,11 @@
 
 #include "dem/error.h"
 #include "dem/io/case_validation.h"
+#include "dem/io/file_access.h"
 #include "dem/io/particle_file.h"
 #include "dem/packing.h"
 #include "field_path.h"
+#include "format_number.h"
 #include "problem_list.h"
 
 namespace dem::io {
@@ -219,7 +221,8 @@ CompressionSettings to_compression(const proto::Case& c, const WallIndex& walls)
 template <int Dim>
 class Converter {
  public:
-  Converter(const proto::Case& c, const CaseSource& source) : case_(c), source_(source) {}
+  Converter(const proto::Case& c, const CaseSource& source, const ResourceLimits& limits)
+      : case_(c), source_(source), limits_(limits) {}
 
   CaseDefinitionT<Dim> run() {
     CaseDefinitionT<Dim> def;
@@ -247,6 +250,7 @@ class Converter {
     if (case_.time_step().fraction() > 0) def.world.time_step_fraction = case_.time_step().fraction();
     def.world.fixed_time_step = case_.time_step().fixed();
     def.world.contact_tolerance = case_.numerics().contact_tolerance();
+    check_contact_tolerance(def.world);
     def.world.threads = static_cast<int>(case_.numerics().threads());
     def.world.energy_budget = case_.output().energy_budget();
     if (case_.has_box_control()) def.world.box_control = to_box_control<Dim>(case_.box_control(), walls_);
@@ -256,6 +260,29 @@ class Converter {
   }
 
  private:
+  // BALL's TOL is a fraction of a radius. One beyond the largest diameter
+  // makes every pair within it a contact-table row: far apart particles
+  // by the million would make the table quadratic in their number.
+  void check_contact_tolerance(const WorldDefT<Dim>& world) const {
+    double largest = 0.0;
+    for (const ParticleDefT<Dim>& particle : world.particles) {
+      double radius = particle.radius;  // a shaped particle's is set by the engine from its shape
+      if constexpr (Dim == 2) {
+        if (particle.shape.superquadric()) radius = std::max(particle.shape.a, particle.shape.b);
+      } else {
+        if (particle.shape.ellipsoid()) radius = particle.shape.axes.maxCoeff();
+      }
+      largest = std::max(largest, radius);
+    }
+    if (world.contact_tolerance > 2.0 * largest) {
+      throw CaseError(describe_problem(source_, "numerics.contact_tolerance",
+                                       "must be at most the largest particle's diameter (" +
+                                           format_number(2.0 * largest) + " m), got " +
+                                           format_number(world.contact_tolerance) +
+                                           " m; leave it out for a tenth of the mean radius"));
+    }
+  }
+
   void add_materials(WorldDefT<Dim>& world) {
     for (int i = 0; i < case_.material_size(); ++i) {
       const proto::Material& material = case_.material(i);
@@ -340,6 +367,10 @@ class Converter {
         throw CaseError(std::move(problems));
       }
       world.particles.insert(world.particles.end(), particles.begin(), particles.end());
+      // Validation could not count the particle files' lines.
+      if (const auto problem = particle_count_problem(world.particles.size(), limits_)) {
+        throw CaseError(describe_problem(source_, "particles", *problem + " (counting " + path + ")"));
+      }
     }
   }
 
@@ -383,12 +414,21 @@ class Converter {
     }
     def.seed = packing.seed();
     if (packing.max_attempts() > 0) def.max_attempts = static_cast<int>(packing.max_attempts());
+    def.stopped = limits_.stop_packing;
     return def;
   }
 
   // A relative path starts from the case file's directory; an absolute one stays.
   std::vector<ParticleDefT<Dim>> read_file(const proto::ParticleFile& file) const {
-    std::vector<ParticleDefT<Dim>> particles = read_particle_file<Dim>(source_.directory / file.path());
+    std::filesystem::path path = source_.directory / file.path();
+    if (source_.files) {
+      try {
+        path = source_.files->readable(file.path(), source_.directory);
+      } catch (const FileAccessError& error) {
+        throw CaseError(error.what());
+      }
+    }
+    std::vector<ParticleDefT<Dim>> particles = read_particle_file<Dim>(path);
     const MaterialId material = materials_.at(file.material());
     const Vec<Dim> offset = to_vec<Dim>(file.offset());
     for (ParticleDefT<Dim>& particle : particles) {
@@ -503,6 +543,7 @@ class Converter {
 
   const proto::Case& case_;
   const CaseSource& source_;
+  const ResourceLimits& limits_;
   std::map<std::string, MaterialId, std::less<>> materials_;
   WallIndex walls_;
 };
@@ -512,22 +553,23 @@ class Converter {
 int case_dimension(const proto::Case& message) { return message.dimension() == 3 ? 3 : 2; }
 
 template <int Dim>
-CaseDefinitionT<Dim> convert_case(const proto::Case& message, const CaseSource& source) {
-  validate_case(message, source);
+CaseDefinitionT<Dim> convert_case(const proto::Case& message, const CaseSource& source, const ResourceLimits& limits) {
+  validate_case(message, source, limits);
   if (const int declared = case_dimension(message); declared != Dim) {
     throw CaseError(describe_problem(
         source, "dimension",
         "the case is " + std::to_string(declared) + "D, but a " + std::to_string(Dim) + "D case is expected here"));
   }
-  return Converter<Dim>(message, source).run();
+  return Converter<Dim>(message, source, limits).run();
 }
 
-template CaseDefinitionT<2> convert_case<2>(const proto::Case&, const CaseSource&);
-template CaseDefinitionT<3> convert_case<3>(const proto::Case&, const CaseSource&);
+template CaseDefinitionT<2> convert_case<2>(const proto::Case&, const CaseSource&, const ResourceLimits&);
+template CaseDefinitionT<3> convert_case<3>(const proto::Case&, const CaseSource&, const ResourceLimits&);
 
-AnyCaseDefinition convert_any_case(const proto::Case& message, const CaseSource& source) {
-  if (case_dimension(message) == 3) return convert_case<3>(message, source);
-  return convert_case<2>(message, source);
+AnyCaseDefinition convert_any_case(const proto::Case& message, const CaseSource& source,
+                                   const ResourceLimits& limits) {
+  if (case_dimension(message) == 3) return convert_case<3>(message, source, limits);
+  return convert_case<2>(message, source, limits);
 }
 
 }  // namespace dem::io

@@ -36,7 +36,7 @@ constexpr std::string_view kSet3d = "set dimension: 3 for a 3D case";
 // resolved against the definitions as they are read.
 class CaseChecker {
  public:
-  explicit CaseChecker(const proto::Case& c) : case_(c) { note_material_uses(); }
+  CaseChecker(const proto::Case& c, const ResourceLimits& limits) : case_(c), limits_(limits) { note_material_uses(); }
 
   std::vector<CaseProblem> run() {
     check_dimension();
@@ -170,10 +170,7 @@ class CaseChecker {
           break;
       }
     }
-    if (particle_count_ > static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max())) {
-      problems_.add("particles", "define " + std::to_string(particle_count_) +
-                                     " particles, more than particle ids can number (2147483647)");
-    }
+    if (const auto problem = particle_count_problem(particle_count_, limits_)) problems_.add("particles", *problem);
   }
 
   void check_particle(const std::string& path, const proto::Particle& particle) {
@@ -197,7 +194,7 @@ class CaseChecker {
     vector(path + ".velocity", particle.velocity());
     check_spin(path + ".angular_velocity", particle.angular_velocity(), particle.has_angular_velocity_3d(),
                particle.angular_velocity_3d());
-    particle_count_ += 1;
+    particle_count_ = saturating_add(particle_count_, 1);
   }
 
   // An angular velocity: a scalar about z in 2D, a vector in 3D.
@@ -245,7 +242,10 @@ class CaseChecker {
                                            ") so neighbours do not overlap (got " + format_number(lattice.spacing()) +
                                            "); leave it out for touching neighbours");
     }
-    particle_count_ += std::uint64_t{lattice.columns()} * lattice.rows() * std::max(lattice.layers(), 1u);
+    // Three uint32 factors overflow 64 bits together: the count saturates.
+    particle_count_ = saturating_add(
+        particle_count_, saturating_multiply(saturating_multiply(lattice.columns(), lattice.rows()),
+                                             std::max(lattice.layers(), 1u)));
   }
 
   void check_random_packing(const std::string& path, const proto::RandomPacking& packing) {
@@ -306,10 +306,59 @@ class CaseChecker {
                                                  format_number(size.radius()) + " do not fit in the box (" + box + ")");
       }
       if (size.count() == 0) problems_.add(size_path + ".count", "must be > 0");
-      particle_count_ += size.count();
+      particle_count_ = saturating_add(particle_count_, size.count());
     }
-    if (packing.max_attempts() > static_cast<std::uint32_t>(std::numeric_limits<int>::max())) {
-      problems_.add(path + ".max_attempts", "must be at most " + std::to_string(std::numeric_limits<int>::max()));
+    if (box_ok) check_packing_room(path, packing);
+    if (packing.max_attempts() > limits_.max_packing_attempts) {
+      problems_.add(path + ".max_attempts", "must be at most " + std::to_string(limits_.max_packing_attempts) +
+                                                " (got " + std::to_string(packing.max_attempts()) +
+                                                "): a packing that cannot fit would try that many times a particle");
+    }
+  }
+
+  // What a random packing will need before it is tried: the engine's
+  // placement grid has a cell per largest diameter of the box, and the
+  // particles' own area (2D) or volume (3D) must fit in it.
+  void check_packing_room(const std::string& path, const proto::RandomPacking& packing) {
+    const bool three = dimension_ == 3;
+    double largest = 0.0;
+    double solid = 0.0;  // m^2 or m^3
+    for (const proto::SizeClass& size : packing.size()) {
+      double radius = size.radius();
+      if (size.has_ellipsoid()) {
+        const proto::Vector& axes = size.ellipsoid().semi_axes();
+        radius = std::max({axes.x(), axes.y(), axes.z()});
+      } else if (size.has_superquadric()) {
+        // Its bounding circle is at least this large (it reaches the
+        // corners when n > 2), so the cells and the room are not underestimated.
+        radius = std::max(size.superquadric().a(), size.superquadric().b());
+      }
+      if (!(radius > 0) || !std::isfinite(radius)) return;  // reported with the size class
+      largest = std::max(largest, radius);
+      solid += static_cast<double>(size.count()) *
+               (three ? 4.0 / 3.0 * std::numbers::pi * radius * radius * radius : std::numbers::pi * radius * radius);
+    }
+    if (largest == 0.0) return;
+    // Cells of the engine's size would be fewer; these are an upper bound.
+    const double extent[3] = {packing.max().x() - packing.min().x(), packing.max().y() - packing.min().y(),
+                              packing.max().z() - packing.min().z()};
+    double cells = 1.0;
+    double box = 1.0;
+    for (int d = 0; d < dimension_; ++d) {
+      cells *= std::floor(extent[d] / (2.0 * largest)) + 1.0;
+      box *= extent[d];
+    }
+    if (!(cells <= static_cast<double>(limits_.max_packing_cells))) {
+      problems_.add(path + ".max", "the box is " + format_number(cells) + " times the largest particle's diameter" +
+                                       (three ? " cubed" : " squared") + ", more than the packing grid's limit of " +
+                                       std::to_string(limits_.max_packing_cells) +
+                                       " cells: shrink the box or place the particles in several packings");
+    }
+    // Bounding circles and spheres: shaped particles take at least this room.
+    if (solid > box) {
+      problems_.add(path + ".size", "the particles' " + std::string(three ? "volume" : "area") + " (" +
+                                        format_number(solid) + ") exceeds the box's (" + format_number(box) +
+                                        "): they cannot fit; enlarge the box or reduce the counts");
     }
   }
 
@@ -778,12 +827,13 @@ class CaseChecker {
 
   void check_numerics() {
     problems_.non_negative("numerics.contact_tolerance", case_.numerics().contact_tolerance());
-    if (case_.numerics().threads() > static_cast<std::uint32_t>(std::numeric_limits<int>::max())) {
-      problems_.add("numerics.threads", "must be at most " + std::to_string(std::numeric_limits<int>::max()));
+    if (const auto problem = thread_count_problem(case_.numerics().threads(), limits_)) {
+      problems_.add("numerics.threads", *problem);
     }
   }
 
   const proto::Case& case_;
+  const ResourceLimits& limits_;
   ProblemList problems_;
   NameIndex materials_;
   NameIndex walls_;
@@ -798,10 +848,12 @@ class CaseChecker {
 
 }  // namespace
 
-std::vector<CaseProblem> find_case_problems(const proto::Case& message) { return CaseChecker(message).run(); }
+std::vector<CaseProblem> find_case_problems(const proto::Case& message, const ResourceLimits& limits) {
+  return CaseChecker(message, limits).run();
+}
 
-void validate_case(const proto::Case& message, const CaseSource& source) {
-  const std::vector<CaseProblem> problems = find_case_problems(message);
+void validate_case(const proto::Case& message, const CaseSource& source, const ResourceLimits& limits) {
+  const std::vector<CaseProblem> problems = find_case_problems(message, limits);
   if (problems.empty()) return;
   std::vector<std::string> lines;
   lines.reserve(problems.size());

@@ -23,12 +23,12 @@ double mean_normal_force(const auto& contacts) {
 
 template <int Dim>
 CompressionCsvT<Dim>::CompressionCsvT(const std::filesystem::path& directory, std::string loading_plate,
-                                      std::string bottom_plate)
+                                      std::string bottom_plate, const TableSizes* resume)
     : directory_(directory),
       loading_plate_(std::move(loading_plate)),
       bottom_plate_(std::move(bottom_plate)),
-      samples_(directory, "compression.csv", kSamplesHeader),
-      contacts_(directory, "plate_contacts.csv", Dim == 2 ? kContactsHeader2 : kContactsHeader3) {
+      samples_(directory, "compression.csv", kSamplesHeader, resume),
+      contacts_(directory, "plate_contacts.csv", Dim == 2 ? kContactsHeader2 : kContactsHeader3, resume) {
   files_ = {samples_.path(), contacts_.path()};
 }
 

@@ -48,7 +48,8 @@ void append_field(std::string& line, std::string_view text) {
   line += '"';
 }
 
-CsvFile::CsvFile(const std::filesystem::path& directory, std::string_view file_name, std::string_view header)
+CsvFile::CsvFile(const std::filesystem::path& directory, std::string_view file_name, std::string_view header,
+                 const TableSizes* resume)
     : path_(directory / file_name) {
   std::error_code error;
   std::filesystem::create_directories(directory, error);
@@ -56,9 +57,31 @@ CsvFile::CsvFile(const std::filesystem::path& directory, std::string_view file_n
     throw std::runtime_error("cannot create the output directory " + directory.string() + ": " + error.message());
   }
   errno = 0;
+  if (resume != nullptr) {
+    if (const auto found = resume->find(file_name); found != resume->end()) {
+      resume_at(header, found->second);
+      return;
+    }
+  }
   out_.open(path_, std::ios::binary | std::ios::trunc);
   if (!out_) throw write_failure(path_);
   write_line(std::string(header) + '\n');
+}
+
+void CsvFile::resume_at(std::string_view header, std::uint64_t size) {
+  std::error_code error;
+  const std::uint64_t now = std::filesystem::file_size(path_, error);
+  std::string first;
+  std::ifstream(path_) >> first;
+  if (error || now < size || size < header.size() + 1 || first != header) {
+    throw std::runtime_error("cannot resume " + path_.string() + ": it is not the table the checkpoint wrote (" +
+                             std::to_string(size) + " bytes starting with its header)");
+  }
+  // The rows written after the checkpoint go: the resumed run writes them again.
+  std::filesystem::resize_file(path_, size, error);
+  if (error) throw std::runtime_error("cannot resume " + path_.string() + ": " + error.message());
+  out_.open(path_, std::ios::binary | std::ios::app);
+  if (!out_) throw write_failure(path_);
 }
 
 void CsvFile::write_line(std::string_view line) {

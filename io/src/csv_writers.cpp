@@ -23,8 +23,8 @@ constexpr const char* kParticlesHeader3 =
 }  // namespace
 
 template <int Dim>
-WallsCsvT<Dim>::WallsCsvT(const std::filesystem::path& directory)
-    : file_(directory, "walls.csv", Dim == 2 ? kWallsHeader2 : kWallsHeader3) {}
+WallsCsvT<Dim>::WallsCsvT(const std::filesystem::path& directory, const TableSizes* resume)
+    : file_(directory, "walls.csv", Dim == 2 ? kWallsHeader2 : kWallsHeader3, resume) {}
 
 template <int Dim>
 void WallsCsvT<Dim>::write(const BasicWorld<Dim>& world) {
@@ -46,9 +46,10 @@ void WallsCsvT<Dim>::write(const BasicWorld<Dim>& world) {
   file_.flush();
 }
 
-AssemblyCsv::AssemblyCsv(const std::filesystem::path& directory)
+AssemblyCsv::AssemblyCsv(const std::filesystem::path& directory, const TableSizes* resume)
     : file_(directory, "assembly.csv",
-            "cycle,time,kinetic_energy,out_of_balance,max_contact_force,contacts,sliding_contacts,time_step_ratio,gravity_work,wall_work,strain_energy,contact_damping,friction,global_damping,local_damping,energy_residual") {}
+            "cycle,time,kinetic_energy,out_of_balance,max_contact_force,contacts,sliding_contacts,time_step_ratio,gravity_work,wall_work,strain_energy,contact_damping,friction,global_damping,local_damping,energy_residual",
+            resume) {}
 
 template <int Dim>
 AssemblyMeasures AssemblyCsv::write(const BasicWorld<Dim>& world) {
@@ -71,8 +72,8 @@ AssemblyMeasures AssemblyCsv::write(const BasicWorld<Dim>& world) {
   return measures;
 }
 
-ProbesCsv::ProbesCsv(const std::filesystem::path& directory, std::vector<Probe> probes)
-    : file_(directory, "probes.csv", "cycle,time,probe,normal_force,shear_force,touching"),
+ProbesCsv::ProbesCsv(const std::filesystem::path& directory, std::vector<Probe> probes, const TableSizes* resume)
+    : file_(directory, "probes.csv", "cycle,time,probe,normal_force,shear_force,touching", resume),
       probes_(std::move(probes)) {}
 
 template <int Dim>

@@ -37,6 +37,15 @@ inline const Interval kPoissonRatio{-1.0, 0.5, true, true};
 // A coefficient of restitution: 1 is elastic; 0 has no logarithm (Miyata eq. 17).
 inline const Interval kRestitution{0.0, 1.0, true, false};
 
+// The numbers a case may hold. Beyond 1e30 products in the force and
+// energy arithmetic (stiffness x overlap, density x radius^3 x speed^2)
+// overflow a double; a magnitude below 1e-30 other than 0 (a subnormal
+// density such as 4.9e-324) makes masses and steps underflow to 0 and
+// divisions by them infinite. No physical quantity in SI or in BALL's
+// unitless numbers comes near either end.
+inline constexpr double kLargestMagnitude = 1e30;
+inline constexpr double kSmallestMagnitude = 1e-30;
+
 // Why a probe's particle id is wrong, for validation and for conversion
 // (which alone knows how many particles a csv_file source holds).
 inline std::string no_particle_with_id(std::uint64_t id, std::uint64_t count) {
@@ -51,9 +60,16 @@ class ProblemList {
   void add(std::string path, std::string message) { list_.push_back({std::move(path), std::move(message)}); }
 
   bool finite(const std::string& path, double value) {
-    if (std::isfinite(value)) return true;
-    add(path, "must be a finite number (got " + format_number(value) + ")");
-    return false;
+    if (!std::isfinite(value)) {
+      add(path, "must be a finite number (got " + format_number(value) + ")");
+      return false;
+    }
+    if (std::abs(value) > kLargestMagnitude) {
+      add(path, "must be at most " + format_number(kLargestMagnitude) + " in magnitude (got " + format_number(value) +
+                    "): numbers this large overflow the force arithmetic");
+      return false;
+    }
+    return true;
   }
 
   bool finite(const std::string& path, const proto::Vector& v) {
@@ -65,16 +81,20 @@ class ProblemList {
 
   bool positive(const std::string& path, double value) {
     if (!finite(path, value)) return false;
-    if (value > 0) return true;
-    add(path, "must be > 0 (got " + format_number(value) + ")");
-    return false;
+    if (!(value > 0)) {
+      add(path, "must be > 0 (got " + format_number(value) + ")");
+      return false;
+    }
+    return not_tiny(path, value);
   }
 
   bool non_negative(const std::string& path, double value) {
     if (!finite(path, value)) return false;
-    if (value >= 0) return true;
-    add(path, "must be >= 0 (got " + format_number(value) + ")");
-    return false;
+    if (!(value >= 0)) {
+      add(path, "must be >= 0 (got " + format_number(value) + ")");
+      return false;
+    }
+    return value == 0 || not_tiny(path, value);
   }
 
   bool within(const std::string& path, double value, const Interval& interval) {
@@ -89,6 +109,13 @@ class ProblemList {
   std::vector<CaseProblem> take() { return std::move(list_); }
 
  private:
+  bool not_tiny(const std::string& path, double value) {
+    if (value >= kSmallestMagnitude) return true;
+    add(path, "must be at least " + format_number(kSmallestMagnitude) + " (got " + format_number(value) +
+                  "): numbers this small underflow masses and time steps to 0");
+    return false;
+  }
+
   std::vector<CaseProblem> list_;
 };
 

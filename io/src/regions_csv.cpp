@@ -96,8 +96,10 @@ std::vector<double> region_values(const analysis::RegionMeasuresT<Dim>& m) {
 }
 
 template <int Dim>
-RegionsCsvT<Dim>::RegionsCsvT(const std::filesystem::path& directory, std::vector<analysis::RegionT<Dim>> regions)
-    : file_(directory, "regions.csv", "cycle,time,region," + region_columns<Dim>()), regions_(std::move(regions)) {
+RegionsCsvT<Dim>::RegionsCsvT(const std::filesystem::path& directory, std::vector<analysis::RegionT<Dim>> regions,
+                              const TableSizes* resume)
+    : file_(directory, "regions.csv", "cycle,time,region," + region_columns<Dim>(), resume),
+      regions_(std::move(regions)) {
   for (const auto& region : regions_) analysis::check_region(region);
 }
 
@@ -115,7 +117,8 @@ std::vector<analysis::RegionMeasuresT<Dim>> RegionsCsvT<Dim>::write(const BasicW
 }
 
 template <int Dim>
-BoxCsvT<Dim>::BoxCsvT(const std::filesystem::path& directory) : file_(directory, "box.csv", box_header<Dim>()) {}
+BoxCsvT<Dim>::BoxCsvT(const std::filesystem::path& directory, const TableSizes* resume)
+    : file_(directory, "box.csv", box_header<Dim>(), resume) {}
 
 template <int Dim>
 void BoxCsvT<Dim>::write(const BasicWorld<Dim>& world) {

@@ -7,6 +7,8 @@
 #include <tuple>
 #include <vector>
 
+#include "snapshot_checks.h"
+
 namespace dem::io {
 
 namespace {
@@ -561,7 +563,7 @@ void check_contacts(Problems& problems, const proto::SnapshotContacts& c, const 
 }
 
 template <int Dim>
-void check(const proto::Snapshot& m, Problems& problems) {
+void check(const proto::Snapshot& m, Problems& problems, const ResourceLimits& limits) {
   if (m.format() != kSnapshotFormat) {
     problems.add("format", "is \"" + m.format() + "\", not \"" + kSnapshotFormat + "\": not a dem snapshot");
     return;  // nothing else can be trusted
@@ -576,6 +578,7 @@ void check(const proto::Snapshot& m, Problems& problems) {
                                   std::to_string(Dim) + "D");
     return;
   }
+  for (const auto& [path, message] : snapshot_value_problems(m, limits)) problems.add(path, message);
   Counts n;
   n.particles = static_cast<std::size_t>(m.particles().radius_size());
   n.walls = static_cast<std::size_t>(m.wall_size());
@@ -808,9 +811,9 @@ proto::Snapshot snapshot_to_proto(const WorldSnapshotT<Dim>& s, const SnapshotIn
 }
 
 template <int Dim>
-WorldSnapshotT<Dim> snapshot_from_proto(const proto::Snapshot& m, SnapshotInfo* info) {
+WorldSnapshotT<Dim> snapshot_from_proto(const proto::Snapshot& m, SnapshotInfo* info, const ResourceLimits& limits) {
   Problems problems;
-  check<Dim>(m, problems);
+  check<Dim>(m, problems, limits);
   if (!problems.empty()) throw SnapshotError(problems.text());
 
   WorldSnapshotT<Dim> s;
@@ -843,7 +846,7 @@ WorldSnapshotT<Dim> snapshot_from_proto(const proto::Snapshot& m, SnapshotInfo* 
 
 template proto::Snapshot snapshot_to_proto<2>(const WorldSnapshotT<2>&, const SnapshotInfo&);
 template proto::Snapshot snapshot_to_proto<3>(const WorldSnapshotT<3>&, const SnapshotInfo&);
-template WorldSnapshotT<2> snapshot_from_proto<2>(const proto::Snapshot&, SnapshotInfo*);
-template WorldSnapshotT<3> snapshot_from_proto<3>(const proto::Snapshot&, SnapshotInfo*);
+template WorldSnapshotT<2> snapshot_from_proto<2>(const proto::Snapshot&, SnapshotInfo*, const ResourceLimits&);
+template WorldSnapshotT<3> snapshot_from_proto<3>(const proto::Snapshot&, SnapshotInfo*, const ResourceLimits&);
 
 }  // namespace dem::io

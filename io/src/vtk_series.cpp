@@ -1,6 +1,7 @@
 #include "dem/io/vtk_series.h"
 
 #include <cstdio>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -23,8 +24,12 @@ std::string step_file(const char* kind, std::uint64_t cycle) {
 }  // namespace
 
 VtkSeries::VtkSeries(std::filesystem::path directory, std::uint64_t interval)
-    : directory_(std::move(directory)), interval_(interval) {
+    : VtkSeries(std::move(directory), interval, {}) {}
+
+VtkSeries::VtkSeries(std::filesystem::path directory, std::uint64_t interval, std::vector<Step> steps)
+    : directory_(std::move(directory)), interval_(interval), steps_(std::move(steps)) {
   if (interval_ == 0) throw std::invalid_argument("a ParaView series needs an interval of at least one cycle");
+  if (!steps_.empty()) last_cycle_ = steps_.back().cycle;
   remove_previous_steps();
   write_collections();
 }
@@ -69,11 +74,15 @@ void VtkSeries::write_collections() const {
 // A previous run's steps in the same directory would be listed by no
 // collection, and mixed up with this run's by anyone reading vtk/.
 void VtkSeries::remove_previous_steps() const {
+  std::set<std::string> kept;
+  for (const Step& step : steps_) {
+    for (const char* kind : kKinds) kept.insert(std::filesystem::path(step_file(kind, step.cycle)).filename().string());
+  }
   std::error_code error;
   for (const auto& entry : std::filesystem::directory_iterator(directory_ / "vtk", error)) {
     const std::string name = entry.path().filename().string();
     for (const char* kind : kKinds) {
-      if (name.starts_with(std::string(kind) + "_") && name.ends_with(".vtp")) {
+      if (name.starts_with(std::string(kind) + "_") && name.ends_with(".vtp") && !kept.contains(name)) {
         std::filesystem::remove(entry.path(), error);
       }
     }

@@ -54,6 +54,7 @@ std::string_view to_string(ReplyStatus status) {
     case ReplyStatus::kRefused: return "refused";
     case ReplyStatus::kFailed: return "failed";
     case ReplyStatus::kShuttingDown: return "shutting_down";
+    case ReplyStatus::kBusy: return "busy";
   }
   return "unknown";
 }

@@ -9,11 +9,17 @@ using namespace std::chrono_literals;
 // A client's command write waits at most a second for room; it never needs to.
 dds::Qos command_qos() { return dds::Qos().reliable(1s).keep_all().volatile_durability(); }
 
-// Replies are written by the server's engine thread. A large reply (contacts,
-// a snapshot) is flow-controlled by acknowledgements, so a write may wait
-// for a client to catch up - but never longer than this before the reply is
-// given up (a client that stops reading mid-transfer).
-dds::Qos reply_qos() { return dds::Qos().reliable(5s).keep_all().volatile_durability(); }
+// Replies are written by the server's threads, and every client reads the
+// topic. Keeping all of them until every reader acknowledged would let one
+// client that stops reading (a process stopped in a debugger, SIGSTOP)
+// block every write - every other client's replies and the engine with
+// them. So the writer keeps the last 256: a stalled reader loses what falls
+// out (it was not reading), the others read on, a burst of 256 replies
+// included (a repair of a lost packet comes from this history). The
+// ReplySender paces a reply of many chunks (reply_sender.cpp); a stalled
+// reader holds at most 256 samples of the server's memory.
+constexpr int kReplyHistory = 256;
+dds::Qos reply_qos() { return dds::Qos().reliable(5s).keep_last(kReplyHistory).volatile_durability(); }
 
 // The current state, replayed to late joiners: one sample, durable.
 dds::Qos status_qos() { return dds::Qos().reliable(0ns).keep_last(1).transient_local(); }

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <vector>
 
+#include "command_sample.h"
 #include "dem/command.h"
 #include "dem/telemetry.h"
 
@@ -37,6 +38,7 @@ static_assert(dem_interfaces_msg_Command_Constants_RUN_PROGRAMME ==
               static_cast<int>(protocol::CommandKind::kRunProgramme));
 static_assert(dem_interfaces_msg_Reply_Constants_SHUTTING_DOWN ==
               static_cast<int>(protocol::ReplyStatus::kShuttingDown));
+static_assert(dem_interfaces_msg_Reply_Constants_BUSY == static_cast<int>(protocol::ReplyStatus::kBusy));
 
 // --- C++ -> C, borrowing -------------------------------------------------
 
@@ -254,6 +256,7 @@ CCommand to_c(const protocol::Command& m) {
   c.programme.first_stage = m.programme.first_stage;
   c.programme.stage_count = m.programme.stage_count;
   c.stamp = to_c(m.stamp);
+  c.force = m.force;
   return c;
 }
 
@@ -443,6 +446,7 @@ protocol::Command from_c(const CCommand& c) {
   m.parameter = {copy(c.parameter.name), copy(c.parameter.material), c.parameter.value, from_c(c.parameter.vector)};
   m.programme = {c.programme.first_stage, c.programme.stage_count};
   m.stamp = from_c(c.stamp);
+  m.force = c.force;
   return m;
 }
 
@@ -568,3 +572,12 @@ protocol::Reply TypeSupport<protocol::Reply>::from_sample(const void* sample) {
 }
 
 }  // namespace dem::dds
+
+namespace dem::protocol {
+
+void with_command_sample(const Command& command, const std::function<void(const void*)>& use) {
+  const dds::CCommand sample = dds::to_c(command);
+  use(&sample);
+}
+
+}  // namespace dem::protocol

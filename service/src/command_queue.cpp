@@ -2,12 +2,15 @@
 
 namespace dem::service {
 
-void CommandQueue::push(ReceivedCommand command) {
+bool CommandQueue::push(ReceivedCommand command) {
   {
     std::lock_guard lock(mutex_);
+    if (commands_.size() >= capacity_) return false;
+    ++pending_[command.command.client_id];
     commands_.push_back(std::move(command));
   }
   ready_.notify_one();
+  return true;
 }
 
 std::optional<ReceivedCommand> CommandQueue::pop(std::chrono::milliseconds timeout) {
@@ -24,6 +27,28 @@ std::vector<ReceivedCommand> CommandQueue::take_all() {
   std::vector<ReceivedCommand> all(std::make_move_iterator(commands_.begin()), std::make_move_iterator(commands_.end()));
   commands_.clear();
   return all;
+}
+
+void CommandQueue::put_back(std::vector<ReceivedCommand> commands) {
+  {
+    std::lock_guard lock(mutex_);
+    commands_.insert(commands_.begin(), std::make_move_iterator(commands.begin()),
+                     std::make_move_iterator(commands.end()));
+  }
+  ready_.notify_one();
+}
+
+void CommandQueue::done(const std::string& client) {
+  std::lock_guard lock(mutex_);
+  const auto found = pending_.find(client);
+  if (found == pending_.end()) return;
+  if (--found->second == 0) pending_.erase(found);
+}
+
+std::size_t CommandQueue::pending(const std::string& client) const {
+  std::lock_guard lock(mutex_);
+  const auto found = pending_.find(client);
+  return found == pending_.end() ? 0 : found->second;
 }
 
 void CommandQueue::request_shutdown() {

@@ -35,11 +35,13 @@ std::optional<std::string> refusal(ServerState state, CommandKind kind) {
           return "not while a command is running: stop it first";
       }
     case ServerState::kError:
+      // The world is back at the last good state: it may be read and saved.
       if (kind == CommandKind::kLoadCase || kind == CommandKind::kLoadSnapshot ||
-          kind == CommandKind::kQueryContacts) {
+          kind == CommandKind::kQueryContacts || kind == CommandKind::kSaveSnapshot) {
         return std::nullopt;
       }
-      return "the server is in error after a failed run: load a case or a snapshot";
+      return "the server is in error after a failed run (its world is back at the last good state, which "
+             "save_snapshot saves): load a case or a snapshot";
     case ServerState::kShutdown:
       return "the server is shutting down";
   }

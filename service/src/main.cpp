@@ -6,19 +6,25 @@
 // Exit codes: 0 after a shutdown command, SIGINT or SIGTERM, or a one-shot
 // programme that ran to its end; 1 when DDS or the output fails, or the
 // one-shot run failed; 2 bad arguments; 3 the initial case is invalid;
-// 4 a one-shot programme stopped before its end.
+// 4 a one-shot programme stopped before its end; 5 another server of the
+// same name is on the domain.
 #include <signal.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <thread>
 
+#include "dem/io/resource_limits.h"
 #include "dem/version.h"
 #include "dem/protocol/topics.h"
+#include "dem/service/background_load.h"
 #include "dem/service/command_error.h"
+#include "dem/service/name_claim.h"
 #include "dem/service/server.h"
 
 namespace {
@@ -27,6 +33,7 @@ constexpr int kFailure = 1;
 constexpr int kBadArguments = 2;
 constexpr int kBadCase = 3;
 constexpr int kStopped = 4;
+constexpr int kNameInUse = 5;
 
 int exit_code(dem::service::ProgrammeOutcome outcome) {
   switch (outcome) {
@@ -126,6 +133,66 @@ int main(int argc, char** argv) {
                      "programmes it runs; 0 = none (default: each case's output.vtk_interval)")
           ->check(CLI::NonNegativeNumber)
           ->envname("DEM_VTK_INTERVAL");
+  app.add_option("--read-dir", options.read_directories,
+                 "a directory load_case may read cases (and cases their particle files) from; repeat for more "
+                 "(default: the current directory; the --case file's directory is always allowed)")
+      ->envname("DEM_READ_DIRS")
+      ->delimiter(':');
+  double name_wait = 12.0;
+  app.add_option("--name-wait", name_wait,
+                 "seconds to wait for another server of this name to leave before refusing to start (one that "
+                 "died keeps its name until its DDS lease, 10 s, runs out)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber)
+      ->envname("DEM_NAME_WAIT");
+  int load_seconds = 120;
+  app.add_option("--load-seconds", load_seconds,
+                 "a case or snapshot still preparing after this many seconds is abandoned with an error")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber)
+      ->envname("DEM_LOAD_SECONDS");
+  app.add_option("--checkpoint-cycles", options.checkpoints.cycles,
+                 "write a checkpoint to <out>/<case>/checkpoints every N cycles (0: none)")
+      ->envname("DEM_CHECKPOINT_CYCLES");
+  app.add_option("--checkpoint-seconds", options.checkpoints.seconds,
+                 "write a checkpoint every S seconds of wall time (0: none)")
+      ->check(CLI::NonNegativeNumber)
+      ->envname("DEM_CHECKPOINT_SECONDS");
+  app.add_option("--checkpoint-keep", options.checkpoints.keep, "checkpoints kept (the newest)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber)
+      ->envname("DEM_CHECKPOINT_KEEP");
+  app.add_flag("--resume", options.resume,
+               "continue the --case from its newest checkpoint in <out>/<case>/checkpoints, appending to its tables "
+               "(with --run-and-exit: from where its programme stood)")
+      ->needs(case_option)
+      ->envname("DEM_RESUME");
+  app.add_option("--queue-capacity", options.queue_capacity,
+                 "commands waiting for the engine; beyond them a command is answered busy")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber)
+      ->envname("DEM_QUEUE_CAPACITY");
+  app.add_option("--max-particles", options.max_particles,
+                 "particles one case or snapshot may hold (0: as many as the memory budget holds)")
+      ->capture_default_str()
+      ->envname("DEM_MAX_PARTICLES");
+  app.add_option("--memory-budget", options.memory_budget_bytes,
+                 "bytes one world may need, at 2.5 kB a particle (0: half the machine's memory)")
+      ->capture_default_str()
+      ->envname("DEM_MEMORY_BUDGET");
+  app.add_option("--max-cycles", options.limits.max_cycles, "cycles one command may run")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber)
+      ->envname("DEM_MAX_CYCLES");
+  app.add_option("--max-payload-bytes", options.limits.max_payload_bytes,
+                 "bytes of case text, case or snapshot one command may carry")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber)
+      ->envname("DEM_MAX_PAYLOAD_BYTES");
+  app.add_option("--max-query-contacts", options.limits.max_query_contacts, "contacts one query may return")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber)
+      ->envname("DEM_MAX_QUERY_CONTACTS");
   app.add_flag("--run-and-exit", options.run_programme,
                "one-shot: run the case's loading programme (its stages), publishing telemetry and answering "
                "commands meanwhile; write the tables and <out>/<case>/final.snapshot (after a failure "
@@ -143,9 +210,17 @@ int main(int argc, char** argv) {
     return kBadArguments;
   }
   if (!initial_case.empty()) options.initial_case = initial_case;
-  if (threads >= 0) options.threads = threads;
+  if (threads >= 0) {
+    if (const auto problem = dem::io::thread_count_problem(threads, dem::io::machine_limits())) {
+      std::cerr << "error: --threads " << *problem << '\n';
+      return kBadArguments;
+    }
+    options.threads = threads;
+  }
   options.record_csv = !no_csv;
   if (vtk_option->count() > 0) options.vtk_interval = vtk_interval;
+  options.load_time_limit = std::chrono::seconds(load_seconds);
+  options.name_wait = std::chrono::milliseconds(static_cast<std::int64_t>(name_wait * 1000));
 
   auto logger = spdlog::stderr_color_mt("dem_server");
   logger->set_pattern("[%Y-%m-%d %H:%M:%S.%e] [" + options.name + "] [%^%l%$] %v");
@@ -153,19 +228,29 @@ int main(int argc, char** argv) {
   spdlog::set_level(spdlog::level::from_str(log_level));
 
   SignalWatcher signals;
+  int code = 0;
   try {
     dem::service::Server server(options);
     signals.start([&server] { server.request_shutdown(); });
     server.start();
     server.wait();
     signals.stop();
-    if (const auto outcome = server.programme_outcome()) return exit_code(*outcome);
+    if (const auto outcome = server.programme_outcome()) code = exit_code(*outcome);
   } catch (const dem::service::CommandError& error) {
     spdlog::error("the initial case cannot be loaded:\n{}", error.what());
-    return kBadCase;
+    code = kBadCase;
+  } catch (const dem::service::NameInUse& error) {
+    spdlog::error("{}", error.what());
+    code = kNameInUse;
   } catch (const std::exception& error) {
     spdlog::error("{}", error.what());
-    return kFailure;
+    code = kFailure;
   }
-  return 0;
+  // An abandoned load still running (background_load.h) holds copies
+  // only, but static destructors at exit would race it.
+  if (dem::service::BackgroundLoad::running() > 0) {
+    std::fflush(nullptr);
+    std::_Exit(code);
+  }
+  return code;
 }

@@ -2,6 +2,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "dem/io/file_access.h"
+
 namespace dem::service {
 
 namespace {
@@ -14,6 +16,11 @@ std::string directory_name(const std::string& case_name) {
 }
 
 }  // namespace
+
+std::filesystem::path OutputRecorder::case_directory_of(const std::filesystem::path& output,
+                                                       const std::string& case_name) {
+  return output / directory_name(case_name);
+}
 
 OutputRecorder::OutputRecorder(std::filesystem::path output_directory, bool enabled,
                                std::optional<std::uint64_t> vtk_interval)
@@ -29,25 +36,95 @@ std::unique_ptr<OutputRecorder::Compression<Dim>>& OutputRecorder::compression()
 }
 
 template <int Dim>
+void OutputRecorder::make_compression(const BasicWorld<Dim>& world) {
+  const io::TableSizes* tables = resume_ ? &resume_->tables : nullptr;
+  compression<Dim>().reset(new Compression<Dim>{
+      io::CompressionAnalysisT<Dim>(*compression_settings_),
+      io::CompressionCsvT<Dim>(directory_, world.wall(compression_settings_->loading_plate).name,
+                               world.wall(compression_settings_->bottom_plate).name, tables)});
+  if (resume_ && !resume_->analysis.empty()) compression<Dim>()->analysis.restore(resume_->analysis);
+}
+
+template <int Dim>
 void OutputRecorder::start(const std::string& case_name, const BasicWorld<Dim>& world,
                            std::optional<io::CompressionSettings> compression, std::uint64_t vtk_interval,
-                           const std::vector<io::MeasurementRegion>& regions) {
+                           const io::ResumePoint* resume, const std::vector<io::MeasurementRegion>& regions) {
   close();
-  directory_ = output_directory_ / directory_name(case_name);
+  directory_ = case_directory_of(output_directory_, case_name);
   compression_settings_ = std::move(compression);
   regions_ = regions;
   vtk_interval_ = vtk_override_.value_or(vtk_interval);
+  if (resume) resume_ = *resume;
+  directory_problem_.reset();
+  try {
+    io::own_directory(output_directory_, directory_.filename());
+  } catch (const io::FileAccessError& error) {
+    directory_problem_ = error.what();
+    if (enabled_) fail(error);
+    return;
+  }
   if (!enabled_) return;
   try {
+    const io::TableSizes* tables = resume ? &resume->tables : nullptr;
     if constexpr (Dim == 2) {
-      walls2_ = std::make_unique<io::WallsCsvT<2>>(directory_);
+      walls2_ = std::make_unique<io::WallsCsvT<2>>(directory_, tables);
     } else {
-      walls3_ = std::make_unique<io::WallsCsvT<3>>(directory_);
+      walls3_ = std::make_unique<io::WallsCsvT<3>>(directory_, tables);
     }
-    assembly_ = std::make_unique<io::AssemblyCsv>(directory_);
-    record(world);
+    assembly_ = std::make_unique<io::AssemblyCsv>(directory_, tables);
+    if (resume) {
+      // The checkpoint's row is in the tables already; the analyses (if
+      // they had begun) and stages.csv carry on.
+      last_cycle_ = resume->cycle;
+      if (compression_settings_ && resume->tables.contains("compression.csv")) make_compression(world);
+      record_regions(world, false);
+      if (resume->tables.contains("stages.csv")) {
+        stages_ = std::make_unique<io::CsvFile>(directory_, "stages.csv",
+                                                "stage,name,cycles_run,condition_met,cycle,time", tables);
+      }
+    } else {
+      record(world);
+    }
   } catch (const std::exception& error) {
     fail(error);
+  }
+}
+
+std::filesystem::path OutputRecorder::own_file(std::string_view name) const {
+  if (directory_problem_) throw io::FileAccessError(*directory_problem_);
+  return directory_ / name;
+}
+
+void OutputRecorder::fill(io::ResumePoint& point) {
+  point.tables.clear();
+  point.analysis.clear();
+  std::vector<io::CsvFile*> tables;
+  if (walls2_) tables.push_back(&walls2_->file());
+  if (walls3_) tables.push_back(&walls3_->file());
+  if (assembly_) tables.push_back(&assembly_->file());
+  if (stages_) tables.push_back(stages_.get());
+  if (regions2_) tables.push_back(&regions2_->file());
+  if (regions3_) tables.push_back(&regions3_->file());
+  if (box2_) tables.push_back(&box2_->file());
+  if (box3_) tables.push_back(&box3_->file());
+  const auto add_compression = [&](auto& c) {
+    if (!c) return;
+    tables.push_back(&c->csv.samples_file());
+    tables.push_back(&c->csv.contacts_file());
+    point.analysis = c->analysis.state();
+  };
+  add_compression(compression2_);
+  add_compression(compression3_);
+  // A resumed run's series not made again yet still has the checkpoint's steps.
+  point.vtk_steps.clear();
+  if (vtk_) {
+    point.vtk_steps = vtk_->step_list();
+  } else if (resume_) {
+    point.vtk_steps = resume_->vtk_steps;
+  }
+  for (io::CsvFile* table : tables) {
+    table->flush();
+    point.tables[table->path().filename().string()] = table->bytes();
   }
 }
 
@@ -57,16 +134,15 @@ void OutputRecorder::record(const BasicWorld<Dim>& world, std::optional<std::siz
   try {
     if (stage && compression_settings_) {
       std::unique_ptr<Compression<Dim>>& c = compression<Dim>();
-      if (!c) {
-        c.reset(new Compression<Dim>{io::CompressionAnalysisT<Dim>(*compression_settings_),
-                                     io::CompressionCsvT<Dim>(directory_,
-                                                              world.wall(compression_settings_->loading_plate).name,
-                                                              world.wall(compression_settings_->bottom_plate).name)});
-      }
+      if (!c) make_compression(world);
       io::record_compression(c->analysis, c->csv, world, static_cast<int>(*stage));
     }
     if (stage && vtk_interval_ > 0) {
-      if (!vtk_) vtk_ = std::make_unique<io::VtkSeries>(directory_, vtk_interval_);
+      if (!vtk_) {
+        // A resumed run keeps the steps before its checkpoint, as it keeps the tables' rows.
+        vtk_ = resume_ ? std::make_unique<io::VtkSeries>(directory_, vtk_interval_, resume_->vtk_steps)
+                       : std::make_unique<io::VtkSeries>(directory_, vtk_interval_);
+      }
       vtk_->record(world);
     }
   } catch (const std::exception& error) {
@@ -82,14 +158,14 @@ void OutputRecorder::record(const BasicWorld<Dim>& world, std::optional<std::siz
       walls3_->write(world);
     }
     assembly_->write(world);
-    record_regions(world);
+    record_regions(world, true);
   } catch (const std::exception& error) {
     fail(error);
   }
 }
 
 template <int Dim>
-void OutputRecorder::record_regions(const BasicWorld<Dim>& world) {
+void OutputRecorder::record_regions(const BasicWorld<Dim>& world, bool write) {
   auto& regions = [&]() -> std::unique_ptr<io::RegionsCsvT<Dim>>& {
     if constexpr (Dim == 2) {
       return regions2_;
@@ -104,18 +180,21 @@ void OutputRecorder::record_regions(const BasicWorld<Dim>& world) {
       return box3_;
     }
   }();
-  if (!regions_.empty()) {
-    if (!regions) {
-      std::vector<analysis::RegionT<Dim>> defined;
-      for (const io::MeasurementRegion& r : regions_) defined.push_back(io::region_for<Dim>(r));
-      regions = std::make_unique<io::RegionsCsvT<Dim>>(directory_, std::move(defined));
-    }
-    regions->write(world);
+  const io::TableSizes* tables = resume_ ? &resume_->tables : nullptr;
+  // Without a row to write (a resume), only the tables the checkpoint
+  // names open - appended to by the rows that follow; otherwise each opens
+  // at its first row.
+  const auto listed = [&](std::string_view name) { return tables != nullptr && tables->contains(name); };
+  if (!regions_.empty() && !regions && (write || listed("regions.csv"))) {
+    std::vector<analysis::RegionT<Dim>> defined;
+    for (const io::MeasurementRegion& r : regions_) defined.push_back(io::region_for<Dim>(r));
+    regions = std::make_unique<io::RegionsCsvT<Dim>>(directory_, std::move(defined), tables);
   }
-  if (world.box_control()) {
-    if (!box) box = std::make_unique<io::BoxCsvT<Dim>>(directory_);
-    box->write(world);
-  }
+  const bool boxed = static_cast<bool>(world.box_control());
+  if (!box && (write ? boxed : listed("box.csv"))) box = std::make_unique<io::BoxCsvT<Dim>>(directory_, tables);
+  if (!write) return;
+  if (regions) regions->write(world);
+  if (box && boxed) box->write(world);
 }
 
 void OutputRecorder::record_stage(std::size_t stage, const std::string& name, const StageResult& result,
@@ -175,12 +254,15 @@ void OutputRecorder::close() {
   box3_.reset();
   vtk_.reset();
   last_cycle_.reset();
+  resume_.reset();
 }
 
 template void OutputRecorder::start(const std::string&, const BasicWorld<2>&, std::optional<io::CompressionSettings>,
-                                    std::uint64_t, const std::vector<io::MeasurementRegion>&);
+                                    std::uint64_t, const io::ResumePoint*,
+                                    const std::vector<io::MeasurementRegion>&);
 template void OutputRecorder::start(const std::string&, const BasicWorld<3>&, std::optional<io::CompressionSettings>,
-                                    std::uint64_t, const std::vector<io::MeasurementRegion>&);
+                                    std::uint64_t, const io::ResumePoint*,
+                                    const std::vector<io::MeasurementRegion>&);
 template void OutputRecorder::record(const BasicWorld<2>&, std::optional<std::size_t>);
 template void OutputRecorder::record(const BasicWorld<3>&, std::optional<std::size_t>);
 template void OutputRecorder::finish(const BasicWorld<2>&);

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "dem/protocol/topics.h"
+#include "dem/service/name_claim.h"
 
 namespace dem::service {
 
@@ -13,6 +14,9 @@ ServerOptions checked(ServerOptions options) {
   if (!protocol::valid_server_name(options.name)) {
     throw std::invalid_argument("server name \"" + options.name +
                                 "\" is not a ROS 2 name token (a letter, then letters, digits or underscores)");
+  }
+  if (options.resume && !options.initial_case) {
+    throw std::invalid_argument("--resume needs the case whose checkpoints to resume (--case FILE)");
   }
   if (options.run_programme && !options.initial_case) {
     throw std::invalid_argument("a one-shot run (--run-and-exit) needs a case to run (--case FILE)");
@@ -23,12 +27,17 @@ ServerOptions checked(ServerOptions options) {
 
 Server::Server(ServerOptions options)
     : options_(checked(std::move(options))),
+      queue_(options_.queue_capacity),
       participant_(options_.domain, options_.dds_config),
+      name_claimed_((claim_name(participant_, options_.name, options_.domain, options_.name_discovery,
+                                options_.name_wait),
+                     true)),
       telemetry_(participant_, options_.name),
       replies_(participant_, options_.name, options_.contact_chunk, options_.snapshot_chunk),
-      runner_(options_, queue_, replies_, telemetry_),
-      receiver_(participant_, options_.name, queue_) {
-  if (options_.initial_case) runner_.load_initial_case(*options_.initial_case);
+      runner_(options_, queue_, replies_, telemetry_, cache_),
+      receiver_(participant_, options_.name, queue_, replies_, cache_) {
+  runner_.set_writer_check([this](std::uint64_t writer) { return receiver_.writer_alive(writer); });
+  if (options_.initial_case) runner_.load_initial_case(*options_.initial_case, options_.resume);
 }
 
 Server::~Server() {

@@ -7,7 +7,9 @@
 #include "dem/error.h"
 #include "dem/io/case_conversion.h"
 #include "dem/io/case_loader.h"
+#include "dem/io/checkpoint_store.h"
 #include "dem/io/snapshot_file.h"
+#include "dem/io/world_checks.h"
 #include "dem/service/command_error.h"
 #include "format_value.h"
 
@@ -32,9 +34,12 @@ std::string join(const std::vector<std::string>& lines) {
 
 // A case's world built, with what the reply says about it.
 template <int Dim>
-Simulation::Prepared prepared_case(const io::CaseDefinitionT<Dim>& definition, const std::string& source) {
+Simulation::Prepared prepared_case(const io::CaseDefinitionT<Dim>& definition, const io::CaseSource& case_source,
+                                   const std::string& source) {
   Simulation::Prepared prepared;
-  prepared.world = make_session(BasicWorld<Dim>(definition.world), definition.stages, definition.output.compression,
+  BasicWorld<Dim> built(definition.world);
+  io::check_built_world(built, definition.stages, case_source);
+  prepared.world = make_session(std::move(built), definition.stages, definition.output.compression,
                                 definition.output.vtk_interval, definition.output.regions);
   prepared.output_interval = definition.output.interval;
   prepared.case_name = definition.name.empty() ? std::string("unnamed") : definition.name;
@@ -49,6 +54,15 @@ Simulation::Prepared prepared_case(const io::CaseDefinitionT<Dim>& definition, c
 
 }  // namespace
 
+Simulation::Simulation(std::optional<int> threads, io::ResourceLimits limits, std::uint64_t max_query_contacts,
+                       std::shared_ptr<const io::FileAccess> files)
+    : threads_(threads),
+      limits_(limits),
+      files_(files ? std::move(files)
+                   : std::make_shared<const io::FileAccess>(
+                         std::vector<std::filesystem::path>{std::filesystem::current_path()})),
+      max_query_contacts_(max_query_contacts) {}
+
 std::string Simulation::install(Prepared prepared) {
   if (threads_) prepared.world->set_threads(*threads_);
   world_ = std::move(prepared.world);
@@ -56,10 +70,11 @@ std::string Simulation::install(Prepared prepared) {
   description_ = std::move(prepared.description);
   contact_models_ = std::move(prepared.contact_models);
   output_interval_ = prepared.output_interval;
+  digest_ = prepared.digest;
   return prepared.message;
 }
 
-Simulation::Prepared Simulation::prepare_case(const protocol::LoadCaseArgs& args) const {
+Simulation::Prepared Simulation::Preparer::prepare_case(const protocol::LoadCaseArgs& args) const {
   const int sources = static_cast<int>(!args.path.empty()) + static_cast<int>(!args.text.empty()) +
                       static_cast<int>(!args.binary.empty());
   require(sources == 1, "load_case takes exactly one of a path, a text or a binary case (got " +
@@ -69,11 +84,14 @@ Simulation::Prepared Simulation::prepare_case(const protocol::LoadCaseArgs& args
     io::LoadedCase loaded;
     if (!args.path.empty()) {
       source = args.path;
-      std::error_code error;
-      if (!std::filesystem::is_regular_file(args.path, error)) {
-        throw CommandError(ReplyStatus::kNotFound, "no case file " + args.path + " on the server");
+      std::filesystem::path path;
+      try {
+        path = files_->readable(args.path);
+      } catch (const io::FileAccessError& error) {
+        throw CommandError(ReplyStatus::kNotFound, "no case file on the server: " + std::string(error.what()));
       }
-      loaded = io::load_case_file(args.path);
+      loaded = io::load_case_file(path);
+      loaded.source.name = args.path;
     } else if (!args.text.empty()) {
       source = args.source_name.empty() ? "<text>" : args.source_name;
       loaded = io::parse_case_text(args.text, source);
@@ -81,8 +99,12 @@ Simulation::Prepared Simulation::prepare_case(const protocol::LoadCaseArgs& args
       source = args.source_name.empty() ? "<binary>" : args.source_name;
       loaded = io::parse_case_binary(args.binary, source);
     }
-    const io::AnyCaseDefinition definition = io::convert_any_case(loaded.message, loaded.source);
-    return std::visit([&](const auto& d) { return prepared_case(d, source); }, definition);
+    loaded.source.files = files_;
+    const io::AnyCaseDefinition definition = io::convert_any_case(loaded.message, loaded.source, limits_);
+    Prepared prepared = std::visit([&](const auto& d) { return prepared_case(d, loaded.source, source); }, definition);
+    prepared.digest = !args.path.empty() ? io::file_digest(files_->readable(args.path))
+                                         : io::bytes_digest(!args.text.empty() ? args.text : args.binary);
+    return prepared;
   } catch (const io::CaseError& error) {
     throw CommandError(ReplyStatus::kInvalidCase, join(error.problems()));
   } catch (const DefinitionError& error) {
@@ -90,7 +112,7 @@ Simulation::Prepared Simulation::prepare_case(const protocol::LoadCaseArgs& args
   }
 }
 
-Simulation::Prepared Simulation::prepare_snapshot(std::string_view bytes, const std::string& source) const {
+Simulation::Prepared Simulation::Preparer::prepare_snapshot(std::string_view bytes, const std::string& source) const {
   try {
     // The dimension the snapshot declares picks the engine.
     const proto::Snapshot message = io::parse_snapshot_message(bytes, source);
@@ -99,7 +121,7 @@ Simulation::Prepared Simulation::prepare_snapshot(std::string_view bytes, const 
       io::SnapshotInfo info;
       WorldSnapshotT<kDim> snapshot;
       try {
-        snapshot = io::snapshot_from_proto<kDim>(message, &info);
+        snapshot = io::snapshot_from_proto<kDim>(message, &info, limits_);
       } catch (const io::SnapshotError& error) {
         throw io::SnapshotError(source + ": " + error.what());
       }
@@ -251,7 +273,14 @@ std::vector<protocol::ContactEntry> Simulation::query_contacts(const protocol::C
     require(std::isfinite(*args.min_normal_force), "the force threshold must be finite");
     filter.min_normal_force = args.min_normal_force;
   }
-  return world().query_contacts(filter);
+  std::vector<protocol::ContactEntry> contacts = world().query_contacts(filter);
+  if (contacts.size() > max_query_contacts_) {
+    throw CommandError(ReplyStatus::kBadRequest,
+                       "the query matches " + std::to_string(contacts.size()) + " contacts, more than the " +
+                           std::to_string(max_query_contacts_) +
+                           " one query may return (--max-query-contacts): narrow it by wall, box or minimum force");
+  }
+  return contacts;
 }
 
 }  // namespace dem::service

@@ -5,9 +5,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dem/io/file_access.h"
 #include "dem/io/snapshot_file.h"
 #include "dem/service/command_error.h"
+#include "dem/service/command_limits.h"
 #include "dem/service/lifecycle.h"
+#include "format_value.h"
 
 namespace dem::service {
 
@@ -22,6 +25,13 @@ namespace {
 constexpr std::chrono::milliseconds kIdleWait{200};
 constexpr std::uint64_t kMaxChunk = 1'000'000;
 
+std::shared_ptr<const io::FileAccess> read_access(const ServerOptions& options) {
+  std::vector<std::filesystem::path> roots = options.read_directories;
+  if (roots.empty()) roots.push_back(std::filesystem::current_path());
+  if (options.initial_case) roots.push_back(std::filesystem::absolute(*options.initial_case).parent_path());
+  return std::make_shared<const io::FileAccess>(roots);
+}
+
 void require(bool condition, const std::string& message) {
   if (!condition) throw CommandError(ReplyStatus::kBadRequest, message);
 }
@@ -29,16 +39,19 @@ void require(bool condition, const std::string& message) {
 }  // namespace
 
 SimulationRunner::SimulationRunner(const ServerOptions& options, CommandQueue& queue, ReplySender& replies,
-                                   TelemetryPublisher& telemetry)
+                                   TelemetryPublisher& telemetry, StateCache& cache)
     : options_(options),
       queue_(queue),
       replies_(replies),
       telemetry_(telemetry),
-      simulation_(options.threads),
+      cache_(cache),
+      simulation_(options.threads, io::limits_with_budget(options.max_particles, options.memory_budget_bytes),
+                  options.limits.max_query_contacts, read_access(options)),
       recorder_(options.output_directory, options.record_csv, options.vtk_interval),
-      schedule_(options.telemetry_cycles, options.telemetry_seconds) {}
+      schedule_(options.telemetry_cycles, options.telemetry_seconds),
+      checkpoints_(options.checkpoints) {}
 
-void SimulationRunner::load_initial_case(const std::filesystem::path& path) {
+void SimulationRunner::load_initial_case(const std::filesystem::path& path, bool resume) {
   protocol::LoadCaseArgs args;
   args.path = path.string();
   Simulation::Prepared prepared = simulation_.prepare_case(args);
@@ -46,7 +59,29 @@ void SimulationRunner::load_initial_case(const std::filesystem::path& path) {
     throw CommandError(ReplyStatus::kInvalidCase,
                        path.string() + ": the case defines no stages, so --run-and-exit has nothing to run");
   }
-  const std::string message = install(std::move(prepared));
+  if (resume) {
+    // Where the checkpoints of this case are: the case directory install() will use.
+    const io::CheckpointStore store(OutputRecorder::case_directory_of(options_.output_directory, prepared.case_name) /
+                                        "checkpoints",
+                                    options_.checkpoints.keep);
+    std::optional<io::CheckpointStore::Latest> latest = store.latest();
+    if (!latest) {
+      throw CommandError(ReplyStatus::kNotFound, "--resume: no whole checkpoint in " + store.directory().string() +
+                                                     " (start without --resume to begin afresh)");
+    }
+    if (latest->point.case_digest != prepared.digest) {
+      throw CommandError(ReplyStatus::kInvalidCase, "--resume: " + latest->path.string() +
+                                                        " belongs to another case (or this one changed since)");
+    }
+    try {
+      prepared.world->restore_bytes(latest->snapshot_bytes, latest->path.string());
+    } catch (const std::exception& error) {
+      throw CommandError(ReplyStatus::kInvalidSnapshot, error.what());
+    }
+    resumed_ = std::move(latest->point);
+    spdlog::info("resuming from the checkpoint at cycle {} ({})", resumed_->cycle, latest->path.string());
+  }
+  const std::string message = install(std::move(prepared), resumed_ ? &*resumed_ : nullptr);
   spdlog::info("{}", message);
 }
 
@@ -54,6 +89,7 @@ void SimulationRunner::load_initial_case(const std::filesystem::path& path) {
 
 void SimulationRunner::run() {
   publish_status();
+  refresh_cache(true);
   while (!queue_.shutdown_requested()) {
     if (active_) {
       // Between two chunks: everything that arrived meanwhile, in order.
@@ -64,18 +100,37 @@ void SimulationRunner::run() {
           execute(std::move(received));
         }
       }
+      if (!active_ && !awaiting_refresh_.empty()) refresh_cache(true);  // the run ended among them
       if (active_ && !queue_.shutdown_requested()) run_chunk();
-      if (active_ && std::chrono::steady_clock::now() - last_status_ >= options_.progress_interval) publish_status();
+      if (active_ && std::chrono::steady_clock::now() - last_status_ >= options_.progress_interval) {
+        note_owner_left();
+        publish_status();
+      }
     } else if (std::optional<ReceivedCommand> received = queue_.pop(kIdleWait)) {
       execute(std::move(*received));
+      for (ReceivedCommand& next : queue_.take_all()) {
+        if (queue_.shutdown_requested()) {
+          unanswered_.push_back(std::move(next));
+        } else {
+          execute(std::move(next));
+        }
+      }
+      refresh_cache();
+    } else if (!awaiting_refresh_.empty()) {
+      refresh_cache(true);  // a quiet moment: catch up
     }
   }
 }
 
 void SimulationRunner::finish() {
+  // An abandoned load is left to end on its own (it holds only copies):
+  // shutting down does not wait for it.
+  if (abandoned_) abandoned_->detach();
+  abandoned_.reset();
   for (ReceivedCommand& received : queue_.take_all()) unanswered_.push_back(std::move(received));
   if (active_) end_run(ReplyStatus::kCancelled, "the server is shutting down");
   for (const ReceivedCommand& received : unanswered_) {
+    queue_.done(received.command.client_id);
     protocol::Reply reply;
     reply.status = ReplyStatus::kShuttingDown;
     reply.message = "not done: the server is shutting down";
@@ -95,20 +150,57 @@ void SimulationRunner::finish() {
   using namespace std::chrono_literals;
   replies_.flush(2s);
   telemetry_.flush_status(2s);
-  spdlog::info("{}; {} commands served, {} telemetry samples dropped", message_, commands_served_,
+  spdlog::info("{}; {} commands served, {} telemetry samples dropped", message_, cache_.served(),
                telemetry_.dropped());
 }
 
 // --- commands ------------------------------------------------------------
 
 void SimulationRunner::execute(ReceivedCommand received) {
+  // However it ends - a reply now, or a run started - the client's command
+  // stops counting as pending (CommandQueue::pending) once the StateCache
+  // shows its effect: until then that client's get_state waits its turn.
+  // Only commands that change what get_state reads (a load, a run) wait
+  // for it; the others show only from the next cycle on.
+  const auto changes_readout = [](std::uint8_t kind) {
+    switch (protocol::command_kind(kind).value_or(CommandKind::kGetState)) {
+      case CommandKind::kLoadCase:
+      case CommandKind::kLoadSnapshot:
+      case CommandKind::kCycle:
+      case CommandKind::kRunUntil:
+      case CommandKind::kRunProgramme:
+        return true;
+      default:
+        return false;
+    }
+  };
+  struct Done {
+    SimulationRunner& runner;
+    std::string client;
+    bool await_refresh;
+    ~Done() {
+      if (await_refresh) {
+        runner.awaiting_refresh_.push_back(client);
+      } else {
+        runner.queue_.done(client);
+      }
+    }
+  } done{*this, received.command.client_id, changes_readout(received.command.kind)};
   protocol::Reply reply;
   const protocol::Command& command = received.command;
+  const ServerState state_before = state_;
+  const std::string message_before = message_;
   try {
     const std::optional<CommandKind> kind = protocol::command_kind(command.kind);
     if (!kind) throw CommandError(ReplyStatus::kBadRequest, "unknown command kind " + std::to_string(command.kind));
     if (const auto reason = refusal(state_, *kind)) {
       throw CommandError(ReplyStatus::kRefused, std::string(protocol::to_string(*kind)) + " refused: " + *reason);
+    }
+    check_command(command, options_.limits);
+    if (*kind == CommandKind::kStop || *kind == CommandKind::kShutdown) {
+      if (const auto reason = ownership_refusal(received)) {
+        throw CommandError(ReplyStatus::kRefused, std::string(protocol::to_string(*kind)) + " refused: " + *reason);
+      }
     }
     switch (*kind) {
       case CommandKind::kCycle:
@@ -119,7 +211,10 @@ void SimulationRunner::execute(ReceivedCommand received) {
         run_programme(received);
         return;  // replied to when the stages end
       case CommandKind::kLoadCase:
-        reply.message = install(simulation_.prepare_case(command.load_case));
+        reply.message = install(prepare_in_background(
+            "load_case", [preparer = simulation_.preparer(), args = command.load_case](std::function<bool()> stopped) {
+              return preparer.stopped_by(std::move(stopped)).prepare_case(args);
+            }));
         reply.path = command.load_case.path;
         break;
       case CommandKind::kSetWallVelocity:
@@ -164,17 +259,24 @@ void SimulationRunner::execute(ReceivedCommand received) {
     reply.message = error.what();
   }
   send(received, std::move(reply));
-  publish_status();
+  // The status topic says what changed: a new state, a new case, a run.
+  // Steering and queries change none of it; the next status carries
+  // their count with it, so a flood of them does not flood the topic.
+  if (state_ != state_before || message_ != message_before) publish_status();
 }
 
-std::string SimulationRunner::install(Simulation::Prepared prepared) {
+std::string SimulationRunner::install(Simulation::Prepared prepared, const io::ResumePoint* resume) {
   if (simulation_.loaded()) simulation_.world().finish_tables(recorder_);
   std::string message = simulation_.install(std::move(prepared));
+  ++world_generation_;
   state_ = ServerState::kLoaded;
   message_ = message;
   const WorldSession& world = simulation_.world();
   schedule_.published(world.cycle_count(), world.time());
-  world.start_tables(recorder_, simulation_.case_name());
+  world.start_tables(recorder_, simulation_.case_name(), resume);
+  if (const auto& problem = recorder_.directory_problem()) spdlog::error("no tables or checkpoints: {}", *problem);
+  checkpoints_.begin(recorder_.directory_problem() ? std::filesystem::path() : recorder_.case_directory(),
+                     simulation_.case_digest(), world.cycle_count());
   publish_telemetry();
   return message;
 }
@@ -197,17 +299,27 @@ protocol::Reply SimulationRunner::get_state() const {
   protocol::Reply reply;
   if (simulation_.loaded()) {
     const WorldSession& world = simulation_.world();
-    reply.plates.server = options_.name;
-    reply.plates.cycle = world.cycle_count();
-    reply.plates.time = world.time();
+    // The readout changes only with the world (a cycle, a load): wall
+    // motions, servos and parameters show from the next cycle on. So it is
+    // worked out once per state, however many ask.
+    if (!readout_ || readout_->generation != world_generation_ || readout_->cycle != world.cycle_count()) {
+      Readout readout{world_generation_, world.cycle_count(), {}, {}, 0};
+      readout.plates.server = options_.name;
+      readout.plates.cycle = world.cycle_count();
+      readout.plates.time = world.time();
+      readout.plates.walls = world.read_walls();
+      readout.stats = world.read_contact_stats();
+      readout.stats.server = options_.name;
+      readout.stats.cycle = world.cycle_count();
+      readout.stats.time = world.time();
+      readout.hash = world.state_hash();
+      readout_ = std::move(readout);
+    }
+    reply.plates = readout_->plates;
+    reply.stats = readout_->stats;
     reply.plates.stamp = protocol::now_stamp();
-    reply.plates.walls = world.read_walls();
-    reply.stats = world.read_contact_stats();
-    reply.stats.server = options_.name;
-    reply.stats.cycle = world.cycle_count();
-    reply.stats.time = world.time();
     reply.stats.stamp = reply.plates.stamp;
-    reply.state_hash = world.state_hash();
+    reply.state_hash = readout_->hash;
   }
   reply.message = std::string(protocol::to_string(state_)) +
                   (simulation_.loaded() ? ", case " + simulation_.case_name() + " at cycle " +
@@ -217,14 +329,15 @@ protocol::Reply SimulationRunner::get_state() const {
 }
 
 // Snapshot files live in the output directory: a relative path without
-// "..", so a client can neither read nor overwrite anything else.
+// "..", whose directories do not lead out by a link (io::inside_directory),
+// so a client can neither read nor overwrite anything else.
 std::filesystem::path SimulationRunner::snapshot_path(const std::string& requested) const {
-  const std::filesystem::path path(requested);
-  require(!path.empty() && path.is_relative(),
-          "snapshot paths are relative to the server's output directory (" + options_.output_directory.string() +
-              "), got \"" + requested + "\"");
-  for (const auto& part : path) require(part != "..", "snapshot paths may not leave the output directory");
-  return std::filesystem::absolute(options_.output_directory / path);
+  try {
+    return std::filesystem::absolute(io::inside_directory(options_.output_directory, requested));
+  } catch (const io::FileAccessError& error) {
+    throw CommandError(ReplyStatus::kBadRequest, "snapshot paths are files in the server's output directory (" +
+                                                     options_.output_directory.string() + "): " + error.what());
+  }
 }
 
 protocol::Reply SimulationRunner::save_snapshot(const protocol::SnapshotArgs& args) {
@@ -255,7 +368,10 @@ protocol::Reply SimulationRunner::save_snapshot(const protocol::SnapshotArgs& ar
 std::string SimulationRunner::load_snapshot(const protocol::SnapshotArgs& args) {
   if (args.transfer) {
     require(!args.data.empty(), "load_snapshot with transfer needs the snapshot's bytes");
-    return install(simulation_.prepare_snapshot(args.data, "<transferred snapshot>"));
+    return install(prepare_in_background("load_snapshot", [preparer = simulation_.preparer(), data = args.data](
+                                                              std::function<bool()>) {
+      return preparer.prepare_snapshot(data, "<transferred snapshot>");
+    }));
   }
   require(!args.path.empty(), "load_snapshot needs a path, or transfer with the bytes");
   const std::filesystem::path path = snapshot_path(args.path);
@@ -269,7 +385,96 @@ std::string SimulationRunner::load_snapshot(const protocol::SnapshotArgs& args) 
   } catch (const io::SnapshotError& read_error) {
     throw CommandError(ReplyStatus::kFailed, read_error.what());
   }
-  return install(simulation_.prepare_snapshot(bytes, path.string()));
+  return install(prepare_in_background(
+      "load_snapshot",
+      [preparer = simulation_.preparer(), bytes = std::move(bytes), source = path.string()](std::function<bool()>) {
+        return preparer.prepare_snapshot(bytes, source);
+      }));
+}
+
+Simulation::Prepared SimulationRunner::prepare_in_background(const std::string& what,
+                                                            BackgroundLoad::Prepare prepare) {
+  if (abandoned_ && abandoned_->finished()) abandoned_.reset();
+  if (abandoned_) {
+    throw CommandError(ReplyStatus::kBusy, "busy: an abandoned load is still ending; send " + what + " again later");
+  }
+  auto load = std::make_unique<BackgroundLoad>(std::move(prepare));
+  const auto deadline = std::chrono::steady_clock::now() + options_.load_time_limit;
+  std::vector<ReceivedCommand> later;
+  std::optional<std::string> abandon;
+  while (!load->wait_for(options_.chunk_duration)) {
+    // stop and shutdown now; the rest in order once the load is done.
+    for (ReceivedCommand& received : queue_.take_all()) {
+      const auto kind = protocol::command_kind(received.command.kind);
+      if (kind == CommandKind::kStop) {
+        abandon = what + " stopped by request before it was ready";
+        protocol::Reply reply;
+        reply.message = "stopped the " + what + " in preparation";
+        send(received, std::move(reply));
+        queue_.done(received.command.client_id);
+      } else if (kind == CommandKind::kShutdown) {
+        abandon = what + " given up: the server is shutting down";
+        later.push_back(std::move(received));  // answered by the loop, which shuts down
+      } else {
+        later.push_back(std::move(received));
+      }
+    }
+    if (!abandon && std::chrono::steady_clock::now() >= deadline) {
+      abandon = what + ": preparing it took more than " +
+                format_value(std::chrono::duration<double>(options_.load_time_limit).count()) +
+                " s (--load-seconds); is there a random packing that nearly cannot fit?";
+    }
+    if (abandon) break;
+  }
+  queue_.put_back(std::move(later));
+  if (abandon) {
+    spdlog::warn("{}", *abandon);
+    load->stop();
+    abandoned_ = std::move(load);
+    throw CommandError(abandon->find("stopped") != std::string::npos ? ReplyStatus::kCancelled : ReplyStatus::kFailed,
+                       *abandon);
+  }
+  return load->take();
+}
+
+// --- who may stop a run ----------------------------------------------------
+
+const ReceivedCommand* SimulationRunner::run_owner() const {
+  if (active_) return &active_->command();
+  return programme_command_;  // a one-shot programme has none: the server's own
+}
+
+// A run belongs to the client (the DDS writer) that started it. Another
+// may stop it, or shut the server down under it, only with force, or once
+// the owner has left the domain (then the run is orphaned: it goes on, and
+// anyone may end it). Who may send commands at all is DDS Security's to
+// say (its permissions), not this.
+std::optional<std::string> SimulationRunner::ownership_refusal(const ReceivedCommand& received) const {
+  const ReceivedCommand* owner = run_owner();
+  if (owner == nullptr || owner->writer == 0 || received.writer == owner->writer) return std::nullopt;
+  const std::string run = std::string(protocol::to_string(*protocol::command_kind(owner->command.kind))) +
+                          " (request " + std::to_string(owner->command.request_id) + ") of client " +
+                          owner->command.client_id;
+  if (received.command.force) {
+    spdlog::warn("{} ends the {} with force", received.command.client_id, run);
+    return std::nullopt;
+  }
+  if (!writer_alive_(owner->writer)) {
+    spdlog::info("{} ends the {}, whose client has left", received.command.client_id, run);
+    return std::nullopt;
+  }
+  return "the running " + run + " belongs to that client, which is still here; send it with force to end it anyway "
+         "(demctl stop --force)";
+}
+
+// Once per run, between chunks: said in the log and the status.
+void SimulationRunner::note_owner_left() {
+  const ReceivedCommand* owner = run_owner();
+  if (owner_left_logged_ || owner == nullptr || owner->writer == 0 || writer_alive_(owner->writer)) return;
+  owner_left_logged_ = true;
+  spdlog::warn("client {}, which started the running {}, has left the domain: the run goes on, and any client may "
+               "stop it", owner->command.client_id, protocol::to_string(*protocol::command_kind(owner->command.kind)));
+  message_ += "; its client has left";
 }
 
 // --- running commands ------------------------------------------------------
@@ -299,6 +504,8 @@ void SimulationRunner::start_run(ReceivedCommand& received, CommandKind kind) {
   spdlog::info("request {} from {}: {} accepted, up to {} cycles from cycle {}", command.request_id, command.client_id,
                protocol::to_string(kind), goal.max_cycles, simulation_.world().cycle_count());
   active_.emplace(std::move(received), goal, simulation_.world());
+  active_health_.emplace(simulation_.world());
+  owner_left_logged_ = false;
   state_ = ServerState::kRunning;
   message_ = std::string(protocol::to_string(kind)) + " running";
   publish_status();
@@ -325,13 +532,47 @@ void SimulationRunner::run_chunk() {
     const double rate = static_cast<double>(cycles) / seconds;
     cycles_per_second_ = cycles_per_second_ > 0.0 ? 0.5 * (cycles_per_second_ + rate) : rate;
   }
-  if (!std::isfinite(world.kinetic_energy())) {
-    fail_run("the simulation blew up at cycle " + std::to_string(world.cycle_count()) +
-             ": the kinetic energy is not finite (is the time step too large?)");
+  // A blow-up's motion (not finite, a particle flung out) is looked for
+  // after every chunk: it is what a blow-up reaches between two paced
+  // assessments.
+  const bool finished = active_->advance(cycles, world);
+  const bool suspect = world.motion_suspect();
+  if (const auto problem = active_health_->check(world, finished || suspect)) {
+    fail_unhealthy(*problem);
     return;
   }
   if (schedule_.due(world.cycle_count(), world.time())) publish_telemetry();
-  if (active_->advance(cycles, world)) complete_run();
+  if (!finished && checkpoints_.due(world.cycle_count())) {
+    // Only a state found healthy is kept.
+    if (const auto problem = active_health_->check(world, true)) {
+      fail_unhealthy(*problem);
+      return;
+    }
+    write_checkpoint(0, 0);
+  }
+  if (finished) {
+    complete_run();
+  } else {
+    refresh_cache();
+  }
+}
+
+// The last good state is written beside the case's tables and the world
+// goes back to it; the server stays in error until a case or snapshot is loaded.
+void SimulationRunner::fail_unhealthy(const StepHealth& problem) {
+  WorldSession& world = simulation_.world();
+  const StateCheckpoint& good = active_health_->last_good();
+  const std::filesystem::path path = recorder_.case_directory() / "last_good.snapshot";
+  std::string kept = "; the world is back at the last good state, cycle " + std::to_string(good.cycle());
+  try {
+    io::write_snapshot_bytes(recorder_.own_file("last_good.snapshot"), good.bytes(simulation_.snapshot_info()));
+    kept += ", which is in " + path.string();
+  } catch (const std::exception& error) {
+    kept += " (it could not be written: " + std::string(error.what()) + ")";
+  }
+  world.restore(good);
+  ++world_generation_;
+  fail_run("the run is unhealthy " + problem.message + kept);
 }
 
 void SimulationRunner::complete_run() {
@@ -351,8 +592,10 @@ void SimulationRunner::end_run(ReplyStatus status, const std::string& message) {
   reply.condition_met = active_->condition_met();
   const ReceivedCommand received = active_->command();
   active_.reset();
+  active_health_.reset();
   if (state_ == ServerState::kRunning) state_ = ServerState::kLoaded;
   message_ = message;
+  refresh_cache(true);  // before the reply: who reads it sees the run ended
   send(received, std::move(reply));
   publish_status();
 }
@@ -366,8 +609,8 @@ void SimulationRunner::fail_run(const std::string& message) {
 // --- publishing ----------------------------------------------------------
 
 void SimulationRunner::send(const ReceivedCommand& received, protocol::Reply reply) {
-  ++commands_served_;
   reply.state = status();
+  reply.state.commands_served = cache_.count_reply();
   replies_.send(received, std::move(reply));
 }
 
@@ -376,7 +619,7 @@ protocol::Status SimulationRunner::status() const {
   s.server = options_.name;
   s.state = state_;
   s.message = message_;
-  s.commands_served = commands_served_;
+  s.commands_served = cache_.served();
   s.telemetry_dropped = telemetry_.dropped();
   s.stamp = protocol::now_stamp();
   if (simulation_.loaded()) {
@@ -402,8 +645,8 @@ protocol::Status SimulationRunner::status() const {
     s.command = "programme";
     if (programme_command_) {
       s.command = "run_programme";
-      s.command_client = programme_command_->client_id;
-      s.command_request_id = programme_command_->request_id;
+      s.command_client = programme_command_->command.client_id;
+      s.command_request_id = programme_command_->command.request_id;
     }
     s.command_cycles_done = programme_->done(simulation_.world());
     s.command_cycles_total = programme_->total();
@@ -417,6 +660,33 @@ protocol::Status SimulationRunner::status() const {
 void SimulationRunner::publish_status() {
   telemetry_.publish(status());
   last_status_ = std::chrono::steady_clock::now();
+}
+
+void SimulationRunner::write_checkpoint(std::size_t stage, std::uint64_t stage_cycles) {
+  try {
+    checkpoints_.write(simulation_.world(), simulation_.snapshot_info(), recorder_, stage, stage_cycles);
+  } catch (const std::exception& error) {
+    // A checkpoint is insurance: its failure is said, the run goes on.
+    spdlog::error("the checkpoint at cycle {} could not be written: {}", simulation_.world().cycle_count(),
+                  error.what());
+  }
+}
+
+// After a chunk of cycles or a batch of commands, at a pace that costs at
+// most about 1/40 of the engine thread's time (get_state reads every
+// contact and hashes the state: on a large world that is not free), or
+// `always` when a run ends. Meanwhile the cache is a little older (the
+// replies say which cycle), and a client whose command it does not show
+// yet has its get_state answered by the engine thread.
+void SimulationRunner::refresh_cache(bool always) {
+  if (!always && !refresh_pacing_.due()) return;
+  refresh_pacing_.run([this] {
+    protocol::Reply reply = get_state();
+    reply.state = status();
+    cache_.publish(std::move(reply));
+  });
+  for (const std::string& client : awaiting_refresh_) queue_.done(client);
+  awaiting_refresh_.clear();
 }
 
 void SimulationRunner::publish_telemetry() {

@@ -18,7 +18,13 @@ using protocol::ReplyStatus;
 using protocol::ServerState;
 
 void SimulationRunner::run_programme() {
-  run_stages(0, simulation_.world().stage_count());  // the initial case: Server requires one
+  const std::size_t stages = simulation_.world().stage_count();  // the initial case: Server requires one
+  if (resumed_) {
+    const io::ResumePoint point = *std::exchange(resumed_, std::nullopt);
+    if (point.stage < stages) run_stages(point.stage, stages - point.stage, point.stage_cycles);
+    return;
+  }
+  run_stages(0, stages);
 }
 
 void SimulationRunner::run_programme(const ReceivedCommand& received) {
@@ -39,7 +45,8 @@ void SimulationRunner::run_programme(const ReceivedCommand& received) {
                                                      std::to_string(stages) + " of " + simulation_.case_name());
   }
   const std::uint64_t start = simulation_.world().cycle_count();
-  programme_command_ = &received.command;
+  programme_command_ = &received;
+  owner_left_logged_ = false;
   run_stages(first, args.stage_count == 0 ? stages - first : args.stage_count);
   programme_command_ = nullptr;
   protocol::Reply reply;
@@ -51,12 +58,13 @@ void SimulationRunner::run_programme(const ReceivedCommand& received) {
     default: reply.status = ReplyStatus::kFailed; break;
   }
   programme_.reset();  // cycle and run_until record the tables at the telemetry interval again
+  refresh_cache(true);  // before the reply: who reads it sees the programme ended
   send(received, std::move(reply));
   publish_status();
 }
 
 // Stages first .. first + count - 1 (from 0), each by the engine's run_stage.
-void SimulationRunner::run_stages(std::size_t first, std::size_t count) {
+void SimulationRunner::run_stages(std::size_t first, std::size_t count, std::uint64_t first_done) {
   WorldSession& world = simulation_.world();
   programme_.emplace(world, simulation_.output_interval(), first, count);
   state_ = ServerState::kRunning;
@@ -69,18 +77,19 @@ void SimulationRunner::run_stages(std::size_t first, std::size_t count) {
       programme_->stop("the server is shutting down");
       break;
     }
-    programme_->start_stage(i, world);
+    const std::uint64_t done = i == first ? first_done : 0;
+    programme_->start_stage(i, world, done);
     message_ = stage_label(i) + " running";
     publish_status();
     StageResult result;
     try {
-      result = world.run_stage(i, [this] { return between_programme_cycles(); });
+      result = world.run_stage(i, [this] { return between_programme_cycles(); }, done);
     } catch (const std::exception& error) {
       programme_->fail("the engine failed at cycle " + std::to_string(world.cycle_count()) + " in " +
                        stage_label(i) + ": " + error.what());
       break;
     }
-    if (programme_->outcome() == ProgrammeOutcome::kFailed || programme_blew_up()) break;
+    if (programme_->outcome() == ProgrammeOutcome::kFailed || programme_unhealthy(true)) break;
     end_stage(i, result);
   }
   if (!programme_->ending()) programme_->complete();
@@ -89,17 +98,22 @@ void SimulationRunner::run_stages(std::size_t first, std::size_t count) {
 
 // After every cycle of a stage: a row of the time series at the case's
 // interval, telemetry on schedule, and every chunk_duration the commands
-// that came in, as run_chunk does between its chunks. The blow-up check
+// that came in, as run_chunk does between its chunks. The health check
 // comes first at both, so nothing is recorded or kept of a broken state.
 bool SimulationRunner::between_programme_cycles() {
   const WorldSession& world = simulation_.world();
   const auto now = std::chrono::steady_clock::now();
   const bool row = programme_->row_due(world.cycle_count());
   const bool poll = now - last_poll_ >= options_.chunk_duration;
-  if ((row || poll) && programme_blew_up()) return false;
+  if ((row || poll) && programme_unhealthy(false)) return false;
   if (row) {
     record_programme_row();
-    programme_->keep_if_good(world);
+    const std::size_t stage = programme_->stage();
+    const std::uint64_t stage_cycles = programme_->stage_cycles(world.cycle_count());
+    if (checkpoints_.due(world.cycle_count()) && world.resumable_at(stage, stage_cycles)) {
+      if (programme_unhealthy(true)) return false;  // only a healthy state is kept
+      write_checkpoint(stage, stage_cycles);
+    }
   }
   if (schedule_.due(world.cycle_count(), world.time())) publish_telemetry();
   if (poll) {
@@ -112,17 +126,23 @@ bool SimulationRunner::between_programme_cycles() {
       }
     }
     if (queue_.shutdown_requested()) programme_->stop("the server is shutting down");
-    if (now - last_status_ >= options_.progress_interval) publish_status();
+    if (now - last_status_ >= options_.progress_interval) {
+      note_owner_left();
+      publish_status();
+    }
+    refresh_cache();
   }
   return !programme_->ending();
 }
 
-bool SimulationRunner::programme_blew_up() {
-  const WorldSession& world = simulation_.world();
-  if (std::isfinite(world.kinetic_energy())) return false;
-  programme_->fail("the simulation blew up at cycle " + std::to_string(world.cycle_count()) + " in " +
-                   stage_label(programme_->stage()) +
-                   ": the kinetic energy is not finite (is the time step too large?)");
+bool SimulationRunner::programme_unhealthy(bool always) {
+  // A blow-up's motion (not finite, a particle flung out) is looked for at
+  // every call: it is what a blow-up reaches between two paced assessments.
+  WorldSession& world = simulation_.world();
+  const bool suspect = world.motion_suspect();
+  const std::optional<StepHealth> problem = programme_->health().check(world, always || suspect);
+  if (!problem) return false;
+  programme_->fail("the run is unhealthy in " + stage_label(programme_->stage()) + " " + problem->message);
   return true;
 }
 
@@ -134,7 +154,6 @@ void SimulationRunner::record_programme_row() {
 void SimulationRunner::end_stage(std::size_t stage, const StageResult& result) {
   const WorldSession& world = simulation_.world();
   record_programme_row();
-  programme_->keep_if_good(world, true);  // the caller found it finite
   recorder_.record_stage(stage, world.stage_name(stage), result, world.cycle_count(), world.time());
   if (recorder_.failed()) programme_->fail("an output file could not be written (see the error above)");
   spdlog::info("{}: {} cycles{}, to cycle {}", stage_label(stage), result.cycles_run,
@@ -146,11 +165,12 @@ void SimulationRunner::end_stage(std::size_t stage, const StageResult& result) {
 void SimulationRunner::end_programme() {
   const WorldSession& world = simulation_.world();
   const bool failed = programme_->outcome() == ProgrammeOutcome::kFailed;
-  const std::filesystem::path path = recorder_.case_directory() / (failed ? "last_good.snapshot" : "final.snapshot");
+  const std::string name = failed ? "last_good.snapshot" : "final.snapshot";
+  const std::filesystem::path path = recorder_.case_directory() / name;
   const std::uint64_t snapshot_cycle = failed ? programme_->last_good().cycle() : world.cycle_count();
   bool written = true;
   try {
-    io::write_snapshot_bytes(path, failed ? programme_->last_good().bytes(simulation_.snapshot_info())
+    io::write_snapshot_bytes(recorder_.own_file(name), failed ? programme_->last_good().bytes(simulation_.snapshot_info())
                                           : simulation_.snapshot_bytes());
   } catch (const std::exception& error) {
     written = false;
@@ -174,8 +194,12 @@ void SimulationRunner::end_programme() {
     case ProgrammeOutcome::kRunning:
       state_ = ServerState::kError;
       message_ = "programme failed: " + programme_->reason();
-      if (failed && written) {
-        message_ += "; the last good state, at cycle " + std::to_string(snapshot_cycle) + ", is in " + path.string();
+      if (failed) {
+        // The world goes back to it: what the server shows and saves from now on is sound.
+        simulation_.world().restore(programme_->last_good());
+        ++world_generation_;
+        message_ += "; the world is back at the last good state, cycle " + std::to_string(snapshot_cycle);
+        if (written) message_ += ", which is in " + path.string();
       }
       spdlog::error("{}", message_);
       break;

@@ -1,6 +1,7 @@
 #include "dem/service/world_session.h"
 
 #include "dem/io/snapshot_file.h"
+#include "dem/io/stop_conditions.h"
 #include "dem/service/command_error.h"
 #include "dem/service/output_recorder.h"
 
@@ -30,6 +31,7 @@ class CheckpointT final : public StateCheckpoint {
   explicit CheckpointT(WorldSnapshotT<Dim> snapshot) : snapshot_(std::move(snapshot)) {}
   std::uint64_t cycle() const override { return snapshot_.cycle; }
   std::string bytes(const io::SnapshotInfo& info) const override { return io::serialize_snapshot(snapshot_, info); }
+  const WorldSnapshotT<Dim>& snapshot() const { return snapshot_; }
 
  private:
   WorldSnapshotT<Dim> snapshot_;
@@ -42,6 +44,7 @@ class WorldSessionT final : public WorldSession {
                 std::optional<io::CompressionSettings> compression, std::uint64_t vtk_interval,
                 std::vector<io::MeasurementRegion> regions)
       : world_(std::move(world)),
+        health_(world_),
         stages_(std::move(stages)),
         compression_(std::move(compression)),
         vtk_interval_(vtk_interval),
@@ -58,6 +61,7 @@ class WorldSessionT final : public WorldSession {
   int wall_count() const override { return world_.wall_count(); }
   std::uint64_t state_hash() const override { return world_.state_hash(); }
   double kinetic_energy() const override { return world_.assembly_measures().kinetic_energy; }
+  bool motion_suspect() const override { return health_.motion_suspect(world_); }
 
   WallId find_wall(std::string_view name) const override { return world_.find_wall(name); }
   std::string wall_name(WallId wall) const override { return world_.wall(wall).name; }
@@ -103,18 +107,54 @@ class WorldSessionT final : public WorldSession {
   std::unique_ptr<StateCheckpoint> checkpoint() const override {
     return std::make_unique<CheckpointT<Dim>>(world_.snapshot());
   }
+  void restore(const StateCheckpoint& checkpoint) override {
+    const int threads = world_.threads();
+    world_ = BasicWorld<Dim>(dynamic_cast<const CheckpointT<Dim>&>(checkpoint).snapshot());
+    world_.set_threads(threads);
+    health_ = HealthMonitorT<Dim>(world_);
+  }
+  StepHealth assess_health() override { return health_.assess(world_); }
 
   std::size_t stage_count() const override { return stages_.size(); }
   const std::string& stage_name(std::size_t stage) const override { return stages_.at(stage).name; }
   std::uint64_t stage_cycles(std::size_t stage) const override { return stages_.at(stage).cycles; }
-  StageResult run_stage(std::size_t stage, const std::function<bool()>& between_cycles) override {
+  StageResult run_stage(std::size_t stage, const std::function<bool()>& between_cycles,
+                        std::uint64_t done) override {
+    StageDefT<Dim> running = stages_.at(stage);
+    if (done > 0) {
+      // Resumed: the start actions are done and in the state.
+      running.trim.reset();
+      running.place_wall.reset();
+      running.wall_motions.clear();
+      running.damping.reset();
+      running.cycles -= std::min(done, running.cycles);
+      running.until.min_cycles = running.until.min_cycles > done ? running.until.min_cycles - done : 0;
+    }
     // An observer interval of one cycle: the caller decides what is due
     // (rows, telemetry, commands); run_stage alone decides the stage's end.
-    return dem::run_stage(world_, stages_.at(stage), 1, [&](const BasicWorld<Dim>&) { return between_cycles(); });
+    StageResult result =
+        dem::run_stage(world_, running, 1, [&](const BasicWorld<Dim>&) { return between_cycles(); });
+    result.cycles_run += done;
+    return result;
+  }
+  bool resumable_at(std::size_t stage, std::uint64_t stage_cycles) const override {
+    const StageDefT<Dim>& s = stages_.at(stage);
+    if (stage_cycles >= s.cycles || stage_cycles % std::max<std::uint64_t>(s.until.check_interval, 1) != 0) {
+      return false;
+    }
+    return !(io::has_stop_condition(s.until) && stage_cycles >= s.until.min_cycles &&
+             io::stop_conditions_hold(world_, s.until));
+  }
+  void restore_bytes(std::string_view snapshot_bytes, const std::string& source) override {
+    const int threads = world_.threads();
+    world_ = BasicWorld<Dim>(io::parse_snapshot<Dim>(snapshot_bytes, source).snapshot);
+    world_.set_threads(threads);
+    health_ = HealthMonitorT<Dim>(world_);
   }
 
-  void start_tables(OutputRecorder& recorder, const std::string& case_name) const override {
-    recorder.start(case_name, world_, compression_, vtk_interval_, region_settings_);
+  void start_tables(OutputRecorder& recorder, const std::string& case_name,
+                    const io::ResumePoint* resume) const override {
+    recorder.start(case_name, world_, compression_, vtk_interval_, resume, region_settings_);
   }
   void record_tables(OutputRecorder& recorder, std::optional<std::size_t> stage) const override {
     recorder.record(world_, stage);
@@ -124,6 +164,7 @@ class WorldSessionT final : public WorldSession {
  private:
   static constexpr std::integral_constant<int, Dim> kDim{};
   BasicWorld<Dim> world_;
+  HealthMonitorT<Dim> health_;
   std::vector<StageDefT<Dim>> stages_;
   std::optional<io::CompressionSettings> compression_;
   std::uint64_t vtk_interval_;

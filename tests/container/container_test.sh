@@ -239,7 +239,7 @@ podman run --rm --name "${project}_failed" --network host "${config[@]}" \
 code=$?
 set -e
 [ "$code" = 1 ] || fail "the failed run exited with $code: $(tail -n 20 "$work/failed.log")"
-grep -q "programme failed: the simulation blew up" "$work/failed.log" || fail "no error in the log"
+grep -q "programme failed: the run is unhealthy" "$work/failed.log" || fail "no error in the log"
 [ -s "$work/failed/blows_up/last_good.snapshot" ] || fail "no last_good.snapshot"
 [ ! -e "$work/failed/blows_up/final.snapshot" ] || fail "a final.snapshot of a failed run"
 grep "programme failed" "$work/failed.log" | tail -n 1

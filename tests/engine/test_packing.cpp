@@ -1,6 +1,8 @@
 // Particle generators: lattices and seeded random non-overlapping packings.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "dem/error.h"
 #include "dem/packing.h"
 
@@ -50,6 +52,29 @@ TEST(Packing, SeedDecidesThePacking) {
   const auto c = generate_random_packing(other);
   EXPECT_EQ(a[100].position, b[100].position);
   EXPECT_NE(a[100].position, c[100].position);
+}
+
+// A caller that gave up on a packing stops it: the same packing when never
+// stopped, an error naming what was placed when stopped.
+TEST(Packing, APackingAskedToStopEnds) {
+  RandomPackingDef def = polydisperse_box();
+  int asked = 0;
+  def.stopped = [&] { return ++asked > 0; };
+  def.sizes = {{1, 100000}};  // 100,000 unit discs in the box: more than 4,096 attempts
+  EXPECT_THROW(
+      {
+        try {
+          generate_random_packing(def);
+        } catch (const DefinitionError& error) {
+          EXPECT_NE(std::string(error.what()).find("random packing: stopped after placing"), std::string::npos);
+          throw;
+        }
+      },
+      DefinitionError);
+  EXPECT_EQ(asked, 1);
+  RandomPackingDef never = polydisperse_box();
+  never.stopped = [] { return false; };
+  EXPECT_EQ(generate_random_packing(never)[100].position, generate_random_packing(polydisperse_box())[100].position);
 }
 
 TEST(Packing, SuperquadricsArePlacedByTheirBoundingCircleAtRandomAngles) {

@@ -41,6 +41,8 @@ assert dem.__version__ == version, dem.__version__
 assert pathlib.Path(dem._client.__file__).is_relative_to(prefix), dem._client.__file__
 assert dem.paths.server_program() == prefix / "bin" / "dem_server", dem.paths.server_program()
 assert (dem.paths.cases_dir() / "ball" / "nine_disc_damped.case.txtpb").is_file(), dem.paths.cases_dir()
+assert dem.paths.sweep_task_script().is_file(), dem.paths.sweep_task_script()
+import dem.sweep
 print(f"ok: import dem {dem.__version__} from {pathlib.Path(dem.__file__).parent}")
 PY
 
@@ -51,7 +53,7 @@ deb="$work/deb/dem_${version}_amd64.deb"
 [ -f "$deb" ] || fail "no $deb"
 dpkg-deb --info "$deb" >"$work/deb_info.txt"
 dpkg-deb --contents "$deb" >"$work/deb_contents.txt"
-for dependency in libddsc0debian libprotobuf python3-numpy python3-protobuf; do
+for dependency in libddsc0debian libprotobuf libssl3 python3-numpy python3-protobuf; do
   grep -q "Depends:.*$dependency" "$work/deb_info.txt" || fail "the package does not depend on $dependency"
 done
 for file in ./usr/bin/dem_server ./usr/bin/demctl ./usr/bin/dem_run ./usr/share/dem/cases/miyata/cs.case.txtpb \

@@ -101,14 +101,31 @@ TEST_F(CaseConversion, RandomPackingIsSeeded) {
 
 TEST_F(CaseConversion, GeneratorFailureNamesTheSource) {
   auto& packing = *case_.mutable_particles(2)->mutable_random_packing();
-  packing.mutable_size(0)->set_count(500);
+  // 35 discs would cover 92% of the box: room enough by area, but random
+  // placement jams near 55%.
+  packing.mutable_size(0)->set_count(35);
   packing.set_max_attempts(50);
   try {
     convert_case(case_, {.name = "case.txtpb"});
-    FAIL() << "500 discs fitted in the box";
+    FAIL() << "35 discs fitted in the box";
   } catch (const CaseError& error) {
     EXPECT_THAT(error.what(), HasSubstr("case.txtpb: particles[2].random_packing: "));
     EXPECT_THAT(error.what(), HasSubstr("after 50 attempts"));
+  }
+}
+
+// Every pair within the tolerance gets a contact-table row: one far
+// beyond a particle's size would make the table quadratic.
+TEST_F(CaseConversion, AContactToleranceBeyondTheLargestDiameterIsRefused) {
+  case_.mutable_numerics()->set_contact_tolerance(0.02);  // the largest diameter: allowed
+  EXPECT_NO_THROW(convert_case(case_));
+  case_.mutable_numerics()->set_contact_tolerance(0.5);
+  try {
+    convert_case(case_, {.name = "case.txtpb"});
+    FAIL() << "a tolerance of 25 diameters passed";
+  } catch (const CaseError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("case.txtpb: numerics.contact_tolerance: must be at most the largest "
+                                        "particle's diameter (0.02 m), got 0.5 m"));
   }
 }
 

@@ -256,7 +256,7 @@ const Mistake kMistakes[] = {
     {"PackingDiscTooBig", [](auto& c) { packing(c).mutable_size(0)->set_radius(0.02); },
      "particles[2].random_packing.size[0].radius: discs of radius 0.02 do not fit in the box (0.1 x "},
     {"PackingTooManyAttempts", [](auto& c) { packing(c).set_max_attempts(3'000'000'000u); },
-     "particles[2].random_packing.max_attempts: must be at most 2147483647"},
+     "particles[2].random_packing.max_attempts: must be at most 10000000 (got 3000000000)"},
     {"SuperquadricWithoutA", [](auto& c) { shape(c).clear_a(); },
      "particles[1].particle.superquadric.a: must be > 0 (got 0)"},
     {"SuperquadricNegativeB", [](auto& c) { shape(c).set_b(-0.005); },
@@ -301,7 +301,7 @@ const Mistake kMistakes[] = {
        lattice(c).set_columns(100'000);
        lattice(c).set_rows(100'000);
      },
-     "particles: define 10000000005 particles, more than particle ids can number"},
+     "particles: define 10000000005 particles, more than the particle budget of"},
 
     // Walls
     {"WallEndsWhereItStarts", [](auto& c) { c.mutable_wall(2)->set_h2(0); },
@@ -375,7 +375,33 @@ const Mistake kMistakes[] = {
     {"NegativeContactTolerance", [](auto& c) { c.mutable_numerics()->set_contact_tolerance(-0.001); },
      "numerics.contact_tolerance: must be >= 0 (got -0.001)"},
     {"TooManyThreads", [](auto& c) { c.mutable_numerics()->set_threads(3'000'000'000u); },
-     "numerics.threads: must be at most 2147483647"},
+     "numerics.threads: asks for 3000000000 threads; this machine gives the process"},
+    {"HundredThousandThreads", [](auto& c) { c.mutable_numerics()->set_threads(100'000); },
+     "numerics.threads: asks for 100000 threads"},
+
+    // Numbers double arithmetic cannot carry through the force laws
+    {"SubnormalDensity", [](auto& c) { c.mutable_material(0)->set_density(4.9e-324); },
+     "material[0].density: must be at least 1e-30 (got 5e-324): numbers this small underflow"},
+    {"HugeStiffness", [](auto& c) { c.mutable_contact_model(0)->mutable_linear()->set_normal_stiffness(1e308); },
+     "contact_model[0].linear.normal_stiffness: must be at most 1e+30 in magnitude (got 1e+308)"},
+    {"HugePosition", [](auto& c) { disc(c).mutable_position()->set_x(-1e31); },
+     "particles[1].particle.position.x: must be at most 1e+30 in magnitude (got -1e+31)"},
+    {"TinyRadius", [](auto& c) { disc(c).set_radius(1e-40); },
+     "particles[1].particle.radius: must be at least 1e-30 (got 1e-40)"},
+
+    // Particle counts and packings the machine cannot hold
+    {"LatticeCountOverflowing64Bits",
+     [](auto& c) {
+       c.set_dimension(3);
+       lattice(c).set_columns(4'000'000'000u);
+       lattice(c).set_rows(4'000'000'000u);
+       lattice(c).set_layers(4'000'000'000u);
+     },
+     "particles: define more than 2^64 particles, more than the particle budget"},
+    {"PackingGridTooLarge", [](auto& c) { packing(c).mutable_max()->set_x(1e12); },
+     "particles[2].random_packing.max: the box is"},
+    {"PackingCannotFit", [](auto& c) { packing(c).mutable_size(0)->set_count(1'000'000); },
+     "particles[2].random_packing.size: the particles' area"},
 
     // Stages
     {"StageUnknownWall", [](auto& c) { c.mutable_stage(1)->mutable_wall(0)->set_wall("lid"); },

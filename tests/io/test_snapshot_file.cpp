@@ -7,6 +7,7 @@
 
 #include "dem/case.pb.h"
 #include "dem/io/snapshot_file.h"
+#include "dem/io/snapshot_frame.h"
 #include "io_test_support.h"
 #include "snapshot_worlds.h"
 
@@ -34,6 +35,10 @@ TEST(SnapshotFile, BytesRoundTripExactly) {
 
 TEST(SnapshotFile, GarbageIsRefusedNamingTheSource) {
   EXPECT_EQ(error_of("definitely not a snapshot", "upload"),
+            "upload: not a dem snapshot (it does not start with the \"DEMSNAP1\" header; snapshots written before "
+            "the header was added must be saved again)");
+  // A sound frame around bytes that are no message.
+  EXPECT_EQ(error_of(frame_snapshot("definitely not a snapshot"), "upload"),
             "upload: not a dem snapshot (the bytes are not a serialized dem.proto.Snapshot)");
   // Random bytes: whether or not protobuf can parse them, they are no snapshot.
   std::mt19937 random(2024);
@@ -46,9 +51,10 @@ TEST(SnapshotFile, GarbageIsRefusedNamingTheSource) {
   // Another message that parses as protobuf: a case.
   proto::Case a_case;
   a_case.set_name("not a snapshot");
-  EXPECT_EQ(error_of(a_case.SerializeAsString(), "case.bin"),
+  EXPECT_EQ(error_of(frame_snapshot(a_case.SerializeAsString()), "case.bin"),
             "case.bin: not a dem snapshot (no \"dem.snapshot\" format tag)");
-  EXPECT_EQ(error_of("", "empty"), "empty: not a dem snapshot (no \"dem.snapshot\" format tag)");
+  EXPECT_EQ(error_of(frame_snapshot(""), "empty"), "empty: not a dem snapshot (no \"dem.snapshot\" format tag)");
+  EXPECT_EQ(error_of("", "empty").rfind("empty: not a dem snapshot (it does not start with", 0), 0u);
 }
 
 TEST(SnapshotFile, TruncatedBytesAreRefused) {

@@ -12,6 +12,7 @@ import pytest
 
 import dem
 from conftest import DOMAINS, case_file
+from dem.errors import DemError
 from dem.snapshot import State
 
 
@@ -58,9 +59,15 @@ def test_the_contact_array_equals_the_cpp_clients_contacts(serve, out):
 
     # A snapshot taken now holds the same contact table: its touching rows,
     # read in Python, are the query's array, value for value.
-    state = State.from_bytes(client.snapshot())
+    data = client.snapshot()
+    state = State.from_bytes(data)
     assert state.contacts.dtype == dem.CONTACT_DTYPE
     np.testing.assert_array_equal(state.contacts, contacts)
+    # The snapshot's frame refuses a changed byte, rather than reading another state.
+    corrupt = bytearray(data)
+    corrupt[len(corrupt) // 2] ^= 0x10
+    with pytest.raises(DemError, match="corrupt snapshot: its SHA-256 checksum"):
+        State.from_bytes(bytes(corrupt))
 
 
 def test_filters_and_an_empty_result(serve):

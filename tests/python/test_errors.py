@@ -32,7 +32,7 @@ def test_error_replies_carry_the_servers_status_and_message(serve):
     with pytest.raises(dem.ServerError) as negative:
         client.cycle(-5)
     assert negative.value.status == "bad_request"
-    assert negative.value.message == "the cycle count must be > 0, got -5"
+    assert negative.value.message == "cycle.cycles: must be > 0, got -5"
 
     with pytest.raises(dem.ServerError) as invalid:
         client.load_case(text='material { name: "x" }\nwall { name: "w" h1: 1 h2: 1 material: "x" }\n',

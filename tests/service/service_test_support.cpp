@@ -48,6 +48,11 @@ service::ServerOptions server_options(const std::string& name, std::uint32_t dom
   options.telemetry_cycles = 10;
   options.threads = 1;
   options.output_directory = output_directory(name + "_" + std::to_string(domain));
+  // Servers of a test have names of their own: a short look for another is enough.
+  options.name_discovery = 100ms;
+  options.name_wait = 1s;
+  // The cases a test names by their path on the server.
+  options.read_directories = {DEM_CASES_DIR, DEM_SERVICE_TEST_DATA};
   return options;
 }
 

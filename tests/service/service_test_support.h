@@ -74,6 +74,28 @@ enum Domain : std::uint32_t {
 };
 static_assert(kLastDomain <= 118, "the shell tests use domains 118 and 119");
 
+// The reliability tests (docs/RELIABILITY.md) take 127 to 141 (the DDS
+// Security test, CMakeLists.txt, 142; the responsiveness benchmark 126).
+enum ReliabilityDomain : std::uint32_t {
+  kHealthCycleBlowUp = 127,
+  kLimitsPerCommand,
+  kLimitsBusy,
+  kLimitsGetStateWhileCycling,
+  kFilesCaseFiles,
+  kFilesSnapshotLinks,
+  kLoadingStop,
+  kLoadingTimeLimit,
+  kCheckpointsOneShot,
+  kCheckpointsInteractive,
+  kOwnershipNames,
+  kOwnershipRuns,
+  kOwnershipVanished,
+  kLimitsStalledClient,
+  kFilesOwnDirectory,
+  kLastReliabilityDomain
+};
+static_assert(kLastReliabilityDomain <= 142, "the reliability tests' domains are 127-141");
+
 std::filesystem::path case_file(const std::string& name);  // cases/ball/<name>.case.txtpb
 std::string read_text(const std::filesystem::path& path);
 

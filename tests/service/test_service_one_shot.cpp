@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <fstream>
 #include <mutex>
 #include <set>
@@ -168,21 +169,29 @@ TEST(OneShot, AFailedRunExitsOneWithTheErrorLoggedAndTheLastGoodState) {
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 1);
 
-  // The case rests for 100 cycles, then blows up in its second stage.
+  // The case rests for 100 cycles, then blows up in its second stage: the
+  // engine's health status names it before the numbers overflow.
   const std::string text = read_text(log);
-  EXPECT_NE(text.find("[error] programme failed: the simulation blew up at cycle 1"), std::string::npos) << text;
-  EXPECT_NE(text.find("in stage 2/2 compress: the kinetic energy is not finite"), std::string::npos) << text;
-  // The last good state is written, and it is good: before the blow-up, at
-  // rest, at the end of the first stage or later.
+  EXPECT_NE(text.find("[error] programme failed: the run is unhealthy in stage 2/2 compress at cycle 1"),
+            std::string::npos)
+      << text;
+  // Energy from nowhere (with the energy budget), a particle flung out, or
+  // the overlaps it causes (assessments are paced by wall time).
+  EXPECT_TRUE(text.find("J of energy appeared without work done") != std::string::npos ||
+              text.find("of its radius in a step") != std::string::npos ||
+              text.find("the particles pass through each other") != std::string::npos)
+      << text;
+  // The last good state is written, and it is good: from the end of the
+  // first stage on, before the failure, finite.
   const auto results = out / "blows_up";
   ASSERT_TRUE(std::filesystem::exists(results / "last_good.snapshot")) << text;
   EXPECT_FALSE(std::filesystem::exists(results / "final.snapshot"));
   const io::LoadedSnapshot state = io::read_snapshot_file<2>(results / "last_good.snapshot");
   EXPECT_GE(state.snapshot.cycle, 100u);
-  EXPECT_LT(state.snapshot.cycle, 120u);
-  EXPECT_EQ(World(state.snapshot).assembly_measures().kinetic_energy, 0.0);
-  EXPECT_NE(text.find("the last good state, at cycle " + std::to_string(state.snapshot.cycle) + ", is in " +
-                      (results / "last_good.snapshot").string()),
+  EXPECT_LT(state.snapshot.cycle, 200u);
+  EXPECT_TRUE(std::isfinite(World(state.snapshot).assembly_measures().kinetic_energy));
+  EXPECT_NE(text.find("the world is back at the last good state, cycle " + std::to_string(state.snapshot.cycle) +
+                      ", which is in " + (results / "last_good.snapshot").string()),
             std::string::npos)
       << text;
   // The stage that ended before the failure is in stages.csv.

@@ -21,7 +21,7 @@ TEST(Regions, TheirMeasuresArePublishedAndWritten) {
   InProcessServer server(options);
   client::Client client(connect_options("biaxial", kRegionTelemetry));
   const auto biaxial = std::filesystem::path(DEM_CASES_DIR) / ".." / "tests" / "io" / "data" / "biaxial.case.txtpb";
-  client.load_case_on_server(biaxial.string());
+  client.load_case_file(biaxial);
 
   std::mutex mutex;
   std::vector<protocol::RegionTelemetry> samples;

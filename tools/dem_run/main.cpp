@@ -1,8 +1,11 @@
 // dem_run CASE --out DIR [--threads N] [--vtk-interval N] [--quiet]: runs a 2D or 3D case.
-// Exit codes: 0 done; 1 any other failure (for example an unwritable output
-// directory); 2 bad command-line arguments; 3 a case that cannot be read,
-// parsed, validated or built (the message names the file and the field);
-// 130 interrupted (Ctrl-C or SIGTERM), after writing the state reached.
+//        [--checkpoint-cycles N] [--checkpoint-seconds S] [--checkpoint-keep K] [--resume]
+// Exit codes: 0 done; 1 a run that became numerically unhealthy (its last
+// good state is in DIR/last_good.snapshot) or any other failure (for
+// example an unwritable output directory); 2 bad command-line arguments;
+// 3 a case that cannot be read, parsed, validated or built (the message
+// names the file and the field); 130 interrupted (Ctrl-C or SIGTERM),
+// after writing the state reached.
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <functional>
@@ -12,6 +15,7 @@
 #include "dem/version.h"
 #include "dem/error.h"
 #include "dem/io/case_error.h"
+#include "dem/io/resource_limits.h"
 #include "run_case.h"
 
 namespace {
@@ -52,13 +56,29 @@ int main(int argc, char** argv) {
                                                  "output.vtk_interval)")
                                        ->check(whole_number("0 = none"));
   app.add_flag("-q,--quiet", options.quiet, "print errors only: no progress line and no summary");
+  app.add_option("--checkpoint-cycles", options.checkpoints.cycles,
+                 "write a checkpoint to OUT/checkpoints every N cycles (0: none)");
+  app.add_option("--checkpoint-seconds", options.checkpoints.seconds,
+                 "write a checkpoint every S seconds of wall time (0: none)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--checkpoint-keep", options.checkpoints.keep, "checkpoints kept (the newest)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  app.add_flag("--resume", options.resume,
+               "continue from the newest checkpoint in OUT/checkpoints, appending to its tables");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
     // --help arrives here too, and is not a mistake.
     return app.exit(error) == 0 ? 0 : kBadArguments;
   }
-  if (threads_option->count() > 0) options.threads = threads;
+  if (threads_option->count() > 0) {
+    if (const auto problem = dem::io::thread_count_problem(threads, dem::io::machine_limits())) {
+      std::cerr << "error: --threads " << *problem << '\n';
+      return kBadArguments;
+    }
+    options.threads = threads;
+  }
   if (vtk_option->count() > 0) options.vtk_interval = vtk_interval;
 
   try {

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <optional>
 
+#include "dem/io/checkpoint_store.h"
+
 namespace dem::run {
 
 struct RunOptions {
@@ -13,6 +15,10 @@ struct RunOptions {
   std::optional<int> threads;  // overrides the case's numerics.threads
   std::optional<std::uint64_t> vtk_interval;  // overrides the case's output.vtk_interval (0: none)
   bool quiet = false;          // no progress line and no summary
+  // Periodic checkpoints in <output_directory>/checkpoints (none by default).
+  io::CheckpointSettings checkpoints;
+  // Continue from the newest checkpoint there into the same tables.
+  bool resume = false;
 };
 
 enum class RunOutcome {
@@ -26,7 +32,9 @@ enum class RunOutcome {
 // final.snapshot (the whole state, for demctl snapshot load or dem_vtk) -
 // also when interrupted. Throws io::CaseError for a bad case,
 // DefinitionError when the engine rejects it, std::runtime_error when an
-// output cannot be written.
+// output cannot be written or there is no checkpoint to resume (or it
+// belongs to another case), RunFailure when the run becomes numerically
+// unhealthy.
 RunOutcome run_case(const RunOptions& options);
 
 }  // namespace dem::run

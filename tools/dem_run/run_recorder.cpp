@@ -7,25 +7,64 @@ namespace dem::run {
 
 template <int Dim>
 RunRecorder<Dim>::RunRecorder(const std::filesystem::path& directory, const io::OutputSettings& output,
-                              const BasicWorld<Dim>& world)
-    : directory_(directory), contacts_file_(output.contacts_file), walls_(directory), assembly_(directory) {
+                              const BasicWorld<Dim>& world, const io::ResumePoint* resume)
+    : directory_(directory),
+      contacts_file_(output.contacts_file),
+      walls_(directory, resume ? &resume->tables : nullptr),
+      assembly_(directory, resume ? &resume->tables : nullptr) {
+  const io::TableSizes* tables = resume ? &resume->tables : nullptr;
   files_ = {walls_.path(), assembly_.path()};
   if (!output.probes.empty()) {
-    probes_.emplace(directory, output.probes);
+    probes_.emplace(directory, output.probes, tables);
     files_.push_back(probes_->path());
   }
   if (!output.regions.empty()) {
     std::vector<analysis::RegionT<Dim>> regions;
     for (const io::MeasurementRegion& r : output.regions) regions.push_back(io::region_for<Dim>(r));
-    regions_.emplace(directory, std::move(regions));
+    regions_.emplace(directory, std::move(regions), tables);
     files_.push_back(regions_->path());
   }
-  if (output.vtk_interval > 0) vtk_.emplace(directory, output.vtk_interval);
+  // box.csv begins with the first row under a box control; a checkpoint
+  // taken after that names it, and the resumed run appends to it.
+  if (tables && tables->contains("box.csv")) {
+    box_.emplace(directory, tables);
+    files_.push_back(box_->path());
+  }
+  if (output.vtk_interval > 0) {
+    // A resumed run keeps the steps before its checkpoint, as it keeps the tables' rows.
+    if (resume) {
+      vtk_.emplace(directory, output.vtk_interval, resume->vtk_steps);
+    } else {
+      vtk_.emplace(directory, output.vtk_interval);
+    }
+  }
   if (output.compression) {
     compression_.emplace(*output.compression);
     compression_csv_.emplace(directory, world.wall(output.compression->loading_plate).name,
-                             world.wall(output.compression->bottom_plate).name);
+                             world.wall(output.compression->bottom_plate).name, tables);
+    if (resume) compression_->restore(resume->analysis);
   }
+  // The checkpoint's row is in the tables already.
+  if (resume) last_cycle_ = resume->cycle;
+}
+
+template <int Dim>
+void RunRecorder<Dim>::fill(io::ResumePoint& point) {
+  std::vector<io::CsvFile*> tables = {&walls_.file(), &assembly_.file()};
+  if (probes_) tables.push_back(&probes_->file());
+  if (regions_) tables.push_back(&regions_->file());
+  if (box_) tables.push_back(&box_->file());
+  if (compression_csv_) {
+    tables.push_back(&compression_csv_->samples_file());
+    tables.push_back(&compression_csv_->contacts_file());
+  }
+  point.tables.clear();
+  for (io::CsvFile* table : tables) {
+    table->flush();
+    point.tables[table->path().filename().string()] = table->bytes();
+  }
+  point.analysis = compression_ ? compression_->state() : std::string();
+  point.vtk_steps = vtk_ ? vtk_->step_list() : std::vector<io::VtkSeries::Step>{};
 }
 
 template <int Dim>

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "dem/io/case_definition.h"
+#include "dem/io/checkpoint_store.h"
 #include "dem/io/compression_analysis.h"
 #include "dem/io/compression_csv.h"
 #include "dem/io/csv_writers.h"
@@ -26,7 +27,13 @@ class RunRecorder {
  public:
   // Creates the directory and the time-series files (probes.csv only when
   // the case has probes; the compression files only when it asks for them).
-  RunRecorder(const std::filesystem::path& directory, const io::OutputSettings& output, const BasicWorld<Dim>& world);
+  // `resume`: a checkpoint's; the tables are cut back to it and appended
+  // to, the analyses carry on from its state.
+  RunRecorder(const std::filesystem::path& directory, const io::OutputSettings& output, const BasicWorld<Dim>& world,
+              const io::ResumePoint* resume = nullptr);
+
+  // The tables' lengths (their rows flushed) and the analyses' state, for a checkpoint.
+  void fill(io::ResumePoint& point);
 
   // Writes a row for the world's current cycle unless one was written
   // already, so a stage's last cycle and the next stage's first are one

@@ -111,6 +111,10 @@ void print_final_state(std::ostream& out, const BasicWorld<Dim>& world,
         << ", friction " << brief(e.friction) << ", global damping " << brief(e.global_damping) << ", local damping "
         << brief(e.local_damping) << "; residual " << brief(e.residual()) << '\n';
   }
+  // The whole state in 16 hex digits: a resumed run must end at the same.
+  char hash[17];
+  std::snprintf(hash, sizeof(hash), "%016llx", static_cast<unsigned long long>(world.state_hash()));
+  out << "state hash " << hash << '\n';
   out << "wrote";
   for (const auto& file : files) out << ' ' << file.string();
   out << '\n';

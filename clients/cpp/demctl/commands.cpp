@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cstdio>
 #include <fstream>
@@ -171,6 +172,14 @@ double number(const std::string& text, const std::string& what) {
 
 }  // namespace
 
+bool in_sweep(const std::string& server, const std::string& sweep) {
+  if (server.size() <= sweep.size() + 1 || server.compare(0, sweep.size(), sweep) != 0 || server[sweep.size()] != '_') {
+    return false;
+  }
+  return std::all_of(server.begin() + static_cast<std::ptrdiff_t>(sweep.size()) + 1, server.end(),
+                     [](unsigned char c) { return std::isdigit(c) != 0; });
+}
+
 dem::client::ConnectOptions connect_options(const Global& global) {
   dem::client::ConnectOptions options;
   options.server = global.server;
@@ -181,10 +190,14 @@ dem::client::ConnectOptions connect_options(const Global& global) {
   return options;
 }
 
-int servers(const Global& global, double discovery) {
-  const auto found = dem::client::list_servers(global.domain, global.dds_config, milliseconds(discovery));
+int servers(const Global& global, double discovery, const std::string& sweep) {
+  auto found = dem::client::list_servers(global.domain, global.dds_config, milliseconds(discovery));
+  if (!sweep.empty()) {
+    std::erase_if(found, [&](const auto& server) { return !in_sweep(server.name, sweep); });
+  }
   if (found.empty()) {
-    std::cout << "no servers on DDS domain " << global.domain << '\n';
+    std::cout << "no servers" << (sweep.empty() ? "" : " of sweep " + sweep) << " on DDS domain " << global.domain
+              << '\n';
     return kOk;
   }
   std::printf("%-20s %-9s %-28s %12s %14s\n", "SERVER", "STATE", "CASE", "CYCLE", "TIME");
@@ -281,8 +294,8 @@ int run_until(const Global& global, const dem::protocol::RunUntilArgs& args, boo
   return follow_run(global, client, client.start_run_until(args), wait, true);
 }
 
-int stop(const Global& global) {
-  print(connect(global).stop());
+int stop(const Global& global, bool force) {
+  print(connect(global).stop(force));
   return kOk;
 }
 
@@ -372,9 +385,9 @@ int set(const Global& global, const std::string& parameter, const std::string& v
   return kOk;
 }
 
-int shutdown(const Global& global, bool wait) {
+int shutdown(const Global& global, bool wait, bool force) {
   Client client = connect(global);
-  print(client.shutdown());
+  print(client.shutdown(force));
   if (!wait) return kOk;
   // The server is gone when its status writer is.
   const auto deadline = std::chrono::steady_clock::now() + std::max(milliseconds(global.timeout), 10000ms);

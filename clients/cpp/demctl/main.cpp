@@ -49,9 +49,11 @@ int main(int argc, char** argv) {
   std::function<int()> action;
 
   double discovery = 1.5;
+  std::string servers_sweep;
   auto* servers = app.add_subcommand("servers", "list the servers alive on the domain");
   servers->add_option("--wait", discovery, "seconds of discovery")->capture_default_str()->check(CLI::PositiveNumber);
-  servers->callback([&] { action = [&] { return demctl::servers(global, discovery); }; });
+  servers->add_option("--sweep", servers_sweep, "only the servers of this sweep (named <sweep>_<task>)");
+  servers->callback([&] { action = [&] { return demctl::servers(global, discovery, servers_sweep); }; });
 
   bool json = false;
   auto* status = app.add_subcommand("status", "the server's state, plates and contacts");
@@ -121,9 +123,10 @@ int main(int argc, char** argv) {
   programme->add_flag("-w,--wait", wait, "wait for the end, with a progress bar (Ctrl-C stops the run)");
   programme->callback([&] { action = [&] { return demctl::run_programme(global, first_stage, stage_count, wait); }; });
 
-  app.add_subcommand("stop", "stop the running cycle, run-until or run-programme")->callback([&] {
-    action = [&] { return demctl::stop(global); };
-  });
+  bool force = false;
+  auto* stop = app.add_subcommand("stop", "stop the running cycle, run-until or run-programme");
+  stop->add_flag("--force", force, "also another client's run (docs/SERVICE.md)");
+  stop->callback([&] { action = [&] { return demctl::stop(global, force); }; });
 
   dem::protocol::ContactQueryArgs query;
   std::vector<double> box;
@@ -175,6 +178,14 @@ int main(int argc, char** argv) {
   auto* samples_option = monitor->add_option("-n,--samples", samples, "stop after N rows (default: Ctrl-C)");
   monitor->add_option("--csv", monitor_options.csv, "record the rows in this file too");
   monitor->add_option("--wall", monitor_options.walls, "plates to show (default: every wall)");
+  auto* sweep_option = monitor->add_option("--sweep", monitor_options.sweep,
+                                           "follow every server of this sweep (named <sweep>_<task>) as they come "
+                                           "and go, each row naming its server");
+  monitor->add_flag("--all", monitor_options.all, "follow every server of the domain, as --sweep does")
+      ->excludes(sweep_option);
+  monitor->add_option("--idle-exit", monitor_options.idle_exit,
+                      "with --sweep or --all: stop once none of those servers has been there for S seconds")
+      ->check(CLI::PositiveNumber);
   monitor->callback([&] {
     if (samples_option->count() > 0) monitor_options.samples = samples;
     action = [&] { return demctl::monitor(global, monitor_options); };
@@ -200,7 +211,8 @@ int main(int argc, char** argv) {
   bool no_wait = false;
   auto* shutdown = app.add_subcommand("shutdown", "stop the server cleanly (waits until it has stopped)");
   shutdown->add_flag("--no-wait", no_wait, "return once the server accepted");
-  shutdown->callback([&] { action = [&] { return demctl::shutdown(global, !no_wait); }; });
+  shutdown->add_flag("--force", force, "also while another client's run is going on");
+  shutdown->callback([&] { action = [&] { return demctl::shutdown(global, !no_wait, force); }; });
 
   try {
     app.parse(argc, argv);

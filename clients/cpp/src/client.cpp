@@ -322,9 +322,17 @@ protocol::Reply Client::run_programme(std::uint32_t first_stage, std::uint32_t s
   return call(std::move(c), timeout);
 }
 
-protocol::Reply Client::stop() { return call(command(CommandKind::kStop)); }
+protocol::Reply Client::stop(bool force) {
+  protocol::Command c = command(CommandKind::kStop);
+  c.force = force;
+  return call(std::move(c));
+}
 protocol::Reply Client::get_state() { return call(command(CommandKind::kGetState)); }
-protocol::Reply Client::shutdown() { return call(command(CommandKind::kShutdown)); }
+protocol::Reply Client::shutdown(bool force) {
+  protocol::Command c = command(CommandKind::kShutdown);
+  c.force = force;
+  return call(std::move(c));
+}
 
 protocol::Reply Client::query_contacts(const protocol::ContactQueryArgs& args) {
   protocol::Command c = command(CommandKind::kQueryContacts);
@@ -369,18 +377,22 @@ protocol::Reply Client::set_gravity(protocol::Vector3 gravity) {
 
 // --- discovery -------------------------------------------------------------
 
+std::set<std::string> server_names(const std::vector<dds::Publication>& publications) {
+  std::set<std::string> names;
+  for (const dds::Publication& publication : publications) {
+    if (publication.type_name != protocol::kStatusTypeName) continue;
+    if (auto name = protocol::server_of_status_topic(publication.topic_name)) names.insert(*name);
+  }
+  return names;
+}
+
 std::vector<ServerInfo> list_servers(std::uint32_t domain, const std::string& dds_config,
                                      std::chrono::milliseconds discovery) {
   dds::Participant participant(domain, dds_config);
   dds::PublicationMonitor publications(participant);
   std::this_thread::sleep_for(discovery);
-  std::set<std::string> names;
-  for (const dds::Publication& publication : publications.alive()) {
-    if (publication.type_name != protocol::kStatusTypeName) continue;
-    if (auto name = protocol::server_of_status_topic(publication.topic_name)) names.insert(*name);
-  }
   std::vector<ServerInfo> servers;
-  for (const std::string& name : names) {
+  for (const std::string& name : server_names(publications.alive())) {
     dds::Topic<protocol::Status> topic(participant, protocol::topic_name(name, TopicKind::kStatus));
     dds::Reader<protocol::Status> reader(participant, topic, protocol::status_qos());
     ServerInfo info{name, std::nullopt};

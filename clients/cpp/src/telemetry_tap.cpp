@@ -2,6 +2,7 @@
 
 #include <set>
 
+#include "dem/client/client.h"
 #include "dem/dds/serialized_reader.h"
 #include "dem/dds/waitset.h"
 #include "dem/protocol/messages.h"
@@ -69,11 +70,7 @@ std::vector<TapTopic> TelemetryTap::topics(const std::string& server) {
 }
 
 void TelemetryTap::refresh() {
-  std::set<std::string> alive;
-  for (const dds::Publication& publication : publications_.alive()) {
-    if (publication.type_name != protocol::kStatusTypeName) continue;
-    if (auto server = protocol::server_of_status_topic(publication.topic_name)) alive.insert(*server);
-  }
+  const std::set<std::string> alive = server_names(publications_.alive());
   for (auto it = servers_.begin(); it != servers_.end();) {
     it = alive.count(it->first) ? std::next(it) : servers_.erase(it);
   }

@@ -2,7 +2,7 @@
 environment every process here uses (docs/DDS.md, "Loopback only").
 
 Environment variables override the build's locations: DEM_SERVER_PROGRAM,
-DEMCTL_PROGRAM, DEM_RUN_PROGRAM, DEM_SOURCE_DIR.
+DEMCTL_PROGRAM, DEM_RUN_PROGRAM, DEM_SOURCE_DIR, DEM_SWEEP_TASK_SCRIPT.
 """
 
 import os
@@ -40,6 +40,13 @@ def source_dir():
 
 def cases_dir():
     return source_dir() / "cases"
+
+
+def sweep_task_script():
+    """scripts/slurm/dem_sweep_task.sh, which runs one task of a sweep (or
+    $DEM_SWEEP_TASK_SCRIPT); installed in <prefix>/share/dem/scripts/slurm."""
+    return pathlib.Path(os.environ.get("DEM_SWEEP_TASK_SCRIPT") or source_dir() / "scripts" / "slurm" /
+                        "dem_sweep_task.sh")
 
 
 def loopback_uri():

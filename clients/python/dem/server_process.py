@@ -17,12 +17,12 @@ import subprocess
 
 from .client import Client
 from .errors import DemError
-from .paths import server_program, use_loopback
+from .paths import cases_dir, server_program, use_loopback
 
 
 class ServerProcess:
     def __init__(self, name, domain, out, *, telemetry_cycles=100, threads=1, log_level="warn", log_file=None,
-                 program=None, extra_arguments=(), stop_timeout=20.0):
+                 program=None, extra_arguments=(), stop_timeout=20.0, read_dirs=None):
         self.name = name
         self.domain = domain
         self.out = pathlib.Path(out)
@@ -31,6 +31,10 @@ class ServerProcess:
         self.arguments = [str(program or server_program()), "--name", name, "--domain", str(domain),
                           "--out", str(self.out), "--telemetry-cycles", str(telemetry_cycles),
                           "--threads", str(threads), "--log-level", log_level, *extra_arguments]
+        # The server reads cases by their path only from these (--read-dir):
+        # by default the current directory and the repository's cases.
+        for directory in read_dirs if read_dirs is not None else [pathlib.Path.cwd(), cases_dir()]:
+            self.arguments += ["--read-dir", str(directory)]
         self.process = None
         self.exit_code = None
 

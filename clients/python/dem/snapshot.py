@@ -10,12 +10,34 @@ it.
 """
 
 import dataclasses
+import hashlib
 
 import numpy as np
 
 from . import snapshot_pb2
 from ._client import CONTACT_DTYPE
 from .errors import DemError
+
+
+# The frame around every snapshot's bytes (io/include/dem/io/snapshot_frame.h):
+# "DEMSNAP1", the payload's length (8 bytes, little-endian), its SHA-256.
+_MAGIC = b"DEMSNAP1"
+_HEADER = 48
+
+
+def unframe(data):
+    """The serialized dem.proto.Snapshot inside a snapshot's frame, once its
+    length and SHA-256 match; DemError naming what is wrong otherwise."""
+    data = bytes(data)
+    if len(data) < _HEADER or data[:8] != _MAGIC:
+        raise DemError('not a dem snapshot (it does not start with the "DEMSNAP1" header)')
+    length = int.from_bytes(data[8:16], "little")
+    payload = data[_HEADER:]
+    if length != len(payload):
+        raise DemError(f"a snapshot of {length} bytes, but {len(payload)} follow its header (truncated or extended)")
+    if hashlib.sha256(payload).digest() != data[16:48]:
+        raise DemError("corrupt snapshot: its SHA-256 checksum does not match its contents")
+    return payload
 
 
 @dataclasses.dataclass(frozen=True)
@@ -67,8 +89,9 @@ class State:
     @classmethod
     def from_bytes(cls, data):
         message = snapshot_pb2.Snapshot()
+        payload = unframe(data)
         try:
-            message.ParseFromString(data)
+            message.ParseFromString(payload)
         except Exception as error:  # protobuf's DecodeError and its C++ twin differ by version
             raise DemError(f"not a dem snapshot: {error}") from None
         if message.format != "dem.snapshot":

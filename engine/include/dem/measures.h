@@ -77,6 +77,10 @@ struct AssemblyMeasures {
   // critical step 2 (m dx / d|sum F|)^(1/2) seen in the last cycle. Above
   // 0.3 the step is too large for the stiffness the particles meet.
   double time_step_ratio = 0.0;
+  // The deepest contact: its overlap over the smaller radius of its bodies
+  // (a wall contact's: the particle's; shaped particles: the bounding
+  // radius), for the health check (dem/health.h); 0 without contacts.
+  double deepest_overlap = 0.0;
   EnergyBudget energy;
 };
 

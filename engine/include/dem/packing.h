@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "dem/definitions.h"
@@ -51,6 +52,10 @@ struct RandomPackingDefT {
   std::vector<SizeClassT<Dim>> sizes;
   std::uint64_t seed = 1;
   int max_attempts = 100000;
+  // Asked every few thousand attempts, when set: true ends the packing
+  // with a DefinitionError. A caller that gave up on it (dem_server
+  // abandoning a load) ends the work too, instead of letting it run on.
+  std::function<bool()> stopped;
 };
 
 using SizeClass = SizeClassT<2>;

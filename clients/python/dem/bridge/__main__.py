@@ -1,5 +1,5 @@
-"""python3 -m dem.bridge --domain ID [--host H] [--port P] [--dds-config X]:
-serves every dem_server's telemetry on the domain to browsers (docs/DASHBOARD.md).
+"""python3 -m dem.bridge --domain ID [--host H] [--port P] [--dds-config X] [--sweep NAME]:
+serves every dem_server's telemetry on the domain (or a sweep's) to browsers (docs/DASHBOARD.md).
 Prints its URL, then serves until Ctrl-C or SIGTERM. Exit codes: 0 stopped,
 2 bad arguments, 1 it could not start (the message says why)."""
 
@@ -20,12 +20,13 @@ def main(argv=None):
     parser.add_argument("--port", type=int, default=8765, help="TCP port (default 8765; 0: any free one)")
     parser.add_argument("--dds-config", default="", help="Cyclone DDS configuration (default $CYCLONEDDS_URI, else "
                                                          "the loopback-only configuration)")
+    parser.add_argument("--sweep", help="only the servers of this sweep (named <sweep>_<task>; docs/SWEEPS.md)")
     parser.add_argument("--version", action="version", version=f"dem.bridge {__version__}")
     args = parser.parse_args(argv)
     if not 0 <= args.domain <= 232:
         parser.error(f"--domain must be 0-232, got {args.domain}")
     use_loopback()
-    bridge = Bridge(args.domain, host=args.host, port=args.port, dds_config=args.dds_config)
+    bridge = Bridge(args.domain, host=args.host, port=args.port, dds_config=args.dds_config, sweep=args.sweep)
 
     def ready(url):
         ws_url = url.replace("http://", "ws://").rstrip("/")

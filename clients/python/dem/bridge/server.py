@@ -11,7 +11,7 @@ and, on the same port, over plain HTTP, the bridge's own dashboard page
     asyncio.run(bridge.serve())     # until bridge.stop()
 
 Channels come when a server appears on the domain (advertise) and go when
-it leaves (unadvertise). A client that reads slower than telemetry comes
+it leaves (unadvertise); with `sweep`, only that sweep's servers. A client that reads slower than telemetry comes
 loses the oldest messages queued for it, never the others'.
 """
 
@@ -21,6 +21,7 @@ import itertools
 import json
 import mimetypes
 import pathlib
+import re
 import struct
 import threading
 import time
@@ -67,8 +68,11 @@ class Client:
 
 
 class Bridge:
-    def __init__(self, domain, *, host="127.0.0.1", port=8765, dds_config="", name="dem bridge"):
+    def __init__(self, domain, *, host="127.0.0.1", port=8765, dds_config="", name="dem bridge", sweep=None):
         self.domain = domain
+        # With a sweep's name, only its servers (<sweep>_<task>; docs/SWEEPS.md).
+        self.sweep = sweep
+        self._follows = re.compile(re.escape(sweep) + r"_[0-9]+").fullmatch if sweep else (lambda server: True)
         self.host = host
         self.port = port
         self.dds_config = dds_config
@@ -86,7 +90,7 @@ class Bridge:
     def _tap_loop(self, tap):
         while not self._stopping.is_set():
             samples = tap.take(0.2)
-            servers = tap.servers()
+            servers = [server for server in tap.servers() if self._follows(server)]
             self._loop.call_soon_threadsafe(self._on_samples, servers, samples)
 
     def _on_samples(self, servers, samples):

@@ -10,6 +10,8 @@ axes (or a new headless figure) and writes a PNG when given a path:
 - plot_contact_force_history: the nine-disc force at contact C against
   cycles (Cundall & Strack Figs. 6, 7, 9);
 - plot_psi2_against_psi1: the oblique impact sweep (Randall Fig. 5.10);
+- plot_stress_settlement_family, plot_final_measure: a parameter sweep's
+  stress-settlement curves and final measures (dem.sweep.Results);
 - plot_rose, plot_obliquity_histogram, plot_shear_series,
   plot_stress_path, plot_discharge: Randall's chapter 6 (granular.py).
 
@@ -25,6 +27,7 @@ from .granular import (draw_randall_directory, plot_discharge, plot_obliquity_hi
                        plot_stress_path)
 from .oblique_impact import plot_psi2_against_psi1
 from .stress_settlement import LiveStressSettlement, StressSettlementSeries, plot_stress_settlement
+from .sweep import plot_final_measure, plot_stress_settlement_family
 
 __all__ = [
     "LiveStressSettlement",
@@ -38,8 +41,10 @@ __all__ = [
     "plot_stress_path",
     "plot_contact_force_history",
     "plot_force_chains",
+    "plot_final_measure",
     "plot_force_distribution",
     "plot_psi2_against_psi1",
     "plot_stress_settlement",
+    "plot_stress_settlement_family",
     "save_png",
 ]

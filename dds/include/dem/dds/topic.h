@@ -39,6 +39,17 @@ class Topic {
 // Counts of the remote (and local) endpoints an endpoint is matched with.
 std::uint32_t matched_readers(dds_entity_t writer);
 std::uint32_t matched_writers(dds_entity_t reader);
+// Whether a writer (by the publication handle its samples carry) is still
+// matched with the reader: false once it was deleted, or its participant
+// left or lost its lease.
+bool writer_matched(dds_entity_t reader, dds_instance_handle_t writer);
+
+// A sample's value and the writer it came from.
+template <class T>
+struct Received {
+  T value;
+  dds_instance_handle_t writer = 0;
+};
 
 template <SupportedType T>
 class Writer {
@@ -117,6 +128,25 @@ class Reader {
     }
     return values;
   }
+
+  // As take, with the writer of each sample.
+  std::vector<Received<T>> take_with_writers(std::size_t max = 256) {
+    std::vector<void*> samples(max, nullptr);
+    std::vector<dds_sample_info_t> infos(max);
+    const auto count = check(dds_take(entity_.handle(), samples.data(), infos.data(), max,
+                                      static_cast<std::uint32_t>(max)),
+                             "taking from " + topic_name_);
+    Loan loan(entity_.handle(), samples, count);
+    std::vector<Received<T>> values;
+    values.reserve(static_cast<std::size_t>(count));
+    for (std::int32_t i = 0; i < count; ++i) {
+      if (infos[i].valid_data) {
+        values.push_back({TypeSupport<T>::from_sample(samples[i]), infos[i].publication_handle});
+      }
+    }
+    return values;
+  }
+  bool writer_matched(dds_instance_handle_t writer) const { return dds::writer_matched(entity_.handle(), writer); }
 
   std::uint32_t matched_writers() const { return dds::matched_writers(entity_.handle()); }
   dds_entity_t handle() const { return entity_.handle(); }

@@ -8,6 +8,7 @@
 #include "dem/io/case_definition.h"
 #include "dem/io/case_error.h"
 #include "dem/io/case_source.h"
+#include "dem/io/resource_limits.h"
 
 namespace dem::io {
 
@@ -19,14 +20,17 @@ int case_dimension(const proto::Case& message);
 // (validate_case), so every caller gets the same checks; throws CaseError
 // listing every problem, naming the particle source the generators could
 // not place or the particle file that could not be read, or naming
-// `dimension` when the case declares the other one.
+// `dimension` when the case declares the other one. The case must keep
+// within `limits` (resource_limits.h), particle files included.
 template <int Dim = 2>
-CaseDefinitionT<Dim> convert_case(const proto::Case& message, const CaseSource& source = {});
+CaseDefinitionT<Dim> convert_case(const proto::Case& message, const CaseSource& source = {},
+                                  const ResourceLimits& limits = machine_limits());
 
-extern template CaseDefinitionT<2> convert_case<2>(const proto::Case&, const CaseSource&);
-extern template CaseDefinitionT<3> convert_case<3>(const proto::Case&, const CaseSource&);
+extern template CaseDefinitionT<2> convert_case<2>(const proto::Case&, const CaseSource&, const ResourceLimits&);
+extern template CaseDefinitionT<3> convert_case<3>(const proto::Case&, const CaseSource&, const ResourceLimits&);
 
 // Converts a case in the dimension it declares.
-AnyCaseDefinition convert_any_case(const proto::Case& message, const CaseSource& source = {});
+AnyCaseDefinition convert_any_case(const proto::Case& message, const CaseSource& source = {},
+                                   const ResourceLimits& limits = machine_limits());
 
 }  // namespace dem::io

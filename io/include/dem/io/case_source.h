@@ -18,6 +18,9 @@ struct CaseSource {
   // Where the files a case names (csv_file.path) are found when their paths
   // are relative: the case file's directory; empty for the current directory.
   std::filesystem::path directory;
+  // When set, the files a case names must be readable through it
+  // (file_access.h): a server confines them to its directories.
+  std::shared_ptr<const class FileAccess> files;
 };
 
 // "NAME:LINE:COLUMN: PATH: MESSAGE", leaving out what is unknown. PATH is a

@@ -9,6 +9,7 @@
 #include "dem/case.pb.h"
 #include "dem/io/case_error.h"
 #include "dem/io/case_source.h"
+#include "dem/io/resource_limits.h"
 
 namespace dem::io {
 
@@ -17,11 +18,16 @@ struct CaseProblem {
   std::string message;  // what is wrong, e.g. "unknown wall \"top\""
 };
 
-// Every problem in the case, in the order of its fields; empty when it is valid.
-std::vector<CaseProblem> find_case_problems(const proto::Case& message);
+// Every problem in the case, in the order of its fields; empty when it is
+// valid. Besides the schema's rules, every number must lie within what
+// double arithmetic can carry (magnitudes from 1e-30 to 1e30, or 0), and
+// the threads, particles and packing grids within `limits`.
+std::vector<CaseProblem> find_case_problems(const proto::Case& message,
+                                            const ResourceLimits& limits = machine_limits());
 
 // Throws CaseError listing every problem, each pointed at its line when the
 // source has locations.
-void validate_case(const proto::Case& message, const CaseSource& source = {});
+void validate_case(const proto::Case& message, const CaseSource& source = {},
+                   const ResourceLimits& limits = machine_limits());
 
 }  // namespace dem::io

@@ -9,6 +9,8 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "dem/io/compression_settings.h"
@@ -71,6 +73,13 @@ class CompressionAnalysisT {
   CompressionResults results(const BasicWorld<Dim>& world) const;
 
   const CompressionSettings& settings() const { return settings_; }
+
+  // Everything gathered so far as text (every double exactly), for a
+  // checkpoint; restore() makes a fresh analysis of the same settings carry
+  // on from it (compression_state.cpp). restore throws std::runtime_error
+  // for text that is not such a state.
+  std::string state() const;
+  void restore(std::string_view state);
   const std::vector<CompressionSample>& samples() const { return samples_; }
   const std::vector<PlateSnapshotT<Dim>>& snapshots() const { return snapshots_; }
 

@@ -56,7 +56,9 @@ template <int Dim>
 class CompressionCsvT {
  public:
   // Creates compression.csv and plate_contacts.csv; the plates' names label the rows.
-  CompressionCsvT(const std::filesystem::path& directory, std::string loading_plate, std::string bottom_plate);
+  // `resume`: see CsvFile.
+  CompressionCsvT(const std::filesystem::path& directory, std::string loading_plate, std::string bottom_plate,
+                  const TableSizes* resume = nullptr);
 
   void write_sample(const CompressionSample& sample);
   // `cycles` as known when the snapshot was taken: enough for the contacts
@@ -67,6 +69,9 @@ class CompressionCsvT {
 
   // Every file written so far.
   const std::vector<std::filesystem::path>& files() const { return files_; }
+  // The tables written as the run goes, for a checkpoint.
+  CsvFile& samples_file() { return samples_; }
+  CsvFile& contacts_file() { return contacts_; }
 
  private:
   void write_plate_rows(const PlateSnapshotT<Dim>& snapshot, const std::string& plate,

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,11 +29,20 @@ requires(!std::same_as<T, bool>) void append_field(std::string& line, T value) {
   }
 }
 
+// How long each table of a run was when it was checkpointed (file name ->
+// bytes): a resumed run cuts each back to that and appends, so no row is
+// lost or written twice (docs/RELIABILITY.md).
+using TableSizes = std::map<std::string, std::uint64_t, std::less<>>;
+
 class CsvFile {
  public:
-  // Creates the directory if it is missing and writes the header. Throws
-  // std::runtime_error naming the file when it cannot be written.
-  CsvFile(const std::filesystem::path& directory, std::string_view file_name, std::string_view header);
+  // Creates the directory if it is missing and writes the header. With
+  // `resume`, a table it lists is instead cut back to its size there and
+  // appended to (it must start with the same header). Throws
+  // std::runtime_error naming the file when it cannot be written, or
+  // cannot be resumed.
+  CsvFile(const std::filesystem::path& directory, std::string_view file_name, std::string_view header,
+          const TableSizes* resume = nullptr);
 
   template <typename... Fields>
   void write_row(const Fields&... fields) {
@@ -58,6 +68,8 @@ class CsvFile {
   void flush();
 
   const std::filesystem::path& path() const { return path_; }
+  // Bytes in the file, buffered rows included.
+  std::uint64_t bytes() { return static_cast<std::uint64_t>(out_.tellp()); }
 
  private:
   template <typename Field>
@@ -67,6 +79,7 @@ class CsvFile {
   }
 
   void write_line(std::string_view line);
+  void resume_at(std::string_view header, std::uint64_t size);
   void check() const;
 
   std::filesystem::path path_;

@@ -71,9 +71,11 @@ namespace dem::io {
 template <int Dim>
 class WallsCsvT {
  public:
-  explicit WallsCsvT(const std::filesystem::path& directory);
+  // `resume`: see CsvFile.
+  explicit WallsCsvT(const std::filesystem::path& directory, const TableSizes* resume = nullptr);
   void write(const BasicWorld<Dim>& world);
   const std::filesystem::path& path() const { return file_.path(); }
+  CsvFile& file() { return file_; }
 
  private:
   CsvFile file_;
@@ -84,11 +86,12 @@ using WallsCsv3 = WallsCsvT<3>;
 
 class AssemblyCsv {
  public:
-  explicit AssemblyCsv(const std::filesystem::path& directory);
+  explicit AssemblyCsv(const std::filesystem::path& directory, const TableSizes* resume = nullptr);
   // Writes a row and returns the measures it wrote.
   template <int Dim>
   AssemblyMeasures write(const BasicWorld<Dim>& world);
   const std::filesystem::path& path() const { return file_.path(); }
+  CsvFile& file() { return file_; }
 
  private:
   CsvFile file_;
@@ -96,10 +99,11 @@ class AssemblyCsv {
 
 class ProbesCsv {
  public:
-  ProbesCsv(const std::filesystem::path& directory, std::vector<Probe> probes);
+  ProbesCsv(const std::filesystem::path& directory, std::vector<Probe> probes, const TableSizes* resume = nullptr);
   template <int Dim>
   void write(const BasicWorld<Dim>& world);
   const std::filesystem::path& path() const { return file_.path(); }
+  CsvFile& file() { return file_; }
 
  private:
   CsvFile file_;

@@ -41,10 +41,13 @@ namespace dem::io {
 template <int Dim>
 class RegionsCsvT {
  public:
-  RegionsCsvT(const std::filesystem::path& directory, std::vector<analysis::RegionT<Dim>> regions);
+  // `resume`: a checkpoint's table sizes (csv_file.h).
+  RegionsCsvT(const std::filesystem::path& directory, std::vector<analysis::RegionT<Dim>> regions,
+              const TableSizes* resume = nullptr);
   // Measures every region and writes a row for each; returns the measures.
   std::vector<analysis::RegionMeasuresT<Dim>> write(const BasicWorld<Dim>& world);
   const std::filesystem::path& path() const { return file_.path(); }
+  CsvFile& file() { return file_; }
   const std::vector<analysis::RegionT<Dim>>& regions() const { return regions_; }
 
  private:
@@ -62,9 +65,10 @@ std::vector<double> region_values(const analysis::RegionMeasuresT<Dim>& m);
 template <int Dim>
 class BoxCsvT {
  public:
-  explicit BoxCsvT(const std::filesystem::path& directory);
+  explicit BoxCsvT(const std::filesystem::path& directory, const TableSizes* resume = nullptr);
   void write(const BasicWorld<Dim>& world);  // a row when the world has a box control
   const std::filesystem::path& path() const { return file_.path(); }
+  CsvFile& file() { return file_; }
 
  private:
   CsvFile file_;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "dem/io/resource_limits.h"
 #include "dem/snapshot.h"
 #include "dem/snapshot.pb.h"
 
@@ -33,15 +34,18 @@ proto::Snapshot snapshot_to_proto(const WorldSnapshotT<Dim>& snapshot, const Sna
 
 // Checks the message - its format tag and version, its dimension (Dim),
 // that every array has the length its counts imply, ids in range, finite
-// numbers - and converts it. Throws SnapshotError listing what is wrong
-// (at most a dozen problems). The World constructor then checks the
-// physics (DefinitionError).
+// numbers within what the force arithmetic carries, known enum values, no
+// duplicate wall or material names, threads and particles within `limits`
+// - and converts it. Throws SnapshotError listing what is wrong (at most a
+// dozen problems). The World constructor then checks the physics
+// (DefinitionError).
 template <int Dim>
-WorldSnapshotT<Dim> snapshot_from_proto(const proto::Snapshot& message, SnapshotInfo* info = nullptr);
+WorldSnapshotT<Dim> snapshot_from_proto(const proto::Snapshot& message, SnapshotInfo* info = nullptr,
+                                        const ResourceLimits& limits = machine_limits());
 
 extern template proto::Snapshot snapshot_to_proto<2>(const WorldSnapshotT<2>&, const SnapshotInfo&);
 extern template proto::Snapshot snapshot_to_proto<3>(const WorldSnapshotT<3>&, const SnapshotInfo&);
-extern template WorldSnapshotT<2> snapshot_from_proto<2>(const proto::Snapshot&, SnapshotInfo*);
-extern template WorldSnapshotT<3> snapshot_from_proto<3>(const proto::Snapshot&, SnapshotInfo*);
+extern template WorldSnapshotT<2> snapshot_from_proto<2>(const proto::Snapshot&, SnapshotInfo*, const ResourceLimits&);
+extern template WorldSnapshotT<3> snapshot_from_proto<3>(const proto::Snapshot&, SnapshotInfo*, const ResourceLimits&);
 
 }  // namespace dem::io

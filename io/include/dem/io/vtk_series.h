@@ -19,10 +19,22 @@ namespace dem::io {
 
 class VtkSeries {
  public:
+  // A step of the series: the cycle its files are named by, and its time.
+  struct Step {
+    std::uint64_t cycle;
+    double time;
+    friend bool operator==(const Step&, const Step&) = default;
+  };
+
   // `interval`: cycles between steps (> 0). Starts empty .pvd files in
   // `directory` (a previous series' files there are removed). Throws
   // std::runtime_error naming the file it cannot write.
   VtkSeries(std::filesystem::path directory, std::uint64_t interval);
+  // Continues a series that had written `steps` (a checkpoint's, for a
+  // resumed run): their files are kept and listed, any other step's - one
+  // written after the checkpoint by the run that crashed - removed, so the
+  // series ends as an uninterrupted run's does.
+  VtkSeries(std::filesystem::path directory, std::uint64_t interval, std::vector<Step> steps);
 
   // Whether a world at `cycle` is due a step: the first call, and then
   // once at least `interval` cycles have passed since the last step.
@@ -42,13 +54,11 @@ class VtkSeries {
   // particles.pvd, contacts.pvd and walls.pvd.
   std::vector<std::filesystem::path> collections() const;
   std::size_t steps() const { return steps_.size(); }
+  // The steps written so far, for a checkpoint.
+  const std::vector<Step>& step_list() const { return steps_; }
 
  private:
-  struct Step {
-    std::uint64_t cycle;
-    double time;
-  };
-  void remove_previous_steps() const;
+  void remove_previous_steps() const;  // all but those in steps_
   void write_collections() const;
 
   std::filesystem::path directory_;

@@ -59,6 +59,7 @@ enum class ReplyStatus : std::int32_t {
   kRefused = 6,
   kFailed = 7,
   kShuttingDown = 8,
+  kBusy = 9,
 };
 
 std::string_view to_string(ServerState state);
@@ -271,6 +272,7 @@ struct Command {
   ParameterArgs parameter;
   ProgrammeArgs programme;
   Stamp stamp;
+  bool force = false;  // stop and shutdown: also another client's run
   friend bool operator==(const Command&, const Command&) = default;
 };
 

@@ -6,6 +6,10 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "dem/io/checkpoint_store.h"
+#include "dem/service/command_limits.h"
 
 namespace dem::service {
 
@@ -20,6 +24,10 @@ struct ServerOptions {
   double telemetry_seconds = 0.0;
   std::filesystem::path output_directory = "out/dem_server";  // CSV tables and snapshots
   std::optional<std::filesystem::path> initial_case;          // loaded at start
+  // Where load_case may read a case by its path, and cases their particle
+  // files (io/file_access.h: after "..", links and all); empty: the
+  // current directory. The initial case's directory is always added.
+  std::vector<std::filesystem::path> read_directories;
   std::optional<int> threads;                                 // engine threads; overrides the case's
   // Cycles between the ParaView files of the programmes it runs; when set,
   // replaces the cases' output.vtk_interval (0: none).
@@ -34,6 +42,25 @@ struct ServerOptions {
   std::chrono::milliseconds progress_interval{250};  // status updates while a command runs
   std::uint32_t contact_chunk = 4096;                // contacts per reply chunk, by default
   std::uint32_t snapshot_chunk = 1u << 20;           // bytes per reply chunk of a transferred snapshot
+  // What one world may take (io/resource_limits.h): 0 sizes each to the
+  // machine (half its memory, at 2.5 kB a particle); the threads any case,
+  // snapshot or option asks for are capped at the cores.
+  std::uint64_t max_particles = 0;
+  std::uint64_t memory_budget_bytes = 0;
+  CommandLimits limits;  // what one command may ask
+  // A load_case or load_snapshot still preparing after this long (a
+  // packing that nearly cannot fit) is abandoned with an error.
+  std::chrono::milliseconds load_time_limit{120'000};
+  // Periodic checkpoints in <output>/<case>/checkpoints (none by default),
+  // and --resume: continue the initial case from the newest of them.
+  io::CheckpointSettings checkpoints;
+  bool resume = false;
+  // Before starting, how long to look for another server of this name,
+  // and to wait for one found to leave (name_claim.h).
+  std::chrono::milliseconds name_discovery{500};
+  std::chrono::milliseconds name_wait{12'000};
+  // Commands waiting for the engine thread; beyond them a command is answered "busy".
+  std::size_t queue_capacity = 1024;
 };
 
 }  // namespace dem::service

@@ -21,7 +21,9 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
+#include "dem/io/checkpoint_store.h"
 #include "dem/io/compression_analysis.h"
 #include "dem/io/compression_csv.h"
 #include "dem/io/compression_settings.h"
@@ -40,11 +42,15 @@ class OutputRecorder {
   OutputRecorder(std::filesystem::path output_directory, bool enabled,
                  std::optional<std::uint64_t> vtk_interval = std::nullopt);
 
+  // After a load; `resume`: a checkpoint's, whose tables are cut back to
+  // it and appended to, and whose analyses carry on (io/checkpoint_store.h).
   template <int Dim>
   void start(const std::string& case_name, const BasicWorld<Dim>& world,
              std::optional<io::CompressionSettings> compression = std::nullopt,
-             std::uint64_t vtk_interval = 0,
-             const std::vector<io::MeasurementRegion>& regions = {});  // after a load
+             std::uint64_t vtk_interval = 0, const io::ResumePoint* resume = nullptr,
+             const std::vector<io::MeasurementRegion>& regions = {});
+  // The tables' lengths (rows flushed) and the analyses' state, for a checkpoint.
+  void fill(io::ResumePoint& point);
   // A row of the time series, unless this cycle has one already (a load
   // and its first telemetry, a stage's end and the next stage's start);
   // with the stage of a programme running, a sample of the plate loading
@@ -60,6 +66,13 @@ class OutputRecorder {
   // <output>/<case>/ of the case loaded last: its tables and a one-shot
   // run's final snapshot (also when the tables are off).
   const std::filesystem::path& case_directory() const { return directory_; }
+  // A file of the server's own there (a snapshot beside the tables), or
+  // FileAccessError when that directory leads out of the output directory
+  // or holds a link (io::own_directory, checked by start(): the tables are
+  // then not written either).
+  std::filesystem::path own_file(std::string_view name) const;
+  const std::optional<std::string>& directory_problem() const { return directory_problem_; }
+  static std::filesystem::path case_directory_of(const std::filesystem::path& output, const std::string& case_name);
   // A table could not be written (the error was logged).
   bool failed() const { return failed_; }
 
@@ -72,9 +85,13 @@ class OutputRecorder {
   };
   template <int Dim>
   std::unique_ptr<Compression<Dim>>& compression();
-
   template <int Dim>
-  void record_regions(const BasicWorld<Dim>& world);
+  void make_compression(const BasicWorld<Dim>& world);
+
+  // A row of regions.csv and box.csv when `write`; otherwise (a resume)
+  // reopens those the checkpoint names.
+  template <int Dim>
+  void record_regions(const BasicWorld<Dim>& world, bool write);
   void fail(const std::exception& error);
   void close();
 
@@ -82,6 +99,7 @@ class OutputRecorder {
   bool enabled_;
   bool failed_ = false;
   std::filesystem::path directory_;
+  std::optional<std::string> directory_problem_;
   std::unique_ptr<io::WallsCsvT<2>> walls2_;
   std::unique_ptr<io::WallsCsvT<3>> walls3_;
   std::unique_ptr<io::AssemblyCsv> assembly_;
@@ -93,13 +111,14 @@ class OutputRecorder {
   std::unique_ptr<Compression<2>> compression2_;
   std::unique_ptr<Compression<3>> compression3_;
   // The case's regions (regions.csv) and its box control (box.csv), made
-  // at the first row that has them.
+  // at the first row that has them (or reopened at a resume).
   std::vector<io::MeasurementRegion> regions_;
   std::unique_ptr<io::RegionsCsvT<2>> regions2_;
   std::unique_ptr<io::RegionsCsvT<3>> regions3_;
   std::unique_ptr<io::BoxCsvT<2>> box2_;
   std::unique_ptr<io::BoxCsvT<3>> box3_;
   std::optional<std::uint64_t> last_cycle_;
+  std::optional<io::ResumePoint> resume_;  // while the tables it names are not all reopened
 };
 
 }  // namespace dem::service

@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 
+#include "dem/service/health_watch.h"
 #include "dem/service/world_session.h"
 
 namespace dem::service {
@@ -30,7 +31,9 @@ class ProgrammeRun {
 
   std::size_t stage_count() const { return stage_count_; }
   std::size_t stage() const { return stage_; }  // the stage running, or stage_count() after the last
-  void start_stage(std::size_t stage, const WorldSession& world);
+  // `done`: cycles of it run already (a resumed checkpoint's).
+  void start_stage(std::size_t stage, const WorldSession& world, std::uint64_t done = 0);
+  std::uint64_t stage_cycles(std::uint64_t cycle) const { return cycle - stage_start_; }
 
   // Whether the time series is due a row at this cycle of the current stage.
   bool row_due(std::uint64_t cycle) const { return (cycle - stage_start_) % output_interval_ == 0; }
@@ -39,12 +42,12 @@ class ProgrammeRun {
   // The length or cap of every stage run, added up: what `done` reaches at most.
   std::uint64_t total() const { return total_; }
 
-  // Keeps a copy of the state, which the caller has found good (finite):
-  // `always` at the end of a stage, otherwise only when the last copy is old
-  // enough that copying costs at most about 5% of the run's time. So a
-  // failure has a recent good state to write, whatever the case's size.
-  void keep_if_good(const WorldSession& world, bool always = false);
-  const StateCheckpoint& last_good() const { return *last_good_; }
+  // The world's health, assessed `always` at the end of a stage, otherwise
+  // at a pace that costs at most about 5% of the run's time; each healthy
+  // state is kept, so a failure has a recent good state to write, whatever
+  // the case's size.
+  HealthWatch& health() { return health_; }
+  const StateCheckpoint& last_good() const { return health_.last_good(); }
 
   void stop(std::string reason);
   void fail(std::string error);
@@ -60,8 +63,7 @@ class ProgrammeRun {
   std::uint64_t total_ = 0;
   std::size_t stage_ = 0;
   std::uint64_t stage_start_;
-  std::unique_ptr<StateCheckpoint> last_good_;
-  std::chrono::steady_clock::time_point next_checkpoint_{};
+  HealthWatch health_;
   ProgrammeOutcome outcome_ = ProgrammeOutcome::kRunning;
   std::string reason_;
 };

@@ -15,6 +15,7 @@
 #include "dem/service/options.h"
 #include "dem/service/reply_sender.h"
 #include "dem/service/simulation_runner.h"
+#include "dem/service/state_cache.h"
 #include "dem/service/telemetry_publisher.h"
 
 namespace dem::service {
@@ -48,7 +49,9 @@ class Server {
 
   ServerOptions options_;
   CommandQueue queue_;
+  StateCache cache_;
   dds::Participant participant_;
+  bool name_claimed_;  // before anything is published under the name
   TelemetryPublisher telemetry_;
   ReplySender replies_;
   SimulationRunner runner_;

@@ -5,18 +5,24 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "dem/io/pacing.h"
 #include "dem/protocol/messages.h"
 #include "dem/service/active_run.h"
+#include "dem/service/background_load.h"
 #include "dem/service/command_queue.h"
+#include "dem/service/health_watch.h"
 #include "dem/service/options.h"
 #include "dem/service/output_recorder.h"
 #include "dem/service/programme_run.h"
 #include "dem/service/reply_sender.h"
+#include "dem/service/server_checkpoints.h"
 #include "dem/service/simulation.h"
+#include "dem/service/state_cache.h"
 #include "dem/service/telemetry_publisher.h"
 #include "dem/service/telemetry_schedule.h"
 
@@ -25,11 +31,15 @@ namespace dem::service {
 class SimulationRunner {
  public:
   SimulationRunner(const ServerOptions& options, CommandQueue& queue, ReplySender& replies,
-                   TelemetryPublisher& telemetry);
+                   TelemetryPublisher& telemetry, StateCache& cache);
 
   // Loads the case given at start; throws CommandError when it cannot (and
-  // when a one-shot run's case has no stages to run).
-  void load_initial_case(const std::filesystem::path& path);
+  // when a one-shot run's case has no stages to run). With `resume`, the
+  // world continues from the newest checkpoint of the case
+  // (<output>/<case>/checkpoints) into its tables, a one-shot run from
+  // where its programme stood; CommandError when there is none, or it is
+  // another case's.
+  void load_initial_case(const std::filesystem::path& path, bool resume = false);
 
   // Runs until a shutdown is requested (signal or command), then returns
   // between two chunks of cycles.
@@ -41,6 +51,9 @@ class SimulationRunner {
   // snapshot, or after a failure the last good state. Returns when the
   // programme is over: completed, stopped (stop, shutdown, a signal) or failed.
   void run_programme();
+  // How the server learns whether the client that started a run is still
+  // on the domain (CommandReceiver::writer_alive).
+  void set_writer_check(std::function<bool(std::uint64_t)> alive) { writer_alive_ = std::move(alive); }
   // How the one-shot run ended; nothing when the server ran commands instead.
   std::optional<ProgrammeOutcome> programme_outcome() const;
   // After run() and once no more commands arrive: stops the running command
@@ -56,21 +69,28 @@ class SimulationRunner {
   void complete_run();
   void end_run(protocol::ReplyStatus status, const std::string& message);
   void fail_run(const std::string& message);
+  void fail_unhealthy(const StepHealth& problem);
 
   // The one-shot mode and run_programme (simulation_runner_programme.cpp).
   // The run_programme command runs the same stages from the command loop;
   // its one reply comes when they end (completed, stopped or failed), and
   // the server then takes commands again.
   void run_programme(const ReceivedCommand& received);
-  void run_stages(std::size_t first, std::size_t count);
+  // `first_done`: cycles of the first stage run already (a resumed checkpoint's).
+  void run_stages(std::size_t first, std::size_t count, std::uint64_t first_done = 0);
   bool between_programme_cycles();
-  bool programme_blew_up();  // fails the programme when the kinetic energy is not finite
+  bool programme_unhealthy(bool always);  // fails the programme when the world's health says so
   void record_programme_row();
   void end_stage(std::size_t stage, const StageResult& result);
   void end_programme();
   std::string stage_label(std::size_t stage) const;
 
-  std::string install(Simulation::Prepared prepared);
+  // `resume`: a checkpoint the prepared world was restored from; its tables carry on.
+  std::string install(Simulation::Prepared prepared, const io::ResumePoint* resume = nullptr);
+  // Runs `prepare` in a BackgroundLoad while taking stop and shutdown (and
+  // keeping other commands for after); throws CommandError when it is
+  // stopped, outlasts options_.load_time_limit, or an abandoned one is still running.
+  Simulation::Prepared prepare_in_background(const std::string& what, BackgroundLoad::Prepare prepare);
   std::string stop();
   protocol::Reply get_state() const;
   protocol::Reply save_snapshot(const protocol::SnapshotArgs& args);
@@ -78,25 +98,51 @@ class SimulationRunner {
   std::filesystem::path snapshot_path(const std::string& requested) const;
 
   void send(const ReceivedCommand& received, protocol::Reply reply);
+  // Why `received` (a stop or shutdown) may not end the run going on, or
+  // nothing (docs/SERVICE.md, "Who may stop a run").
+  std::optional<std::string> ownership_refusal(const ReceivedCommand& received) const;
+  const ReceivedCommand* run_owner() const;
+  void note_owner_left();
   protocol::Status status() const;
   void publish_status();
   void publish_telemetry();
+  void refresh_cache(bool always = false);  // the StateCache's get_state, as of now
+  void write_checkpoint(std::size_t stage, std::uint64_t stage_cycles);
 
   const ServerOptions& options_;
   CommandQueue& queue_;
   ReplySender& replies_;
   TelemetryPublisher& telemetry_;
+  StateCache& cache_;
   Simulation simulation_;
   OutputRecorder recorder_;
   TelemetrySchedule schedule_;
   protocol::ServerState state_ = protocol::ServerState::kIdle;
   std::optional<ActiveRun> active_;
+  std::optional<HealthWatch> active_health_;  // the running cycle or run_until's
+  std::unique_ptr<BackgroundLoad> abandoned_;  // a load given up on, still running to its end
+  ServerCheckpoints checkpoints_;
+  std::optional<io::ResumePoint> resumed_;  // the checkpoint --resume started from, until its programme runs
   std::optional<ProgrammeRun> programme_;  // a one-shot run's programme, or run_programme's
-  const protocol::Command* programme_command_ = nullptr;  // run_programme's, while it runs
+  const ReceivedCommand* programme_command_ = nullptr;  // run_programme's, while it runs
+  std::function<bool(std::uint64_t)> writer_alive_ = [](std::uint64_t) { return true; };
+  bool owner_left_logged_ = false;
+  std::vector<std::string> awaiting_refresh_;  // clients whose commands the StateCache does not show yet
+  io::Pacing refresh_pacing_{40};  // at most 1/40 of the engine thread
+  // get_state's readout of one state of the world: worked out once however
+  // many ask (get_state).
+  struct Readout {
+    std::uint64_t generation = 0;
+    std::uint64_t cycle = 0;
+    protocol::PlateForces plates;
+    protocol::ContactStats stats;
+    std::uint64_t hash = 0;
+  };
+  mutable std::optional<Readout> readout_;
+  std::uint64_t world_generation_ = 0;  // a new world, or one put back: another readout
   std::chrono::steady_clock::time_point last_poll_{};  // of the queue, during a programme
   std::vector<ReceivedCommand> unanswered_;  // taken from the queue after a shutdown request
   std::string message_ = "started";
-  std::uint64_t commands_served_ = 0;
   std::uint64_t last_telemetry_cycle_ = 0;
   bool telemetry_published_ = false;
   // Chunks take about options_.chunk_duration at the measured rate.

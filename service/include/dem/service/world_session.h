@@ -16,6 +16,8 @@
 #include <vector>
 
 #include "dem/io/case_definition.h"
+#include "dem/health.h"
+#include "dem/io/checkpoint_store.h"
 #include "dem/io/compression_settings.h"
 #include "dem/io/snapshot_conversion.h"
 #include "dem/programme.h"
@@ -48,7 +50,12 @@ class WorldSession {
   virtual int particle_count() const = 0;
   virtual int wall_count() const = 0;
   virtual std::uint64_t state_hash() const = 0;
-  virtual double kinetic_energy() const = 0;  // J
+  virtual double kinetic_energy() const = 0;  // J (a pass over the particles and the contacts)
+  // A motion not finite or a particle flung out (HealthMonitorT::
+  // motion_suspect): a pass over the particles alone, cheap enough after
+  // every chunk, for what a blow-up reaches between two paced health
+  // assessments.
+  virtual bool motion_suspect() const = 0;
 
   virtual WallId find_wall(std::string_view name) const = 0;  // kInvalidId when unknown
   virtual std::string wall_name(WallId wall) const = 0;
@@ -77,6 +84,12 @@ class WorldSession {
 
   virtual std::string snapshot_bytes(const io::SnapshotInfo& info) const = 0;
   virtual std::unique_ptr<StateCheckpoint> checkpoint() const = 0;
+  // Puts the world back to a checkpoint this session took (its stages and
+  // threads stay); the health monitor starts afresh from it.
+  virtual void restore(const StateCheckpoint& checkpoint) = 0;
+  // The engine's health status of the state now (a pass over the particles
+  // and contacts: HealthWatch paces it).
+  virtual StepHealth assess_health() = 0;
 
   // The case's loading programme: its stages as io converted them (none for
   // a world restored from a snapshot), run by the engine's run_stage.
@@ -85,12 +98,25 @@ class WorldSession {
   virtual std::uint64_t stage_cycles(std::size_t stage) const = 0;  // its length, or its cap when it has conditions
   // Runs one stage; `between_cycles` is called after every cycle and ends
   // the stage early by returning false. Throws what the engine throws.
-  virtual StageResult run_stage(std::size_t stage, const std::function<bool()>& between_cycles) = 0;
+  // `done`: the stage's cycles run already (a resumed checkpoint's): its
+  // start actions are in the state, its length and minimum count from
+  // there; the result counts them.
+  virtual StageResult run_stage(std::size_t stage, const std::function<bool()>& between_cycles,
+                                std::uint64_t done = 0) = 0;
+  // Whether a checkpoint `stage_cycles` into the stage can be resumed as if
+  // never interrupted: before its end, on one of its condition checks, and
+  // not one where the conditions hold (io/stop_conditions.h) - the stage
+  // ends there, after the row the checkpoint follows.
+  virtual bool resumable_at(std::size_t stage, std::uint64_t stage_cycles) const = 0;
+  // Replaces the world by a framed snapshot's (a checkpoint of this case);
+  // the stages stay. Throws SnapshotError or DefinitionError.
+  virtual void restore_bytes(std::string_view snapshot_bytes, const std::string& source) = 0;
 
   // The per-case tables (the recorder writes them for this world's
   // dimension); `stage`, the stage running, when a programme runs (the
   // plate loading analyses follow programmes only).
-  virtual void start_tables(OutputRecorder& recorder, const std::string& case_name) const = 0;
+  virtual void start_tables(OutputRecorder& recorder, const std::string& case_name,
+                            const io::ResumePoint* resume = nullptr) const = 0;
   virtual void record_tables(OutputRecorder& recorder, std::optional<std::size_t> stage = std::nullopt) const = 0;
   virtual void finish_tables(OutputRecorder& recorder) const = 0;
 };

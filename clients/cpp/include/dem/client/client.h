@@ -17,10 +17,13 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "dem/client/errors.h"
+#include "dem/dds/discovery.h"
 #include "dem/dds/participant.h"
 #include "dem/dds/topic.h"
 #include "dem/dds/waitset.h"
@@ -91,9 +94,10 @@ class Client {
   protocol::Reply run_programme(std::uint32_t first_stage = 0, std::uint32_t stage_count = 0,
                                 std::chrono::milliseconds timeout = std::chrono::hours(24));
   std::uint64_t start_run_programme(std::uint32_t first_stage = 0, std::uint32_t stage_count = 0);
-  protocol::Reply stop();
+  // `force`: also when another client's run is going on (docs/SERVICE.md).
+  protocol::Reply stop(bool force = false);
   protocol::Reply get_state();
-  protocol::Reply shutdown();
+  protocol::Reply shutdown(bool force = false);
   protocol::Reply query_contacts(const protocol::ContactQueryArgs& args = {});
   // On the server: a file in its output directory. transfer: the bytes come back in the reply's data.
   protocol::Reply save_snapshot(std::string server_path, bool transfer = false);
@@ -136,6 +140,10 @@ struct ServerInfo {
   std::string name;
   std::optional<protocol::Status> status;  // nothing when it did not arrive in time
 };
+
+// The names of the servers among these publications: the writers of a
+// Status on rt/dem/<name>/status.
+std::set<std::string> server_names(const std::vector<dds::Publication>& publications);
 
 // The servers alive on a domain: those whose status topic has a writer,
 // found through DDS discovery within `discovery` and read from their

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets with clang, AddressSanitizer and
+# UndefinedBehaviorSanitizer in build-fuzz/ and runs each for SECONDS
+# (default 60), one after the other, starting from the seed corpus and the
+# regression inputs in tests/fuzz; prints each target's executions, rate
+# and coverage. A crash, a sanitizer report, a leak or an input slower than
+# 10 s (DEM_FUZZ_TIMEOUT) fails the run; the input is saved in
+# build-fuzz/findings/ (copy it to tests/fuzz/regressions/<target>/ with the
+# fix: docs/FUZZING.md).
+#   scripts/fuzz.sh [SECONDS] [TARGET ...]     targets: case_text case_binary snapshot command
+# Part of scripts/test.sh (60 s each). New inputs the fuzzer finds
+# interesting stay in build-fuzz/corpus/<target>/ for the next run.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+seconds="${1:-60}"
+shift || true
+targets=("$@")
+[ ${#targets[@]} -gt 0 ] || targets=(case_text case_binary snapshot command)
+build="${DEM_FUZZ_BUILD:-$root/build-fuzz}"
+bash "$root/scripts/install_deps.sh"
+# -O1 with line tables: the usual libFuzzer compromise of speed and reports.
+cmake -S "$root" -B "$build" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DDEM_FUZZ=ON \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1" \
+  -DDEM_BUILD_TOOLS=OFF -DDEM_BUILD_BENCH=OFF -DDEM_BUILD_PYTHON=OFF -DDEM_BUILD_CLIENTS=OFF \
+  -DDEM_CONTAINER_TEST=OFF >/dev/null
+cmake --build "$build" -j"$(nproc)" --target "${targets[@]/#/fuzz_}"
+export OMP_NUM_THREADS=1 OMP_WAIT_POLICY=passive
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+mkdir -p "$build/findings"
+failed=0
+printf '%-12s %12s %10s %8s %8s %8s\n' target executions exec/s cov ft corpus
+for target in "${targets[@]}"; do
+  corpus="$build/corpus/$target"
+  mkdir -p "$corpus"
+  log="$build/fuzz_$target.log"
+  set +e
+  "$build/tests/fuzz/fuzz_$target" -max_total_time="$seconds" -timeout="${DEM_FUZZ_TIMEOUT:-10}" -rss_limit_mb=2560 \
+    -max_len=65536 \
+    -print_final_stats=1 -artifact_prefix="$build/findings/$target-" \
+    "$corpus" "$root/tests/fuzz/corpus/$target" "$root/tests/fuzz/regressions/$target" >"$log" 2>&1
+  code=$?
+  set -e
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
+  rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -n 1)
+  last=$(grep -E '^#[0-9]+' "$log" | tail -n 1)
+  cov=$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<<"$last")
+  ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<<"$last")
+  units=$(sed -n 's/.* corp: \([0-9]*\).*/\1/p' <<<"$last")
+  printf '%-12s %12s %10s %8s %8s %8s\n' "$target" "${runs:-?}" "${rate:-?}" "${cov:-?}" "${ft:-?}" "${units:-?}"
+  if [ "$code" -ne 0 ]; then
+    failed=1
+    echo "fuzz_$target found a problem (exit $code); its log is $log:" >&2
+    # Protocol Buffers' complaints about invalid UTF-8 are no finding. "|| true": under pipefail a
+    # reader that stops early fails the pipeline, and set -e would end the script before the next target.
+    grep -v 'libprotobuf ERROR' "$log" |
+      grep -m 20 -E 'ERROR|SUMMARY|unexpected exception|Test unit written|runtime error' >&2 || true
+  fi
+done
+exit "$failed"

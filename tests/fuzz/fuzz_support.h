@@ -1,0 +1,43 @@
+// Shared by the fuzz targets (docs/FUZZING.md): the limits they run under,
+// small enough that every input finishes in milliseconds (the server's own
+// defaults are sized to the machine), and what counts as a finding. An
+// input may be refused - CaseError, SnapshotError, DefinitionError,
+// CommandError, each with its message - but any other exception, a crash,
+// a sanitizer report or an input that takes seconds is a bug.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "dem/io/file_access.h"
+#include "dem/io/resource_limits.h"
+
+namespace dem::fuzz {
+
+inline io::ResourceLimits limits() {
+  io::ResourceLimits limits = io::limits_with_budget(300, 0);
+  limits.max_threads = 1;
+  limits.max_packing_attempts = 10'000;
+  return limits;
+}
+
+// The only files a fuzzed case may name: the seed corpus's particle files
+// (tests/fuzz/corpus/files), through the server's own confinement.
+inline std::shared_ptr<const io::FileAccess> files() {
+  static const auto access =
+      std::make_shared<const io::FileAccess>(std::vector<std::filesystem::path>{DEM_FUZZ_FILES_DIR});
+  return access;
+}
+
+// An exception no refusal explains: report it and abort, so libFuzzer keeps the input.
+[[noreturn]] inline void unexpected(const char* target, const std::exception& error) {
+  std::fprintf(stderr, "%s: unexpected exception: %s\n", target, error.what());
+  std::abort();
+}
+
+}  // namespace dem::fuzz

@@ -1,0 +1,55 @@
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "dem/io/case_conversion.h"
+#include "dem/io/world_checks.h"
+#include "io_test_support.h"
+
+namespace dem::io {
+namespace {
+
+using ::testing::HasSubstr;
+
+World built(const proto::Case& message) { return World(convert_case(message).world); }
+
+TEST(WorldChecks, AStepWithinTheCriticalStepPasses) {
+  const World world = built(test::valid_case());
+  EXPECT_NO_THROW(check_built_world(world));
+}
+
+TEST(WorldChecks, AFixedStepAboveTheCriticalStepIsRefused) {
+  proto::Case c = test::valid_case();
+  const double critical = built(c).critical_time_step();
+  c.mutable_time_step()->set_fixed(critical);  // at the limit: allowed
+  EXPECT_NO_THROW(check_built_world(built(c)));
+  c.mutable_time_step()->set_fixed(critical * 1.01);
+  try {
+    check_built_world(built(c), {.name = "case.txtpb"});
+    FAIL() << "a step above the critical one passed";
+  } catch (const CaseError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("case.txtpb: time_step.fixed: "));
+    EXPECT_THAT(error.what(), HasSubstr("exceeds the critical time step"));
+  }
+}
+
+// A stage may set its own fixed step from its start on (stage.time_step).
+TEST(WorldChecks, AStagesFixedStepAboveTheCriticalStepIsRefused) {
+  proto::Case c = test::valid_case();
+  ASSERT_GT(c.stage_size(), 0);
+  const double critical = built(c).critical_time_step();
+  c.mutable_stage(0)->mutable_time_step()->set_fixed(critical);
+  CaseDefinition definition = convert_case(c);
+  EXPECT_NO_THROW(check_built_world(World(definition.world), definition.stages));
+  c.mutable_stage(0)->mutable_time_step()->set_fixed(critical * 1.5);
+  definition = convert_case(c);
+  try {
+    check_built_world(World(definition.world), definition.stages, {.name = "case.txtpb"});
+    FAIL() << "a stage's step above the critical one passed";
+  } catch (const CaseError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("case.txtpb: stage[0].time_step.fixed: "));
+    EXPECT_THAT(error.what(), HasSubstr("exceeds the critical time step"));
+  }
+}
+
+}  // namespace
+}  // namespace dem::io

@@ -1,0 +1,181 @@
+// What one command, or a flood of them, may ask of a server: each limit
+// refused naming the field and the limit, a full queue answered "busy"
+// while every command still gets its one reply, and get_state answered at
+// once while the engine cycles (docs/RELIABILITY.md).
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "service_test_support.h"
+
+namespace dem::test {
+namespace {
+
+using protocol::CommandKind;
+using protocol::ReplyStatus;
+
+protocol::Command command(CommandKind kind) {
+  protocol::Command c;
+  c.kind = static_cast<std::uint8_t>(kind);
+  return c;
+}
+
+protocol::Reply reply_to(client::Client& client, protocol::Command c) {
+  const std::optional<protocol::Reply> reply = client.await(client.send(std::move(c)), 20s);
+  if (!reply) ADD_FAILURE() << "no reply";
+  return reply.value_or(protocol::Reply{});
+}
+
+TEST(Limits, EachLimitIsRefusedNamingItsFieldAndOption) {
+  service::ServerOptions options = server_options("limits", kLimitsPerCommand);
+  options.limits.max_cycles = 1000;
+  options.limits.max_payload_bytes = 4096;
+  options.limits.max_query_contacts = 5;
+  options.max_particles = 50;
+  InProcessServer server(options);
+  client::Client client(connect_options("limits", kLimitsPerCommand));
+  client.load_case_file(case_file("nine_disc_damped"));
+
+  protocol::Command cycle = command(CommandKind::kCycle);
+  cycle.cycle.cycles = 1001;
+  protocol::Reply reply = reply_to(client, cycle);
+  EXPECT_EQ(reply.status, ReplyStatus::kBadRequest);
+  EXPECT_EQ(reply.message, "cycle.cycles: 1001 cycles, more than the server's limit of 1000 a command (--max-cycles)");
+
+  protocol::Command big = command(CommandKind::kLoadCase);
+  big.load_case.text = std::string(5000, '#');
+  reply = reply_to(client, big);
+  EXPECT_EQ(reply.status, ReplyStatus::kBadRequest);
+  EXPECT_EQ(reply.message,
+            "load_case.text: 5000 bytes, more than the server's limit of 4096 bytes (--max-payload-bytes)");
+
+  // 197 discs against a budget of 50.
+  reply = reply_to(client, [] {
+    protocol::Command c = command(CommandKind::kLoadCase);
+    c.load_case.path = case_file("verification_assembly").string();
+    return c;
+  }());
+  EXPECT_EQ(reply.status, ReplyStatus::kInvalidCase);
+  EXPECT_NE(reply.message.find("particles: define 197 particles, more than the particle budget of 50"),
+            std::string::npos)
+      << reply.message;
+
+  protocol::Command threads = command(CommandKind::kLoadCase);
+  threads.load_case.text = read_text(case_file("nine_disc_damped")) + "\nnumerics { threads: 100000 }\n";
+  reply = reply_to(client, threads);
+  EXPECT_EQ(reply.status, ReplyStatus::kInvalidCase);
+  EXPECT_NE(reply.message.find("numerics.threads: asks for 100000 threads"), std::string::npos) << reply.message;
+
+  // The nine discs touch nowhere at first: press them into 8 contacts and more.
+  client.set_wall_velocity("top", {0, -12, 0});
+  client.set_wall_velocity("bottom", {0, 12, 0});
+  client.cycle(600);
+  reply = reply_to(client, command(CommandKind::kQueryContacts));
+  EXPECT_EQ(reply.status, ReplyStatus::kBadRequest);
+  EXPECT_NE(reply.message.find("more than the 5 one query may return (--max-query-contacts)"), std::string::npos)
+      << reply.message;
+  protocol::Command narrow = command(CommandKind::kQueryContacts);
+  narrow.query.wall_set = true;
+  narrow.query.wall = "top";
+  EXPECT_TRUE(reply_to(client, narrow).ok());
+  // And it still serves, with nothing half-applied.
+  EXPECT_EQ(client.get_state().state.case_name, "nine_disc_damped");
+}
+
+TEST(Limits, AFullQueueAnswersBusyAndEveryCommandGetsOneReply) {
+  service::ServerOptions options = server_options("busy", kLimitsBusy);
+  options.queue_capacity = 4;
+  InProcessServer server(options);
+  client::Client client(connect_options("busy", kLimitsBusy));
+  client.load_case_file(case_file("nine_disc_damped"));
+  // A long cycle keeps the engine thread in chunks of 20 ms; a burst of
+  // commands between two chunk boundaries overflows the queue.
+  const std::uint64_t running = client.start_cycle(1'000'000);
+  std::vector<std::uint64_t> requests;
+  for (int i = 0; i < 200; ++i) {
+    protocol::Command c = command(CommandKind::kSetWallVelocity);  // allowed while running
+    c.wall_velocity.wall = "top";
+    c.wall_velocity.velocity.y = -0.001 * (i % 3);
+    requests.push_back(client.send(c));
+  }
+  int ok = 0, busy = 0;
+  for (const std::uint64_t request : requests) {
+    const std::optional<protocol::Reply> reply = client.await(request, 30s);
+    ASSERT_TRUE(reply) << "request " << request << " got no reply";
+    if (reply->ok()) ++ok;
+    if (reply->status == ReplyStatus::kBusy) {
+      ++busy;
+      EXPECT_NE(reply->message.find("busy: the server's command queue is full (4 commands"), std::string::npos);
+    }
+  }
+  EXPECT_EQ(ok + busy, 200);
+  EXPECT_GT(busy, 0);
+  EXPECT_GT(ok, 0);
+  EXPECT_TRUE(client.stop().ok());
+  const std::optional<protocol::Reply> ended = client.await(running, 30s);
+  ASSERT_TRUE(ended);
+  EXPECT_EQ(ended->status, ReplyStatus::kCancelled);
+}
+
+TEST(Limits, GetStateIsAnsweredWithoutWaitingForTheChunkBoundary) {
+  service::ServerOptions options = server_options("quick", kLimitsGetStateWhileCycling);
+  options.chunk_duration = 200ms;  // a long chunk: waiting for its end would show
+  InProcessServer server(options);
+  client::Client client(connect_options("quick", kLimitsGetStateWhileCycling));
+  client.load_case_file(case_file("verification_assembly"));
+  const std::uint64_t running = client.start_cycle(1'000'000);
+  ASSERT_TRUE(client.wait_for_status([](const auto& s) { return s.command_cycles_done > 0; }, 10s));
+  std::vector<double> durations;
+  std::uint64_t first_cycle = 0, last_cycle = 0;
+  for (int i = 0; i < 40; ++i) {
+    const protocol::Reply state = client.get_state();
+    EXPECT_EQ(state.state.state, protocol::ServerState::kRunning);
+    durations.push_back(state.duration);
+    (i == 0 ? first_cycle : last_cycle) = state.state.cycle;
+    std::this_thread::sleep_for(10ms);
+  }
+  std::sort(durations.begin(), durations.end());
+  // From arrival to reply on the server: microseconds, not a 200 ms chunk.
+  EXPECT_LT(durations[durations.size() / 2], 0.005) << "median";
+  EXPECT_LT(durations[durations.size() * 9 / 10], 0.05) << "90th percentile";
+  EXPECT_GT(last_cycle, first_cycle);  // the state it gives moves on with the run
+  client.stop();
+  client.await(running, 30s);
+}
+
+// Every client reads the reply topic: one that stops reading (here demctl
+// monitor, stopped with SIGSTOP) must not hold up the replies to others.
+TEST(Limits, AStalledClientDoesNotHoldUpTheOthersReplies) {
+  InProcessServer server(server_options("stalled", kLimitsStalledClient));
+  client::Client client(connect_options("stalled", kLimitsStalledClient));
+  client.load_case_file(case_file("nine_disc_damped"));
+  const pid_t monitor = spawn(DEM_DEMCTL_PROGRAM,
+                              {"monitor", "--server", "stalled", "--domain", std::to_string(kLimitsStalledClient)},
+                              /*quiet=*/true);
+  const std::uint64_t served = client.status().commands_served;
+  ASSERT_TRUE(eventually([&] { return client.get_state().state.commands_served >= served + 2; }, 20s));
+  std::this_thread::sleep_for(1s);  // its readers match
+  ::kill(monitor, SIGSTOP);
+  // Some 2 MB of replies, four times what Cyclone holds for a slow reader
+  // before a writer that keeps everything must wait for it.
+  const auto start = std::chrono::steady_clock::now();
+  double slowest = 0.0;
+  for (int i = 0; i < 2000; ++i) {
+    const auto sent = std::chrono::steady_clock::now();
+    const protocol::Reply reply = i % 2 == 0 ? client.get_state() : client.set_wall_velocity("top", {0, -0.1, 0});
+    ASSERT_TRUE(reply.ok());
+    slowest = std::max(slowest, std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count());
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ::kill(monitor, SIGKILL);
+  waitpid(monitor, nullptr, 0);
+  std::printf("2000 commands with a stalled client on the domain: %.2f s, the slowest %.3f s\n", seconds, slowest);
+  EXPECT_LT(slowest, 1.0);  // a write waiting for the stalled reader would take 5 s
+}
+
+}  // namespace
+}  // namespace dem::test
