@@ -136,7 +136,25 @@ StageResult run_stage(BasicWorld<Dim>& world, const StageDefT<Dim>& stage, std::
   return result;
 }
 
+template <int Dim>
+StageDefT<Dim> stage_remainder(StageDefT<Dim> stage, std::uint64_t done) {
+  stage.trim.reset();
+  stage.place_wall.reset();
+  stage.remove_walls.clear();
+  stage.wall_motions.clear();
+  stage.box_control.reset();
+  stage.release_box_control = false;
+  stage.damping.reset();
+  stage.time_step.reset();
+  stage.frictions.clear();
+  stage.cycles -= std::min(done, stage.cycles);
+  stage.until.min_cycles = stage.until.min_cycles > done ? stage.until.min_cycles - done : 0;
+  return stage;
+}
+
 template StageResult run_stage<2>(BasicWorld<2>&, const StageDefT<2>&, std::uint64_t, const StageObserverT<2>&);
 template StageResult run_stage<3>(BasicWorld<3>&, const StageDefT<3>&, std::uint64_t, const StageObserverT<3>&);
+template StageDefT<2> stage_remainder<2>(StageDefT<2>, std::uint64_t);
+template StageDefT<3> stage_remainder<3>(StageDefT<3>, std::uint64_t);
 
 }  // namespace dem

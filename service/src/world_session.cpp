@@ -120,16 +120,8 @@ class WorldSessionT final : public WorldSession {
   std::uint64_t stage_cycles(std::size_t stage) const override { return stages_.at(stage).cycles; }
   StageResult run_stage(std::size_t stage, const std::function<bool()>& between_cycles,
                         std::uint64_t done) override {
-    StageDefT<Dim> running = stages_.at(stage);
-    if (done > 0) {
-      // Resumed: the start actions are done and in the state.
-      running.trim.reset();
-      running.place_wall.reset();
-      running.wall_motions.clear();
-      running.damping.reset();
-      running.cycles -= std::min(done, running.cycles);
-      running.until.min_cycles = running.until.min_cycles > done ? running.until.min_cycles - done : 0;
-    }
+    // Resumed: the start actions are done and in the state.
+    const StageDefT<Dim> running = done > 0 ? stage_remainder(stages_.at(stage), done) : stages_.at(stage);
     // An observer interval of one cycle: the caller decides what is due
     // (rows, telemetry, commands); run_stage alone decides the stage's end.
     StageResult result =

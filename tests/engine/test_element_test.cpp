@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 
 #include "dem/error.h"
 #include "dem/packing.h"
@@ -229,6 +230,44 @@ TEST(BoxControl, RestartIsExactAndThreadsAgree) {
   EXPECT_EQ(restored.state_hash(), original.state_hash());
   EXPECT_EQ(parallel.state_hash(), original.state_hash());
   EXPECT_EQ(restored.box_measure().deviator_strain, original.box_measure().deviator_strain);
+}
+
+// A stage that sets a box control, resumed from a snapshot taken part-way
+// through it (a checkpoint), ends where the uninterrupted stage ends: its
+// start actions are not done again (a second set_box_control would move
+// the strain reference to the resumed state and the stop condition with it).
+TEST(BoxControl, AStageResumedPartWayEndsAsTheWholeStage) {
+  WorldDef def = box_of_discs();
+  def.particles.resize(150);
+  def.walls.push_back(WallDef{"spare", {0.1, 0.1}, {1, 0}, -0.01, 0.01, 0, {}});
+  StageDef shear;
+  shear.box_control = box(AxisControl::kStrainRate, -0.01, AxisControl::kStrainRate, 0.01);
+  shear.remove_walls = {4};
+  shear.time_step = TimeStepSetting{0.5, 0.0};
+  shear.cycles = 20000;
+  shear.until.deviator_strain_above = 0.004;
+  shear.until.check_interval = 100;
+  World whole(def);
+  const StageResult all = run_stage(whole, shear);
+  ASSERT_TRUE(all.condition_met);
+
+  World first(def);
+  std::optional<World::Snapshot> part_way;
+  run_stage(first, shear, 1000, [&](const World& w) {
+    part_way = w.snapshot();
+    return false;
+  });
+  ASSERT_TRUE(part_way.has_value());
+  World resumed(*part_way);
+  const std::uint64_t done = resumed.cycle_count();
+  const StageResult rest = run_stage(resumed, stage_remainder(shear, done));
+  std::printf("whole stage: %llu cycles; resumed after %llu: %llu more, deviator strain %.6f and %.6f\n",
+              static_cast<unsigned long long>(all.cycles_run), static_cast<unsigned long long>(done),
+              static_cast<unsigned long long>(rest.cycles_run), whole.box_measure().deviator_strain,
+              resumed.box_measure().deviator_strain);
+  EXPECT_TRUE(rest.condition_met);
+  EXPECT_EQ(done + rest.cycles_run, all.cycles_run);
+  EXPECT_EQ(resumed.state_hash(), whole.state_hash());
 }
 
 }  // namespace

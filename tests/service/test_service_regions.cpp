@@ -1,12 +1,17 @@
 // The measures of a case's regions through the service (issue 13): a case
 // with measurement regions and a box control, loaded into a server in this
 // process; its region telemetry reaches a C++ subscriber and its tables
-// (regions.csv, box.csv) are written beside walls.csv. DDS domain 220
-// (issue 13's tests use 220-239).
+// (regions.csv, box.csv) are written beside walls.csv; a server killed in
+// the shear stage of an element test and resumed ends with the same tables
+// and state as one never interrupted. DDS domains 220 and 222 (issue 13's
+// tests use 220-239).
 #include <gtest/gtest.h>
+
+#include <signal.h>
 
 #include <fstream>
 #include <mutex>
+#include <regex>
 
 #include "dem/client/telemetry.h"
 #include "service_test_support.h"
@@ -15,6 +20,23 @@ namespace dem::test {
 namespace {
 
 constexpr std::uint32_t kRegionTelemetry = 220;
+constexpr std::uint32_t kRegionCheckpoints = 222;
+
+namespace fs = std::filesystem;
+
+// The newest checkpoint's cycle in a case directory, or 0.
+std::uint64_t newest_checkpoint(const fs::path& case_directory) {
+  std::uint64_t newest = 0;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(case_directory / "checkpoints", error)) {
+    std::smatch match;
+    const std::string name = entry.path().filename().string();
+    if (std::regex_match(name, match, std::regex("checkpoint-0*([0-9]+)\\.resume"))) {
+      newest = std::max<std::uint64_t>(newest, std::stoull(match[1]));
+    }
+  }
+  return newest;
+}
 
 TEST(Regions, TheirMeasuresArePublishedAndWritten) {
   const service::ServerOptions options = server_options("biaxial", kRegionTelemetry);
@@ -65,6 +87,41 @@ TEST(Regions, TheirMeasuresArePublishedAndWritten) {
     std::string header;
     ASSERT_TRUE(std::getline(in, header)) << file;
     EXPECT_EQ(header.substr(0, 11), "cycle,time,") << file;
+  }
+}
+
+// Randall's reduced graded assembly (cases/randall): compression to 256,000
+// cycles, then constant-volume shear under the box control to 297,000.
+// Killed after a checkpoint in the shear stage, the resumed server neither
+// sets the stage's box control again (its strain reference stays) nor
+// starts regions.csv and box.csv afresh.
+TEST(Regions, AnElementTestKilledInItsShearAndResumedEndsAsOneNeverInterrupted) {
+  const fs::path case_path = fs::path(DEM_CASES_DIR) / "randall" / "graded_reduced.case.txtpb";
+  const auto arguments = [&](const std::string& name, const fs::path& out, std::vector<std::string> more) {
+    std::vector<std::string> all = {"--name", name, "--domain", std::to_string(kRegionCheckpoints), "--case",
+                                    case_path.string(), "--out", out.string(), "--threads", "1", "--log-level", "warn",
+                                    "--run-and-exit"};
+    all.insert(all.end(), more.begin(), more.end());
+    return all;
+  };
+  const fs::path whole = output_directory("regions_checkpoints_whole");
+  const fs::path killed = output_directory("regions_checkpoints_killed");
+  ServerProcess first(arguments("whole", whole, {}));
+  ASSERT_EQ(first.wait(180s), 0);
+
+  ServerProcess second(arguments("killed", killed, {"--checkpoint-cycles", "5000"}));
+  const fs::path directory = killed / "randall_graded_reduced";
+  ASSERT_TRUE(eventually([&] { return newest_checkpoint(directory) >= 270000; }, 180s));
+  second.signal(SIGKILL);
+  second.wait(10s);
+  ASSERT_FALSE(fs::exists(directory / "final.snapshot")) << "the run ended before it was killed";
+
+  ServerProcess third(arguments("resumed", killed, {"--resume", "--checkpoint-cycles", "5000"}));
+  ASSERT_EQ(third.wait(180s), 0);
+  std::printf("killed after the checkpoint at cycle %llu (shear from 256,000)\n",
+              static_cast<unsigned long long>(newest_checkpoint(directory)));
+  for (const char* name : {"regions.csv", "box.csv", "walls.csv", "assembly.csv", "stages.csv", "final.snapshot"}) {
+    EXPECT_EQ(read_text(whole / "randall_graded_reduced" / name), read_text(directory / name)) << name << " differs";
   }
 }
 

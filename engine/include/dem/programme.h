@@ -99,6 +99,13 @@ template <int Dim>
 StageResult run_stage(BasicWorld<Dim>& world, const StageDefT<Dim>& stage, std::uint64_t interval = 0,
                       const std::type_identity_t<StageObserverT<Dim>>& observer = {});
 
+// The rest of a stage resumed `done` cycles into it (a checkpoint's): its
+// start actions - all of them, including the box control, whose strain
+// reference would otherwise move to the resumed state - are done and in
+// the state, so they go; the cycles and min_cycles left count from there.
+template <int Dim>
+StageDefT<Dim> stage_remainder(StageDefT<Dim> stage, std::uint64_t done);
+
 using StageDef = StageDefT<2>;
 using StageDef3 = StageDefT<3>;
 using StageObserver = StageObserverT<2>;
