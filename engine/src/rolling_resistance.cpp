@@ -38,10 +38,6 @@ std::vector<RollingRow> touching_rows(const WorldState<Dim>& s) {
 double rolling_part(double w, const Vec3&) { return w; }
 Vec3 rolling_part(const Vec3& w, const Vec3& e) { return w - w.dot(e) * e; }
 
-// The torque kept in the tangent plane as the contact turns (3D), its
-// magnitude kept (as carry_shear).
-void carry(double&, const Vec3&) {}
-void carry(Vec3& m, const Vec3& e) { carry_shear(m, e); }
 
 template <int Dim>
 Spin<Dim> scaled_to(const Spin<Dim>& m, double limit) {
@@ -95,7 +91,9 @@ void apply_rolling_resistance(WorldState<Dim>& s) {
       spin = rolling_part(p.angular_velocity[x] - other_spin, c.normal);
     } else {
       spin = rolling_part(Vec3(p.angular_velocity[x] - other_spin), c.normal);
-      carry(torque, c.normal);
+      // The torque kept in the tangent plane as the contact turns, its
+      // magnitude kept (as the tangential spring's, carry_shear).
+      carry_shear(torque, c.normal);
     }
     const Spin<Dim> turn = spin * dt;
     // The spring's torque of the last pass acted while the bodies turned by
