@@ -185,7 +185,8 @@ def test_a_file_without_stress_and_settlement_is_named(out):
 def test_randall_chapter_6_figures_from_a_dem_validate_directory(tmp_path):
     """Roses, obliquities, the shear series and the stress path (Randall
     1989, Figs. 6.15-6.29) from the tables dem_validate randall-* writes,
-    and the hopper's discharge (6.2)."""
+    the velocity field of a state it keeps (6.31), and the hopper's
+    discharge (6.2)."""
     with open(tmp_path / "roses.csv", "w", newline="") as out:
         rows = csv.writer(out)
         rows.writerow(["state", "kind", "angle_low", "angle_high", "contacts", "share"])
@@ -212,11 +213,19 @@ def test_randall_chapter_6_figures_from_a_dem_validate_directory(tmp_path):
         rows.writerow(["run", "half_angle_deg", "orifice", "time", "discharged"])
         for k in range(20):
             rows.writerow(["30 deg, 10 mm", 30, 0.01, 0.005 * k, 25 * k])
+    (tmp_path / "strain_0.005_percent").mkdir()
+    with open(tmp_path / "strain_0.005_percent" / "particles.csv", "w", newline="") as out:
+        rows = csv.writer(out)
+        rows.writerow(["id", "x", "y", "radius", "vx", "vy", "angular_velocity", "rotation", "material"])
+        for k in range(25):
+            x, y = 0.002 * (k % 5), 0.002 * (k // 5)
+            rows.writerow([k, x, y, 0.001, -0.01 * x, 0.01 * y, 0, 0, "glass"])
     from dem.plots import draw_randall_directory
 
     written = draw_randall_directory(tmp_path, tmp_path / "png")
     assert {p.name for p in written} >= {"rose_100_kPa_contacts.png", "rose_100_kPa_normal_force.png",
-                                         "obliquity.png", "shear.png", "stress_path.png", "discharge.png"}
+                                         "obliquity.png", "shear.png", "stress_path.png", "discharge.png",
+                                         "velocity_strain_0_005_percent.png"}
     for path in written:
         assert_png(path)
     result = subprocess.run([sys.executable, "-m", "dem.plots", "randall", str(tmp_path), str(tmp_path / "cli")],

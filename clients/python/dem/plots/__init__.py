@@ -13,7 +13,8 @@ axes (or a new headless figure) and writes a PNG when given a path:
 - plot_stress_settlement_family, plot_final_measure: a parameter sweep's
   stress-settlement curves and final measures (dem.sweep.Results);
 - plot_rose, plot_obliquity_histogram, plot_shear_series,
-  plot_stress_path, plot_discharge: Randall's chapter 6 (granular.py).
+  plot_stress_path, plot_discharge, plot_velocity_field: Randall's
+  chapter 6 (granular.py).
 
 Figures are drawn on matplotlib's Agg canvas (figure.py), so nothing here
 needs a display.
@@ -24,7 +25,7 @@ from .figure import new_axes, save_png
 from .force_chains import plot_force_chains
 from .force_distribution import plot_force_distribution
 from .granular import (draw_randall_directory, plot_discharge, plot_obliquity_histogram, plot_rose, plot_shear_series,
-                       plot_stress_path)
+                       plot_stress_path, plot_velocity_field)
 from .oblique_impact import plot_psi2_against_psi1
 from .stress_settlement import LiveStressSettlement, StressSettlementSeries, plot_stress_settlement
 from .sweep import plot_final_measure, plot_stress_settlement_family
@@ -39,6 +40,7 @@ __all__ = [
     "plot_rose",
     "plot_shear_series",
     "plot_stress_path",
+    "plot_velocity_field",
     "plot_contact_force_history",
     "plot_force_chains",
     "plot_final_measure",

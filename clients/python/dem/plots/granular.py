@@ -12,7 +12,10 @@ regions.csv:
   deviator strain (Figs. 6.24, 6.28-6.30);
 - plot_stress_path: t = (sigma_1 - sigma_2) / 2 against s = (sigma_1 +
   sigma_2) / 2 (Fig. 6.27), and the isotropic stress against strain (6.25);
-- plot_discharge: particles discharged from a hopper against time (6.2).
+- plot_discharge: particles discharged from a hopper against time (6.2);
+- plot_velocity_field: each particle's velocity as an arrow, from a
+  particles.csv (Fig. 6.31 at 0.005 % deviator strain; the hopper's flow
+  patterns, Fig. 6.2).
 
 ``python3 -m dem.plots randall DIR`` draws them all from a dem_validate
 output directory.
@@ -138,6 +141,33 @@ def plot_discharge(rows, *, png=None, title=None):
     return finish(figure, png)
 
 
+def plot_velocity_field(rows, *, png=None, title=None):
+    """Particles (particles.csv rows: x, y, radius, vx, vy) as circles with
+    their velocities as arrows, the arrows scaled together so the fastest is
+    two mean diameters long."""
+    from matplotlib.collections import PatchCollection
+    from matplotlib.patches import Circle
+
+    figure, ax = new_axes(None)
+    x = np.array([float(r["x"]) for r in rows])
+    y = np.array([float(r["y"]) for r in rows])
+    radius = np.array([float(r["radius"]) for r in rows])
+    vx = np.array([float(r["vx"]) for r in rows])
+    vy = np.array([float(r["vy"]) for r in rows])
+    ax.add_collection(PatchCollection([Circle((a, b), c) for a, b, c in zip(x, y, radius)], facecolor="none",
+                                      edgecolor="0.7", linewidth=0.4))
+    fastest = float(np.max(np.hypot(vx, vy))) if len(rows) else 0.0
+    if fastest > 0.0:
+        scale = 4.0 * float(np.mean(radius)) / fastest
+        ax.quiver(x, y, vx * scale, vy * scale, angles="xy", scale_units="xy", scale=1.0, width=0.003, color="C0")
+    ax.set_aspect("equal")
+    ax.autoscale_view()
+    ax.set_xlabel("x, m")
+    ax.set_ylabel("y, m")
+    ax.set_title(title or f"particle velocities (largest {fastest:.3g} m/s)", fontsize="medium")
+    return finish(figure, png)
+
+
 def draw_randall_directory(directory, out=None):
     """Every figure a dem_validate randall-* or hopper directory holds;
     returns the PNG paths written."""
@@ -164,6 +194,12 @@ def draw_randall_directory(directory, out=None):
             written.append(save_png(plot_stress_path(rows), out / "stress_path.png"))
     if (directory / "hopper.csv").exists():
         written.append(save_png(plot_discharge(read_rows(directory / "hopper.csv")), out / "discharge.png"))
+    # The states dem_validate keeps (at_100_kPa, strain_0.005_percent, a
+    # hopper run part-way through its discharge), each a particles.csv.
+    for state in sorted(p for p in directory.iterdir() if (p / "particles.csv").is_file()):
+        rows = read_rows(state / "particles.csv")
+        name = "velocity_" + state.name.replace(" ", "_").replace(",", "").replace(".", "_")
+        written.append(save_png(plot_velocity_field(rows, title=f"velocities, {state.name}"), out / f"{name}.png"))
     return written
 
 
