@@ -22,4 +22,7 @@ export OMP_NUM_THREADS=1
 # suppressions ignore the libc calls made from inside it (tests/service/tsan.supp).
 export TSAN_OPTIONS="halt_on_error=1 exitcode=66 second_deadlock_stack=1 suppressions=$root/tests/service/tsan.supp"
 cd "$build"
-ctest -L service --output-on-failure -j"$(nproc)"
+# Not dds_security: what it adds is Cyclone's security plugins and OpenSSL
+# handing key material between their own threads, none of it instrumented
+# (TSan reports their locks); it runs in the ordinary suite.
+ctest -L service -E '^dds_security$' --output-on-failure -j"$(nproc)"

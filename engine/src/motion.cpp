@@ -40,15 +40,7 @@ DEM_INLINE void turn(Quaternion& q, const Vec3& omega, double dt) {
   double sine_over_h = 1.0 - h2 * k6 * (1.0 - h2 * k20 * (1.0 - h2 * k42));
   if (h2 >= 1e-4) large_half_angle(h2, cosine, sine_over_h);
   // (c, a) (w, v) = (c w - a.v, c v + w a + a x v), a = sin(h)/h (hx, hy, hz).
-  const double ax = sine_over_h * hx, ay = sine_over_h * hy, az = sine_over_h * hz;
-  const double w = q.w(), x = q.x(), y = q.y(), z = q.z();
-  const double nw = cosine * w - (ax * x + ay * y + az * z);
-  const double nx = cosine * x + w * ax + (ay * z - az * y);
-  const double ny = cosine * y + w * ay + (az * x - ax * z);
-  const double nz = cosine * z + w * az + (ax * y - ay * x);
-  const double length2 = nw * nw + nx * nx + ny * ny + nz * nz;
-  const double rescale = std::abs(length2 - 1.0) > 1e-12 ? 1.0 / std::sqrt(length2) : 1.0;
-  q = Quaternion(nw * rescale, nx * rescale, ny * rescale, nz * rescale);
+  turn_by(q.coeffs().data(), cosine, sine_over_h * hx, sine_over_h * hy, sine_over_h * hz);
 }
 
 // Local non-viscous damping (Miyata eq. 33, per component as PFC applies

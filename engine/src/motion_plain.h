@@ -19,7 +19,8 @@ namespace dem {
 void large_half_angle(double h2, double& cosine, double& sine_over_h);
 
 // q <- (cos h, a) q, normalised when it drifted from unit length (Cundall &
-// Strack eq. 23a in quaternion form; q holds x, y, z, w).
+// Strack eq. 23a in quaternion form; q holds x, y, z, w, as Eigen stores a
+// quaternion). The general step (motion.cpp) turns through it too.
 [[gnu::always_inline]] inline void turn_by(double* q, double cosine, double ax, double ay, double az) {
   const double qx = q[0], qy = q[1], qz = q[2], qw = q[3];
   const double nw = cosine * qw - (ax * qx + ay * qy + az * qz);

@@ -22,10 +22,10 @@
 # it runs, and so does its server, so a second copy (a resubmission while
 # the first still runs) exits 75 and leaves the first alone.
 #
-# Exit code: the server's (0 done, 1 failed, 3 invalid case, 4 stopped;
-# docs/SERVICE.md; 1 also when it exited 0 without its final snapshot), 2
-# when the sweep directory or the index is wrong, 75 when the task is
-# running already.
+# Exit code: the server's (0 done, 1 failed, 3 invalid case, 4 stopped, 5
+# another server holds its name; docs/SERVICE.md; 1 also when it exited 0
+# without its final snapshot), 2 when the sweep directory or the index is
+# wrong, 75 when the task is running already.
 set -uo pipefail
 
 status_file=""
@@ -108,11 +108,14 @@ previous_attempt="$(status_value attempt)"
 attempt=$((${previous_attempt:-0} + 1))
 resume=()
 if [ "$checkpoint_cycles" -gt 0 ] || ! [[ "$checkpoint_seconds" =~ ^0*(\.0*)?$ ]]; then
-  "$server" --help 2>/dev/null | grep -q -- --checkpoint-cycles ||
+  # (Read whole: grep -q in a pipe would end it early, and pipefail call that a failure.)
+  server_help="$("$server" --help 2>/dev/null)"
+  [[ "$server_help" == *--checkpoint-cycles* ]] ||
     fail "sweep.conf asks for checkpoints, but $server has no --checkpoint-cycles"
   checkpoints=(--checkpoint-cycles "$checkpoint_cycles" --checkpoint-seconds "$checkpoint_seconds")
-  # The server keeps its checkpoints in <out>/<case name>/checkpoints.
-  if compgen -G "$out/*/checkpoints/*" >/dev/null; then
+  # The server keeps its checkpoints in <out>/<case name>/checkpoints; a
+  # checkpoint is whole once its .resume file is there (written last).
+  if compgen -G "$out/*/checkpoints/*.resume" >/dev/null; then
     resume=(--resume)
   fi
 else

@@ -258,11 +258,12 @@ void SimulationRunner::execute(ReceivedCommand received) {
     reply.status = ReplyStatus::kFailed;
     reply.message = error.what();
   }
-  send(received, std::move(reply));
-  // The status topic says what changed: a new state, a new case, a run.
+  // The status topic says what changed: a new state, a new case, a run -
+  // before the reply, so who reads the reply finds the status to match.
   // Steering and queries change none of it; the next status carries
   // their count with it, so a flood of them does not flood the topic.
-  if (state_ != state_before || message_ != message_before) publish_status();
+  if (state_ != state_before || message_ != message_before) announce();
+  send(received, std::move(reply));
 }
 
 std::string SimulationRunner::install(Simulation::Prepared prepared, const io::ResumePoint* resume) {
@@ -508,7 +509,7 @@ void SimulationRunner::start_run(ReceivedCommand& received, CommandKind kind) {
   owner_left_logged_ = false;
   state_ = ServerState::kRunning;
   message_ = std::string(protocol::to_string(kind)) + " running";
-  publish_status();
+  announce();
 }
 
 void SimulationRunner::run_chunk() {
@@ -595,9 +596,8 @@ void SimulationRunner::end_run(ReplyStatus status, const std::string& message) {
   active_health_.reset();
   if (state_ == ServerState::kRunning) state_ = ServerState::kLoaded;
   message_ = message;
-  refresh_cache(true);  // before the reply: who reads it sees the run ended
+  announce();  // before the reply: who reads it sees the run ended
   send(received, std::move(reply));
-  publish_status();
 }
 
 void SimulationRunner::fail_run(const std::string& message) {
@@ -655,6 +655,14 @@ protocol::Status SimulationRunner::status() const {
                      : 0.0;
   }
   return s;
+}
+
+// A new state goes to the cache before the status topic: a client that
+// sees a run start (or a case loaded) on the topic and then asks get_state
+// is answered with that state, not the one before it.
+void SimulationRunner::announce() {
+  refresh_cache(true);
+  publish_status();
 }
 
 void SimulationRunner::publish_status() {

@@ -58,9 +58,8 @@ void SimulationRunner::run_programme(const ReceivedCommand& received) {
     default: reply.status = ReplyStatus::kFailed; break;
   }
   programme_.reset();  // cycle and run_until record the tables at the telemetry interval again
-  refresh_cache(true);  // before the reply: who reads it sees the programme ended
+  announce();  // before the reply: who reads it sees the programme ended
   send(received, std::move(reply));
-  publish_status();
 }
 
 // Stages first .. first + count - 1 (from 0), each by the engine's run_stage.
@@ -80,7 +79,7 @@ void SimulationRunner::run_stages(std::size_t first, std::size_t count, std::uin
     const std::uint64_t done = i == first ? first_done : 0;
     programme_->start_stage(i, world, done);
     message_ = stage_label(i) + " running";
-    publish_status();
+    announce();
     StageResult result;
     try {
       result = world.run_stage(i, [this] { return between_programme_cycles(); }, done);

@@ -56,8 +56,10 @@ on_b() { ip netns exec "$ns_b" env CYCLONEDDS_URI="file://$out/cyclonedds-b.xml"
 dc=("$demctl" --domain "$domain" --timeout 20)
 
 # Host A: a server to drive.
+# It reads cases from the repository and the shared packings beside it
+# (a server reads only the directories it is given: RELIABILITY.md).
 on_a "$server_program" --name press --domain "$domain" --out "$out/press" --threads 1 --telemetry-cycles 10 \
-  >"$out/press.log" 2>&1 &
+  --read-dir "$source_dir/cases" --read-dir "$source_dir/../shared/bench" >"$out/press.log" 2>&1 &
 pids+=($!)
 
 # Host B: discovery, then commands.

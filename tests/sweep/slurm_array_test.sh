@@ -12,7 +12,12 @@
 #   3. the case mended and that task resubmitted alone (sbatch --array=2):
 #      done, on its second attempt, the others untouched; then the whole
 #      array resubmitted: nothing runs again;
-#   4. the results gathered (summary.csv).
+#   4. the results gathered (summary.csv);
+#   5. a checkpointed task resumes: a sweep that keeps checkpoints, two
+#      identical tasks; one is killed (SIGKILL to its script and server, as
+#      a crash would) after some checkpoints, resubmitted alone, resumes from its
+#      newest checkpoint and ends with the same tables and final state as
+#      its twin that ran straight through.
 # Needs root (slurmd); exits 77 (a skip) otherwise.
 #   slurm_array_test.sh SOURCE_DIR WORK_DIR DOMAIN DEMCTL
 set -euo pipefail
@@ -127,3 +132,51 @@ monitor=""
 seen=$(tail -n +2 "$work/monitor.csv" | cut -d, -f1 | sort -u | tr '\n' ' ')
 [ "$(echo "$seen" | wc -w)" -ge 3 ] || fail "demctl monitor --sweep saw only: $seen"
 echo "ok: summary.csv has the four tasks done; demctl monitor --sweep saw $seen"
+
+# 5. A checkpointed task resumes. Slower plates (0.01 m/s), so the tasks run
+# long enough to be caught; a checkpoint every 5,000 cycles.
+resume="$work/resume"
+"$python" - "$resume" "$domain" <<'PY'
+import sys
+import dem, dem.sweep
+dem.sweep.Sweep.create(sys.argv[1], dem.paths.cases_dir() / "miyata" / "cs_reduced.case.txtpb",
+                       {"material[*].friction": [0.45, 0.45], "stage[2].wall[0].motion.velocity.y": [-0.01]},
+                       name="slurm_resume", domain=int(sys.argv[2]), checkpoint_cycles=5000)
+PY
+job4=$(sbatch --parsable --array=0-1 --output="$resume/logs/slurm-%A_%a.out" "$resume/dem_sweep_task.sh" "$resume")
+checkpoints="$resume/tasks/0000/miyata_cs_reduced/checkpoints"
+newest_checkpoint() { ls "$checkpoints"/*.resume 2>/dev/null | tail -1 | sed 's/.*checkpoint-0*\([0-9]*\)\.resume/\1/'; }
+# Caught in the loading stage (from about cycle 22,600), where the plate loading analyses run too.
+deadline=$((SECONDS + 120))
+until [ "$(newest_checkpoint)" -ge 30000 ] 2>/dev/null; do
+  [ $SECONDS -lt $deadline ] || fail "task 0 wrote no checkpoints in 120 s"
+  [ "$(sed -n 's/^state=//p' "$resume/tasks/0000/task.status" 2>/dev/null)" != done ] || fail "task 0 ended before it could be killed"
+  sleep 0.2
+done
+# SIGKILL to the task's script and its server, as a crash would leave them
+# (scancel --signal=KILL would first send SIGTERM, which stops the server cleanly).
+script_pid=$(sed -n 's/^pid=//p' "$resume/tasks/0000/task.status")
+server_pid=$(grep -l "^PPid:[[:space:]]*$script_pid\$" /proc/[0-9]*/status 2>/dev/null | head -1 | cut -d/ -f3)
+[ -n "$script_pid" ] && [ -n "$server_pid" ] || fail "task 0's script ($script_pid) or server ($server_pid) not found"
+kill -KILL "$server_pid" "$script_pid"
+wait_for_job "$job4"
+killed_at=$(newest_checkpoint)
+grep -q "^state=running$" "$resume/tasks/0000/task.status" || fail "the killed task's status: $(cat "$resume/tasks/0000/task.status")"
+"$python" -m dem.sweep status "$resume" >"$work/resume_status.txt" || true
+grep -q "slurm_resume_0000" "$work/resume_status.txt" && grep -q "interrupted" "$work/resume_status.txt" ||
+  fail "dem.sweep status does not call the killed task interrupted: $(cat "$work/resume_status.txt")"
+[ "$(sed -n 's/^state=//p' "$resume/tasks/0001/task.status")" = done ] || fail "the twin did not finish"
+echo "ok: task 0 killed (SIGKILL) with its newest checkpoint at cycle $killed_at; dem.sweep status says interrupted"
+# Resubmitted alone. Its server waits out the killed one's DDS lease (about 10 s) before it takes the name.
+job5=$(sbatch --parsable --array=0 --output="$resume/logs/slurm-%A_%a.out" "$resume/dem_sweep_task.sh" "$resume")
+wait_for_job "$job5"
+status="$resume/tasks/0000/task.status"
+grep -q "^state=done$" "$status" && grep -q "^resumed=yes$" "$status" && grep -q "^attempt=2$" "$status" ||
+  fail "the resubmitted task: $(cat "$status")"
+grep -q "resuming from the checkpoint at cycle $killed_at" "$resume/tasks/0000/dem_server.log" ||
+  fail "the server's log does not say it resumed at cycle $killed_at"
+for table in walls.csv assembly.csv stages.csv compression.csv compression_states.csv final.snapshot; do
+  cmp -s "$resume/tasks/0000/miyata_cs_reduced/$table" "$resume/tasks/0001/miyata_cs_reduced/$table" ||
+    fail "the resumed task's $table differs from its uninterrupted twin's"
+done
+echo "ok: resubmitted, task 0 resumed from cycle $killed_at and ended with the tables and final snapshot of its twin"

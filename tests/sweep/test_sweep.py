@@ -152,22 +152,23 @@ def test_local_backend_runs_follows_and_gathers(tmp_path):
 
 
 def test_an_interrupted_sweep_continues_where_it_stopped(tmp_path):
-    # Slower plates (0.02 m/s instead of 0.05), so a task is caught running.
+    # Slower plates (0.02 m/s instead of 0.05), so a task is caught running; checkpoints every 5,000 cycles.
     sweep = Sweep.create(tmp_path / "intr", CS_REDUCED,
                          {"material[*].friction": [0.3, 0.45, 0.6],
-                          "stage[2].wall[0].motion.velocity.y": [-0.02]}, domain=INTERRUPT_DOMAIN)
+                          "stage[2].wall[0].motion.velocity.y": [-0.02]}, domain=INTERRUPT_DOMAIN,
+                         checkpoint_cycles=5000)
     script = f"""
 import dem.sweep
 dem.sweep.Sweep.open({str(sweep.directory)!r}).run(dem.sweep.LocalBackend(workers=1), poll=0.1)
 """
-    # Ctrl-C while task 1 runs: its server stops with a final snapshot; task 2 never starts.
+    # Ctrl-C while task 1 runs (and has a checkpoint): its server stops with a final snapshot; task 2 never starts.
     runner = subprocess.Popen([sys.executable, "-c", script], start_new_session=True,
                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
     deadline = time.monotonic() + 60
-    while sweep.status([1])[0].state != "running":
+    checkpoints = sweep.task_dir(1) / "miyata_cs_reduced" / "checkpoints"
+    while sweep.status([1])[0].state != "running" or not list(checkpoints.glob("*.resume")):
         assert runner.poll() is None and time.monotonic() < deadline, runner.stdout.read().decode()
         time.sleep(0.05)
-    time.sleep(0.5)
     os.killpg(runner.pid, signal.SIGINT)
     runner.wait(60)
     states = [t.state for t in sweep.status()]
@@ -180,6 +181,8 @@ dem.sweep.Sweep.open({str(sweep.directory)!r}).run(dem.sweep.LocalBackend(worker
     assert progress.finished
     attempts = [t.attempt for t in sweep.status()]
     assert attempts == [1, 2, 1], attempts  # task 0 was not run again
+    assert [t.resumed for t in sweep.status()] == [False, True, False]  # task 1 went on from its checkpoint
+    assert "resuming from the checkpoint at cycle" in (sweep.task_dir(1) / "dem_server.log").read_text()
     assert (sweep.task_dir(0) / "miyata_cs_reduced" / "final.snapshot").stat().st_mtime_ns == first
 
 

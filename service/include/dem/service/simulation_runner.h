@@ -104,6 +104,7 @@ class SimulationRunner {
   const ReceivedCommand* run_owner() const;
   void note_owner_left();
   protocol::Status status() const;
+  void announce();
   void publish_status();
   void publish_telemetry();
   void refresh_cache(bool always = false);  // the StateCache's get_state, as of now
