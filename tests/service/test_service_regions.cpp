@@ -11,7 +11,6 @@
 
 #include <fstream>
 #include <mutex>
-#include <regex>
 
 #include "dem/client/telemetry.h"
 #include "service_test_support.h"
@@ -23,20 +22,6 @@ constexpr std::uint32_t kRegionTelemetry = 220;
 constexpr std::uint32_t kRegionCheckpoints = 222;
 
 namespace fs = std::filesystem;
-
-// The newest checkpoint's cycle in a case directory, or 0.
-std::uint64_t newest_checkpoint(const fs::path& case_directory) {
-  std::uint64_t newest = 0;
-  std::error_code error;
-  for (const auto& entry : fs::directory_iterator(case_directory / "checkpoints", error)) {
-    std::smatch match;
-    const std::string name = entry.path().filename().string();
-    if (std::regex_match(name, match, std::regex("checkpoint-0*([0-9]+)\\.resume"))) {
-      newest = std::max<std::uint64_t>(newest, std::stoull(match[1]));
-    }
-  }
-  return newest;
-}
 
 TEST(Regions, TheirMeasuresArePublishedAndWritten) {
   const service::ServerOptions options = server_options("biaxial", kRegionTelemetry);
