@@ -38,6 +38,17 @@ void keep_rows(ContactRows<Dim>& rows, Keep keep) {
   gather_rows(rows, from, keys);
 }
 
+// Forgets the wall's contacts, then evaluates the force sums of the
+// contacts left.
+template <int Dim>
+void drop_wall_contacts(WorldState<Dim>& s, WallId id) {
+  ContactRows<Dim>& rows = s.contacts.walls;
+  keep_rows(rows, [&](std::size_t r) { return rows.second[r] != id; });
+  plan_blocks(s.blocks, s.contacts, s.particles.size(), block_size(s));
+  evaluate_contacts(s);
+  if (s.rolling) add_rolling_moments(s);
+}
+
 }  // namespace
 
 template <int Dim>
@@ -94,11 +105,7 @@ void BasicWorld<Dim>::place_wall(WallId id, const Vec<Dim>& point) {
   s.walls.last_velocity[id] = Vec<Dim>::Zero();
   s.walls.last_angular_velocity[id] = Space<Dim>::zero_spin();
   // Its contacts start afresh where it now stands.
-  ContactRows<Dim>& rows = s.contacts.walls;
-  keep_rows(rows, [&](std::size_t r) { return rows.second[r] != id; });
-  plan_blocks(s.blocks, s.contacts, s.particles.size(), block_size(s));
-  evaluate_contacts(s);
-  if (s.rolling) add_rolling_moments(s);
+  drop_wall_contacts(s, id);
   s.contacts_stale = true;
 }
 
@@ -119,11 +126,7 @@ void BasicWorld<Dim>::remove_wall(WallId id) {
   s.walls.def[id].removed = true;
   s.walls.last_velocity[id] = Vec<Dim>::Zero();
   s.walls.last_angular_velocity[id] = Space<Dim>::zero_spin();
-  ContactRows<Dim>& rows = s.contacts.walls;
-  keep_rows(rows, [&](std::size_t r) { return rows.second[r] != id; });
-  plan_blocks(s.blocks, s.contacts, s.particles.size(), block_size(s));
-  evaluate_contacts(s);
-  if (s.rolling) add_rolling_moments(s);
+  drop_wall_contacts(s, id);
   // The strain energy its contacts held is gone with them.
   if (s.energy_budget) s.energy.removed += held_before - held_energy(s);
 }
