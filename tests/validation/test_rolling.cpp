@@ -5,29 +5,18 @@
 // The checks are dem_validate's (tools/dem_validate/rolling.cpp).
 #include <gtest/gtest.h>
 
-#include <filesystem>
-
 #include "rolling.h"
+#include "validation_test_support.h"
 
 namespace dem::validation {
 namespace {
 
-std::filesystem::path out_dir(const char* name) {
-  const auto dir = std::filesystem::path(DEM_VALIDATION_TEST_OUTPUT) / name;
-  std::filesystem::remove_all(dir);
-  return dir;
-}
-
 TEST(RollingResistance, ABallRollsToRestWhereTheClosedFormSays) {
-  const Verdict verdict = report_rolling_to_rest(out_dir("rolling_to_rest"));
-  verdict.print(stdout, "rolling-to-rest");
-  EXPECT_TRUE(verdict.passed()) << verdict;
+  expect_passed(report_rolling_to_rest(out_dir("rolling_to_rest")), "rolling-to-rest");
 }
 
 TEST(RollingResistance, TheAngleOfReposeGrowsWithRollingFriction) {
-  const Verdict verdict = report_angle_of_repose(out_dir("angle_of_repose"), {0.0, 0.05, 0.1, 0.2, 0.4});
-  verdict.print(stdout, "angle-of-repose");
-  EXPECT_TRUE(verdict.passed()) << verdict;
+  expect_passed(report_angle_of_repose(out_dir("angle_of_repose"), {0.0, 0.05, 0.1, 0.2, 0.4}), "angle-of-repose");
 }
 
 }  // namespace

@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <numbers>
-#include <stdexcept>
 
+#include "dem/io/csv_file.h"
 #include "dem/packing.h"
 #include "dem/programme.h"
 #include "dem/world.h"
@@ -24,14 +23,6 @@ ContactModelDef rolling_model(double rolling_friction) {
   model.restitution = 0.3;
   model.rolling = RollingResistanceDef{rolling_friction, 0.3};
   return model;
-}
-
-std::ofstream open_csv(const std::filesystem::path& path) {
-  std::filesystem::create_directories(path.parent_path());
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write " + path.string());
-  out.precision(10);
-  return out;
 }
 
 // Rolls the ball, returns what it did.
@@ -193,14 +184,14 @@ Repose angle_of_repose(double rolling_friction) {
 
 Verdict report_rolling_to_rest(const std::filesystem::path& out) {
   Verdict v;
-  auto csv = open_csv(out / "rolling_to_rest.csv");
-  csv << "dimension,rolling_friction,speed,stop_time,theory_time,stop_distance,theory_distance,largest_slip\n";
+  io::CsvFile csv(out, "rolling_to_rest.csv",
+                  "dimension,rolling_friction,speed,stop_time,theory_time,stop_distance,theory_distance,largest_slip");
   std::printf("Rolling to rest (Ai et al. 2011, model C): v0 = 0.1 m/s, deceleration mu_r g / (1 + I/(m R^2))\n");
   for (const int dimension : {2, 3}) {
     for (const double mu : {0.05, 0.1, 0.2}) {
       const RollingToRest r = roll_to_rest(dimension, mu);
-      csv << r.dimension << ',' << mu << ',' << r.speed << ',' << r.stop_time << ',' << r.theory_time << ','
-          << r.stop_distance << ',' << r.theory_distance << ',' << r.largest_slip << '\n';
+      csv.write_row(r.dimension, mu, r.speed, r.stop_time, r.theory_time, r.stop_distance, r.theory_distance,
+                    r.largest_slip);
       const char* ball = dimension == 2 ? "disc" : "sphere";
       std::printf("  %-6s mu_r = %.2f: stops after %.5f s (theory %.5f), %.4f mm (theory %.4f), slip at most %.1e v0\n",
                   ball, mu, r.stop_time, r.theory_time, 1e3 * r.stop_distance, 1e3 * r.theory_distance,
@@ -218,14 +209,13 @@ Verdict report_rolling_to_rest(const std::filesystem::path& out) {
 
 Verdict report_angle_of_repose(const std::filesystem::path& out, const std::vector<double>& rolling_frictions) {
   Verdict v;
-  auto csv = open_csv(out / "angle_of_repose.csv");
-  csv << "rolling_friction,angle_deg,height,discs_left,at_rest\n";
+  io::CsvFile csv(out, "angle_of_repose.csv", "rolling_friction,angle_deg,height,discs_left,at_rest");
   std::printf("Angle of repose of a fixed-base heap of up to 200 discs (tan phi = 0.5), by rolling friction:\n");
   std::vector<Repose> heaps;
   for (const double mu : rolling_frictions) {
     heaps.push_back(angle_of_repose(mu));
     const Repose& r = heaps.back();
-    csv << mu << ',' << r.angle_deg << ',' << r.height << ',' << r.runout << ',' << r.at_rest << '\n';
+    csv.write_row(mu, r.angle_deg, r.height, r.runout, r.at_rest);
     std::printf("  mu_r = %.3f: %.1f deg, height %.1f mm, %.0f discs left on the base%s\n", mu, r.angle_deg,
                 1e3 * r.height, r.runout, r.at_rest ? "" : " (no heap at rest)");
     // Without rolling resistance round discs roll off a flat base: no heap.
