@@ -175,6 +175,97 @@ TEST(RegionMeasures, RattlersAreThoseLeftWithFewerThanTwoContacts) {
   EXPECT_NEAR(m.mechanical_coordination, 2.0, 1e-12);
 }
 
+TEST(RegionMeasures, SlidingContactsAreCountedAmongTheParticleContacts) {
+  // The 4 x 4 lattice's 24 particle-particle contacts, 6 of them at the
+  // Coulomb limit, and two wall contacts marked sliding too: those are left
+  // out (a wall contact's friction is the wall's).
+  AssemblySample s = lattice(Lattice{});
+  int marked = 0, walls = 0;
+  for (ContactRecord& c : s.contacts) {
+    if (c.second_particle != kInvalidId && marked < 6) {
+      c.sliding = true;
+      ++marked;
+    } else if (c.second_particle == kInvalidId && walls < 2) {
+      c.sliding = true;
+      ++walls;
+    }
+  }
+  const RegionMeasures m = measure_region(s, Region{"all"});
+  EXPECT_EQ(m.particle_contacts, 24);
+  EXPECT_EQ(m.contacts, 40);  // and 16 with the four walls
+  EXPECT_EQ(m.sliding_contacts, 6);
+  EXPECT_NEAR(m.sliding_fraction, 0.25, 1e-12);
+}
+
+// 3D: k^3 spheres of radius R in a simple cubic packing, every contact
+// along x pressing with F_x, along y with F_y, along z with F_z (walls
+// around): each sphere's cell (2R)^3 carries 2 R F per axis, so
+// sigma_ii = F_i / (4 R^2); porosity 1 - pi/6; fabric diag(1/3).
+TEST(RegionMeasures, CubicPackingOfSpheresGivesTheBoundaryTractions) {
+  constexpr int k = 3;
+  constexpr double r = 0.5;
+  const Vec3 force{6.0, 3.0, 1.0};
+  AssemblySample3 s;
+  auto id = [&](int i, int j, int l) { return (l * k + j) * k + i; };
+  for (int l = 0; l < k; ++l) {
+    for (int j = 0; j < k; ++j) {
+      for (int i = 0; i < k; ++i) {
+        s.position.push_back({r + 2.0 * r * i, r + 2.0 * r * j, r + 2.0 * r * l});
+        s.radius.push_back(r);
+        s.rotation.push_back(0.0);
+      }
+    }
+  }
+  auto add = [&](int a, int b, const Vec3& e, double f, int wall) {
+    ContactRecord3 c;
+    c.first = a;
+    if (b >= 0) {
+      c.second_particle = b;
+    } else {
+      c.second_wall = wall;
+    }
+    c.normal = e;
+    c.point = s.position[static_cast<std::size_t>(a)] + r * e;
+    c.force = -f * e;
+    c.normal_force = f;
+    s.contacts.push_back(c);
+  };
+  for (int l = 0; l < k; ++l) {
+    for (int j = 0; j < k; ++j) {
+      for (int i = 0; i < k; ++i) {
+        const int a = id(i, j, l);
+        const int index[3] = {i, j, l};
+        for (int axis = 0; axis < 3; ++axis) {
+          const Vec3 e = Vec3::Unit(axis);
+          int next[3] = {i, j, l};
+          ++next[axis];
+          add(a, index[axis] + 1 < k ? id(next[0], next[1], next[2]) : -1, e, force[axis], 2 * axis + 1);
+          if (index[axis] == 0) add(a, -1, Vec3(-e), force[axis], 2 * axis);
+        }
+      }
+    }
+  }
+  const double side = 2.0 * r * k;
+  for (const Region3& region : {Region3{"all"}, Region3{"box", RegionShape::kBox, Vec3::Zero(), Vec3::Constant(side)}}) {
+    const RegionMeasures3 m = measure_region(s, region);
+    for (int axis = 0; axis < 3; ++axis) {
+      EXPECT_NEAR(m.stress(axis, axis), force[axis] / (4.0 * r * r), 1e-12) << region.name << " axis " << axis;
+      EXPECT_NEAR(m.stress(axis, (axis + 1) % 3), 0.0, 1e-12);
+      EXPECT_NEAR(m.fabric.tensor(axis, axis), 1.0 / 3.0, 1e-12);
+      EXPECT_NEAR(m.weighted_fabric.tensor(axis, axis), force[axis] / force.sum(), 1e-12);
+    }
+    EXPECT_NEAR(m.principal_stress.values[0], 6.0, 1e-12);
+    EXPECT_NEAR(m.principal_stress.values[2], 1.0, 1e-12);
+    EXPECT_NEAR(std::abs(m.principal_stress.directions.col(0).x()), 1.0, 1e-12);  // the major axis is x
+    EXPECT_NEAR(m.mean_stress, 10.0 / 3.0, 1e-12);
+    EXPECT_NEAR(m.sin_phi, 5.0 / 7.0, 1e-12);  // (6 - 1) / (6 + 1)
+    EXPECT_NEAR(m.porosity, 1.0 - kPi / 6.0, 1e-12);
+    EXPECT_NEAR(m.coordination, 6.0, 1e-12);
+    EXPECT_EQ(m.particle_contacts, 3 * k * k * (k - 1));
+    EXPECT_NEAR(m.fabric.anisotropy, 0.0, 1e-12);
+  }
+}
+
 // A World: 3 x 3 discs of radius 1 in a square packing pressed by four
 // walls, each contact overlapping by delta, so with the linear
 // spring-dashpot's F = k delta (Miyata eq. 13) the sample carries
