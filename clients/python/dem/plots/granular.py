@@ -11,7 +11,8 @@ regions.csv:
   contacts, the structural anisotropy and the coordination against the
   deviator strain (Figs. 6.24, 6.28-6.30);
 - plot_stress_path: t = (sigma_1 - sigma_2) / 2 against s = (sigma_1 +
-  sigma_2) / 2 (Fig. 6.27), and the isotropic stress against strain (6.25);
+  sigma_2) / 2 (Fig. 6.27), and the isotropic stress against the deviator
+  strain (Fig. 6.25);
 - plot_discharge: particles discharged from a hopper against time (6.2);
 - plot_velocity_field: each particle's velocity as an arrow, from a
   particles.csv (Fig. 6.31 at 0.005 % deviator strain; the hopper's flow
@@ -65,10 +66,8 @@ def plot_obliquity_histogram(bins, *, ax=None, png=None, title=None):
     high = np.array([float(b["obliquity_high"]) for b in bins])
     share = np.array([float(b["share"]) for b in bins])
     ax.bar(low, share, width=high - low, align="edge", edgecolor="0.2", linewidth=0.5)
-    ax.set_xlabel(r"$F_s / \mu F_n$ (sliding at $\pm 1$)")
-    ax.set_ylabel("share of contacts")
-    ax.set_title(title or "contact force obliquities", fontsize="medium")
-    ax.grid(True, alpha=0.3)
+    _label(ax, r"$F_s / \mu F_n$ (sliding at $\pm 1$)", "share of contacts", title or "contact force obliquities",
+           legend=None)
     return finish(figure, png)
 
 
@@ -100,26 +99,41 @@ def plot_shear_series(rows, *, png=None, title=None):
     for ax, label in ((axes[0, 0], r"$\sin\phi$ (Fig. 6.24)"), (axes[0, 1], "sliding contacts, % (Fig. 6.28)"),
                       (axes[1, 0], r"anisotropy $\Phi_1 - \Phi_2$ (Fig. 6.29)"),
                       (axes[1, 1], "coordination number (Fig. 6.30)")):
-        ax.set_xlabel("deviator strain, %")
-        ax.set_ylabel(label)
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize="x-small")
+        _label(ax, "deviator strain, %", label, "", legend="x-small")
     figure.suptitle(title or "constant-volume shear", fontsize="medium")
     return finish(figure, png)
 
 
+def _label(ax, xlabel, ylabel, title, legend="small"):
+    """Axis labels, the title, a light grid and (unless None) a legend."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title, fontsize="medium")
+    ax.grid(True, alpha=0.3)
+    if legend:
+        ax.legend(fontsize=legend)
+
+
 def plot_stress_path(rows, *, png=None, title=None):
-    """t against s (kPa) for each region (Fig. 6.27)."""
-    figure, ax = new_axes(None)
+    """Two panels for each region: t against s (kPa, Fig. 6.27), and the
+    isotropic stress s against the deviator strain (%, Fig. 6.25: its
+    build-up at constant volume)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    figure = Figure(figsize=(10, 4.5), dpi=100, layout="constrained")
+    FigureCanvasAgg(figure)
+    path, isotropic = figure.subplots(1, 2)
     for region, series in _by_region(rows).items():
         s1 = np.array([float(r["stress_1"]) for r in series])
         s2 = np.array([float(r["stress_2"]) for r in series])
-        ax.plot((s1 + s2) / 2e3, (s1 - s2) / 2e3, label=region)
-    ax.set_xlabel("s = (σ1 + σ2) / 2, kPa")
-    ax.set_ylabel("t = (σ1 − σ2) / 2, kPa")
-    ax.set_title(title or "stress path (Fig. 6.27)", fontsize="medium")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize="small")
+        strain = 100 * np.array([float(r["deviator_strain"]) for r in series])
+        path.plot((s1 + s2) / 2e3, (s1 - s2) / 2e3, label=region)
+        isotropic.plot(strain, (s1 + s2) / 2e3, label=region)
+    _label(path, "s = (σ1 + σ2) / 2, kPa", "t = (σ1 − σ2) / 2, kPa", "stress path (Fig. 6.27)")
+    _label(isotropic, "deviator strain, %", "s = (σ1 + σ2) / 2, kPa", "isotropic stress (Fig. 6.25)")
+    if title:
+        figure.suptitle(title, fontsize="medium")
     return finish(figure, png)
 
 
@@ -133,11 +147,8 @@ def plot_discharge(rows, *, png=None, title=None):
     for run, points in runs.items():
         t, n = zip(*points)
         ax.plot(t, n, label=run)
-    ax.set_xlabel("time since the orifice opened, s")
-    ax.set_ylabel("particles discharged")
-    ax.set_title(title or "hopper discharge (Randall 6.2)", fontsize="medium")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize="x-small")
+    _label(ax, "time since the orifice opened, s", "particles discharged",
+           title or "hopper discharge (Randall 6.2)", legend="x-small")
     return finish(figure, png)
 
 
