@@ -246,7 +246,8 @@ TEST(RegionMeasures, CubicPackingOfSpheresGivesTheBoundaryTractions) {
     }
   }
   const double side = 2.0 * r * k;
-  for (const Region3& region : {Region3{"all"}, Region3{"box", RegionShape::kBox, Vec3::Zero(), Vec3::Constant(side)}}) {
+  const Region3 box{"box", RegionShape::kBox, Vec3::Zero(), Vec3::Constant(side)};
+  for (const Region3& region : {Region3{"all"}, box}) {
     const RegionMeasures3 m = measure_region(s, region);
     for (int axis = 0; axis < 3; ++axis) {
       EXPECT_NEAR(m.stress(axis, axis), force[axis] / (4.0 * r * r), 1e-12) << region.name << " axis " << axis;

@@ -158,7 +158,7 @@ Repose angle_of_repose(double rolling_friction) {
     if (y > height) height = y, peak = column;
   }
   r.height = height;
-  r.runout = world.particle_count();  // discs left on the base
+  r.discs_left = world.particle_count();
   double angle_sum = 0.0;
   int sides = 0;
   for (const int side : {-1, 1}) {
@@ -210,14 +210,14 @@ Verdict report_rolling_to_rest(const std::filesystem::path& out) {
 Verdict report_angle_of_repose(const std::filesystem::path& out, const std::vector<double>& rolling_frictions) {
   Verdict v;
   io::CsvFile csv(out, "angle_of_repose.csv", "rolling_friction,angle_deg,height,discs_left,at_rest");
-  std::printf("Angle of repose of a fixed-base heap of up to 200 discs (tan phi = 0.5), by rolling friction:\n");
+  std::printf("Angle of repose of a fixed-base heap (a column of 200 discs, tan phi = 0.5, collapsed), by mu_r:\n");
   std::vector<Repose> heaps;
   for (const double mu : rolling_frictions) {
     heaps.push_back(angle_of_repose(mu));
     const Repose& r = heaps.back();
-    csv.write_row(mu, r.angle_deg, r.height, r.runout, r.at_rest);
-    std::printf("  mu_r = %.3f: %.1f deg, height %.1f mm, %.0f discs left on the base%s\n", mu, r.angle_deg,
-                1e3 * r.height, r.runout, r.at_rest ? "" : " (no heap at rest)");
+    csv.write_row(mu, r.angle_deg, r.height, r.discs_left, r.at_rest);
+    std::printf("  mu_r = %.3f: %.1f deg, height %.1f mm, %d discs left on the base%s\n", mu, r.angle_deg,
+                1e3 * r.height, r.discs_left, r.at_rest ? "" : " (no heap at rest)");
     // Without rolling resistance round discs roll off a flat base: no heap.
     if (mu > 0.0) v.expect("mu_r = " + std::to_string(mu) + ": a heap comes to rest on the base", r.at_rest);
   }

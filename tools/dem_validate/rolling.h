@@ -28,14 +28,17 @@ struct RollingToRest {
 };
 RollingToRest roll_to_rest(int dimension, double rolling_friction);
 
-// A fixed-base heap: discs rain onto a base 50 mm wide; those that roll
-// off fall away. The slopes of the heap left (least squares over the
-// surface between a fifth and four fifths of its height, both sides).
+// A fixed-base heap: a column of 200 discs (radii 1 and 1.5 mm, tan phi
+// 0.5) settles between two walls 20 mm apart on a flat base 50 mm wide;
+// the walls are taken out and the column collapses; the discs that roll
+// off the base's edges fall away and are taken out. The slopes of the heap
+// left (least squares over the surface between a fifth and four fifths of
+// its height, both sides).
 struct Repose {
   double rolling_friction = 0.0;
   double angle_deg = 0.0;
   double height = 0.0;  // m, of the heap
-  double runout = 0.0;  // the discs left on the base
+  int discs_left = 0;   // on the base
   bool at_rest = false;
 };
 Repose angle_of_repose(double rolling_friction);
