@@ -1,8 +1,9 @@
 // Element-test control of a box of walls (BoxControlT): strain rates that
 // deform the box as asked (Randall 1989, 4.5.2; constant volume, 6.5.2),
 // servos and stress paths that hold stresses (4.1), walls taken out (a
-// hopper's orifice, 6.2), the errors that name a bad control, and exact
-// restart and thread independence with all of it.
+// hopper's orifice, 6.2), stages that change friction, damping and time
+// step, the errors that name a bad control, and exact restart and thread
+// independence with all of it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -200,6 +201,43 @@ TEST(RemoveWall, DiscsFallThroughTheOpenedOrifice) {
   World boxed(box_of_discs());
   boxed.set_box_control(box(AxisControl::kStrainRate, 0.0, AxisControl::kStrainRate, 0.0));
   EXPECT_THROW(boxed.remove_wall(0), DefinitionError);
+}
+
+// A stage's start actions (Randall 6.4.3: friction given at 100 kPa; 6.3:
+// the step reduced once the bed settles; 6.2: the orifice opened): its
+// friction, damping and time step hold from then on, a released box leaves
+// its walls where they stand, a removed wall touches nothing.
+TEST(Stage, ChangesFrictionDampingAndTimeStepReleasesTheBoxAndRemovesAWall) {
+  WorldDef def = box_of_discs();
+  def.particles.resize(150);
+  def.materials[0].friction = 0.0;
+  def.box_control = box(AxisControl::kStress, 1e4, AxisControl::kStress, 1e4);
+  def.walls.push_back(WallDef{"spare", {0.1, 0.1}, {1, 0}, -0.01, 0.01, 0, {}});
+  World world(def);
+  const double step = world.time_step();
+  StageDef compress;
+  compress.cycles = 2000;
+  run_stage(world, compress);
+  StageDef next;
+  next.release_box_control = true;
+  next.remove_walls = {4};
+  next.damping = DampingDef{0.0, 0.0, std::nullopt, 0.7, std::nullopt};
+  next.time_step = TimeStepSetting{0.05, 0.0};
+  next.frictions = {{0, 0.3}};
+  next.cycles = 10;
+  run_stage(world, next);
+  EXPECT_EQ(world.materials()[0].friction, 0.3);
+  EXPECT_EQ(world.damping().local_alpha, 0.7);
+  EXPECT_NEAR(world.time_step(), 0.05 * world.critical_time_step(), 1e-15);
+  EXPECT_LT(world.time_step(), step);
+  EXPECT_FALSE(world.box_control().has_value());
+  EXPECT_TRUE(world.wall(4).removed);
+  EXPECT_EQ(world.wall_measures()[4].contacts, 0);
+  StageDef fixed;
+  fixed.time_step = TimeStepSetting{0.0, 2e-6};
+  fixed.cycles = 1;
+  run_stage(world, fixed);
+  EXPECT_EQ(world.time_step(), 2e-6);
 }
 
 // The box's control, a removed wall and the strain reference travel in the
