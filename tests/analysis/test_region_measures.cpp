@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <type_traits>
 
 #include "dem/analysis/region_measures.h"
 #include "dem/world.h"
@@ -27,8 +28,10 @@ struct Lattice {
 
 // A contact of particle a with particle b (or a wall, b = -1) along the
 // unit normal e (from a to the other), with the force on a.
-void add_contact(AssemblySample& s, int a, int b, const Vec2& e, const Vec2& force_on_a, double radius, int wall) {
-  ContactRecord c;
+template <int Dim>
+void add_contact(AssemblySampleT<Dim>& s, int a, int b, const std::type_identity_t<Vec<Dim>>& e,
+                 const std::type_identity_t<Vec<Dim>>& force_on_a, double radius, int wall) {
+  ContactRecordT<Dim> c;
   c.first = a;
   if (b >= 0) {
     c.second_particle = b;
@@ -39,8 +42,12 @@ void add_contact(AssemblySample& s, int a, int b, const Vec2& e, const Vec2& for
   c.point = s.position[static_cast<std::size_t>(a)] + radius * e;
   c.force = force_on_a;
   c.normal_force = -force_on_a.dot(e);
-  c.shear_force = force_on_a.dot(Vec2(e.y(), -e.x()));  // along t = e turned clockwise; F_s acts against t (Fig. 3)
   c.tangential_force = force_on_a - force_on_a.dot(e) * e;
+  if constexpr (Dim == 2) {
+    c.shear_force = force_on_a.dot(Vec2(e.y(), -e.x()));  // along t = e turned clockwise; F_s acts against t (Fig. 3)
+  } else {
+    c.shear_force = c.tangential_force.norm();
+  }
   s.contacts.push_back(c);
 }
 
@@ -216,20 +223,6 @@ TEST(RegionMeasures, CubicPackingOfSpheresGivesTheBoundaryTractions) {
       }
     }
   }
-  auto add = [&](int a, int b, const Vec3& e, double f, int wall) {
-    ContactRecord3 c;
-    c.first = a;
-    if (b >= 0) {
-      c.second_particle = b;
-    } else {
-      c.second_wall = wall;
-    }
-    c.normal = e;
-    c.point = s.position[static_cast<std::size_t>(a)] + r * e;
-    c.force = -f * e;
-    c.normal_force = f;
-    s.contacts.push_back(c);
-  };
   for (int l = 0; l < k; ++l) {
     for (int j = 0; j < k; ++j) {
       for (int i = 0; i < k; ++i) {
@@ -239,8 +232,9 @@ TEST(RegionMeasures, CubicPackingOfSpheresGivesTheBoundaryTractions) {
           const Vec3 e = Vec3::Unit(axis);
           int next[3] = {i, j, l};
           ++next[axis];
-          add(a, index[axis] + 1 < k ? id(next[0], next[1], next[2]) : -1, e, force[axis], 2 * axis + 1);
-          if (index[axis] == 0) add(a, -1, Vec3(-e), force[axis], 2 * axis);
+          add_contact(s, a, index[axis] + 1 < k ? id(next[0], next[1], next[2]) : -1, e, Vec3(-force[axis] * e), r,
+                         2 * axis + 1);
+          if (index[axis] == 0) add_contact(s, a, -1, Vec3(-e), Vec3(force[axis] * e), r, 2 * axis);
         }
       }
     }
