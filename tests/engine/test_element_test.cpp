@@ -203,6 +203,90 @@ TEST(RemoveWall, DiscsFallThroughTheOpenedOrifice) {
   EXPECT_THROW(boxed.remove_wall(0), DefinitionError);
 }
 
+// 3D: a cube of six walls round 4 x 4 x 4 spheres of radius 12.5 mm that
+// just fill it; axes x, y, z by walls (0, 1), (2, 3), (4, 5).
+WorldDef3 cube_of_spheres() {
+  WorldDef3 def;
+  def.materials = {MaterialDef{"sphere", 2500.0, 0.3, 0.0}};
+  ContactModelDef model = testing::linear_model(1e5, 1e5);
+  model.law = ContactLaw::kLinearRestitution;
+  model.restitution = 0.5;
+  def.contact_models = {model};
+  LatticeDef3 lattice;
+  lattice.radius = 0.0125;
+  lattice.spacing = 0.025;
+  lattice.origin = Vec3::Constant(0.0125);
+  lattice.columns = lattice.rows = lattice.layers = 4;
+  def.particles = generate_lattice(lattice);
+  const Vec3 x = Vec3::UnitX(), y = Vec3::UnitY(), z = Vec3::UnitZ();
+  auto wall = [](const char* name, const Vec3& point, const Vec3& u, const Vec3& v) {
+    WallDef3 w;
+    w.name = name;
+    w.point = point;
+    w.direction = u;
+    w.direction2 = v;  // the normal u x v faces the spheres
+    w.h1 = w.k1 = -0.1;
+    w.h2 = w.k2 = 0.1;
+    return w;
+  };
+  def.walls = {wall("x0", {0.0, 0.05, 0.05}, y, z), wall("x1", {0.1, 0.05, 0.05}, z, y),
+               wall("y0", {0.05, 0.0, 0.05}, z, x), wall("y1", {0.05, 0.1, 0.05}, x, z),
+               wall("z0", {0.05, 0.05, 0.0}, x, y), wall("z1", {0.05, 0.05, 0.1}, y, x)};
+  def.damping.local_alpha = 0.5;
+  def.threads = 1;
+  return def;
+}
+
+// The box control in 3D: strain rates e, -e and 0 keep the cube's volume
+// (to second order in e dt); servos on all three axes bring the spheres to
+// an isotropic stress, each axis's force over the face the other two
+// extents span.
+TEST(BoxControl, ACubeOfSixWallsInThreeDimensions) {
+  World3 world(cube_of_spheres());
+  BoxControl3 control;
+  control.axes = {BoxAxisDef{0, 1, AxisControl::kStrainRate, -1.0, 0.0},
+                  BoxAxisDef{2, 3, AxisControl::kStrainRate, 1.0, 0.0},
+                  BoxAxisDef{4, 5, AxisControl::kStrainRate, 0.0, 0.0}};
+  world.set_box_control(control);
+  const double dt = world.time_step();
+  const int cycles = 100;
+  world.cycle(cycles);
+  BoxMeasure3 m = world.box_measure();
+  EXPECT_NEAR(m.extent.x(), 0.1 * std::pow(1.0 + dt, cycles), 1e-14);
+  EXPECT_NEAR(m.extent.y(), 0.1 * std::pow(1.0 - dt, cycles), 1e-14);
+  EXPECT_NEAR(m.extent.z(), 0.1, 1e-15);
+  EXPECT_NEAR(m.extent.prod() / 1e-3, std::pow(1.0 - dt * dt, cycles), 1e-12);
+
+  World3 pressed(cube_of_spheres());
+  const double p = 1e3;  // Pa: 10 N on a face, 0.6 N and 6 um of overlap on each of its 16 contacts
+  for (int axis = 0; axis < 3; ++axis) {
+    control.axes[axis].control = AxisControl::kStress;
+    control.axes[axis].stress = p;
+  }
+  // About 16 contacts of 1e5 N/m on a face of 0.01 m^2 stiffen an axis by
+  // 1.6e8 Pa/m: a gain of 1e-5 m/s per Pa gives a loop gain near 0.1 a step.
+  control.gain = 1e-5;
+  control.max_speed = 0.05;
+  pressed.set_box_control(control);
+  StageDef3 compress;
+  compress.cycles = 100000;
+  compress.until.servo_tolerance = 0.01;
+  compress.until.out_of_balance_below = 0.05;
+  compress.until.min_cycles = 500;
+  compress.until.check_interval = 100;
+  ASSERT_TRUE(run_stage(pressed, compress).condition_met);
+  m = pressed.box_measure();
+  std::printf("3D servos: stresses %.1f, %.1f, %.1f Pa (target %.0f) after %llu cycles, extents %.6f m\n",
+              m.stress.x(), m.stress.y(), m.stress.z(), p, static_cast<unsigned long long>(pressed.cycle_count()),
+              m.extent.x());
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_NEAR(m.stress[axis] / p, 1.0, 0.01) << "axis " << axis;
+    const auto& lower = pressed.wall_measures()[static_cast<std::size_t>(2 * axis)];
+    EXPECT_NEAR(lower.normal_force / (m.extent[(axis + 1) % 3] * m.extent[(axis + 2) % 3]) / p, 1.0, 0.02);
+  }
+  EXPECT_NEAR(m.mean_stress / p, 1.0, 0.01);
+}
+
 // A stage's start actions (Randall 6.4.3: friction given at 100 kPa; 6.3:
 // the step reduced once the bed settles; 6.2: the orifice opened): its
 // friction, damping and time step hold from then on, a released box leaves
