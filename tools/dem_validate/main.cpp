@@ -5,7 +5,7 @@
 //   dem_validate restitution --out DIR      (Miyata et al. 2002, eq. 17)
 //   dem_validate mindlin-loading --out DIR  (Randall 1989, 5.2)
 //   dem_validate box-settle --out DIR       (3D settling: weight on the floor, energy budget)
-//   dem_validate verification --case FILE   (Cundall & Strack 1979, Tables 1-3: stages A and B)
+//   dem_validate verification --case FILE --out DIR          (Cundall & Strack 1979, Tables 1-3: stages A and B)
 //   dem_validate randall-compression --case FILE --out DIR   (Randall 1989, 6.4.3: 100 kPa)
 //   dem_validate randall-shear --case FILE --out DIR         (Randall 1989, 6.5.2: constant-volume shear)
 //   dem_validate hopper --case FILE --out DIR [--runs 45:10,30:10,...]  (Randall 1989, 6.2: discharge rates)
@@ -104,6 +104,7 @@ int main(int argc, char** argv) {
   verification->add_option("--case", verification_case, "a cases/ball/verification_assembly*.case.txtpb file")
       ->required()
       ->check(CLI::ExistingFile);
+  verification->add_option("--out", out, "directory for verification.csv (stages A and B, wall by wall)")->required();
   std::filesystem::path randall_case;
   auto* randall_compression = app.add_subcommand(
       "randall-compression", "Randall (1989) 6.4.3: a cases/randall assembly compressed to 100 kPa, then friction");
@@ -181,6 +182,7 @@ int main(int argc, char** argv) {
     if (*verification) {
       const dem::validation::VerificationRun run = dem::validation::run_verification(verification_case);
       dem::validation::print_verification(stdout, run);
+      dem::validation::write_verification_csv(out, run);
       verdict = dem::validation::judge_verification(run);
     }
     if (*miyata) {

@@ -6,6 +6,7 @@
 
 #include "dem/io/case_conversion.h"
 #include "dem/io/case_loader.h"
+#include "dem/io/csv_file.h"
 #include "dem/programme.h"
 
 namespace dem::validation {
@@ -74,6 +75,18 @@ void print_verification(std::FILE* out, const VerificationRun& run) {
     }
     std::fprintf(out, "    largest |wall shear| / wall normal force %.4f (tan phi disc to wall %.2f)\n",
                  s->largest_wall_obliquity, run.wall_friction);
+  }
+}
+
+void write_verification_csv(const std::filesystem::path& out, const VerificationRun& run) {
+  io::CsvFile csv(out, "verification.csv",
+                  "case,stage,cycle,settled,ratio,out_of_balance,contacts,sliding,wall,f_1,f_2,normal_force,"
+                  "eccentricity,wall_contacts");
+  for (const VerificationStage* s : {&run.a, &run.b}) {
+    for (const WallMeasure& m : s->walls) {
+      csv.write_row(run.name, s->name, s->cycle, s->settled, s->ratio, s->out_of_balance, s->contacts, s->sliding,
+                    m.wall + 1, m.force.x(), m.force.y(), m.normal_force, m.eccentricity, m.contacts);
+    }
   }
 }
 

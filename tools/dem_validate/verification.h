@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -40,6 +41,11 @@ struct VerificationRun {
 VerificationRun run_verification(const std::filesystem::path& case_file);
 
 void print_verification(std::FILE* out, const VerificationRun& run);
+
+// verification.csv in `out`: a row per stage and wall - the stage's
+// F_H / F_V, Delta F / F, contacts and sliding contacts beside the wall's
+// forces, eccentricity and contacts (Table 1's columns).
+void write_verification_csv(const std::filesystem::path& out, const VerificationRun& run);
 
 // What the seed determines of a force-controlled run: the ratios of stage
 // A and of stage B (0.4 x 0.95652 / 1.04348), quasi-equilibrium (the
