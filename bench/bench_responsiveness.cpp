@@ -35,12 +35,15 @@
 #include <vector>
 
 #include "dem/client/client.h"
+#include "lattice_case.h"
 
 extern char** environ;
 
 namespace {
 
 using namespace std::chrono_literals;
+using dem::bench::LatticeTop;
+using dem::bench::lattice_case;
 using Clock = std::chrono::steady_clock;
 constexpr std::uint32_t kDomain = 126;
 
@@ -82,35 +85,6 @@ dem::client::ConnectOptions connect_options() {
   options.timeout = 20s;
   options.reply_timeout = 60s;
   return options;
-}
-
-// A square lattice of discs 0.5% closer than touching, in a box: 4,900
-// contacts from the first cycle, at rest under its own springs.
-std::string lattice_case(int columns, int rows) {
-  constexpr double r = 0.01;
-  constexpr double spacing = 2 * r * 0.995;
-  std::ostringstream text;
-  text.precision(17);
-  text << "name: \"lattice\"\nmaterial { name: \"disc\" density: 2650 friction: 0.5 }\n"
-       << "material { name: \"wall\" friction: 0.3 }\n"
-       << "contact_model { linear { normal_stiffness: 1e7 shear_stiffness: 0.7e7 } }\n"
-       << "damping { contact_beta: 1e-5 global_alpha: 5 }\ntime_step { fraction: 0.2 }\n";
-  for (int j = 0; j < rows; ++j) {
-    for (int i = 0; i < columns; ++i) {
-      text << "particles { particle { position { x: " << r + i * spacing << " y: " << r + j * spacing
-           << " } radius: 0.01 material: \"disc\" } }\n";
-    }
-  }
-  const double width = 2 * r + (columns - 1) * spacing;
-  const double height = 2 * r + (rows - 1) * spacing;
-  text << "wall { name: \"bottom\" point { x: " << width / 2 << " y: 0 } angle_deg: 0 h1: -1 h2: 1 material: \"wall\" }\n"
-       << "wall { name: \"right\" point { x: " << width << " y: " << height / 2
-       << " } angle_deg: 90 h1: -1 h2: 1 material: \"wall\" }\n"
-       << "wall { name: \"left\" point { x: 0 y: " << height / 2
-       << " } angle_deg: 270 h1: -1 h2: 1 material: \"wall\" }\n"
-       << "wall { name: \"top\" point { x: " << width / 2 << " y: " << height
-       << " } angle_deg: 180 h1: -1 h2: 1 material: \"wall\" }\n";
-  return text.str();
 }
 
 double percentile(std::vector<double> values, double p) {
@@ -158,7 +132,7 @@ int main(int argc, char** argv) {
                               "--threads", "1", "--log-level", "warn", "--no-csv", "--telemetry-cycles", "100",
                               "--out", std::string(DEM_BENCH_OUTPUT) + "/responsive"});
   dem::client::Client owner(connect_options());
-  owner.load_case_text(lattice_case(70, 70), "lattice_70x70");
+  owner.load_case_text(lattice_case(70, 70, LatticeTop::kWall), "lattice_70x70");
   const std::uint64_t run = owner.start_cycle(1'000'000'000);
   const pid_t monitor = spawn({DEM_DEMCTL_PROGRAM, "--server", "responsive", "--domain", std::to_string(kDomain),
                                "monitor", "--csv", "/dev/null"});

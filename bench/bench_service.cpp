@@ -17,18 +17,20 @@
 #include <chrono>
 #include <map>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "dem/client/client.h"
 #include "dem/client/telemetry.h"
+#include "lattice_case.h"
 
 extern char** environ;
 
 namespace {
 
+using dem::bench::LatticeTop;
+using dem::bench::lattice_case;
 using namespace std::chrono_literals;
 constexpr std::uint32_t kDomain = 125;
 
@@ -67,40 +69,6 @@ class Server {
   std::unique_ptr<dem::client::Client> client_;
 };
 
-// A square lattice of discs 0.5% closer than touching, boxed in: every
-// neighbour pair is a contact from the first cycle. With a top plate that
-// moves down, a loading test.
-std::string lattice_case(int columns, int rows, bool plate) {
-  constexpr double r = 0.01;
-  constexpr double spacing = 2 * r * 0.995;
-  std::ostringstream text;
-  text.precision(17);
-  text << "name: \"lattice_" << columns << "x" << rows << "\"\n"
-       << "material { name: \"disc\" density: 2650 friction: 0.5 }\n"
-       << "material { name: \"wall\" friction: 0.3 }\n"
-       << "contact_model { linear { normal_stiffness: 1e7 shear_stiffness: 0.7e7 } }\n"
-       << "damping { contact_beta: 1e-5 global_alpha: 5 }\n"
-       << "time_step { fraction: 0.2 }\n";
-  for (int j = 0; j < rows; ++j) {
-    for (int i = 0; i < columns; ++i) {
-      text << "particles { particle { position { x: " << r + i * spacing << " y: " << r + j * spacing
-           << " } radius: 0.01 material: \"disc\" } }\n";
-    }
-  }
-  const double width = 2 * r + (columns - 1) * spacing;
-  const double height = 2 * r + (rows - 1) * spacing;
-  text << "wall { name: \"bottom\" point { x: " << width / 2 << " y: 0 } angle_deg: 0 h1: -1 h2: 1 material: \"wall\" }\n"
-       << "wall { name: \"right\" point { x: " << width << " y: " << height / 2
-       << " } angle_deg: 90 h1: -1 h2: 1 material: \"wall\" }\n"
-       << "wall { name: \"left\" point { x: 0 y: " << height / 2
-       << " } angle_deg: 270 h1: -1 h2: 1 material: \"wall\" }\n";
-  if (plate) {
-    text << "wall { name: \"plate\" point { x: " << width / 2 << " y: " << height
-         << " } angle_deg: 180 h1: -1 h2: 1 material: \"wall\" motion { velocity { y: -0.01 } } }\n";
-  }
-  return text.str();
-}
-
 void RoundTrip(benchmark::State& state) {
   static Server server("bench_rtt", {"--case", std::string(DEM_CASES_DIR) + "/ball/nine_disc_damped.case.txtpb"});
   dem::client::Client& client = server.client();
@@ -120,7 +88,7 @@ void Throughput(benchmark::State& state) {
   const auto every = state.range(0);
   Server server("bench_tp_" + std::to_string(every), {"--telemetry-cycles", std::to_string(every)});
   dem::client::Client& client = server.client();
-  client.load_case_text(lattice_case(70, 70, true), "lattice_70x70");
+  client.load_case_text(lattice_case(70, 70, LatticeTop::kPlate), "lattice_70x70");
   std::atomic<std::uint64_t> samples{0};
   dem::client::TelemetrySubscription monitor(client, {.plate_forces = [&](const auto&) { ++samples; },
                                                       .contact_stats = [&](const auto&) { ++samples; },
@@ -146,7 +114,7 @@ void QueryContacts(benchmark::State& state) {
   static Server server("bench_query", {});
   dem::client::Client& client = server.client();
   static const bool loaded = [&] {
-    client.load_case_text(lattice_case(224, 224, false), "lattice_224x224");
+    client.load_case_text(lattice_case(224, 224, LatticeTop::kOpen), "lattice_224x224");
     client.cycle(1);
     return true;
   }();

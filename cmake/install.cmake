@@ -47,6 +47,11 @@ while(exported_libraries)
   endif()
   list(APPEND export_targets ${target})
 endwhile()
+if(DEM_USES_DDS)
+  # The messages' C++ types are generated from the IDL into the build tree.
+  set_property(TARGET dem_protocol APPEND PROPERTY INTERFACE_INCLUDE_DIRECTORIES
+    "$<BUILD_INTERFACE:${PROJECT_BINARY_DIR}/protocol/generated/include>")
+endif()
 # The build's global settings that change what a header means: Eigen's
 # vectorisation changes the layout of its fixed-size vectors (and so of
 # every definition struct), and the instruction set what inline code is.
@@ -69,7 +74,8 @@ install(FILES ${PROJECT_BINARY_DIR}/idl/dem/case.pb.h ${PROJECT_BINARY_DIR}/idl/
               ${PROJECT_BINARY_DIR}/generated/version/dem/version.h
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/dem)
 if(DEM_USES_DDS)
-  install(DIRECTORY dds/include/ protocol/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  install(DIRECTORY dds/include/ protocol/include/ ${PROJECT_BINARY_DIR}/protocol/generated/include/
+          DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
   if(TARGET dem_client)
     install(DIRECTORY clients/cpp/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
   endif()

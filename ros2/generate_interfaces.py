@@ -14,7 +14,7 @@ import argparse
 import pathlib
 import sys
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "idl"))
 import idl_types  # noqa: E402
 
 PACKAGE = "dem_interfaces"
@@ -55,13 +55,6 @@ def python_module(messages):
     return "\n".join(lines)
 
 
-def write_if_changed(path, text):
-    path = pathlib.Path(path)
-    if not path.exists() or path.read_text() != text:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(text)
-
-
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("idl_dir", type=pathlib.Path)
@@ -96,13 +89,13 @@ def main(argv):
                 status = 1
         else:
             for name, text in wanted.items():
-                write_if_changed(args.msg_dir / name, text)
+                idl_types.write_if_changed(args.msg_dir / name, text)
             for stale in set(p.name for p in args.msg_dir.glob("*.msg")) - wanted.keys():
                 (args.msg_dir / stale).unlink()
     if args.cpp_schemas:
-        write_if_changed(args.cpp_schemas, cpp_header(messages))
+        idl_types.write_if_changed(args.cpp_schemas, cpp_header(messages))
     if args.python_schemas:
-        write_if_changed(args.python_schemas, python_module(messages))
+        idl_types.write_if_changed(args.python_schemas, python_module(messages))
     return status
 
 

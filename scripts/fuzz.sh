@@ -9,7 +9,10 @@
 # fix: docs/FUZZING.md).
 #   scripts/fuzz.sh [SECONDS] [TARGET ...]     targets: case_text case_binary snapshot command
 # Part of scripts/test.sh (60 s each). New inputs the fuzzer finds
-# interesting stay in build-fuzz/corpus/<target>/ for the next run.
+# interesting stay in build-fuzz/corpus/<target>/ for the next run, and each
+# run adds a line to build-fuzz/fuzz_history.tsv (date, commit, target,
+# seconds, executions, exec/s, cov, ft, corpus, exit code): the "total"
+# column is a target's executions over every run in it.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 seconds="${1:-60}"
@@ -28,8 +31,11 @@ export OMP_NUM_THREADS=1 OMP_WAIT_POLICY=passive
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 mkdir -p "$build/findings"
+history="$build/fuzz_history.tsv"
+[ -f "$history" ] || printf 'date\tcommit\ttarget\tseconds\texecutions\texec/s\tcov\tft\tcorpus\texit\n' >"$history"
+commit=$(git -C "$root" describe --always --dirty 2>/dev/null || echo unknown)
 failed=0
-printf '%-12s %12s %10s %8s %8s %8s\n' target executions exec/s cov ft corpus
+printf '%-12s %12s %10s %8s %8s %8s %12s\n' target executions exec/s cov ft corpus total
 for target in "${targets[@]}"; do
   corpus="$build/corpus/$target"
   mkdir -p "$corpus"
@@ -55,7 +61,10 @@ for target in "${targets[@]}"; do
   cov=$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<<"$last")
   ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<<"$last")
   units=$(sed -n 's/.* corp: \([0-9]*\).*/\1/p' <<<"$last")
-  printf '%-12s %12s %10s %8s %8s %8s\n' "$target" "${runs:-?}" "${rate:-?}" "${cov:-?}" "${ft:-?}" "${units:-?}"
+  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$(date -u +%Y-%m-%dT%H:%M:%SZ)" "$commit" "$target" \
+    "$seconds" "${runs:-?}" "${rate:-?}" "${cov:-?}" "${ft:-?}" "${units:-?}" "$code" >>"$history"
+  total=$(awk -F'\t' -v t="$target" '$3 == t && $5 ~ /^[0-9]+$/ { n += $5 } END { print n + 0 }' "$history")
+  printf '%-12s %12s %10s %8s %8s %8s %12s\n' "$target" "${runs:-?}" "${rate:-?}" "${cov:-?}" "${ft:-?}" "${units:-?}" "$total"
   if [ "$code" -ne 0 ]; then
     failed=1
     echo "fuzz_$target found a problem (exit $code); its log is $log:" >&2

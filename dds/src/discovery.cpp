@@ -2,10 +2,26 @@
 
 #include <dds/dds.h>
 
+#include <algorithm>
+
 #include "dem/dds/error.h"
 #include "dem/dds/topic.h"
 
 namespace dem::dds {
+
+namespace {
+Guid to_guid(const dds_guid_t& guid) {
+  Guid bytes{};
+  std::copy(std::begin(guid.v), std::end(guid.v), bytes.begin());
+  return bytes;
+}
+}  // namespace
+
+Guid guid_of(const Participant& participant) {
+  dds_guid_t guid;
+  check(dds_get_guid(participant.handle(), &guid), "reading a participant's GUID");
+  return to_guid(guid);
+}
 
 PublicationMonitor::PublicationMonitor(const Participant& participant)
     : entity_(check(dds_create_reader(participant.handle(), DDS_BUILTIN_TOPIC_DCPSPUBLICATION, nullptr, nullptr),
@@ -29,7 +45,7 @@ std::vector<Publication> PublicationMonitor::alive() const {
       if (!infos[i].valid_data) continue;
       const auto* endpoint = static_cast<const dds_builtintopic_endpoint_t*>(samples[i]);
       publications.push_back({endpoint->topic_name ? endpoint->topic_name : "",
-                              endpoint->type_name ? endpoint->type_name : ""});
+                              endpoint->type_name ? endpoint->type_name : "", to_guid(endpoint->participant_key)});
     }
     return publications;
   }

@@ -231,9 +231,11 @@ ContactRecordT<Dim> to_record(const RowResult<Dim>& c, ParticleId first, std::ui
 }
 
 // Calls visit(report) for every touching row as the last pass left it;
-// `only_pair_row` limits the visit to one pair row (a lookup).
+// `only_pair_row` limits the visit to one pair row (a lookup), `only_wall`
+// to the rows of one wall.
 template <int Dim, typename Visit>
-void visit_rows(const WorldState<Dim>& s, std::optional<std::size_t> only_pair_row, Visit visit) {
+void visit_rows(const WorldState<Dim>& s, std::optional<std::size_t> only_pair_row, Visit visit,
+                std::optional<WallId> only_wall = std::nullopt) {
   const PassInputs<Dim> in = inputs(s);
   ContactEnergy unused;
   const Particles<Dim>& p = s.particles;
@@ -248,7 +250,7 @@ void visit_rows(const WorldState<Dim>& s, std::optional<std::size_t> only_pair_r
     visit(out);
   };
   with_shape<Dim>(s.shape, [&]<typename Shape>() {
-    with_law(s.pair_law, [&]<typename Law>() {
+    if (!only_wall) with_law(s.pair_law, [&]<typename Law>() {
       const ContactRows<Dim>& rows = s.contacts.pairs;
       const std::size_t begin = only_pair_row.value_or(0);
       const std::size_t end = only_pair_row ? begin + 1 : rows.size();
@@ -262,7 +264,7 @@ void visit_rows(const WorldState<Dim>& s, std::optional<std::size_t> only_pair_r
     with_law(s.wall_law, [&]<typename Law>() {
       const ContactRows<Dim>& rows = s.contacts.walls;
       for (std::size_t r = 0; r < rows.size(); ++r) {
-        if (!rows.touching(r)) continue;
+        if (!rows.touching(r) || (only_wall && rows.second[r] != *only_wall)) continue;
         const RowResult<Dim> c = wall_row<Pass::kEvaluate, false, Law, Shape, Dim>(in, rows, r, unused);
         if (c.touching) report(true, r, c, rows);
       }
@@ -305,6 +307,13 @@ std::vector<ContactRecordT<Dim>> report_contacts(const WorldState<Dim>& state) {
 }
 
 template <int Dim>
+std::vector<ContactRecordT<Dim>> report_wall_contacts(const WorldState<Dim>& state, WallId wall) {
+  std::vector<ContactRecordT<Dim>> records;
+  visit_rows(state, std::nullopt, [&](const RowReport<Dim>& r) { records.push_back(r.record); }, wall);
+  return records;
+}
+
+template <int Dim>
 std::optional<ContactRecordT<Dim>> report_pair_contact(const WorldState<Dim>& state, ParticleId a, ParticleId b) {
   const Particles<Dim>& p = state.particles;
   const auto n = static_cast<ParticleId>(p.size());
@@ -332,6 +341,8 @@ template void visit_touching_contacts(const WorldState<2>&, const std::function<
 template void visit_touching_contacts(const WorldState<3>&, const std::function<void(const ContactRecordT<3>&)>&);
 template std::vector<ContactRecordT<2>> report_contacts(const WorldState<2>&);
 template std::vector<ContactRecordT<3>> report_contacts(const WorldState<3>&);
+template std::vector<ContactRecordT<2>> report_wall_contacts(const WorldState<2>&, WallId);
+template std::vector<ContactRecordT<3>> report_wall_contacts(const WorldState<3>&, WallId);
 template std::optional<ContactRecordT<2>> report_pair_contact(const WorldState<2>&, ParticleId, ParticleId);
 template std::optional<ContactRecordT<3>> report_pair_contact(const WorldState<3>&, ParticleId, ParticleId);
 

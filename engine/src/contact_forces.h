@@ -74,6 +74,10 @@ void visit_touching_contacts(const WorldState<Dim>& state,
 template <int Dim>
 std::vector<ContactRecordT<Dim>> report_contacts(const WorldState<Dim>& state);
 
+// The touching contacts of one wall, in the same order.
+template <int Dim>
+std::vector<ContactRecordT<Dim>> report_wall_contacts(const WorldState<Dim>& state, WallId wall);
+
 // The touching contact between two particles, if any.
 template <int Dim>
 std::optional<ContactRecordT<Dim>> report_pair_contact(const WorldState<Dim>& state, ParticleId a, ParticleId b);

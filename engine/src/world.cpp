@@ -370,6 +370,10 @@ AssemblyMeasures BasicWorld<Dim>::assembly_measures() const { return measure_ass
 template <int Dim>
 std::vector<ContactRecordT<Dim>> BasicWorld<Dim>::contacts() const { return report_contacts(*state_); }
 template <int Dim>
+std::vector<ContactRecordT<Dim>> BasicWorld<Dim>::wall_contacts(WallId wall) const {
+  return report_wall_contacts(*state_, wall);
+}
+template <int Dim>
 std::optional<ContactRecordT<Dim>> BasicWorld<Dim>::contact_between(ParticleId a, ParticleId b) const {
   return report_pair_contact(*state_, a, b);
 }

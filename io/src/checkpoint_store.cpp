@@ -45,6 +45,31 @@ std::uint64_t number(std::string_view text, std::string_view what) {
 
 }  // namespace
 
+void PeriodicCheckpoints::begin(const std::filesystem::path& directory, std::string case_digest,
+                                std::uint64_t cycle) {
+  store_.reset();
+  if (settings_.enabled() && !directory.empty()) store_.emplace(directory, settings_.keep);
+  case_digest_ = std::move(case_digest);
+  last_cycle_ = cycle;
+  last_time_ = std::chrono::steady_clock::now();
+}
+
+bool PeriodicCheckpoints::due(std::uint64_t cycle) const {
+  if (!store_) return false;
+  const bool by_cycles = settings_.cycles > 0 && cycle - last_cycle_ >= settings_.cycles;
+  const bool by_time =
+      settings_.seconds > 0.0 &&
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - last_time_).count() >= settings_.seconds;
+  return by_cycles || by_time;
+}
+
+void PeriodicCheckpoints::write(std::string_view snapshot_bytes, ResumePoint point) {
+  point.case_digest = case_digest_;
+  store_->write(snapshot_bytes, point);
+  last_cycle_ = point.cycle;
+  last_time_ = std::chrono::steady_clock::now();
+}
+
 std::string resume_text(const ResumePoint& point) {
   std::string text(kResumeHeader);
   text += "\ncycle " + std::to_string(point.cycle) + "\nstage " + std::to_string(point.stage) + "\nstage_cycles " +

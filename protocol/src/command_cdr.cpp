@@ -10,13 +10,12 @@
 #include <memory>
 #include <vector>
 
-#include "command_sample.h"
+#include "c_conversions.h"
+#include "c_sample.h"
 #include "dem/protocol/type_support.h"
 
 namespace dem::protocol {
 namespace {
-
-using Support = dds::TypeSupport<Command>;
 
 constexpr bool kLittleEndianHost = std::endian::native == std::endian::little;
 
@@ -27,12 +26,13 @@ std::uint16_t encoding_of(std::string_view bytes) {
 
 }  // namespace
 
-std::string encode_command(const Command& command) {
+template <Message T>
+std::string encode_cdr(const T& message) {
   // TypeSupport converts into a C sample and writes it; here the sample goes
   // to a stream instead, through the same conversion (type_support.cpp).
   std::string out;
-  const dds_topic_descriptor_t* descriptor = Support::descriptor();
-  with_command_sample(command, [&](const void* c_sample) {
+  const dds_topic_descriptor_t* descriptor = dds::TypeSupport<T>::descriptor();
+  with_c_sample(message, [&](const void* c_sample) {
     dds_ostream_t stream;
     dds_ostream_init(&stream, 0, CDR_ENC_VERSION_1);
     dds_stream_write(&stream, static_cast<const char*>(c_sample), descriptor->m_ops);
@@ -43,7 +43,8 @@ std::string encode_command(const Command& command) {
   return out;
 }
 
-std::optional<Command> decode_command(std::string_view bytes) {
+template <Message T>
+std::optional<T> decode_cdr(std::string_view bytes) {
   if (bytes.size() < 4 || bytes.size() - 4 > UINT32_MAX) return std::nullopt;
   bool little = false;
   std::uint32_t version = CDR_ENC_VERSION_1;
@@ -59,7 +60,7 @@ std::optional<Command> decode_command(std::string_view bytes) {
   std::vector<std::uint64_t> buffer((size + 7) / 8 + 1);
   std::memcpy(buffer.data(), bytes.data() + 4, size);
   char* data = reinterpret_cast<char*>(buffer.data());
-  const dds_topic_descriptor_t* descriptor = Support::descriptor();
+  const dds_topic_descriptor_t* descriptor = dds::TypeSupport<T>::descriptor();
   std::uint32_t offset = 0;
   if (dds_stream_normalize_data(data, &offset, size, little != kLittleEndianHost, version, descriptor->m_ops) ==
       nullptr) {
@@ -68,9 +69,19 @@ std::optional<Command> decode_command(std::string_view bytes) {
   dds_istream_t stream{reinterpret_cast<const unsigned char*>(data), size, 0, version};
   auto sample = std::unique_ptr<void, decltype(&std::free)>(std::calloc(1, descriptor->m_size), &std::free);
   dds_stream_read(&stream, static_cast<char*>(sample.get()), descriptor->m_ops);
-  Command command = Support::from_sample(sample.get());
+  T message = dds::TypeSupport<T>::from_sample(sample.get());
   dds_stream_free_sample(sample.get(), descriptor->m_ops);
-  return command;
+  return message;
 }
+
+#define DEM_INSTANTIATE(T)                         \
+  template std::string encode_cdr(const T&); \
+  template std::optional<T> decode_cdr(std::string_view);
+DEM_PROTOCOL_FOR_EACH_MESSAGE(DEM_INSTANTIATE)
+#undef DEM_INSTANTIATE
+
+std::string encode_command(const Command& command) { return encode_cdr(command); }
+
+std::optional<Command> decode_command(std::string_view bytes) { return decode_cdr<Command>(bytes); }
 
 }  // namespace dem::protocol

@@ -63,8 +63,8 @@ void check_command(const protocol::Command& c, const CommandLimits& limits) {
       break;
     case CommandKind::kSetWallVelocity:
       text("wall_velocity.wall", c.wall_velocity.wall, limits);
-      vector("wall_velocity.velocity", c.wall_velocity.velocity);
-      vector("wall_velocity.angular_velocity", c.wall_velocity.angular_velocity);
+      vector("wall_velocity.twist.linear", c.wall_velocity.twist.linear);
+      vector("wall_velocity.twist.angular", c.wall_velocity.twist.angular);
       break;
     case CommandKind::kSetWallServo:
       text("wall_servo.wall", c.wall_servo.wall, limits);

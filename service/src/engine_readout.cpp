@@ -122,7 +122,8 @@ protocol::ContactStats read_contact_stats(const BasicWorld<Dim>& world) {
 template <int Dim>
 std::vector<protocol::ContactEntry> query_contacts(const BasicWorld<Dim>& world, const ContactFilter& filter) {
   std::vector<protocol::ContactEntry> entries;
-  for (const ContactRecordT<Dim>& c : world.contacts()) {
+  // One wall's: a pass over its rows, not over every contact.
+  for (const ContactRecordT<Dim>& c : filter.wall ? world.wall_contacts(*filter.wall) : world.contacts()) {
     if (inside(c, filter)) entries.push_back(to_entry(c));
   }
   return entries;
@@ -176,7 +177,7 @@ protocol::RegionTelemetry read_regions(const BasicWorld<Dim>& world,
   const analysis::AssemblySampleT<Dim> sample = analysis::sample(world);
   for (const analysis::RegionT<Dim>& region : regions) {
     const analysis::RegionMeasuresT<Dim> m = analysis::measure_region(sample, region);
-    protocol::RegionMeasure r;
+    protocol::RegionMeasures r;
     r.name = region.name;
     r.particles = m.particles;
     r.rattlers = m.rattlers;

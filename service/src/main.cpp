@@ -7,7 +7,7 @@
 // programme that ran to its end; 1 when DDS or the output fails, or the
 // one-shot run failed; 2 bad arguments; 3 the initial case is invalid;
 // 4 a one-shot programme stopped before its end; 5 another server of the
-// same name is on the domain.
+// same name is on the domain, or took the name starting at the same time.
 #include <signal.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>

@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "dem/protocol/topics.h"
-#include "dem/service/name_claim.h"
 
 namespace dem::service {
 
@@ -29,9 +28,7 @@ Server::Server(ServerOptions options)
     : options_(checked(std::move(options))),
       queue_(options_.queue_capacity),
       participant_(options_.domain, options_.dds_config),
-      name_claimed_((claim_name(participant_, options_.name, options_.domain, options_.name_discovery,
-                                options_.name_wait),
-                     true)),
+      name_claim_(participant_, options_.name, options_.name_discovery, options_.name_wait),
       telemetry_(participant_, options_.name),
       replies_(participant_, options_.name, options_.contact_chunk, options_.snapshot_chunk),
       runner_(options_, queue_, replies_, telemetry_, cache_),

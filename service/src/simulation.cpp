@@ -171,10 +171,10 @@ WallId Simulation::find_wall(const std::string& name, std::int32_t id) const {
 
 std::string Simulation::set_wall_velocity(const protocol::WallVelocityArgs& args) {
   const WallId wall = find_wall(args.wall, args.wall_id);
-  require(finite(args.velocity) && finite(args.angular_velocity), "the wall velocity must be finite");
-  world().set_wall_velocity(wall, args.velocity, args.angular_velocity);
-  const protocol::Vector3& v = args.velocity;
-  const protocol::Vector3& w = args.angular_velocity;
+  require(finite(args.twist.linear) && finite(args.twist.angular), "the wall velocity must be finite");
+  world().set_wall_velocity(wall, args.twist.linear, args.twist.angular);
+  const protocol::Vector3& v = args.twist.linear;
+  const protocol::Vector3& w = args.twist.angular;
   return "wall " + world().wall_name(wall) + " moves at (" + format_value(v.x) + ", " + format_value(v.y) +
          (dimension() == 3 ? ", " + format_value(v.z) + ") m/s, (" + format_value(w.x) + ", " + format_value(w.y) + ", " + format_value(w.z) + ")"
                            : ") m/s, " + format_value(w.z)) +

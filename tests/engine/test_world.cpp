@@ -119,6 +119,28 @@ TEST(World, WallMeasuresSeeTheWeightOnTheFloor) {
   EXPECT_LT(world.assembly_measures().out_of_balance, 1e-3);
 }
 
+// One wall's contacts are those of contacts() with that wall, in order
+// (dem_server's wall queries read them without a pass over every contact).
+TEST(World, WallContactsAreTheWallsOwnOfAllContacts) {
+  World world(dense_box(10, 6));
+  world.cycle(200);
+  const std::vector<ContactRecord> all = world.contacts();
+  for (WallId wall = 0; wall < world.wall_count(); ++wall) {
+    std::vector<ContactRecord> expected;
+    for (const ContactRecord& c : all) {
+      if (c.second_wall == wall) expected.push_back(c);
+    }
+    const std::vector<ContactRecord> found = world.wall_contacts(wall);
+    ASSERT_EQ(found.size(), expected.size()) << wall;
+    for (std::size_t k = 0; k < found.size(); ++k) {
+      EXPECT_EQ(found[k].first, expected[k].first);
+      EXPECT_EQ(found[k].normal_force, expected[k].normal_force);
+      EXPECT_EQ(found[k].point, expected[k].point);
+    }
+  }
+  EXPECT_FALSE(world.wall_contacts(0).empty());  // the floor carries the discs
+}
+
 TEST(World, WallMotionMovesWallAndReportsSettlement) {
   World world(dense_box(3, 3));
   const WallId left = world.find_wall("left");

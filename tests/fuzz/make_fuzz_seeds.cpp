@@ -83,7 +83,7 @@ int main() {
   write(commands / "load_case_path.cdr", protocol::encode_command(c));
   c = command(CommandKind::kSetWallVelocity);
   c.wall_velocity.wall = "top";
-  c.wall_velocity.velocity = {0, -12, 0};
+  c.wall_velocity.twist.linear = {0, -12, 0};
   write(commands / "set_wall_velocity.cdr", protocol::encode_command(c));
   c = command(CommandKind::kSetWallServo);
   c.wall_servo.wall = "top";

@@ -1,6 +1,7 @@
 // Checkpoints on disk: the newest whole one is found, a damaged one is
-// passed over for the one before, only the newest few are kept, and where
-// the run stood reads back exactly.
+// passed over for the one before, only the newest few are kept, where
+// the run stood reads back exactly, and a run's next one is due after its
+// interval in cycles.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -61,6 +62,38 @@ TEST(CheckpointStore, KeepsTheNewestAndSkipsADamagedOne) {
   std::ofstream(store.latest()->path, std::ios::binary | std::ios::trunc) << "DEMSNAP1 torn";
   ASSERT_TRUE(store.latest());
   EXPECT_EQ(store.latest()->point.cycle, 200u);
+  std::filesystem::remove_all(directory);
+}
+
+// dem_run's and dem_server's schedule (PeriodicCheckpoints): none without a
+// directory or an interval; due `cycles` after the run began, then after
+// the last checkpoint; each stamped with the run's case.
+TEST(CheckpointStore, PeriodicCheckpointsAreDueAfterTheirInterval) {
+  const auto directory = test::fresh_directory("periodic_checkpoints");
+  PeriodicCheckpoints off(CheckpointSettings{});
+  off.begin(directory, "abc123", 0);
+  EXPECT_FALSE(off.store());
+  EXPECT_FALSE(off.due(1'000'000));
+  PeriodicCheckpoints elsewhere(CheckpointSettings{.cycles = 100});
+  elsewhere.begin({}, "abc123", 0);  // a server whose output directory is not its own
+  EXPECT_FALSE(elsewhere.due(1'000'000));
+
+  PeriodicCheckpoints periodic(CheckpointSettings{.cycles = 100, .keep = 2});
+  periodic.begin(directory, "def456", 50);
+  ASSERT_TRUE(periodic.store());
+  EXPECT_FALSE(periodic.due(149));
+  EXPECT_TRUE(periodic.due(150));
+  World world(testing::settling_box());
+  world.cycle(170);
+  periodic.write(serialize_snapshot(world.snapshot(), SnapshotInfo{}), ResumePoint{.cycle = 170});
+  EXPECT_FALSE(periodic.due(269));
+  EXPECT_TRUE(periodic.due(270));
+  ASSERT_TRUE(periodic.store()->latest());
+  EXPECT_EQ(periodic.store()->latest()->point.cycle, 170u);
+  EXPECT_EQ(periodic.store()->latest()->point.case_digest, "def456");
+  periodic.begin(directory, "def456", 1000);  // a new world loaded: its interval from its own cycle
+  EXPECT_FALSE(periodic.due(1099));
+  EXPECT_TRUE(periodic.due(1100));
   std::filesystem::remove_all(directory);
 }
 

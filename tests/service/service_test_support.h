@@ -95,6 +95,9 @@ enum ReliabilityDomain : std::uint32_t {
   kLastReliabilityDomain
 };
 static_assert(kLastReliabilityDomain <= 142, "the reliability tests' domains are 127-141");
+// Two servers of one name started at the same instant: 210 and 211 (212 is
+// free; 142 to 209 belong to other tests, CMakeLists.txt).
+enum NameContestDomain : std::uint32_t { kOwnershipSimultaneousServers = 210, kOwnershipSimultaneousPrograms };
 
 std::filesystem::path case_file(const std::string& name);  // cases/ball/<name>.case.txtpb
 std::string read_text(const std::filesystem::path& path);

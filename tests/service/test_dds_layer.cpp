@@ -89,7 +89,7 @@ protocol::Command full_command() {
   c.request_id = 42;
   c.kind = static_cast<std::uint8_t>(protocol::CommandKind::kRunUntil);
   c.load_case = {"p.case", "name: \"x\"", std::string("\0\1\2bin", 6), "file.txtpb"};
-  c.wall_velocity = {"top", 3, {1.0, -2.0, 0.0}, {0.0, 0.0, 0.5}};
+  c.wall_velocity = {"top", 3, {{1.0, -2.0, 0.0}, {0.0, 0.0, 0.5}}};
   c.wall_servo = {"top", -1, 1e6, 1e-9, 0.1};
   c.cycle.cycles = -5;
   c.run_until = {"top", -1, 2e6, std::nullopt, 0.5, 1000, 10};
@@ -271,7 +271,7 @@ TEST(DdsLayer, ParticipantsOfADomainShareItsConfiguration) {
   }
 }
 
-TEST(DdsLayer, DiscoveryListsTheWritersOfTheDomain) {
+TEST(DdsLayer, DiscoveryListsTheWritersOfTheDomainWithTheirParticipants) {
   dds::Participant participant(kDdsDiscovery);
   dds::Topic<protocol::Status> topic(participant, protocol::topic_name("someone", TopicKind::kStatus));
   dds::Writer<protocol::Status> writer(participant, topic, protocol::status_qos());
@@ -279,7 +279,10 @@ TEST(DdsLayer, DiscoveryListsTheWritersOfTheDomain) {
   EXPECT_TRUE(eventually(
       [&] {
         for (const auto& p : monitor.alive()) {
-          if (p.topic_name == "rt/dem/someone/status" && p.type_name == protocol::kStatusTypeName) return true;
+          if (p.topic_name == "rt/dem/someone/status" && p.type_name == protocol::kStatusTypeName &&
+              p.participant == dds::guid_of(participant)) {
+            return true;
+          }
         }
         return false;
       },
@@ -311,6 +314,7 @@ TEST(Protocol, TopicNamesFollowRos2Conventions) {
   EXPECT_EQ(protocol::topic_name("a", TopicKind::kStatus), "rt/dem/a/status");
   EXPECT_EQ(protocol::topic_name("a", TopicKind::kCommand), "rt/dem/a/command");
   EXPECT_EQ(protocol::topic_name("a", TopicKind::kReply), "rt/dem/a/reply");
+  EXPECT_EQ(protocol::topic_name("a", TopicKind::kNameClaim), "rt/dem/a/_name_claim");  // hidden in ROS 2
   EXPECT_EQ(protocol::server_of_status_topic("rt/dem/press_2/status"), "press_2");
   EXPECT_EQ(protocol::server_of_status_topic("rt/dem/press_2/reply"), std::nullopt);
   EXPECT_EQ(protocol::server_of_status_topic("rt/other/x/status"), std::nullopt);

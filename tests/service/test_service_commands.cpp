@@ -79,7 +79,7 @@ TEST(Commands, WallVelocityAndServoSteerTheWalls) {
   protocol::Command by_id;
   by_id.kind = static_cast<std::uint8_t>(protocol::CommandKind::kSetWallVelocity);
   by_id.wall_velocity.wall_id = 0;
-  by_id.wall_velocity.velocity = {0.0, 1.0, 0.0};
+  by_id.wall_velocity.twist.linear = {0.0, 1.0, 0.0};
   EXPECT_NE(s.client.call(by_id).message.find("wall bottom moves"), std::string::npos);
 
   const protocol::Reply servo = s.client.set_wall_servo("top", 5e7, 1e-12, 10.0);

@@ -99,7 +99,7 @@ TEST(Limits, AFullQueueAnswersBusyAndEveryCommandGetsOneReply) {
   for (int i = 0; i < 200; ++i) {
     protocol::Command c = command(CommandKind::kSetWallVelocity);  // allowed while running
     c.wall_velocity.wall = "top";
-    c.wall_velocity.velocity.y = -0.001 * (i % 3);
+    c.wall_velocity.twist.linear.y = -0.001 * (i % 3);
     requests.push_back(client.send(c));
   }
   int ok = 0, busy = 0;

@@ -1,9 +1,15 @@
 // Names and ownership (docs/SERVICE.md, "Who may stop a run"): a server
-// refuses to start under a name already on the domain; a run belongs to
+// refuses to start under a name already on the domain, and of two started
+// at the same instant only one takes it; a run belongs to
 // the client that started it - another may watch it, but stops it (or
 // shuts the server down under it) only with force, or once the owner has
 // left the domain.
 #include <gtest/gtest.h>
+
+#include <array>
+#include <latch>
+#include <memory>
+#include <thread>
 
 #include "dem/service/name_claim.h"
 #include "service_test_support.h"
@@ -30,6 +36,72 @@ TEST(Ownership, ASecondServerOfTheSameNameRefusesToStart) {
   ServerProcess process(
       {"--name", "twin", "--domain", std::to_string(kOwnershipNames), "--name-wait", "1", "--log-level", "off"});
   EXPECT_EQ(process.wait(30s), 5);
+}
+
+// Neither sees the other's status writer when it looks: the claims decide
+// (service/name_claim.h).
+TEST(Ownership, OfTwoServersStartedAtTheSameInstantOneTakesTheName) {
+  // The process's first participant of a domain sets the domain up, which
+  // takes a while and would let one server start well before the other.
+  const dds::Participant domain_set_up(kOwnershipSimultaneousServers);
+  std::array<std::unique_ptr<service::Server>, 2> servers;
+  std::array<std::string, 2> refusals;
+  std::latch start(2);
+  std::array<std::thread, 2> threads;
+  for (std::size_t i = 0; i < 2; ++i) {
+    threads[i] = std::thread([&, i] {
+      start.arrive_and_wait();
+      try {
+        servers[i] = std::make_unique<service::Server>(server_options("twins", kOwnershipSimultaneousServers));
+      } catch (const service::NameInUse& error) {
+        refusals[i] = error.what();
+      }
+    });
+  }
+  for (std::thread& thread : threads) thread.join();
+  ASSERT_EQ((servers[0] != nullptr) + (servers[1] != nullptr), 1) << refusals[0] << " / " << refusals[1];
+  // The one refused saw the other claiming (most often), or, looking a
+  // moment later, serving already.
+  const std::string& refusal = servers[0] ? refusals[1] : refusals[0];
+  const std::string domain = std::to_string(kOwnershipSimultaneousServers);
+  EXPECT_TRUE(refusal == "another server named \"twins\" started on DDS domain " + domain +
+                             " at the same time and takes the name (of servers started together, the one whose DDS "
+                             "participant has the lowest GUID does): choose another --name, or another --domain" ||
+              refusal == "a server named \"twins\" is already on DDS domain " + domain +
+                             ": choose another --name, or another --domain")
+      << refusal;
+  service::Server& winner = servers[0] ? *servers[0] : *servers[1];
+  winner.start();
+  client::Client client(connect_options("twins", kOwnershipSimultaneousServers));
+  EXPECT_EQ(client.get_state().state.state, protocol::ServerState::kIdle);
+  winner.request_shutdown();
+  winner.wait();
+}
+
+// The programs, with their own discovery time (0.5 s): one exits with code
+// 5, the other serves.
+TEST(Ownership, OfTwoProgramsStartedAtTheSameInstantOneExitsWithCode5) {
+  const std::vector<std::string> arguments{
+      "--name", "twins", "--domain", std::to_string(kOwnershipSimultaneousPrograms), "--name-wait", "2",
+      "--log-level", "error"};
+  ServerProcess first(arguments);
+  ServerProcess second(arguments);
+  int refused = -1;
+  ServerProcess* winner = nullptr;
+  const auto deadline = std::chrono::steady_clock::now() + 30s;
+  while (refused < 0 && std::chrono::steady_clock::now() < deadline) {
+    if ((refused = first.wait(10ms)) >= 0) {
+      winner = &second;
+    } else if ((refused = second.wait(10ms)) >= 0) {
+      winner = &first;
+    }
+  }
+  EXPECT_EQ(refused, 5);
+  ASSERT_NE(winner, nullptr);
+  client::Client client(connect_options("twins", kOwnershipSimultaneousPrograms));
+  EXPECT_EQ(client.get_state().state.state, protocol::ServerState::kIdle);
+  EXPECT_TRUE(client.shutdown().ok());
+  EXPECT_EQ(winner->wait(30s), 0);
 }
 
 TEST(Ownership, OnlyTheOwnerStopsARunUnlessForced) {

@@ -205,10 +205,10 @@ TEST(Simulation, ChecksArgumentsAndChangesNothingWhenTheyAreWrong) {
   simulation.install(simulation.prepare_case(args));
   service::WorldSession& world = simulation.world();
   const std::uint64_t hash = world.state_hash();
-  EXPECT_EQ(status_of([&] { simulation.set_wall_velocity({"roof", -1, {}, {}}); }), ReplyStatus::kNotFound);
-  EXPECT_EQ(status_of([&] { simulation.set_wall_velocity({"", 7, {}, {}}); }), ReplyStatus::kNotFound);
-  EXPECT_EQ(status_of([&] { simulation.set_wall_velocity({"top", -1, {0, 0, 1}, {}}); }), ReplyStatus::kBadRequest);
-  EXPECT_EQ(status_of([&] { simulation.set_wall_velocity({"top", -1, {NAN, 0, 0}, {}}); }), ReplyStatus::kBadRequest);
+  EXPECT_EQ(status_of([&] { simulation.set_wall_velocity({"roof", -1, {{}, {}}}); }), ReplyStatus::kNotFound);
+  EXPECT_EQ(status_of([&] { simulation.set_wall_velocity({"", 7, {{}, {}}}); }), ReplyStatus::kNotFound);
+  EXPECT_EQ(status_of([&] { simulation.set_wall_velocity({"top", -1, {{0, 0, 1}, {}}}); }), ReplyStatus::kBadRequest);
+  EXPECT_EQ(status_of([&] { simulation.set_wall_velocity({"top", -1, {{NAN, 0, 0}, {}}}); }), ReplyStatus::kBadRequest);
   EXPECT_EQ(status_of([&] { simulation.set_wall_servo({"top", -1, 1e6, -1.0, 0.0}); }), ReplyStatus::kBadRequest);
   EXPECT_EQ(status_of([&] { simulation.set_parameter({"contact_damping", "", -1.0, {}}); }), ReplyStatus::kBadRequest);
   EXPECT_EQ(status_of([&] { simulation.set_parameter({"time_step_fraction", "", 1.5, {}}); }), ReplyStatus::kBadRequest);

@@ -54,7 +54,7 @@ TEST(Regions, TheirMeasuresArePublishedAndWritten) {
   ASSERT_EQ(last.regions.size(), 3u);
   EXPECT_EQ(last.regions[0].name, "all");
   EXPECT_EQ(last.regions[2].name, "circle");
-  const protocol::RegionMeasure& all = last.regions[0];
+  const protocol::RegionMeasures& all = last.regions[0];
   std::printf("region \"all\" at cycle 3000: %d particles, porosity %.4f, mean stress %.1f Pa, coordination %.3f\n",
               all.particles, all.porosity, all.mean_stress, all.coordination);
   EXPECT_EQ(all.particles, 120);

@@ -271,8 +271,8 @@ protocol::Reply Client::set_wall_velocity(std::string wall, protocol::Vector3 ve
                                           protocol::Vector3 angular_velocity) {
   protocol::Command c = command(CommandKind::kSetWallVelocity);
   c.wall_velocity.wall = std::move(wall);
-  c.wall_velocity.velocity = velocity;
-  c.wall_velocity.angular_velocity = angular_velocity;
+  c.wall_velocity.twist.linear = velocity;
+  c.wall_velocity.twist.angular = angular_velocity;
   return call(std::move(c));
 }
 

@@ -16,7 +16,8 @@ case's stages run through the service (dem.programme); the seeds' figures
 """
 
 from . import _build_info, cases, errors
-from ._client import CONTACT_DTYPE, ContactStats, PlateForces, RegionMeasure, RegionTelemetry, Reply, Status, WallForce
+from ._client import (CONTACT_DTYPE, ContactStats, PlateForces, RegionMeasures, RegionTelemetry, Reply, Status,
+                      WallForce)
 from .client import Client, list_servers
 from .errors import (CaseFileError, DdsError, DemError, NoSuchServer, ProgrammeError, ReplyTimeout,
                      ServerError)
@@ -38,7 +39,7 @@ __all__ = [
     "NoSuchServer",
     "PlateForces",
     "ProgrammeError",
-    "RegionMeasure",
+    "RegionMeasures",
     "RegionTelemetry",
     "Reply",
     "ReplyTimeout",

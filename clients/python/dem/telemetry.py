@@ -106,4 +106,4 @@ PlateForces = _client.PlateForces
 ContactStats = _client.ContactStats
 Status = _client.Status
 RegionTelemetry = _client.RegionTelemetry
-RegionMeasure = _client.RegionMeasure
+RegionMeasures = _client.RegionMeasures

@@ -209,8 +209,8 @@ void bind_client(py::module_& m) {
           [](ClientHandle& h, std::string wall, Vector velocity, Vector angular, Seconds t, py::object w, double i) {
             protocol::Command c = command(CommandKind::kSetWallVelocity);
             c.wall_velocity.wall = std::move(wall);
-            c.wall_velocity.velocity = vector3(velocity);
-            c.wall_velocity.angular_velocity = vector3(angular);
+            c.wall_velocity.twist.linear = vector3(velocity);
+            c.wall_velocity.twist.angular = vector3(angular);
             return call(h, std::move(c), command_wait(h, t, std::move(w), i));
           },
           py::arg("wall"), py::arg("velocity"), py::arg("angular_velocity"), timeout, on_wait, interval)

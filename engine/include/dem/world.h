@@ -149,6 +149,9 @@ class BasicWorld {
   std::vector<Measure> wall_measures() const;
   AssemblyMeasures assembly_measures() const;
   std::vector<Record> contacts() const;  // touching contacts only
+  // The touching contacts of one wall, as contacts() reports them: a pass
+  // over that wall's rows alone.
+  std::vector<Record> wall_contacts(WallId wall) const;
   // The touching contact between two particles, if any.
   std::optional<Record> contact_between(ParticleId a, ParticleId b) const;
 

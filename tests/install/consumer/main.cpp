@@ -9,6 +9,7 @@
 #include "dem/io/case_loader.h"
 #include "dem/io/snapshot_file.h"
 #include "dem/programme.h"
+#include "dem/protocol/messages.h"
 #include "dem/version.h"
 #include "dem/world.h"
 
@@ -28,5 +29,7 @@ int main(int argc, char** argv) {
               static_cast<unsigned long long>(reference.state_hash()));
   // dem::client links too: its CRC-32 of "123456789" is the standard check value.
   if (dem::client::crc32("123456789") != 0xCBF43926u) return 1;
+  // The messages' header generated from the IDL is installed with the rest.
+  if (dem::protocol::to_string(dem::protocol::ServerState::kRunning) != "running") return 1;
   return world.state_hash() == reference.state_hash() ? 0 : 1;
 }

@@ -3,6 +3,8 @@
 // DCPSPublication topic - how `ros2 topic list` sees the graph.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -11,9 +13,16 @@
 
 namespace dem::dds {
 
+// A participant's GUID, compared byte by byte: the same order on every
+// participant of the domain.
+using Guid = std::array<std::uint8_t, 16>;
+
+Guid guid_of(const Participant& participant);
+
 struct Publication {
   std::string topic_name;
   std::string type_name;
+  Guid participant{};  // the GUID of the participant the writer belongs to
 };
 
 class PublicationMonitor {

@@ -9,6 +9,7 @@
 // same tables.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -62,6 +63,33 @@ class CheckpointStore {
  private:
   std::filesystem::path directory_;
   int keep_;
+};
+
+// What dem_run and dem_server share: a run's store, and when its next
+// checkpoint is due - once `settings.cycles` cycles or `settings.seconds`
+// of wall time have passed since it began or since the last checkpoint.
+// Where in a stage a checkpoint may be taken is the caller's to say.
+class PeriodicCheckpoints {
+ public:
+  explicit PeriodicCheckpoints(CheckpointSettings settings) : settings_(settings) {}
+
+  // A run begins (again) at `cycle`; its checkpoints go in `directory`
+  // (none when it is empty or the settings turn them off), each stamped
+  // with `case_digest`.
+  void begin(const std::filesystem::path& directory, std::string case_digest, std::uint64_t cycle);
+  bool due(std::uint64_t cycle) const;
+  // Writes a checkpoint (the point's case digest filled in) and starts the
+  // next interval at its cycle. Only when the run has a store (due()).
+  void write(std::string_view snapshot_bytes, ResumePoint point);
+
+  const CheckpointStore* store() const { return store_ ? &*store_ : nullptr; }
+
+ private:
+  CheckpointSettings settings_;
+  std::optional<CheckpointStore> store_;
+  std::string case_digest_;
+  std::uint64_t last_cycle_ = 0;
+  std::chrono::steady_clock::time_point last_time_;
 };
 
 // The resume file's text, and back (throws std::runtime_error naming what is wrong).

@@ -1,27 +1,30 @@
 // dds::TypeSupport for the service's messages (see dem/dds/type_support.h):
-// the bridge to the idlc-generated C types, which only type_support.cpp sees.
+// every struct of dem/protocol/messages.h travels as the C struct idlc
+// generates from the same IDL; protocol/src/type_support.cpp converts.
 #pragma once
 
 #include "dem/dds/type_support.h"
 #include "dem/protocol/messages.h"
 
+namespace dem::protocol::detail {
+
+// Defined for every message in type_support.cpp.
+template <class T>
+const dds_topic_descriptor_t* descriptor_of();
+template <class T>
+dds_return_t write_sample(dds_entity_t writer, const T& value);
+template <class T>
+T read_sample(const void* sample);
+
+}  // namespace dem::protocol::detail
+
 namespace dem::dds {
 
-#define DEM_PROTOCOL_TYPE_SUPPORT(Type)                                  \
-  template <>                                                            \
-  struct TypeSupport<protocol::Type> {                                   \
-    static const dds_topic_descriptor_t* descriptor();                   \
-    static dds_return_t write(dds_entity_t writer, const protocol::Type& value); \
-    static protocol::Type from_sample(const void* sample);               \
-  };
-
-DEM_PROTOCOL_TYPE_SUPPORT(Command)
-DEM_PROTOCOL_TYPE_SUPPORT(Reply)
-DEM_PROTOCOL_TYPE_SUPPORT(Status)
-DEM_PROTOCOL_TYPE_SUPPORT(PlateForces)
-DEM_PROTOCOL_TYPE_SUPPORT(ContactStats)
-DEM_PROTOCOL_TYPE_SUPPORT(RegionTelemetry)
-
-#undef DEM_PROTOCOL_TYPE_SUPPORT
+template <protocol::Message T>
+struct TypeSupport<T> {
+  static const dds_topic_descriptor_t* descriptor() { return protocol::detail::descriptor_of<T>(); }
+  static dds_return_t write(dds_entity_t writer, const T& value) { return protocol::detail::write_sample(writer, value); }
+  static T from_sample(const void* sample) { return protocol::detail::read_sample<T>(sample); }
+};
 
 }  // namespace dem::dds

@@ -12,6 +12,7 @@
 #include "dem/dds/participant.h"
 #include "dem/service/command_queue.h"
 #include "dem/service/command_receiver.h"
+#include "dem/service/name_claim.h"
 #include "dem/service/options.h"
 #include "dem/service/reply_sender.h"
 #include "dem/service/simulation_runner.h"
@@ -22,7 +23,8 @@ namespace dem::service {
 
 class Server {
  public:
-  // Creates the DDS entities and loads the initial case, if any; throws
+  // Claims the name (name_claim.h), creates the DDS entities and loads the
+  // initial case, if any; throws NameInUse when another server has the name,
   // CommandError for a bad case (or a one-shot case without stages),
   // dds::DdsError when DDS cannot start, and std::invalid_argument for a
   // server name that is not a ROS 2 name token or a one-shot run without a case.
@@ -51,7 +53,7 @@ class Server {
   CommandQueue queue_;
   StateCache cache_;
   dds::Participant participant_;
-  bool name_claimed_;  // before anything is published under the name
+  NameClaim name_claim_;  // before anything is published under the name
   TelemetryPublisher telemetry_;
   ReplySender replies_;
   SimulationRunner runner_;

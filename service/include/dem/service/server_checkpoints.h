@@ -6,8 +6,6 @@
 // from the newest (docs/RELIABILITY.md).
 #pragma once
 
-#include <chrono>
-#include <optional>
 #include <string>
 
 #include "dem/io/checkpoint_store.h"
@@ -18,22 +16,18 @@ namespace dem::service {
 
 class ServerCheckpoints {
  public:
-  explicit ServerCheckpoints(io::CheckpointSettings settings) : settings_(settings) {}
+  explicit ServerCheckpoints(io::CheckpointSettings settings) : periodic_(settings) {}
 
   // A world was loaded: its checkpoints go in `case_directory`/checkpoints
   // (none when it is empty).
   void begin(const std::filesystem::path& case_directory, std::string case_digest, std::uint64_t cycle);
-  bool due(std::uint64_t cycle) const;
+  bool due(std::uint64_t cycle) const { return periodic_.due(cycle); }
   // `stage`, `stage_cycles`: where a programme stands (0, 0 outside one).
   void write(const WorldSession& world, const io::SnapshotInfo& info, OutputRecorder& recorder, std::size_t stage,
              std::uint64_t stage_cycles);
 
  private:
-  io::CheckpointSettings settings_;
-  std::optional<io::CheckpointStore> store_;
-  std::string case_digest_;
-  std::uint64_t last_cycle_ = 0;
-  std::chrono::steady_clock::time_point last_time_;
+  io::PeriodicCheckpoints periodic_;
 };
 
 }  // namespace dem::service

@@ -1,8 +1,11 @@
 """The dem IDL (idl/dem/*.idl) as Python values: the modules, constants and
 structs of the small IDL subset the service uses - @final structs of
 primitive, string, sequence and nested members, and `<Type>_Constants`
-modules - read by a small tokenizer, so every generator of ROS 2 message
-files and schemas starts from the one definition (docs/ROS2.md).
+modules - read by a small tokenizer, so every generator starts from the one
+definition: the ROS 2 message files and schemas (ros2/generate_interfaces.py,
+docs/ROS2.md) and the C++ messages with their conversions to idlc's C types
+(protocol/generate_messages.py). tests/ros2/test_interfaces.py holds this
+reading against idlc's own, field by field.
 
     types = read_idl([pathlib.Path("idl/dem/command.idl"), ...])
     types["dem_interfaces/PlateForces"].fields  # [Field("server", "string", ...), ...]
@@ -37,6 +40,7 @@ class Field:
     type: str          # a .msg type: "float64", "string", "geometry_msgs/Vector3", "WallForce"
     sequence: bool     # an unbounded array: "type[]"
     comment: str = ""
+    idl_type: str = ""  # as the IDL writes it: "double", "octet", "WallForce_", "geometry_msgs::msg::dds_::Vector3_"
 
     def msg_line(self):
         text = f"{self.type}{'[]' if self.sequence else ''} {self.name}"
@@ -203,7 +207,8 @@ def read_idl(paths):
                 _, name, name_line, _ = tokens[i]
                 i += 1
                 expect(";")
-                struct.fields.append(Field(name, _msg_type(idl_type, path, line), sequence, trailing.get(name_line, "")))
+                struct.fields.append(Field(name, _msg_type(idl_type, path, line), sequence, trailing.get(name_line, ""),
+                                           idl_type))
             else:
                 raise IdlError(f"{path}:{line}: unexpected {value!r}")
     for (package, name), values in constants.items():
@@ -255,3 +260,11 @@ def ros2msg_schema(message, messages):
     for dependency in dependencies(message, messages):
         parts.append("=" * 80 + "\n" + f"MSG: {dependency.full_name}\n" + msg_text(dependency, comments=False))
     return "".join(parts)
+
+
+def write_if_changed(path, text):
+    """Writes a generated file only when its text changes, so what depends on it is not rebuilt."""
+    path = pathlib.Path(path)
+    if not path.exists() or path.read_text() != text:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
