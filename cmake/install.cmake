@@ -2,7 +2,7 @@
 # package configuration other CMake projects find with find_package(dem),
 # and the Debian package CPack builds from the same rules (docs/INSTALL.md):
 #   bin/                      dem_run, dem_validate, dem_vtk, dem_server, demctl
-#   lib/, include/dem/        the libraries (dem::engine, dem::io, dem::client, ...) and their headers
+#   lib/, include/dem/        the libraries (dem::engine, dem::analysis, dem::io, dem::client, ...) and their headers
 #   lib/cmake/dem/            demConfig.cmake, demTargets.cmake
 #   lib/python3/dist-packages/dem   the Python client with its extension (Debian's path)
 #   share/dem/                cases/, config/, paraview/, ros2/dem_interfaces/
@@ -25,6 +25,7 @@ set(exported_libraries
   dem_warnings warnings ""
   dem_version version ""
   dem_engine engine ${PROJECT_SOURCE_DIR}/engine/include
+  dem_analysis analysis ${PROJECT_SOURCE_DIR}/analysis/include
   dem_idl_proto idl_proto ${PROJECT_BINARY_DIR}/idl
   dem_io io ${PROJECT_SOURCE_DIR}/io/include)
 if(DEM_USES_DDS)
@@ -68,7 +69,7 @@ install(TARGETS ${export_targets} EXPORT demTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(DIRECTORY engine/include/ io/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY engine/include/ analysis/include/ io/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(FILES ${PROJECT_BINARY_DIR}/idl/dem/case.pb.h ${PROJECT_BINARY_DIR}/idl/dem/snapshot.pb.h
               ${PROJECT_BINARY_DIR}/generated/version/dem/version.h
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/dem)

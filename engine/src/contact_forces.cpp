@@ -245,6 +245,7 @@ ContactRecordT<Dim> to_record(const RowResult<Dim>& c, ParticleId first, std::ui
   record.shear_damping = reported_shear(c.forces.shear_damping);
   record.sliding = c.sliding;
   record.formed_cycle = formed_cycle;
+  record.force = c.force;
   return record;
 }
 

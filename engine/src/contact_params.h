@@ -27,6 +27,9 @@ struct ContactParams {
   // The same fraction on the tangential stiffness (Randall 4.19), 0 when
   // the model has no tangential dashpot.
   double tangential_damping_ratio = 0.0;
+  // Rolling resistance (rolling_resistance.h): mu_r and eta_r.
+  double rolling_friction = 0.0;
+  double rolling_damping_ratio = 0.0;
 };
 
 // A square table indexed by (material_a, material_b), symmetric.

@@ -57,6 +57,7 @@ struct ContactColumns {
   bool mindlin = false;
   bool search = false;        // shaped particles
   bool dashpot = false;       // energy budget
+  bool rolling = false;       // rolling resistance (rolling_resistance.h)
 };
 
 template <int Dim>
@@ -75,6 +76,7 @@ struct ContactRows {
   std::vector<MindlinRow<Dim>> mindlin;
   std::vector<ContactSearch> search;
   std::vector<DashpotWork<Dim>> dashpot;
+  std::vector<Spin<Dim>> rolling;  // the rolling spring's torque on the first body
   // Cold: written when a contact forms.
   std::vector<std::uint64_t> formed_cycle;
 
@@ -95,6 +97,7 @@ struct ContactRows {
     if (columns.mindlin) visit(mindlin);
     if (columns.search) visit(search);
     if (columns.dashpot) visit(dashpot);
+    if (columns.rolling) visit(rolling);
     visit(formed_cycle);
   }
 };
@@ -118,6 +121,7 @@ void separate(ContactRows<Dim>& rows, std::size_t r) {
   if (rows.columns.normal_force) rows.normal_force[r] = 0.0;
   if (rows.columns.mindlin) rows.mindlin[r] = MindlinRow<Dim>{};
   if (rows.columns.dashpot) rows.dashpot[r] = DashpotWork<Dim>{};
+  if (rows.columns.rolling) rows.rolling[r] = Space<Dim>::zero_spin();
 }
 
 // A row's key, for building and merging tables.

@@ -59,13 +59,24 @@ struct HertzMindlinLaw {
   template <int Dim>
   [[gnu::always_inline]] static void advance(ContactHistory<Dim>& h, const ContactKinematics<Dim>& k, const PairProperties& pair,
                       const ContactParams& p, double dt) {
-    if (!h.touching) {
+    // A fresh contact: its normal force and contact area are set before the
+    // tangential increment (Randall 3.4: "update the normal force and contact
+    // area radius followed by calculating dT using the new values"), so the
+    // step that forms it is tangential loading at its new N, with dN = 0.
+    // Counting the whole N as dN would book a lag DD (4.16-4.17) of about
+    // mu N / (8 G* a): the displacement from an area that carried traction
+    // up to the curve of the larger N (Fig. 3.9, A to B). A contact that
+    // forms carries no traction: its state (T = 0, delta = 0) lies on the
+    // virgin curve of any N, so it lags behind nothing, and a later slowly
+    // rising N must find it on Mindlin's curve, not at theta = 1 up to mu N.
+    const bool formed = h.touching;
+    if (!formed) {
       h.shear = zero_shear<Dim>();
       h.normal_force = 0.0;
       h.mindlin = MindlinRow<Dim>{};
     }
     const HertzContact c = hertz_contact(k.overlap, pair, p);
-    const double force_change = c.normal_force - h.normal_force;
+    const double force_change = formed ? c.normal_force - h.normal_force : 0.0;
     h.normal_force = c.normal_force;
     h.touching = true;
     const ShearForce<Dim> ds = k.shear_velocity * dt;

@@ -12,9 +12,20 @@ namespace {
 template <int Dim>
 bool servos_settled(const BasicWorld<Dim>& world, double tolerance) {
   bool any = false;
+  std::vector<bool> boxed(static_cast<std::size_t>(world.wall_count()), false);
+  if (const auto& box = world.box_control()) {
+    const BoxMeasureT<Dim> m = world.box_measure();
+    for (int i = 0; i < Dim; ++i) {
+      const BoxAxisDef& a = box->axes[static_cast<std::size_t>(i)];
+      boxed[static_cast<std::size_t>(a.lower)] = boxed[static_cast<std::size_t>(a.upper)] = true;
+      if (a.control == AxisControl::kStrainRate) continue;
+      any = true;
+      if (std::abs(m.stress[i] - m.target[i]) > tolerance * std::abs(m.target[i])) return false;
+    }
+  }
   for (const WallMeasureT<Dim>& m : world.wall_measures()) {
     const auto& servo = world.wall(m.wall).motion.servo;
-    if (!servo) continue;
+    if (!servo || boxed[static_cast<std::size_t>(m.wall)] || world.wall(m.wall).removed) continue;
     any = true;
     if (std::abs(m.normal_force - servo->target_force) > tolerance * std::abs(servo->target_force)) return false;
   }
@@ -40,12 +51,16 @@ bool conditions_hold(const BasicWorld<Dim>& world, const StopConditions& until) 
       world.wall_settlement(until.wall_settlement_above->wall) < until.wall_settlement_above->value) {
     return false;
   }
+  if (until.deviator_strain_above &&
+      (!world.box_control() || world.box_measure().deviator_strain < *until.deviator_strain_above)) {
+    return false;
+  }
   return true;
 }
 
 bool has_condition(const StopConditions& until) {
   return until.kinetic_energy_below || until.out_of_balance_below || until.servo_tolerance ||
-         until.wall_stress_above || until.wall_settlement_above;
+         until.wall_stress_above || until.wall_settlement_above || until.deviator_strain_above;
 }
 
 // Miyata et al. (2002) 3.1, eq. 60: remove the particles whose centres lie
@@ -87,7 +102,10 @@ StageResult run_stage(BasicWorld<Dim>& world, const StageDefT<Dim>& stage, std::
                       const std::type_identity_t<StageObserverT<Dim>>& observer) {
   if (stage.trim) trim(world, *stage.trim);
   if (stage.place_wall) place_on_sample(world, *stage.place_wall);
+  if (stage.release_box_control) world.set_box_control(std::nullopt);
+  for (const WallId wall : stage.remove_walls) world.remove_wall(wall);
   for (const auto& [wall, motion] : stage.wall_motions) world.set_wall_motion(wall, motion);
+  if (stage.box_control) world.set_box_control(stage.box_control);
   if (stage.damping) world.set_damping(*stage.damping);
   if (stage.time_step) {
     if (stage.time_step->fixed > 0.0) {
@@ -118,7 +136,25 @@ StageResult run_stage(BasicWorld<Dim>& world, const StageDefT<Dim>& stage, std::
   return result;
 }
 
+template <int Dim>
+StageDefT<Dim> stage_remainder(StageDefT<Dim> stage, std::uint64_t done) {
+  stage.trim.reset();
+  stage.place_wall.reset();
+  stage.remove_walls.clear();
+  stage.wall_motions.clear();
+  stage.box_control.reset();
+  stage.release_box_control = false;
+  stage.damping.reset();
+  stage.time_step.reset();
+  stage.frictions.clear();
+  stage.cycles -= std::min(done, stage.cycles);
+  stage.until.min_cycles = stage.until.min_cycles > done ? stage.until.min_cycles - done : 0;
+  return stage;
+}
+
 template StageResult run_stage<2>(BasicWorld<2>&, const StageDefT<2>&, std::uint64_t, const StageObserverT<2>&);
 template StageResult run_stage<3>(BasicWorld<3>&, const StageDefT<3>&, std::uint64_t, const StageObserverT<3>&);
+template StageDefT<2> stage_remainder<2>(StageDefT<2>, std::uint64_t);
+template StageDefT<3> stage_remainder<3>(StageDefT<3>, std::uint64_t);
 
 }  // namespace dem

@@ -32,6 +32,7 @@ ContactSnapshotT<Dim> save_row(const ContactRows<Dim>& rows, std::size_t r, cons
     c.tangential_spring = rows.dashpot[r].tangential;
     c.relative_velocity = rows.dashpot[r].relative_velocity;
   }
+  if (rows.columns.rolling) c.rolling_torque = rows.rolling[r];
   if (rows.columns.search) {
     c.search_first = rows.search[r].first;
     c.search_second = rows.search[r].second;
@@ -49,6 +50,7 @@ void restore_row(const ContactSnapshotT<Dim>& c, ContactRows<Dim>& rows, std::si
   if (rows.columns.mindlin) rows.mindlin[r] = {c.mindlin, c.mindlin_axis, c.mindlin_theta};
   if (rows.columns.dashpot) rows.dashpot[r] = {c.dashpot_force, c.tangential_spring, c.relative_velocity};
   if (rows.columns.search) rows.search[r] = {c.search_first, c.search_second, c.has_search};
+  if (rows.columns.rolling) rows.rolling[r] = c.rolling_torque;
   rows.formed_cycle[r] = c.formed_cycle;
 }
 
@@ -172,6 +174,7 @@ WorldSnapshotT<Dim> save_snapshot(const WorldState<Dim>& s) {
   if (s.sorted_cycle == kNeverSorted) snap.particle_order.clear();
   const Walls<Dim>& walls = s.walls;
   def.walls = walls.def;
+  def.box_control = walls.box;
   for (int w = 0; w < walls.size(); ++w) {
     snap.walls.push_back(WallSnapshotT<Dim>{walls.initial_point[w], walls.last_velocity[w],
                                             walls.last_angular_velocity[w], walls.force[w], walls.moment[w],

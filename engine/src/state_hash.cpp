@@ -46,6 +46,7 @@ void add_rows(Hasher& h, const ContactRows<Dim>& rows, const Particles<Dim>& p, 
     h.add(wall ? rows.second[r] : p.id[rows.second[r]]);
     h.add(rows.shear[r]);
     if (rows.columns.normal_force) h.add(rows.normal_force[r]);
+    if (rows.columns.rolling) h.add(rows.rolling[r]);
     if (rows.columns.mindlin) {
       h.add(rows.mindlin[r].history.t_star);
       h.add(rows.mindlin[r].history.t_star2);
@@ -75,6 +76,7 @@ std::uint64_t hash_state(const WorldState<Dim>& s) {
   for (const WallDefT<Dim>& w : s.walls.def) {
     h.add(w.point);
     h.add(w.direction);
+    if (w.removed) h.add(w.removed);  // only then, so the hash of a world without removed walls is as it was
   }
   return h.value();
 }

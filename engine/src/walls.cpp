@@ -1,5 +1,7 @@
 #include "walls.h"
 
+#include "box_control.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -150,11 +152,29 @@ double reach(const WallDefT<3>& wall) {
 
 template <int Dim>
 void move_walls(Walls<Dim>& walls, double dt) {
+  // A box control drives its walls: their velocities from its strain rates
+  // and servos, on the stresses of the last force pass.
+  std::vector<Vec<Dim>> box_velocity;
+  std::vector<bool> in_box;
+  if (walls.box) {
+    box_velocity.assign(static_cast<std::size_t>(walls.size()), Vec<Dim>::Zero());
+    in_box.assign(static_cast<std::size_t>(walls.size()), false);
+    set_box_velocities(walls, *walls.box, box_velocity);
+    for (const BoxAxisDef& a : walls.box->axes) in_box[a.lower] = in_box[a.upper] = true;
+  }
   for (int w = 0; w < walls.size(); ++w) {
     WallDefT<Dim>& wall = walls.def[w];
-    const bool servo = wall.motion.servo.has_value();
-    const Vec<Dim> velocity = servo ? servo_velocity(wall, walls.normal_force[w]) : wall.motion.velocity;
-    const Spin<Dim> omega = servo ? Space<Dim>::zero_spin() : wall.motion.angular_velocity;
+    if (wall.removed) {  // out of the world: it stays where it was taken out
+      walls.last_velocity[w] = Vec<Dim>::Zero();
+      walls.last_angular_velocity[w] = Space<Dim>::zero_spin();
+      continue;
+    }
+    const bool boxed = walls.box && in_box[static_cast<std::size_t>(w)];
+    const bool servo = !boxed && wall.motion.servo.has_value();
+    const Vec<Dim> velocity = boxed   ? box_velocity[static_cast<std::size_t>(w)]
+                              : servo ? servo_velocity(wall, walls.normal_force[w])
+                                      : wall.motion.velocity;
+    const Spin<Dim> omega = boxed || servo ? Space<Dim>::zero_spin() : wall.motion.angular_velocity;
     translate(wall, velocity * dt);
     rotate(wall, omega, dt);
     walls.last_velocity[w] = velocity;

@@ -2,6 +2,7 @@
 // motion and the resultants the particles exert on them.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "dem/definitions.h"
@@ -24,6 +25,10 @@ struct Walls {
   std::vector<double> normal_force;
   std::vector<int> contacts;
   std::vector<Eccentricity<Dim>> normal_force_arm;  // sum of N_c times its position in the wall
+  // Element-test control of a box of these walls, when set: it replaces
+  // the motion of the walls it drives.
+  std::optional<BoxControlT<Dim>> box;
+  double depth = 1.0;  // 2D: out-of-plane depth for the box's stresses
 
   int size() const { return static_cast<int>(def.size()); }
 };

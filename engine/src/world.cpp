@@ -9,6 +9,7 @@
 #include <numbers>
 #include <string>
 
+#include "box_control.h"
 #include "broad_phase.h"
 #include "contact_forces.h"
 #include "contact_laws.h"
@@ -16,6 +17,7 @@
 #include "ellipsoid.h"
 #include "motion.h"
 #include "particle_order.h"
+#include "rolling_resistance.h"
 #include "superquadric.h"
 #include "world_state.h"
 #include "world_validation.h"
@@ -84,6 +86,7 @@ void step(WorldState<Dim>& s, bool keep, bool check) {
     timer.lap(s.profile.find_contacts);
   }
   book(s, advance_contacts(s));
+  if (s.rolling) apply_rolling_resistance(s);  // its own pass: nothing when off
   timer.lap(s.profile.contact_forces);
   ++s.profile.cycles;
 }
@@ -216,6 +219,14 @@ void build(WorldState<Dim>& s, const WorldDefT<Dim>& def) {
   // are taken as a layer one mean diameter deep (Randall 1989, 4.4).
   const bool discs = Dim == 2 && def.planar_particle == PlanarParticle::kDisc;
   s.depth = discs || Dim == 3 ? 1.0 : 2.0 * radius_sum / n;
+  s.walls.depth = s.depth;
+  if (def.box_control) {
+    check_box_control(*def.box_control, def.walls);
+    s.walls.box = def.box_control;
+    if (!(s.walls.box->reference_extent.array() > 0.0).all()) {
+      s.walls.box->reference_extent = box_extent(s.walls, *s.walls.box);
+    }
+  }
 
   std::vector<MaterialId> wall_materials;
   for (const WallDefT<Dim>& w : def.walls) wall_materials.push_back(w.material);
@@ -224,6 +235,8 @@ void build(WorldState<Dim>& s, const WorldDefT<Dim>& def) {
   s.wall_law = laws.wall;
   s.contacts.pairs.columns = columns_for(s.pair_law, s.shape, s.energy_budget);
   s.contacts.walls.columns = columns_for(s.wall_law, s.shape, s.energy_budget);
+  s.rolling = needs_rolling_resistance(s);
+  s.contacts.pairs.columns.rolling = s.contacts.walls.columns.rolling = s.rolling;
 
   s.contact_tolerance = def.contact_tolerance > 0.0 ? def.contact_tolerance : 0.1 * radius_sum / n;
   // Nearest images are unique only while a period holds two interaction ranges.
@@ -271,6 +284,7 @@ BasicWorld<Dim>::BasicWorld(const Def& def) : state_(std::make_unique<WorldState
   // The contacts and forces of cycle 0, for the first step's motion.
   find_contacts(s);
   book(s, advance_contacts(s));
+  if (s.rolling) apply_rolling_resistance(s);
   s.energy.initial_kinetic = measure_assembly(s).kinetic_energy;
 }
 
@@ -363,6 +377,11 @@ template <int Dim>
 std::optional<ContactRecordT<Dim>> BasicWorld<Dim>::contact_between(ParticleId a, ParticleId b) const {
   return report_pair_contact(*state_, a, b);
 }
+
+template <int Dim>
+double BasicWorld<Dim>::depth() const { return state_->depth; }
+template <int Dim>
+const PeriodicDefT<Dim>& BasicWorld<Dim>::periodic() const { return state_->periodic_def; }
 
 template <int Dim>
 DampingDef BasicWorld<Dim>::damping() const { return state_->damping; }

@@ -1,12 +1,15 @@
-// Edits to a world between cycles: removing particles (trimming a sample)
-// and placing a wall (a loading plate on the sample's top). Both change
+// Edits to a world between cycles: removing particles (trimming a sample),
+// placing a wall (a loading plate on the sample's top), removing a wall (a
+// hopper's orifice opened) and the box control of an element test. Both change
 // which contacts act, so the force sums are evaluated again from the
 // contacts' histories: between cycles the sums always belong to the
 // contacts as they stand.
 #include <algorithm>
 #include <string>
 
+#include "box_control.h"
 #include "contact_forces.h"
+#include "rolling_resistance.h"
 #include "dem/error.h"
 #include "dem/world.h"
 #include "walls.h"
@@ -33,6 +36,17 @@ void keep_rows(ContactRows<Dim>& rows, Keep keep) {
     keys.push_back({rows.first[r], rows.second[r]});
   }
   gather_rows(rows, from, keys);
+}
+
+// Forgets the wall's contacts, then evaluates the force sums of the
+// contacts left.
+template <int Dim>
+void drop_wall_contacts(WorldState<Dim>& s, WallId id) {
+  ContactRows<Dim>& rows = s.contacts.walls;
+  keep_rows(rows, [&](std::size_t r) { return rows.second[r] != id; });
+  plan_blocks(s.blocks, s.contacts, s.particles.size(), block_size(s));
+  evaluate_contacts(s);
+  if (s.rolling) add_rolling_moments(s);
 }
 
 }  // namespace
@@ -76,6 +90,7 @@ void BasicWorld<Dim>::remove_particles(std::span<const ParticleId> ids) {
   rename_slots(s.contacts.walls, renamed, false);
   plan_blocks(s.blocks, s.contacts, p.size(), block_size(s));
   evaluate_contacts(s);
+  if (s.rolling) add_rolling_moments(s);
   s.contacts_stale = true;
   if (s.energy_budget) s.energy.removed += held_before - held_energy(s);
 }
@@ -90,11 +105,55 @@ void BasicWorld<Dim>::place_wall(WallId id, const Vec<Dim>& point) {
   s.walls.last_velocity[id] = Vec<Dim>::Zero();
   s.walls.last_angular_velocity[id] = Space<Dim>::zero_spin();
   // Its contacts start afresh where it now stands.
-  ContactRows<Dim>& rows = s.contacts.walls;
-  keep_rows(rows, [&](std::size_t r) { return rows.second[r] != id; });
-  plan_blocks(s.blocks, s.contacts, s.particles.size(), block_size(s));
-  evaluate_contacts(s);
+  drop_wall_contacts(s, id);
   s.contacts_stale = true;
+}
+
+template <int Dim>
+void BasicWorld<Dim>::remove_wall(WallId id) {
+  if (id < 0 || id >= wall_count()) throw DefinitionError("remove wall: no wall " + std::to_string(id));
+  WorldState<Dim>& s = *state_;
+  if (s.walls.box) {
+    for (const BoxAxisDef& a : s.walls.box->axes) {
+      if (a.lower == id || a.upper == id) {
+        throw DefinitionError("remove wall: wall " + std::to_string(id) + " (\"" + s.walls.def[id].name +
+                              "\") bounds the controlled box; release the box control first");
+      }
+    }
+  }
+  if (s.walls.def[id].removed) return;
+  const double held_before = s.energy_budget ? held_energy(s) : 0.0;
+  s.walls.def[id].removed = true;
+  s.walls.last_velocity[id] = Vec<Dim>::Zero();
+  s.walls.last_angular_velocity[id] = Space<Dim>::zero_spin();
+  drop_wall_contacts(s, id);
+  // The strain energy its contacts held is gone with them.
+  if (s.energy_budget) s.energy.removed += held_before - held_energy(s);
+}
+
+template <int Dim>
+void BasicWorld<Dim>::set_box_control(const std::optional<BoxControlT<Dim>>& control) {
+  WorldState<Dim>& s = *state_;
+  if (!control) {
+    s.walls.box.reset();
+    return;
+  }
+  check_box_control(*control, s.walls.def);
+  BoxControlT<Dim> box = *control;
+  if (!(box.reference_extent.array() > 0.0).all()) box.reference_extent = box_extent(s.walls, box);
+  s.walls.box = box;
+}
+
+template <int Dim>
+const std::optional<BoxControlT<Dim>>& BasicWorld<Dim>::box_control() const {
+  return state_->walls.box;
+}
+
+template <int Dim>
+BoxMeasureT<Dim> BasicWorld<Dim>::box_measure() const {
+  const Walls<Dim>& walls = state_->walls;
+  if (!walls.box) throw DefinitionError("box measure: no box control is set");
+  return measure_box(walls, *walls.box);
 }
 
 template <int Dim>
@@ -105,6 +164,14 @@ double BasicWorld<Dim>::wall_settlement(WallId id) const {
 
 template void BasicWorld<2>::remove_particles(std::span<const ParticleId>);
 template void BasicWorld<3>::remove_particles(std::span<const ParticleId>);
+template void BasicWorld<2>::remove_wall(WallId);
+template void BasicWorld<3>::remove_wall(WallId);
+template void BasicWorld<2>::set_box_control(const std::optional<BoxControlT<2>>&);
+template void BasicWorld<3>::set_box_control(const std::optional<BoxControlT<3>>&);
+template const std::optional<BoxControlT<2>>& BasicWorld<2>::box_control() const;
+template const std::optional<BoxControlT<3>>& BasicWorld<3>::box_control() const;
+template BoxMeasureT<2> BasicWorld<2>::box_measure() const;
+template BoxMeasureT<3> BasicWorld<3>::box_measure() const;
 template void BasicWorld<2>::place_wall(WallId, const Vec2&);
 template void BasicWorld<3>::place_wall(WallId, const Vec3&);
 template double BasicWorld<2>::wall_settlement(WallId) const;

@@ -46,6 +46,7 @@ struct WorldState {
   double fixed_time_step = 0.0;
   double contact_tolerance = 0.0;   // BALL's TOL
   bool energy_budget = false;
+  bool rolling = false;  // some pair of materials has rolling resistance (rolling_resistance.h)
   int threads = 1;
   std::uint64_t cycle = 0;
   double time = 0.0;

@@ -77,6 +77,10 @@ void validate_world(const WorldDefT<Dim>& def) {
     }
     check(model.friction.value_or(0.0) >= 0.0, where + ": friction must be >= 0");
     check(model.cohesion.value_or(0.0) >= 0.0, where + ": cohesion must be >= 0");
+    check(model.rolling.friction >= 0.0 && std::isfinite(model.rolling.friction),
+          where + ": rolling friction must be >= 0");
+    check(model.rolling.damping_ratio >= 0.0 && std::isfinite(model.rolling.damping_ratio),
+          where + ": rolling damping ratio must be >= 0");
   }
   check(!def.particles.empty(), "world: no particles defined");
   for (std::size_t i = 0; i < def.particles.size(); ++i) {

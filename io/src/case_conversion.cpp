@@ -118,9 +118,70 @@ StopConditions to_stop_conditions(const proto::Until& until, const WallIndex& wa
     def.wall_settlement_above =
         WallThreshold{walls.at(until.wall_settlement_above().wall()), until.wall_settlement_above().value()};
   }
+  if (until.has_deviator_strain_above()) def.deviator_strain_above = until.deviator_strain_above();
   def.min_cycles = until.min_cycles();
   if (until.check_interval() > 0) def.check_interval = until.check_interval();
   return def;
+}
+
+// Element-test control of a box of walls (validation checked the names and
+// that every axis says what drives it).
+template <int Dim>
+BoxControlT<Dim> to_box_control(const proto::BoxControl& box, const WallIndex& walls) {
+  BoxControlT<Dim> def;
+  for (int i = 0; i < Dim; ++i) {
+    const proto::BoxAxis& axis = box.axis(i);
+    BoxAxisDef& a = def.axes[static_cast<std::size_t>(i)];
+    a.lower = walls.at(axis.lower_wall());
+    a.upper = walls.at(axis.upper_wall());
+    switch (axis.control_case()) {
+      case proto::BoxAxis::kStrainRate:
+        a.control = AxisControl::kStrainRate;
+        a.strain_rate = axis.strain_rate();
+        break;
+      case proto::BoxAxis::kStress:
+        a.control = AxisControl::kStress;
+        a.stress = axis.stress();
+        break;
+      case proto::BoxAxis::kStressPath:
+      case proto::BoxAxis::CONTROL_NOT_SET:
+        a.control = AxisControl::kStressPath;
+        break;
+    }
+  }
+  if (box.path_case() == proto::BoxControl::kConstantMeanStress) {
+    def.path = StressPath::kConstantMeanStress;
+    def.path_value = box.constant_mean_stress();
+  } else if (box.path_case() == proto::BoxControl::kStressRatio) {
+    def.path = StressPath::kStressRatio;
+    def.path_value = box.stress_ratio();
+  }
+  def.gain = box.gain();
+  def.max_speed = box.max_speed();
+  return def;
+}
+
+MeasurementRegion to_region(const proto::MeasurementRegion& r) {
+  MeasurementRegion region;
+  region.name = r.name();
+  const auto vec = [](const proto::Vector& v) { return Vec3(v.x(), v.y(), v.z()); };
+  switch (r.shape_case()) {
+    case proto::MeasurementRegion::kBox:
+      region.shape = analysis::RegionShape::kBox;
+      region.min = vec(r.box().min());
+      region.max = vec(r.box().max());
+      break;
+    case proto::MeasurementRegion::kBall:
+      region.shape = analysis::RegionShape::kBall;
+      region.centre = vec(r.ball().centre());
+      region.radius = r.ball().radius();
+      break;
+    case proto::MeasurementRegion::kWhole:
+    case proto::MeasurementRegion::SHAPE_NOT_SET:
+      region.shape = analysis::RegionShape::kWhole;
+      break;
+  }
+  return region;
 }
 
 // The analyses start with the first stage that places the loading plate.
@@ -192,6 +253,7 @@ class Converter {
     check_contact_tolerance(def.world);
     def.world.threads = static_cast<int>(case_.numerics().threads());
     def.world.energy_budget = case_.output().energy_budget();
+    if (case_.has_box_control()) def.world.box_control = to_box_control<Dim>(case_.box_control(), walls_);
     add_stages(def.stages);
     add_output(def.output, def.world.particles.size());
     return def;
@@ -268,6 +330,7 @@ class Converter {
       }
       if (model.has_friction()) def.friction = model.friction();
       if (model.has_cohesion()) def.cohesion = model.cohesion();
+      def.rolling = RollingResistanceDef{model.rolling().friction(), model.rolling().damping_ratio()};
       world.contact_models.push_back(def);
     }
   }
@@ -446,6 +509,9 @@ class Converter {
       if (stage.has_place_wall()) {
         def.place_wall = PlaceWallDef{walls_.at(stage.place_wall().wall()), stage.place_wall().clearance()};
       }
+      for (const std::string& wall : stage.remove_wall()) def.remove_walls.push_back(walls_.at(wall));
+      if (stage.has_box_control()) def.box_control = to_box_control<Dim>(stage.box_control(), walls_);
+      def.release_box_control = stage.release_box_control();
       def.cycles = stage.cycles();
       if (stage.has_until()) def.until = to_stop_conditions(stage.until(), walls_);
       stages.push_back(def);
@@ -458,6 +524,7 @@ class Converter {
     if (case_.output().interval() > 0) output.interval = case_.output().interval();
     output.contacts_file = !case_.output().no_contacts_file();
     output.vtk_interval = case_.output().vtk_interval();
+    for (const proto::MeasurementRegion& region : case_.output().region()) output.regions.push_back(to_region(region));
     if (case_.output().has_compression()) output.compression = to_compression(case_, walls_);
     std::vector<std::string> problems;
     for (int i = 0; i < case_.output().probe_size(); ++i) {

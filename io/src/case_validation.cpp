@@ -48,6 +48,7 @@ class CaseChecker {
     check_periodic();
     check_time_step();
     vector("gravity", case_.gravity());
+    if (case_.has_box_control()) check_box_control("box_control", case_.box_control());
     check_stages();
     check_output();
     check_numerics();
@@ -557,9 +558,12 @@ class CaseChecker {
     std::vector<bool> servo(case_.wall_size());
     for (int i = 0; i < case_.wall_size(); ++i) servo[i] = case_.wall(i).motion().has_servo();
 
+    box_controlled_ = case_.has_box_control();
     for (int i = 0; i < case_.stage_size(); ++i) {
       const proto::Stage& stage = case_.stage(i);
       const std::string path = indexed("stage", i);
+      if (stage.has_box_control()) box_controlled_ = true;
+      if (stage.release_box_control()) box_controlled_ = false;
       std::map<std::string, int, std::less<>> commanded;
       for (int j = 0; j < stage.wall_size(); ++j) {
         const proto::WallCommand& command = stage.wall(j);
@@ -586,6 +590,13 @@ class CaseChecker {
         find_wall(problems_, walls_, path + ".place_wall.wall", stage.place_wall().wall());
         problems_.non_negative(path + ".place_wall.clearance", stage.place_wall().clearance());
       }
+      for (int j = 0; j < stage.remove_wall_size(); ++j) {
+        find_wall(problems_, walls_, indexed(path + ".remove_wall", j), stage.remove_wall(j));
+      }
+      if (stage.has_box_control()) check_box_control(path + ".box_control", stage.box_control());
+      if (stage.has_box_control() && stage.release_box_control()) {
+        problems_.add(path + ".release_box_control", "a stage sets box_control or releases it, not both");
+      }
       if (stage.has_damping()) check_damping(path + ".damping", stage.damping());
       if (stage.has_time_step()) check_time_step(path + ".time_step", stage.time_step(), true);
       for (int j = 0; j < stage.friction_size(); ++j) {
@@ -595,6 +606,75 @@ class CaseChecker {
       }
       if (stage.has_until()) {
         check_until(path, stage, std::ranges::count(servo, true) > 0);
+      }
+    }
+  }
+
+  // Element-test control of a box of walls: one axis per dimension, each
+  // naming its two walls and what drives them; the engine checks that the
+  // walls face along their axes when it builds the world.
+  void check_box_control(const std::string& path, const proto::BoxControl& box) {
+    if (box.axis_size() != dimension_ && dimension_ != 0) {
+      problems_.add(path + ".axis", "must list " + std::to_string(dimension_) + " axes (x then y" +
+                                        (dimension_ == 3 ? " then z" : "") + ") in a " + std::to_string(dimension_) +
+                                        "D case (got " + std::to_string(box.axis_size()) + ")");
+    }
+    int path_axes = 0;
+    bool servo = false;
+    for (int i = 0; i < box.axis_size(); ++i) {
+      const proto::BoxAxis& axis = box.axis(i);
+      const std::string axis_path = indexed(path + ".axis", i);
+      find_wall(problems_, walls_, axis_path + ".lower_wall", axis.lower_wall());
+      find_wall(problems_, walls_, axis_path + ".upper_wall", axis.upper_wall());
+      if (!axis.lower_wall().empty() && axis.lower_wall() == axis.upper_wall()) {
+        problems_.add(axis_path + ".upper_wall", "must differ from lower_wall (both are " +
+                                                     in_quotes(axis.lower_wall()) + ")");
+      }
+      switch (axis.control_case()) {
+        case proto::BoxAxis::kStrainRate:
+          problems_.finite(axis_path + ".strain_rate", axis.strain_rate());
+          break;
+        case proto::BoxAxis::kStress:
+          problems_.positive(axis_path + ".stress", axis.stress());
+          servo = true;
+          break;
+        case proto::BoxAxis::kStressPath:
+          if (!axis.stress_path()) problems_.add(axis_path + ".stress_path", "must be true when set");
+          ++path_axes;
+          servo = true;
+          break;
+        case proto::BoxAxis::CONTROL_NOT_SET:
+          problems_.add(axis_path, "says nothing of what drives it; set strain_rate (1/s), stress (Pa) or "
+                                   "stress_path: true");
+          break;
+      }
+    }
+    if (servo) {
+      problems_.positive(path + ".gain", box.gain());
+      problems_.positive(path + ".max_speed", box.max_speed());
+    }
+    switch (box.path_case()) {
+      case proto::BoxControl::kConstantMeanStress:
+        problems_.positive(path + ".constant_mean_stress", box.constant_mean_stress());
+        break;
+      case proto::BoxControl::kStressRatio:
+        if (problems_.finite(path + ".stress_ratio", box.stress_ratio()) && !(box.stress_ratio() >= 1.0)) {
+          problems_.add(path + ".stress_ratio",
+                        "must be >= 1 (sigma_1 / sigma_3; got " + format_number(box.stress_ratio()) + ")");
+        }
+        break;
+      case proto::BoxControl::PATH_NOT_SET:
+        if (path_axes > 0) {
+          problems_.add(path, "an axis follows the stress path, but no path is set; set constant_mean_stress or "
+                              "stress_ratio");
+        }
+        break;
+    }
+    if (box.path_case() != proto::BoxControl::PATH_NOT_SET) {
+      if (path_axes == 0) {
+        problems_.add(path, "sets a stress path, but no axis follows it; set stress_path: true on an axis");
+      } else if (path_axes == box.axis_size()) {
+        problems_.add(path, "every axis follows the stress path; the path needs an axis driven otherwise");
       }
     }
   }
@@ -624,10 +704,16 @@ class CaseChecker {
     const proto::Until& until = stage.until();
     const std::string path = stage_path + ".until";
     if (!until.has_kinetic_energy_below() && !until.has_out_of_balance_below() && !until.has_servo_tolerance() &&
-        !until.has_wall_stress_above() && !until.has_wall_settlement_above()) {
+        !until.has_wall_stress_above() && !until.has_wall_settlement_above() && !until.has_deviator_strain_above()) {
       problems_.add(path,
                     "sets no stop condition; set kinetic_energy_below, out_of_balance_below, servo_tolerance, "
-                    "wall_stress_above or wall_settlement_above, or leave until out");
+                    "wall_stress_above, wall_settlement_above or deviator_strain_above, or leave until out");
+    }
+    if (until.has_deviator_strain_above()) {
+      problems_.positive(path + ".deviator_strain_above", until.deviator_strain_above());
+      if (!box_controlled_) {
+        problems_.add(path + ".deviator_strain_above", "no box control is set during this stage (box_control)");
+      }
     }
     if (until.has_wall_stress_above()) check_threshold(path + ".wall_stress_above", until.wall_stress_above());
     if (until.has_wall_settlement_above()) {
@@ -640,7 +726,7 @@ class CaseChecker {
       problems_.positive(path + ".out_of_balance_below", until.out_of_balance_below());
     }
     if (until.has_servo_tolerance() && problems_.positive(path + ".servo_tolerance", until.servo_tolerance()) &&
-        !any_servo) {
+        !any_servo && !box_controlled_) {
       problems_.add(path + ".servo_tolerance", "no wall is servo-controlled during this stage");
     }
     if (stage.cycles() > 0 && until.min_cycles() > stage.cycles()) {
@@ -653,6 +739,7 @@ class CaseChecker {
     if (case_.output().has_compression()) {
       check_compression_output(case_.output().compression(), walls_, problems_);
     }
+    check_regions();
     const bool count_known =
         count_known_ && particle_count_ <= static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max());
     std::map<std::string, int, std::less<>> names;
@@ -673,6 +760,50 @@ class CaseChecker {
       check_id(path + ".second", probe.second());
       if (probe.first() == probe.second()) {
         problems_.add(path + ".second", "must differ from first (both are " + std::to_string(probe.first()) + ")");
+      }
+    }
+  }
+
+  // Measurement regions (regions.csv): named, and a box or a ball that
+  // encloses something.
+  void check_regions() {
+    std::map<std::string, int, std::less<>> names;
+    for (int i = 0; i < case_.output().region_size(); ++i) {
+      const proto::MeasurementRegion& region = case_.output().region(i);
+      const std::string path = indexed("output.region", i);
+      if (region.name().empty()) {
+        problems_.add(path + ".name", "must not be empty (it labels the region's rows in regions.csv)");
+      } else if (const auto [first, inserted] = names.emplace(region.name(), i); !inserted) {
+        problems_.add(path + ".name", "duplicate region name " + in_quotes(region.name()) + " (" +
+                                          indexed("output.region", first->second) + " has it too)");
+      }
+      switch (region.shape_case()) {
+        case proto::MeasurementRegion::kWhole:
+          if (!region.whole()) problems_.add(path + ".whole", "must be true when set");
+          break;
+        case proto::MeasurementRegion::kBox: {
+          const proto::Box& box = region.box();
+          if (!vector(path + ".box.min", box.min()) || !vector(path + ".box.max", box.max())) break;
+          const std::pair<double, double> sides[] = {{box.min().x(), box.max().x()},
+                                                     {box.min().y(), box.max().y()},
+                                                     {box.min().z(), box.max().z()}};
+          for (int d = 0; d < (dimension_ == 3 ? 3 : 2); ++d) {
+            const char axis = "xyz"[d];
+            if (!(sides[d].second > sides[d].first)) {
+              problems_.add(path + ".box.max." + axis, "must be greater than box.min." + std::string(1, axis) + " (" +
+                                                           format_number(sides[d].second) + " <= " +
+                                                           format_number(sides[d].first) + ")");
+            }
+          }
+          break;
+        }
+        case proto::MeasurementRegion::kBall:
+          vector(path + ".ball.centre", region.ball().centre());
+          problems_.positive(path + ".ball.radius", region.ball().radius());
+          break;
+        case proto::MeasurementRegion::SHAPE_NOT_SET:
+          problems_.add(path, "has no shape; set whole: true, box { min ... max ... } or ball { centre ... radius ... }");
+          break;
       }
     }
   }
@@ -712,6 +843,7 @@ class CaseChecker {
   bool count_known_ = true;  // false once a csv_file source holds an unknown number
   ShapeMix shapes_;
   int dimension_ = 0;        // 2 or 3; 0 until known (or when the case declares neither)
+  bool box_controlled_ = false;  // a box control is set in the stage being checked
 };
 
 }  // namespace

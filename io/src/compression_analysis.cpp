@@ -100,8 +100,10 @@ CompressionResults CompressionAnalysisT<Dim>::results(const BasicWorld<Dim>& wor
   r.drops = find_stress_drops(samples_, settings_.stress_drop_fraction, r.state_cycles);
   if (settings_.force_distribution) r.force_distribution = {distribution(true), distribution(false)};
   const std::vector<ContactRecordT<Dim>> contacts = world.contacts();
-  r.load_by_state = {load_by_state<Dim>(plate_contacts<Dim>(contacts, settings_.loading_plate), r.state_cycles),
-                     load_by_state<Dim>(plate_contacts<Dim>(contacts, settings_.bottom_plate), r.state_cycles)};
+  const auto loading = plate_contacts<Dim>(contacts, settings_.loading_plate);
+  const auto bottom = plate_contacts<Dim>(contacts, settings_.bottom_plate);
+  r.load_by_state = {load_by_state<Dim>(loading, r.state_cycles), load_by_state<Dim>(bottom, r.state_cycles)};
+  r.load_by_formation = {load_by_formation_order<Dim>(loading), load_by_formation_order<Dim>(bottom)};
   if (!samples_.empty()) r.last = samples_.back();
   return r;
 }

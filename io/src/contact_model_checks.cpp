@@ -49,6 +49,10 @@ class ContactModelChecker {
       check_law(path, model);
       if (model.has_friction()) problems_.non_negative(path + ".friction", model.friction());
       if (model.has_cohesion()) problems_.non_negative(path + ".cohesion", model.cohesion());
+      if (model.has_rolling()) {
+        problems_.non_negative(path + ".rolling.friction", model.rolling().friction());
+        problems_.non_negative(path + ".rolling.damping_ratio", model.rolling().damping_ratio());
+      }
 
       if (named > 2 || std::ranges::count(ids, -1) > 0) continue;
       const std::pair<int, int> pair = named == 0   ? std::pair{-1, -1}

@@ -1,5 +1,7 @@
 #include "dem/io/plate_contacts.h"
 
+#include <algorithm>
+
 namespace dem::io {
 
 template <int Dim>
@@ -26,14 +28,40 @@ PlateReading read_plate(const BasicWorld<Dim>& world, const std::vector<WallMeas
   return {m.normal_force, m.normal_force / world.wall_area(plate), world.wall_settlement(plate), m.contacts};
 }
 
+namespace {
+
+template <int Dim>
+void add_to(StateLoad& load, const PlateContactT<Dim>& c) {
+  load.first_formed = load.contacts == 0 ? c.formed_cycle : std::min(load.first_formed, c.formed_cycle);
+  load.last_formed = std::max(load.last_formed, c.formed_cycle);
+  load.contacts += 1;
+  load.load += c.normal_force;
+}
+
+}  // namespace
+
 template <int Dim>
 std::array<StateLoad, 3> load_by_state(std::span<const PlateContactT<Dim>> contacts, const StateCycles& cycles) {
   std::array<StateLoad, 3> loads;
   for (std::size_t k = 0; k < loads.size(); ++k) loads[k].state = kLoadingStates[k];
-  for (const PlateContactT<Dim>& c : contacts) {
-    StateLoad& load = loads[static_cast<std::size_t>(state_at(c.formed_cycle, cycles))];
-    load.contacts += 1;
-    load.load += c.normal_force;
+  for (const PlateContactT<Dim>& c : contacts) add_to(loads[static_cast<std::size_t>(state_at(c.formed_cycle, cycles))], c);
+  return loads;
+}
+
+template <int Dim>
+std::array<StateLoad, 3> load_by_formation_order(std::span<const PlateContactT<Dim>> contacts) {
+  std::array<StateLoad, 3> loads;
+  for (std::size_t k = 0; k < loads.size(); ++k) loads[k].state = kLoadingStates[k];
+  std::vector<const PlateContactT<Dim>*> order;
+  order.reserve(contacts.size());
+  for (const PlateContactT<Dim>& c : contacts) order.push_back(&c);
+  std::sort(order.begin(), order.end(), [](const auto* a, const auto* b) {
+    return a->formed_cycle < b->formed_cycle || (a->formed_cycle == b->formed_cycle && a->particle < b->particle);
+  });
+  for (std::size_t rank = 0; rank < order.size(); ++rank) {
+    // Integer comparisons 10 k < 4 n and 10 k < 7 n, so no rounding decides a group.
+    const std::size_t group = 10 * rank < 4 * order.size() ? 0 : 10 * rank < 7 * order.size() ? 1 : 2;
+    add_to(loads[group], *order[rank]);
   }
   return loads;
 }
@@ -46,5 +74,7 @@ template PlateReading read_plate(const BasicWorld<2>&, const std::vector<WallMea
 template PlateReading read_plate(const BasicWorld<3>&, const std::vector<WallMeasureT<3>>&, WallId);
 template std::array<StateLoad, 3> load_by_state(std::span<const PlateContactT<2>>, const StateCycles&);
 template std::array<StateLoad, 3> load_by_state(std::span<const PlateContactT<3>>, const StateCycles&);
+template std::array<StateLoad, 3> load_by_formation_order(std::span<const PlateContactT<2>>);
+template std::array<StateLoad, 3> load_by_formation_order(std::span<const PlateContactT<3>>);
 
 }  // namespace dem::io

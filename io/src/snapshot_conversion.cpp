@@ -23,8 +23,9 @@ struct MaterialMirror { std::string name; double density, friction, cohesion, yo
 struct HertzDampingMirror { double damping_ratio; std::optional<double> restitution; bool tangential; };
 struct ContactModelMirror {
   MaterialId a, b; LinearLawDef linear; std::optional<double> friction, cohesion; ContactLaw law;
-  double restitution; HertzDampingDef hertz;
+  double restitution; HertzDampingDef hertz; RollingResistanceDef rolling;
 };
+struct RollingMirror { double friction, damping_ratio; };
 struct DampingMirror {
   double contact_beta, global_alpha; std::optional<double> global_alpha_rotation; double local_alpha;
   std::optional<double> local_alpha_rotation;
@@ -36,7 +37,8 @@ struct EnergyMirror {
 struct ServoMirror { double target_force, gain, max_speed; };
 template <int Dim> struct WorldDefMirror {
   std::vector<MaterialDef> m; std::vector<ContactModelDef> c; std::vector<ParticleDefT<Dim>> p;
-  std::vector<WallDefT<Dim>> w; PeriodicDefT<Dim> periodic; DampingDef d; Vec<Dim> g; PlanarParticle pp;
+  std::vector<WallDefT<Dim>> w; PeriodicDefT<Dim> periodic; std::optional<BoxControlT<Dim>> box; DampingDef d;
+  Vec<Dim> g; PlanarParticle pp;
   double f, fixed, tol; int threads; bool energy_budget;
 };
 template <int Dim> struct ParticleMirror {
@@ -46,10 +48,16 @@ template <int Dim> struct ParticleMirror {
 struct Shape2Mirror { double a, b, n, angle; };
 struct Shape3Mirror { Vec3 axes; Quaternion orientation; };
 template <int Dim> struct PeriodicMirror { std::array<bool, Dim> axes; Vec<Dim> min, max; };
-struct Wall2Mirror { std::string name; Vec2 point, direction; double h1, h2; MaterialId material; WallMotionT<2> motion; };
+struct Wall2Mirror {
+  std::string name; Vec2 point, direction; double h1, h2; MaterialId material; WallMotionT<2> motion; bool removed;
+};
 struct Wall3Mirror {
   std::string name; Vec3 point, direction; double h1, h2; Vec3 direction2; double k1, k2; MaterialId material;
-  WallMotionT<3> motion; std::vector<std::array<Vec3, 3>> triangles;
+  WallMotionT<3> motion; std::vector<std::array<Vec3, 3>> triangles; bool removed;
+};
+struct BoxAxisMirror { WallId lower, upper; AxisControl control; double strain_rate, stress; };
+template <int Dim> struct BoxControlMirror {
+  std::array<BoxAxisDef, Dim> axes; StressPath path; double path_value, gain, max_speed; Vec<Dim> reference_extent;
 };
 struct MindlinMirror { double direction; bool unloading, reloading; double t_star, t_star2, lag; };
 template <int Dim> struct ContactSnapshotMirror {
@@ -57,7 +65,7 @@ template <int Dim> struct ContactSnapshotMirror {
   double overlap, normal_damping; ShearForce<Dim> shear_damping; Vec<Dim> normal, point, force;
   Spin<Dim> moment_first, moment_second; std::uint64_t formed_cycle; bool touching; MindlinHistory mindlin;
   Vec<Dim> mindlin_axis; double mindlin_theta; Vec<Dim> dashpot_force, tangential_spring, relative_velocity;
-  double search_first, search_second; bool has_search;
+  double search_first, search_second; bool has_search; Spin<Dim> rolling_torque;
 };
 template <int Dim> struct WallSnapshotMirror {
   Vec<Dim> initial_point, last_velocity; Spin<Dim> last_angular_velocity; Vec<Dim> force; Spin<Dim> moment;
@@ -79,6 +87,7 @@ DEM_SNAPSHOT_COVERS(WorldSnapshotT<3>, WorldSnapshotMirror<3>);
 DEM_SNAPSHOT_COVERS(MaterialDef, MaterialMirror);
 DEM_SNAPSHOT_COVERS(HertzDampingDef, HertzDampingMirror);
 DEM_SNAPSHOT_COVERS(ContactModelDef, ContactModelMirror);
+DEM_SNAPSHOT_COVERS(RollingResistanceDef, RollingMirror);
 DEM_SNAPSHOT_COVERS(DampingDef, DampingMirror);
 DEM_SNAPSHOT_COVERS(EnergyBudget, EnergyMirror);
 DEM_SNAPSHOT_COVERS(MindlinHistory, MindlinMirror);
@@ -93,6 +102,9 @@ DEM_SNAPSHOT_COVERS(WorldDefT<2>, WorldDefMirror<2>);
 DEM_SNAPSHOT_COVERS(WorldDefT<3>, WorldDefMirror<3>);
 DEM_SNAPSHOT_COVERS(WallDefT<2>, Wall2Mirror);
 DEM_SNAPSHOT_COVERS(WallDefT<3>, Wall3Mirror);
+DEM_SNAPSHOT_COVERS(BoxAxisDef, BoxAxisMirror);
+DEM_SNAPSHOT_COVERS(BoxControlT<2>, BoxControlMirror<2>);
+DEM_SNAPSHOT_COVERS(BoxControlT<3>, BoxControlMirror<3>);
 #undef DEM_SNAPSHOT_COVERS
 
 using Doubles = google::protobuf::RepeatedField<double>;
@@ -196,6 +208,8 @@ void put_settings(const WorldDefT<Dim>& def, proto::SnapshotSettings& settings) 
     out.set_hertz_damping_ratio(c.hertz.damping_ratio);
     if (c.hertz.restitution) out.set_hertz_restitution(*c.hertz.restitution);
     out.set_hertz_tangential_damping(c.hertz.tangential);
+    out.set_rolling_friction(c.rolling.friction);
+    out.set_rolling_damping_ratio(c.rolling.damping_ratio);
   }
   proto::SnapshotDamping& damping = *settings.mutable_damping();
   damping.set_contact_beta(def.damping.contact_beta);
@@ -283,6 +297,40 @@ void put_wall(const WallDefT<Dim>& def, const WallSnapshotT<Dim>& state, proto::
   out.set_normal_force(state.normal_force);
   out.set_contacts(state.contacts);
   put(out.mutable_normal_force_arm(), state.normal_force_arm);
+  out.set_removed(def.removed);
+}
+
+template <int Dim>
+void put_box_control(const BoxControlT<Dim>& box, proto::SnapshotBoxControl& out) {
+  for (const BoxAxisDef& a : box.axes) {
+    proto::SnapshotBoxAxis& axis = *out.add_axis();
+    axis.set_lower(a.lower);
+    axis.set_upper(a.upper);
+    axis.set_control(static_cast<int>(a.control));
+    axis.set_strain_rate(a.strain_rate);
+    axis.set_stress(a.stress);
+  }
+  out.set_path(static_cast<int>(box.path));
+  out.set_path_value(box.path_value);
+  out.set_gain(box.gain);
+  out.set_max_speed(box.max_speed);
+  put(out.mutable_reference_extent(), box.reference_extent);
+}
+
+template <int Dim>
+BoxControlT<Dim> get_box_control(const proto::SnapshotBoxControl& in) {
+  BoxControlT<Dim> box;
+  for (int i = 0; i < Dim && i < in.axis_size(); ++i) {
+    const proto::SnapshotBoxAxis& a = in.axis(i);
+    box.axes[static_cast<std::size_t>(i)] = {a.lower(), a.upper(), static_cast<AxisControl>(a.control()),
+                                             a.strain_rate(), a.stress()};
+  }
+  box.path = static_cast<StressPath>(in.path());
+  box.path_value = in.path_value();
+  box.gain = in.gain();
+  box.max_speed = in.max_speed();
+  box.reference_extent = get<Vec<Dim>>(in.reference_extent(), 0);
+  return box;
 }
 
 template <int Dim>
@@ -318,6 +366,7 @@ void put_contacts(const std::vector<ContactSnapshotT<Dim>>& contacts, proto::Sna
     out.add_search_first(c.search_first);
     out.add_search_second(c.search_second);
     out.add_has_search(c.has_search);
+    put(out.mutable_rolling_torque(), c.rolling_torque);
   }
 }
 
@@ -494,7 +543,8 @@ void check_contacts(Problems& problems, const proto::SnapshotContacts& c, const 
   }
   // Added after version 1 was first written: empty in older snapshots.
   for (const auto& [name, values, item_width] : {std::tuple{"mindlin_theta", &c.mindlin_theta(), std::size_t{1}},
-                                                 {"tangential_spring", &c.tangential_spring(), std::size_t{Dim}}}) {
+                                                 {"tangential_spring", &c.tangential_spring(), std::size_t{Dim}},
+                                                 {"rolling_torque", &c.rolling_torque(), spin}}) {
     if (values->size() > 0) {
       sizes = check_array(problems, std::string("contacts.") + name, *values, n.contacts, item_width) && sizes;
     }
@@ -550,6 +600,21 @@ void check(const proto::Snapshot& m, Problems& problems, const ResourceLimits& l
   if (m.reference_positions_size() > 0) {
     check_array(problems, "reference_positions", m.reference_positions(), n.particles, Dim);
   }
+  if (m.has_box_control()) {
+    const proto::SnapshotBoxControl& box = m.box_control();
+    if (box.axis_size() != Dim) {
+      problems.add("box_control.axis", "has " + std::to_string(box.axis_size()) + " axes, expected " +
+                                           std::to_string(Dim));
+    }
+    for (int i = 0; i < box.axis_size(); ++i) {
+      const std::string path = "box_control.axis[" + std::to_string(i) + "]";
+      if (!in_range(box.axis(i).lower(), n.walls)) problems.add(path + ".lower", "names no wall");
+      if (!in_range(box.axis(i).upper(), n.walls)) problems.add(path + ".upper", "names no wall");
+      if (box.axis(i).control() < 0 || box.axis(i).control() > 2) problems.add(path + ".control", "must be 0, 1 or 2");
+    }
+    if (box.path() < 0 || box.path() > 2) problems.add("box_control.path", "must be 0, 1 or 2");
+    check_length(problems, "box_control.reference_extent", box.reference_extent(), Dim);
+  }
   if (m.particle_order_size() > 0) {
     if (static_cast<std::size_t>(m.particle_order_size()) != n.particles) {
       problems.add("particle_order", "has " + std::to_string(m.particle_order_size()) + " entries for " +
@@ -593,6 +658,7 @@ void get_settings(const proto::SnapshotSettings& settings, WorldDefT<Dim>& def) 
     c.hertz.damping_ratio = model.hertz_damping_ratio();
     if (model.has_hertz_restitution()) c.hertz.restitution = model.hertz_restitution();
     c.hertz.tangential = model.hertz_tangential_damping();
+    c.rolling = RollingResistanceDef{model.rolling_friction(), model.rolling_damping_ratio()};
     def.contact_models.push_back(c);
   }
   const proto::SnapshotDamping& damping = settings.damping();
@@ -653,6 +719,7 @@ void get_wall(const proto::SnapshotWall& w, WorldSnapshotT<Dim>& s) {
   wall.motion.velocity = get<Vec<Dim>>(w.velocity(), 0);
   wall.motion.angular_velocity = get<Spin<Dim>>(w.angular_velocity(), 0);
   if (w.has_servo()) wall.motion.servo = ServoDef{w.servo().target_force(), w.servo().gain(), w.servo().max_speed()};
+  wall.removed = w.removed();
   s.def.walls.push_back(wall);
 
   WallSnapshotT<Dim> state;
@@ -698,6 +765,7 @@ void get_contacts(const proto::SnapshotContacts& c, WorldSnapshotT<Dim>& s) {
     contact.search_first = c.search_first(i);
     contact.search_second = c.search_second(i);
     contact.has_search = c.has_search(i);
+    if (c.rolling_torque_size() > 0) contact.rolling_torque = get<Spin<Dim>>(c.rolling_torque(), i);
     s.contacts.push_back(contact);
   }
 }
@@ -715,6 +783,7 @@ proto::Snapshot snapshot_to_proto(const WorldSnapshotT<Dim>& s, const SnapshotIn
   put_settings(s.def, *m.mutable_settings());
   put_particles(s, *m.mutable_particles());
   for (std::size_t i = 0; i < s.def.walls.size(); ++i) put_wall(s.def.walls[i], s.walls[i], *m.add_wall());
+  if (s.def.box_control) put_box_control(*s.def.box_control, *m.mutable_box_control());
   put_contacts(s.contacts, *m.mutable_contacts());
   proto::SnapshotEnergy& energy = *m.mutable_energy();
   energy.set_initial_kinetic(s.energy.initial_kinetic);
@@ -751,6 +820,7 @@ WorldSnapshotT<Dim> snapshot_from_proto(const proto::Snapshot& m, SnapshotInfo* 
   get_settings(m.settings(), s.def);
   get_particles(m.particles(), s);
   for (const proto::SnapshotWall& w : m.wall()) get_wall(w, s);
+  if (m.has_box_control()) s.def.box_control = get_box_control<Dim>(m.box_control());
   get_contacts(m.contacts(), s);
   const proto::SnapshotEnergy& energy = m.energy();
   s.energy = EnergyBudget{energy.initial_kinetic(), energy.gravity_work(),   energy.wall_work(),

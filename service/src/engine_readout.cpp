@@ -151,6 +151,71 @@ std::optional<ServoLimits> default_servo_limits(const BasicWorld<Dim>& world, Wa
   return ServoLimits{0.5 / (stiffness * most_contacts * dt), 0.05 * mean_radius / dt};
 }
 
+namespace {
+
+template <int Dim>
+std::vector<double> row_by_row(const analysis::Tensor<Dim>& t) {
+  std::vector<double> values;
+  for (int i = 0; i < Dim; ++i) {
+    for (int j = 0; j < Dim; ++j) values.push_back(t(i, j));
+  }
+  return values;
+}
+
+template <int Dim>
+std::vector<double> values_of(const Vec<Dim>& v) {
+  return {v.data(), v.data() + Dim};
+}
+
+}  // namespace
+
+template <int Dim>
+protocol::RegionTelemetry read_regions(const BasicWorld<Dim>& world,
+                                       const std::vector<analysis::RegionT<Dim>>& regions) {
+  protocol::RegionTelemetry t;
+  t.dimension = Dim;
+  const analysis::AssemblySampleT<Dim> sample = analysis::sample(world);
+  for (const analysis::RegionT<Dim>& region : regions) {
+    const analysis::RegionMeasuresT<Dim> m = analysis::measure_region(sample, region);
+    protocol::RegionMeasures r;
+    r.name = region.name;
+    r.particles = m.particles;
+    r.rattlers = m.rattlers;
+    r.contacts = m.contacts;
+    r.particle_contacts = m.particle_contacts;
+    r.sliding_contacts = m.sliding_contacts;
+    r.sliding_fraction = m.sliding_fraction;
+    r.coordination = m.coordination;
+    r.mechanical_coordination = m.mechanical_coordination;
+    r.porosity = m.porosity;
+    r.void_ratio = m.void_ratio;
+    r.stress = row_by_row<Dim>(m.stress);
+    r.principal_stress = values_of<Dim>(m.principal_stress.values);
+    r.stress_angle = m.principal_stress.angle;
+    r.mean_stress = m.mean_stress;
+    r.deviator_stress = m.deviator_stress;
+    r.sin_phi = m.sin_phi;
+    r.tangential_share = m.tangential_share;
+    r.fabric = row_by_row<Dim>(m.fabric.tensor);
+    r.principal_fabric = values_of<Dim>(m.fabric.principal.values);
+    r.fabric_angle = m.fabric.principal.angle;
+    r.anisotropy = m.fabric.anisotropy;
+    r.weighted_fabric = row_by_row<Dim>(m.weighted_fabric.tensor);
+    r.principal_weighted_fabric = values_of<Dim>(m.weighted_fabric.principal.values);
+    r.weighted_fabric_angle = m.weighted_fabric.principal.angle;
+    r.weighted_anisotropy = m.weighted_fabric.anisotropy;
+    r.fabric_trace = m.fabric_trace;
+    r.mean_normal_force = m.mean_normal_force;
+    r.max_normal_force = m.max_normal_force;
+    r.mean_rotation = m.mean_rotation;
+    r.mean_abs_rotation = m.mean_abs_rotation;
+    t.regions.push_back(std::move(r));
+  }
+  return t;
+}
+
+template protocol::RegionTelemetry read_regions<2>(const BasicWorld<2>&, const std::vector<analysis::RegionT<2>>&);
+template protocol::RegionTelemetry read_regions<3>(const BasicWorld<3>&, const std::vector<analysis::RegionT<3>>&);
 template protocol::WallForce read_wall<2>(const BasicWorld<2>&, WallId);
 template protocol::WallForce read_wall<3>(const BasicWorld<3>&, WallId);
 template std::vector<protocol::WallForce> read_walls<2>(const BasicWorld<2>&);

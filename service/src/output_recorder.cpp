@@ -48,10 +48,11 @@ void OutputRecorder::make_compression(const BasicWorld<Dim>& world) {
 template <int Dim>
 void OutputRecorder::start(const std::string& case_name, const BasicWorld<Dim>& world,
                            std::optional<io::CompressionSettings> compression, std::uint64_t vtk_interval,
-                           const io::ResumePoint* resume) {
+                           const io::ResumePoint* resume, const std::vector<io::MeasurementRegion>& regions) {
   close();
   directory_ = case_directory_of(output_directory_, case_name);
   compression_settings_ = std::move(compression);
+  regions_ = regions;
   vtk_interval_ = vtk_override_.value_or(vtk_interval);
   if (resume) resume_ = *resume;
   directory_problem_.reset();
@@ -76,6 +77,7 @@ void OutputRecorder::start(const std::string& case_name, const BasicWorld<Dim>& 
       // they had begun) and stages.csv carry on.
       last_cycle_ = resume->cycle;
       if (compression_settings_ && resume->tables.contains("compression.csv")) make_compression(world);
+      record_regions(world, false);
       if (resume->tables.contains("stages.csv")) {
         stages_ = std::make_unique<io::CsvFile>(directory_, "stages.csv",
                                                 "stage,name,cycles_run,condition_met,cycle,time", tables);
@@ -101,6 +103,10 @@ void OutputRecorder::fill(io::ResumePoint& point) {
   if (walls3_) tables.push_back(&walls3_->file());
   if (assembly_) tables.push_back(&assembly_->file());
   if (stages_) tables.push_back(stages_.get());
+  if (regions2_) tables.push_back(&regions2_->file());
+  if (regions3_) tables.push_back(&regions3_->file());
+  if (box2_) tables.push_back(&box2_->file());
+  if (box3_) tables.push_back(&box3_->file());
   const auto add_compression = [&](auto& c) {
     if (!c) return;
     tables.push_back(&c->csv.samples_file());
@@ -152,9 +158,43 @@ void OutputRecorder::record(const BasicWorld<Dim>& world, std::optional<std::siz
       walls3_->write(world);
     }
     assembly_->write(world);
+    record_regions(world, true);
   } catch (const std::exception& error) {
     fail(error);
   }
+}
+
+template <int Dim>
+void OutputRecorder::record_regions(const BasicWorld<Dim>& world, bool write) {
+  auto& regions = [&]() -> std::unique_ptr<io::RegionsCsvT<Dim>>& {
+    if constexpr (Dim == 2) {
+      return regions2_;
+    } else {
+      return regions3_;
+    }
+  }();
+  auto& box = [&]() -> std::unique_ptr<io::BoxCsvT<Dim>>& {
+    if constexpr (Dim == 2) {
+      return box2_;
+    } else {
+      return box3_;
+    }
+  }();
+  const io::TableSizes* tables = resume_ ? &resume_->tables : nullptr;
+  // Without a row to write (a resume), only the tables the checkpoint
+  // names open - appended to by the rows that follow; otherwise each opens
+  // at its first row.
+  const auto listed = [&](std::string_view name) { return tables != nullptr && tables->contains(name); };
+  if (!regions_.empty() && !regions && (write || listed("regions.csv"))) {
+    std::vector<analysis::RegionT<Dim>> defined;
+    for (const io::MeasurementRegion& r : regions_) defined.push_back(io::region_for<Dim>(r));
+    regions = std::make_unique<io::RegionsCsvT<Dim>>(directory_, std::move(defined), tables);
+  }
+  const bool boxed = static_cast<bool>(world.box_control());
+  if (!box && (write ? boxed : listed("box.csv"))) box = std::make_unique<io::BoxCsvT<Dim>>(directory_, tables);
+  if (!write) return;
+  if (regions) regions->write(world);
+  if (box && boxed) box->write(world);
 }
 
 void OutputRecorder::record_stage(std::size_t stage, const std::string& name, const StageResult& result,
@@ -208,15 +248,21 @@ void OutputRecorder::close() {
   stages_.reset();
   compression2_.reset();
   compression3_.reset();
+  regions2_.reset();
+  regions3_.reset();
+  box2_.reset();
+  box3_.reset();
   vtk_.reset();
   last_cycle_.reset();
   resume_.reset();
 }
 
 template void OutputRecorder::start(const std::string&, const BasicWorld<2>&, std::optional<io::CompressionSettings>,
-                                    std::uint64_t, const io::ResumePoint*);
+                                    std::uint64_t, const io::ResumePoint*,
+                                    const std::vector<io::MeasurementRegion>&);
 template void OutputRecorder::start(const std::string&, const BasicWorld<3>&, std::optional<io::CompressionSettings>,
-                                    std::uint64_t, const io::ResumePoint*);
+                                    std::uint64_t, const io::ResumePoint*,
+                                    const std::vector<io::MeasurementRegion>&);
 template void OutputRecorder::record(const BasicWorld<2>&, std::optional<std::size_t>);
 template void OutputRecorder::record(const BasicWorld<3>&, std::optional<std::size_t>);
 template void OutputRecorder::finish(const BasicWorld<2>&);

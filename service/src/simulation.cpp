@@ -40,7 +40,7 @@ Simulation::Prepared prepared_case(const io::CaseDefinitionT<Dim>& definition, c
   BasicWorld<Dim> built(definition.world);
   io::check_built_world(built, definition.stages, case_source);
   prepared.world = make_session(std::move(built), definition.stages, definition.output.compression,
-                                definition.output.vtk_interval);
+                                definition.output.vtk_interval, definition.output.regions);
   prepared.output_interval = definition.output.interval;
   prepared.case_name = definition.name.empty() ? std::string("unnamed") : definition.name;
   prepared.description = definition.description;

@@ -711,6 +711,13 @@ void SimulationRunner::publish_telemetry() {
   stats.time = plates.time;
   stats.stamp = plates.stamp;
   telemetry_.publish(plates, stats);
+  if (std::optional<protocol::RegionTelemetry> regions = world.read_regions()) {
+    regions->server = options_.name;
+    regions->cycle = plates.cycle;
+    regions->time = plates.time;
+    regions->stamp = plates.stamp;
+    telemetry_.publish(*regions);
+  }
   // A one-shot run writes its rows at the case's output interval instead.
   if (!programme_) world.record_tables(recorder_);
   schedule_.published(world.cycle_count(), world.time());

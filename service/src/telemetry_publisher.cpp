@@ -12,13 +12,19 @@ TelemetryPublisher::TelemetryPublisher(const dds::Participant& participant, cons
     : plates_topic_(participant, protocol::topic_name(server_name, TopicKind::kPlateForces)),
       stats_topic_(participant, protocol::topic_name(server_name, TopicKind::kContactStats)),
       status_topic_(participant, protocol::topic_name(server_name, TopicKind::kStatus)),
+      regions_topic_(participant, protocol::topic_name(server_name, TopicKind::kRegionMeasures)),
       plates_writer_(participant, plates_topic_, protocol::telemetry_writer_qos()),
       stats_writer_(participant, stats_topic_, protocol::telemetry_writer_qos()),
-      status_writer_(participant, status_topic_, protocol::status_qos()) {}
+      status_writer_(participant, status_topic_, protocol::status_qos()),
+      regions_writer_(participant, regions_topic_, protocol::telemetry_writer_qos()) {}
 
 void TelemetryPublisher::publish(const protocol::PlateForces& plates, const protocol::ContactStats& stats) {
   if (!plates_writer_.write(plates)) ++dropped_;
   if (!stats_writer_.write(stats)) ++dropped_;
+}
+
+void TelemetryPublisher::publish(const protocol::RegionTelemetry& regions) {
+  if (!regions_writer_.write(regions)) ++dropped_;
 }
 
 void TelemetryPublisher::publish(const protocol::Status& status) {

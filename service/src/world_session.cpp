@@ -41,12 +41,16 @@ template <int Dim>
 class WorldSessionT final : public WorldSession {
  public:
   WorldSessionT(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages,
-                std::optional<io::CompressionSettings> compression, std::uint64_t vtk_interval)
+                std::optional<io::CompressionSettings> compression, std::uint64_t vtk_interval,
+                std::vector<io::MeasurementRegion> regions)
       : world_(std::move(world)),
         health_(world_),
         stages_(std::move(stages)),
         compression_(std::move(compression)),
-        vtk_interval_(vtk_interval) {}
+        vtk_interval_(vtk_interval),
+        region_settings_(std::move(regions)) {
+    for (const io::MeasurementRegion& r : region_settings_) regions_.push_back(io::region_for<Dim>(r));
+  }
 
   std::uint8_t dimension() const override { return Dim; }
   void cycle(std::uint64_t cycles) override { world_.cycle(cycles); }
@@ -65,6 +69,10 @@ class WorldSessionT final : public WorldSession {
   protocol::WallForce read_wall(WallId wall) const override { return service::read_wall(world_, wall); }
   std::vector<protocol::WallForce> read_walls() const override { return service::read_walls(world_); }
   protocol::ContactStats read_contact_stats() const override { return service::read_contact_stats(world_); }
+  std::optional<protocol::RegionTelemetry> read_regions() const override {
+    if (regions_.empty()) return std::nullopt;
+    return service::read_regions(world_, regions_);
+  }
   std::vector<protocol::ContactEntry> query_contacts(const ContactFilter& filter) const override {
     return service::query_contacts(world_, filter);
   }
@@ -112,16 +120,8 @@ class WorldSessionT final : public WorldSession {
   std::uint64_t stage_cycles(std::size_t stage) const override { return stages_.at(stage).cycles; }
   StageResult run_stage(std::size_t stage, const std::function<bool()>& between_cycles,
                         std::uint64_t done) override {
-    StageDefT<Dim> running = stages_.at(stage);
-    if (done > 0) {
-      // Resumed: the start actions are done and in the state.
-      running.trim.reset();
-      running.place_wall.reset();
-      running.wall_motions.clear();
-      running.damping.reset();
-      running.cycles -= std::min(done, running.cycles);
-      running.until.min_cycles = running.until.min_cycles > done ? running.until.min_cycles - done : 0;
-    }
+    // Resumed: the start actions are done and in the state.
+    const StageDefT<Dim> running = done > 0 ? stage_remainder(stages_.at(stage), done) : stages_.at(stage);
     // An observer interval of one cycle: the caller decides what is due
     // (rows, telemetry, commands); run_stage alone decides the stage's end.
     StageResult result =
@@ -146,7 +146,7 @@ class WorldSessionT final : public WorldSession {
 
   void start_tables(OutputRecorder& recorder, const std::string& case_name,
                     const io::ResumePoint* resume) const override {
-    recorder.start(case_name, world_, compression_, vtk_interval_, resume);
+    recorder.start(case_name, world_, compression_, vtk_interval_, resume, region_settings_);
   }
   void record_tables(OutputRecorder& recorder, std::optional<std::size_t> stage) const override {
     recorder.record(world_, stage);
@@ -160,6 +160,8 @@ class WorldSessionT final : public WorldSession {
   std::vector<StageDefT<Dim>> stages_;
   std::optional<io::CompressionSettings> compression_;
   std::uint64_t vtk_interval_;
+  std::vector<io::MeasurementRegion> region_settings_;
+  std::vector<analysis::RegionT<Dim>> regions_;
 };
 
 }  // namespace
@@ -167,14 +169,16 @@ class WorldSessionT final : public WorldSession {
 template <int Dim>
 std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages,
                                            std::optional<io::CompressionSettings> compression,
-                                           std::uint64_t vtk_interval) {
+                                           std::uint64_t vtk_interval, std::vector<io::MeasurementRegion> regions) {
   return std::make_unique<WorldSessionT<Dim>>(std::move(world), std::move(stages), std::move(compression),
-                                              vtk_interval);
+                                              vtk_interval, std::move(regions));
 }
 
 template std::unique_ptr<WorldSession> make_session<2>(BasicWorld<2>, std::vector<StageDefT<2>>,
-                                                       std::optional<io::CompressionSettings>, std::uint64_t);
+                                                       std::optional<io::CompressionSettings>, std::uint64_t,
+                                                       std::vector<io::MeasurementRegion>);
 template std::unique_ptr<WorldSession> make_session<3>(BasicWorld<3>, std::vector<StageDefT<3>>,
-                                                       std::optional<io::CompressionSettings>, std::uint64_t);
+                                                       std::optional<io::CompressionSettings>, std::uint64_t,
+                                                       std::vector<io::MeasurementRegion>);
 
 }  // namespace dem::service

@@ -80,6 +80,17 @@ TEST(Snapshot, HertzMindlinHistoryCarriesOver) {
   expect_exact_continuation(def, 3000, 3000, "discs, Hertz-Mindlin");
 }
 
+// Rolling resistance (rolling_resistance.h): the rolling springs' torques
+// are history too.
+TEST(Snapshot, RollingResistanceCarriesOver) {
+  WorldDef def = settling_box();
+  def.contact_models[0].rolling = RollingResistanceDef{0.1, 0.3};
+  expect_exact_continuation(def, 3000, 3000, "discs, rolling resistance");
+  WorldDef3 spheres = testing::sphere_stack(ContactLaw::kLinear);
+  spheres.contact_models[0].rolling = RollingResistanceDef{0.05, 0.2};
+  expect_exact_continuation(spheres, 400, 400, "spheres with rolling resistance");
+}
+
 TEST(Snapshot, SuperquadricSearchesCarryOver) {
   WorldDef def = settling_box();
   def.particles.clear();

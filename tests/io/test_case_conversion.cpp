@@ -283,6 +283,43 @@ TEST_F(CaseConversion, Output) {
   EXPECT_FALSE(convert_case(case_).output.contacts_file);
 }
 
+// Element-test control and measurement regions (Randall 1989, 4.5.2, 4.6).
+TEST(CaseConversion2d, ABiaxialBoxItsStagesAndItsRegions) {
+  const LoadedCase loaded = load_case_file(test::data_path("biaxial.case.txtpb"));
+  const CaseDefinition def = convert_case(loaded.message, loaded.source);
+  ASSERT_TRUE(def.world.box_control.has_value());
+  const BoxControl& box = *def.world.box_control;
+  EXPECT_EQ(box.axes[0].lower, 3);  // left
+  EXPECT_EQ(box.axes[0].upper, 1);  // right
+  EXPECT_EQ(box.axes[1].control, AxisControl::kStress);
+  EXPECT_EQ(box.axes[1].stress, 1e4);
+  EXPECT_EQ(box.gain, 5e-6);
+  ASSERT_EQ(def.stages.size(), 2u);
+  ASSERT_TRUE(def.stages[1].box_control.has_value());
+  EXPECT_EQ(def.stages[1].box_control->axes[0].control, AxisControl::kStrainRate);
+  EXPECT_EQ(def.stages[1].box_control->axes[0].strain_rate, -0.1);
+  EXPECT_EQ(def.stages[1].until.deviator_strain_above, 0.002);
+  ASSERT_EQ(def.output.regions.size(), 3u);
+  EXPECT_EQ(def.output.regions[0].shape, analysis::RegionShape::kWhole);
+  const analysis::Region circle = region_for<2>(def.output.regions[2]);
+  EXPECT_EQ(circle.shape, analysis::RegionShape::kBall);
+  EXPECT_EQ(circle.radius, 0.02);
+  EXPECT_EQ(circle.centre, Vec2(0.035, 0.035));
+  const analysis::Region core = region_for<2>(def.output.regions[1]);
+  EXPECT_EQ(core.max, Vec2(0.055, 0.055));
+  const World world(def.world);
+  EXPECT_TRUE(world.box_control().has_value());
+}
+
+TEST_F(CaseConversion, AStageRemovesAWallAndReleasesTheBox) {
+  case_.mutable_stage(2)->add_remove_wall("top");
+  case_.mutable_stage(2)->set_release_box_control(true);
+  const CaseDefinition def = convert_case(case_);
+  EXPECT_EQ(def.stages[2].remove_walls, (std::vector<WallId>{2}));
+  EXPECT_TRUE(def.stages[2].release_box_control);
+  EXPECT_FALSE(def.stages[2].box_control.has_value());
+}
+
 TEST_F(CaseConversion, ValidatesFirst) {
   case_.mutable_wall(0)->set_material("iron");
   case_.mutable_stage(0)->set_cycles(0);

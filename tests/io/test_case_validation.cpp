@@ -87,6 +87,27 @@ proto::CompressionOutput& compression(proto::Case& c) {
   out.set_bottom_plate("bottom");
   return out;
 }
+proto::MeasurementRegion& region(proto::Case& c) {
+  auto& r = *c.mutable_output()->add_region();
+  r.set_name("core");
+  return r;
+}
+// A biaxial box of the four walls: x by strain rate, y held at 1 kPa.
+proto::BoxControl& box_control(proto::Case& c) {
+  if (c.has_box_control()) return *c.mutable_box_control();
+  auto& box = *c.mutable_box_control();
+  auto* x = box.add_axis();
+  x->set_lower_wall("left");
+  x->set_upper_wall("right");
+  x->set_strain_rate(0.01);
+  auto* y = box.add_axis();
+  y->set_lower_wall("bottom");
+  y->set_upper_wall("top");
+  y->set_stress(1e3);
+  box.set_gain(1e-6);
+  box.set_max_speed(0.01);
+  return box;
+}
 proto::ParticleFile& new_particle_file(proto::Case& c) {
   auto& file = *c.add_particles()->mutable_csv_file();
   file.set_path("more.csv");
@@ -514,6 +535,66 @@ const Mistake kMistakes[] = {
      "output.compression.stress_drop_fraction: must be in [0, 1) (got 1); leave it out for 0.02"},
     {"DuplicateProbe", [](auto& c) { c.mutable_output()->mutable_probe(1)->set_name("corner"); },
      "output.probe[1].name: duplicate probe name \"corner\" (output.probe[0] has it too)"},
+    // Rolling resistance
+    {"NegativeRollingFriction", [](auto& c) { c.mutable_contact_model(0)->mutable_rolling()->set_friction(-0.1); },
+     "contact_model[0].rolling.friction: must be >= 0 (got -0.1)"},
+    {"NegativeRollingDamping", [](auto& c) { c.mutable_contact_model(0)->mutable_rolling()->set_damping_ratio(-1); },
+     "contact_model[0].rolling.damping_ratio: must be >= 0 (got -1)"},
+    // Measurement regions
+    {"RegionWithoutShape", [](auto& c) { region(c); },
+     "output.region[0]: has no shape; set whole: true, box { min ... max ... } or ball { centre ... radius ... }"},
+    {"RegionWithoutName", [](auto& c) { region(c).clear_name(); },
+     "output.region[0].name: must not be empty (it labels the region's rows in regions.csv)"},
+    {"DuplicateRegion",
+     [](auto& c) {
+       region(c).set_whole(true);
+       region(c).set_whole(true);
+     },
+     "output.region[1].name: duplicate region name \"core\" (output.region[0] has it too)"},
+    {"FlatBoxRegion",
+     [](auto& c) {
+       auto& box = *region(c).mutable_box();
+       box.mutable_max()->set_x(0.1);
+       box.mutable_max()->set_y(-0.1);
+     },
+     "output.region[0].box.max.y: must be greater than box.min.y (-0.1 <= 0)"},
+    {"BallWithoutRadius", [](auto& c) { region(c).mutable_ball()->mutable_centre()->set_x(0.05); },
+     "output.region[0].ball.radius: must be > 0 (got 0)"},
+    {"BallIn3d", [](auto& c) { region(c).mutable_ball()->mutable_centre()->set_z(0.05); },
+     "output.region[0].ball.centre.z: must be 0 in a 2D case"},
+    // Box control
+    {"BoxWithOneAxis", [](auto& c) { box_control(c).mutable_axis()->RemoveLast(); },
+     "box_control.axis: must list 2 axes (x then y) in a 2D case (got 1)"},
+    {"BoxUnknownWall", [](auto& c) { box_control(c).mutable_axis(1)->set_upper_wall("lid"); },
+     "box_control.axis[1].upper_wall: unknown wall \"lid\""},
+    {"BoxSameWallTwice", [](auto& c) { box_control(c).mutable_axis(0)->set_upper_wall("left"); },
+     "box_control.axis[0].upper_wall: must differ from lower_wall (both are \"left\")"},
+    {"BoxAxisWithoutControl", [](auto& c) { box_control(c).mutable_axis(0)->clear_strain_rate(); },
+     "box_control.axis[0]: says nothing of what drives it; set strain_rate (1/s), stress (Pa) or stress_path: true"},
+    {"BoxNegativeStress", [](auto& c) { box_control(c).mutable_axis(1)->set_stress(-5); },
+     "box_control.axis[1].stress: must be > 0 (got -5)"},
+    {"BoxServoWithoutGain", [](auto& c) { box_control(c).clear_gain(); },
+     "box_control.gain: must be > 0 (got 0)"},
+    {"BoxPathWithoutPath", [](auto& c) { box_control(c).mutable_axis(1)->set_stress_path(true); },
+     "box_control: an axis follows the stress path, but no path is set; set constant_mean_stress or stress_ratio"},
+    {"BoxPathWithoutAxis", [](auto& c) { box_control(c).set_constant_mean_stress(1e3); },
+     "box_control: sets a stress path, but no axis follows it; set stress_path: true on an axis"},
+    {"BoxRatioBelowOne",
+     [](auto& c) {
+       box_control(c).mutable_axis(1)->set_stress_path(true);
+       box_control(c).set_stress_ratio(0.5);
+     },
+     "box_control.stress_ratio: must be >= 1 (sigma_1 / sigma_3; got 0.5)"},
+    {"StageBoxSetAndReleased",
+     [](auto& c) {
+       c.mutable_stage(1)->mutable_box_control()->CopyFrom(box_control(c));
+       c.mutable_stage(1)->set_release_box_control(true);
+     },
+     "stage[1].release_box_control: a stage sets box_control or releases it, not both"},
+    {"DeviatorStrainWithoutBox", [](auto& c) { until(c, 0).set_deviator_strain_above(0.01); },
+     "stage[0].until.deviator_strain_above: no box control is set during this stage (box_control)"},
+    {"RemoveUnknownWall", [](auto& c) { c.mutable_stage(1)->add_remove_wall("orifice"); },
+     "stage[1].remove_wall[0]: unknown wall \"orifice\""},
 };
 
 INSTANTIATE_TEST_SUITE_P(CaseValidation, CaseMistake, ::testing::ValuesIn(kMistakes),

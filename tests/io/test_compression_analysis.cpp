@@ -113,6 +113,52 @@ TEST_F(CompressionAnalysisTest, ContactsFormInTheirStates) {
   // The bottom's contacts formed before the loading began.
   EXPECT_EQ(r.load_by_state[1][0].contacts, 5);
   EXPECT_EQ(r.load_by_state[1][1].contacts + r.load_by_state[1][2].contacts, 0);
+  // By order of formation (the seed's Fig. 30): of five, ranks 0-1 (10k < 20)
+  // initial, 2-3 (10k < 35) transition, 4 final.
+  const auto& order = r.load_by_formation[0];
+  EXPECT_EQ(order[0].contacts, 2);
+  EXPECT_EQ(order[1].contacts, 2);
+  EXPECT_EQ(order[2].contacts, 1);
+  EXPECT_NEAR(order[0].load + order[1].load + order[2].load, load, 1e-9 * load);
+  EXPECT_LE(order[1].last_formed, order[2].first_formed);
+}
+
+// Miyata Fig. 30: "the first 40 % of the contact points newly created",
+// "between 40 and 70 %" and "between 70 and 100 %", whatever order the
+// engine lists them in; ties in the cycle go by particle id.
+TEST(LoadByFormationOrder, GroupsTheFirst40TheNext30AndTheLast30Percent) {
+  std::vector<PlateContactT<2>> contacts;
+  const std::uint64_t formed[] = {90, 10, 50, 30, 70, 20, 100, 40, 60, 80};
+  for (int k = 0; k < 10; ++k) {
+    PlateContactT<2> c;
+    c.particle = 9 - k;
+    c.normal_force = static_cast<double>(formed[k]);  // load = the cycle, to read off the groups
+    c.formed_cycle = formed[k];
+    contacts.push_back(c);
+  }
+  const auto groups = load_by_formation_order<2>(contacts);
+  EXPECT_EQ(groups[0].contacts, 4);
+  EXPECT_EQ(groups[1].contacts, 3);
+  EXPECT_EQ(groups[2].contacts, 3);
+  EXPECT_DOUBLE_EQ(groups[0].load, 10 + 20 + 30 + 40);
+  EXPECT_DOUBLE_EQ(groups[1].load, 50 + 60 + 70);
+  EXPECT_DOUBLE_EQ(groups[2].load, 80 + 90 + 100);
+  EXPECT_EQ(groups[0].first_formed, 10u);
+  EXPECT_EQ(groups[2].last_formed, 100u);
+  // Three contacts formed in one cycle: the lower particle id ranks first.
+  std::vector<PlateContactT<2>> tied(3);
+  for (int k = 0; k < 3; ++k) {
+    tied[k].particle = 2 - k;
+    tied[k].formed_cycle = 5;
+    tied[k].normal_force = 1.0 + k;
+  }
+  // Of three, ranks 0 and 1 are initial (10k < 12), rank 2 transition (20 < 21).
+  const auto tie_groups = load_by_formation_order<2>(tied);
+  EXPECT_EQ(tie_groups[0].contacts, 2);
+  EXPECT_DOUBLE_EQ(tie_groups[0].load, 3.0 + 2.0);  // particles 0 and 1
+  EXPECT_EQ(tie_groups[1].contacts, 1);
+  EXPECT_DOUBLE_EQ(tie_groups[1].load, 1.0);  // particle 2
+  EXPECT_EQ(tie_groups[2].contacts, 0);
 }
 
 TEST_F(CompressionAnalysisTest, SnapshotsAtTheirStresses) {
@@ -157,7 +203,7 @@ TEST_F(CompressionAnalysisTest, WritesTheFilesWithTheirColumns) {
     for (const CompressionSample& s : analysis_.samples()) csv.write_sample(s);
     for (const PlateSnapshot& s : analysis_.snapshots()) csv.write_snapshot(s, {});
     csv.write_results(analysis_.results(world_));
-    EXPECT_EQ(csv.files().size(), 7u);
+    EXPECT_EQ(csv.files().size(), 8u);
   }
   const auto lines = [&](const std::string& name) {
     std::ifstream in(directory / name);
@@ -173,6 +219,7 @@ TEST_F(CompressionAnalysisTest, WritesTheFilesWithTheirColumns) {
   EXPECT_EQ(lines("plate_contacts.csv").size(), 1u + 3 + 5 + 4 * (5 + 5));
   EXPECT_EQ(lines("compression_states.csv").size(), 4u);
   EXPECT_EQ(lines("load_by_state.csv").size(), 7u);
+  EXPECT_EQ(lines("load_by_formation.csv").size(), 7u);
   EXPECT_EQ(lines("force_tail.csv")[0],
             "plate,snapshots,contacts,mean_force,tail_from,tail_contacts,decay_rate,decay_rate_error,excess_cv,"
             "q_model_decay_rate,mueth_decay_rate");

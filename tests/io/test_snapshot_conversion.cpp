@@ -51,6 +51,41 @@ TEST(SnapshotConversion, ThreeDimensionalRunContinuesBitForBit) {
   EXPECT_EQ(restored.state_hash(), original.state_hash());
 }
 
+// Rolling resistance's torques, an element test's box control and a removed
+// wall go through the file as well.
+TEST(SnapshotConversion, RollingTorquesBoxControlAndRemovedWallsContinueBitForBit) {
+  WorldDef3 def = sphere_stack(ContactLaw::kLinear);
+  def.contact_models[0].rolling = RollingResistanceDef{0.1, 0.2};
+  World3 original(def);
+  original.cycle(300);
+  World3 restored(snapshot_from_proto<3>(snapshot_to_proto(original.snapshot(), SnapshotInfo{})));
+  original.cycle(300);
+  restored.cycle(300);
+  EXPECT_EQ(restored.state_hash(), original.state_hash());
+
+  WorldDef box = testing::settling_box();
+  box.walls[2].motion.servo.reset();
+  BoxControl control;
+  control.axes[0] = BoxAxisDef{3, 1, AxisControl::kStrainRate, 0.5, 0.0};
+  control.axes[1] = BoxAxisDef{0, 2, AxisControl::kStress, 0.0, 300.0};
+  control.gain = 1e-5;
+  control.max_speed = 0.05;
+  box.box_control = control;
+  box.walls.push_back(WallDef{"spare", {0.15, 0.15}, {1, 0}, -0.01, 0.01, 1, {}});
+  World boxed(box);
+  boxed.remove_wall(4);
+  boxed.cycle(500);
+  const proto::Snapshot message = snapshot_to_proto(boxed.snapshot(), SnapshotInfo{});
+  EXPECT_TRUE(message.has_box_control());
+  EXPECT_TRUE(message.wall(4).removed());
+  World again(snapshot_from_proto<2>(message));
+  EXPECT_TRUE(again.wall(4).removed);
+  EXPECT_EQ(again.box_control()->reference_extent, boxed.box_control()->reference_extent);
+  boxed.cycle(500);
+  again.cycle(500);
+  EXPECT_EQ(again.state_hash(), boxed.state_hash());
+}
+
 TEST(SnapshotConversion, HertzMindlinHistoryAndEnergyContinueBitForBit) {
   World3 original(sphere_stack(ContactLaw::kHertzMindlin));
   original.cycle(15);

@@ -180,3 +180,55 @@ def test_a_file_without_stress_and_settlement_is_named(out):
                             capture_output=True, text=True, timeout=60)
     assert result.returncode == 2
     assert f"{table}: no plate stress and settlement in it (columns: cycle, time, kinetic_energy)" in result.stderr
+
+
+def test_randall_chapter_6_figures_from_a_dem_validate_directory(tmp_path):
+    """Roses, obliquities, the shear series and the stress path (Randall
+    1989, Figs. 6.15-6.29) from the tables dem_validate randall-* writes,
+    the velocity field of a state it keeps (6.31), and the hopper's
+    discharge (6.2)."""
+    with open(tmp_path / "roses.csv", "w", newline="") as out:
+        rows = csv.writer(out)
+        rows.writerow(["state", "kind", "angle_low", "angle_high", "contacts", "share"])
+        for kind in ("contacts", "normal force"):
+            for k in range(36):
+                low = 2 * np.pi * k / 36
+                rows.writerow(["100 kPa", kind, low, low + 2 * np.pi / 36, 10, (1 + 0.3 * np.cos(2 * low)) / 36])
+    with open(tmp_path / "obliquity.csv", "w", newline="") as out:
+        rows = csv.writer(out)
+        rows.writerow(["state", "kind", "obliquity_low", "obliquity_high", "contacts", "share"])
+        for k in range(20):
+            rows.writerow(["100 kPa", "obliquity", -1 + 0.1 * k, -0.9 + 0.1 * k, 5, 0.05])
+    with open(tmp_path / "randall.csv", "w", newline="") as out:
+        rows = csv.writer(out)
+        columns = ["cycle", "deviator_strain", "volumetric_strain", "out_of_balance", "region", "stress_1", "stress_2",
+                   "sin_phi", "tangential_share", "sliding_fraction", "anisotropy", "coordination"]
+        rows.writerow(columns)
+        for k in range(30):
+            strain = 1e-4 * k
+            rows.writerow([1000 * k, strain, 0, 0.01, "circle", 1e5 * (1 + 4 * strain), 1e5 * (1 - 2 * strain),
+                           0.3 * (1 - np.exp(-k / 5)), 0.12, 0.2, 0.05 + strain, 3.6 - strain])
+    with open(tmp_path / "hopper.csv", "w", newline="") as out:
+        rows = csv.writer(out)
+        rows.writerow(["run", "half_angle_deg", "orifice", "time", "discharged"])
+        for k in range(20):
+            rows.writerow(["30 deg, 10 mm", 30, 0.01, 0.005 * k, 25 * k])
+    (tmp_path / "strain_0.005_percent").mkdir()
+    with open(tmp_path / "strain_0.005_percent" / "particles.csv", "w", newline="") as out:
+        rows = csv.writer(out)
+        rows.writerow(["id", "x", "y", "radius", "vx", "vy", "angular_velocity", "rotation", "material"])
+        for k in range(25):
+            x, y = 0.002 * (k % 5), 0.002 * (k // 5)
+            rows.writerow([k, x, y, 0.001, -0.01 * x, 0.01 * y, 0, 0, "glass"])
+    from dem.plots import draw_randall_directory
+
+    written = draw_randall_directory(tmp_path, tmp_path / "png")
+    assert {p.name for p in written} >= {"rose_100_kPa_contacts.png", "rose_100_kPa_normal_force.png",
+                                         "obliquity.png", "shear.png", "stress_path.png", "discharge.png",
+                                         "velocity_strain_0_005_percent.png"}
+    for path in written:
+        assert_png(path)
+    result = subprocess.run([sys.executable, "-m", "dem.plots", "randall", str(tmp_path), str(tmp_path / "cli")],
+                            capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    assert (tmp_path / "cli" / "shear.png").exists()

@@ -119,3 +119,27 @@ def test_the_gil_is_released_while_waiting(serve):
     during = [t for t in beats if started <= t <= ended]
     gaps = [b - a for a, b in zip([started] + during, during + [ended])]
     assert len(during) > 20 and max(gaps) < 0.3, f"the heartbeat paused {max(gaps):.3f} s while the main thread waited"
+
+
+def test_the_measures_of_a_cases_regions(serve):
+    """A case with measurement regions (output.region) publishes their
+    stress, fabric, porosity and coordination (dem.RegionTelemetry)."""
+    client = serve("telemetry_regions", telemetry_cycles=10)
+    client.load_case(dem.paths.cases_dir().parent / "tests" / "io" / "data" / "biaxial.case.txtpb")
+    with client.subscribe(plate_forces=False, contact_stats=False, region_measures=True) as telemetry:
+        cycle = until_samples_flow(client, telemetry, kind=dem.RegionTelemetry)
+        client.cycle(2000)
+        last = None
+        for sample in telemetry.samples(timeout=1.0):
+            assert isinstance(sample, dem.RegionTelemetry)
+            last = sample
+            if sample.cycle == cycle + 2000:
+                break
+    assert last is not None and last.cycle == cycle + 2000
+    assert last.dimension == 2
+    assert [r.name for r in last.regions] == ["all", "core", "circle"]
+    whole = last.region("all")
+    assert whole.particles == 120
+    assert len(whole.stress) == 4 and len(whole.fabric) == 4
+    assert 0.0 < whole.porosity < 1.0
+    assert whole.mean_stress == pytest.approx(0.5 * (whole.stress[0] + whole.stress[3]))

@@ -47,7 +47,8 @@ def msg_type(c_type):
     sequence = re.fullmatch(r"dds_sequence_(\w+)", c_type)
     if sequence:
         element = sequence.group(1)
-        return (C_TYPES.get(element + "_t") or msg_type("struct " + element)) + "[]"
+        # dds_sequence_int32 names its element int32_t; dds_sequence_double, double
+        return (C_TYPES.get(element + "_t") or C_TYPES.get(element) or msg_type("struct " + element)) + "[]"
     nested = re.fullmatch(r"struct (\w+?)_msg_dds__(\w+)_", c_type)
     assert nested, c_type
     package, name = nested.groups()

@@ -7,8 +7,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <regex>
 #include <stdexcept>
 #include <thread>
 
@@ -39,6 +41,19 @@ std::filesystem::path output_directory(const std::string& test) {
   std::filesystem::remove_all(directory);
   std::filesystem::create_directories(directory);
   return directory;
+}
+
+std::uint64_t newest_checkpoint(const std::filesystem::path& case_directory) {
+  std::uint64_t newest = 0;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(case_directory / "checkpoints", error)) {
+    std::smatch match;
+    const std::string name = entry.path().filename().string();
+    if (std::regex_match(name, match, std::regex("checkpoint-0*([0-9]+)\\.resume"))) {
+      newest = std::max<std::uint64_t>(newest, std::stoull(match[1]));
+    }
+  }
+  return newest;
 }
 
 service::ServerOptions server_options(const std::string& name, std::uint32_t domain) {

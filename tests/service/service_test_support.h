@@ -105,6 +105,10 @@ std::string read_text(const std::filesystem::path& path);
 // A clean output directory for one test.
 std::filesystem::path output_directory(const std::string& test);
 
+// The cycle of the newest checkpoint (checkpoint-<cycle>.resume) in a
+// case's output directory, or 0.
+std::uint64_t newest_checkpoint(const std::filesystem::path& case_directory);
+
 // Options for a test server: one engine thread, telemetry every 10 cycles,
 // its own output directory.
 service::ServerOptions server_options(const std::string& name, std::uint32_t domain);

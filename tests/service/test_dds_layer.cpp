@@ -314,6 +314,7 @@ TEST(Protocol, TopicNamesFollowRos2Conventions) {
   EXPECT_EQ(protocol::topic_name("a", TopicKind::kStatus), "rt/dem/a/status");
   EXPECT_EQ(protocol::topic_name("a", TopicKind::kCommand), "rt/dem/a/command");
   EXPECT_EQ(protocol::topic_name("a", TopicKind::kReply), "rt/dem/a/reply");
+  EXPECT_EQ(protocol::topic_name("a", TopicKind::kRegionMeasures), "rt/dem/a/region_measures");
   EXPECT_EQ(protocol::topic_name("a", TopicKind::kNameClaim), "rt/dem/a/_name_claim");  // hidden in ROS 2
   EXPECT_EQ(protocol::server_of_status_topic("rt/dem/press_2/status"), "press_2");
   EXPECT_EQ(protocol::server_of_status_topic("rt/dem/press_2/reply"), std::nullopt);

@@ -7,28 +7,12 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 
-#include <regex>
-
 #include "service_test_support.h"
 
 namespace dem::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The newest checkpoint's cycle in a case directory, or 0.
-std::uint64_t newest_checkpoint(const fs::path& case_directory) {
-  std::uint64_t newest = 0;
-  std::error_code error;
-  for (const auto& entry : fs::directory_iterator(case_directory / "checkpoints", error)) {
-    std::smatch match;
-    const std::string name = entry.path().filename().string();
-    if (std::regex_match(name, match, std::regex("checkpoint-0*([0-9]+)\\.resume"))) {
-      newest = std::max<std::uint64_t>(newest, std::stoull(match[1]));
-    }
-  }
-  return newest;
-}
 
 std::vector<std::string> server_arguments(const std::string& name, std::uint32_t domain, const fs::path& out,
                                           const fs::path& case_path, std::vector<std::string> more) {

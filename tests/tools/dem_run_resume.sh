@@ -31,7 +31,11 @@ done
 kill -9 "$pid" 2>/dev/null || fail "the run ended before it could be killed: lower the checkpoint interval"
 wait "$pid" 2>/dev/null || true
 ls "$work/killed/checkpoints"
-[ "$(ls "$work/killed/checkpoints/"*.resume | wc -l)" -le 2 ] || fail "more checkpoints kept than --checkpoint-keep 2"
+# A kill between writing a checkpoint and pruning the oldest (io's
+# CheckpointStore::write) leaves one more than --checkpoint-keep: with a
+# checkpoint every few milliseconds (the biaxial case) that happens.
+[ "$(ls "$work/killed/checkpoints/"*.resume | wc -l)" -le 3 ] ||
+  fail "more checkpoints kept than --checkpoint-keep 2 (and the one written just before the kill)"
 
 "$dem_run" "$case_file" --out "$work/killed" --threads 1 "${vtk[@]}" --resume >"$work/resumed.log" 2>&1 ||
   fail "the resumed run failed: $(cat "$work/resumed.log")"

@@ -9,22 +9,10 @@
 #include <sstream>
 
 #include "contact_mechanics.h"
+#include "validation_test_support.h"
 
 namespace dem::validation {
 namespace {
-
-// A fresh directory for a check's CSV files.
-std::filesystem::path out_dir(const char* name) {
-  const auto dir = std::filesystem::path(DEM_VALIDATION_TEST_OUTPUT) / name;
-  std::filesystem::remove_all(dir);
-  return dir;
-}
-
-void expect_passed(const Verdict& verdict, const char* title) {
-  verdict.print(stdout, title);
-  EXPECT_TRUE(verdict.passed()) << verdict;
-  EXPECT_FALSE(verdict.checks().empty());
-}
 
 TEST(HertzImpact, Randall5_12ContactDurationAndPeakForce) {
   expect_passed(report_hertz_impact(out_dir("hertz_impact")), "hertz-impact");

@@ -36,20 +36,6 @@ template <int Dim>
                    path.string());
 }
 
-// The rest of a stage a checkpoint interrupted: its start actions (trim,
-// placing a wall, motions, damping) are done and in the state; its length
-// and minimum count from where it stood.
-template <int Dim>
-StageDefT<Dim> remainder(StageDefT<Dim> stage, std::uint64_t done) {
-  stage.trim.reset();
-  stage.place_wall.reset();
-  stage.wall_motions.clear();
-  stage.damping.reset();
-  stage.cycles -= done;
-  stage.until.min_cycles = stage.until.min_cycles > done ? stage.until.min_cycles - done : 0;
-  return stage;
-}
-
 // The newest checkpoint in the output directory, as a world and where it stood.
 template <int Dim>
 std::pair<BasicWorld<Dim>, io::ResumePoint> resume_from(const RunOptions& options, const std::string& digest,
@@ -114,7 +100,7 @@ RunOutcome run_definition(io::CaseDefinitionT<Dim>& definition, const io::CaseSo
   for (int i = resumed ? static_cast<int>(resumed->stage) : 0; i < stage_count && !interrupted(); ++i) {
     const std::uint64_t done_before = resumed && i == static_cast<int>(resumed->stage) ? resumed->stage_cycles : 0;
     const StageDefT<Dim>& stage = definition.stages[i];
-    const StageDefT<Dim> running = done_before > 0 ? remainder(stage, done_before) : stage;
+    const StageDefT<Dim> running = done_before > 0 ? stage_remainder(stage, done_before) : stage;
     const std::uint64_t start = world.cycle_count() - done_before;
     std::optional<StepHealth> problem;
     // Observed every cycle, so Ctrl-C is answered at once; a row every

@@ -19,6 +19,18 @@ RunRecorder<Dim>::RunRecorder(const std::filesystem::path& directory, const io::
     probes_.emplace(directory, output.probes, tables);
     files_.push_back(probes_->path());
   }
+  if (!output.regions.empty()) {
+    std::vector<analysis::RegionT<Dim>> regions;
+    for (const io::MeasurementRegion& r : output.regions) regions.push_back(io::region_for<Dim>(r));
+    regions_.emplace(directory, std::move(regions), tables);
+    files_.push_back(regions_->path());
+  }
+  // box.csv begins with the first row under a box control; a checkpoint
+  // taken after that names it, and the resumed run appends to it.
+  if (tables && tables->contains("box.csv")) {
+    box_.emplace(directory, tables);
+    files_.push_back(box_->path());
+  }
   if (output.vtk_interval > 0) {
     // A resumed run keeps the steps before its checkpoint, as it keeps the tables' rows.
     if (resume) {
@@ -41,6 +53,8 @@ template <int Dim>
 void RunRecorder<Dim>::fill(io::ResumePoint& point) {
   std::vector<io::CsvFile*> tables = {&walls_.file(), &assembly_.file()};
   if (probes_) tables.push_back(&probes_->file());
+  if (regions_) tables.push_back(&regions_->file());
+  if (box_) tables.push_back(&box_->file());
   if (compression_csv_) {
     tables.push_back(&compression_csv_->samples_file());
     tables.push_back(&compression_csv_->contacts_file());
@@ -63,6 +77,14 @@ void RunRecorder<Dim>::record(const BasicWorld<Dim>& world, int stage) {
   walls_.write(world);
   const AssemblyMeasures measures = assembly_.write(world);
   if (probes_) probes_->write(world);
+  if (regions_) regions_->write(world);
+  if (world.box_control()) {
+    if (!box_) {
+      box_.emplace(directory_);
+      files_.push_back(box_->path());
+    }
+    box_->write(world);
+  }
   // Randall (1989) 4.35-4.40: above 0.3 of the particle-wise critical step
   // the step is too large for the stiffness the particles meet. Randall
   // estimates that stiffness as K = d|sum F| / dx, dx = |v| dt, because "for

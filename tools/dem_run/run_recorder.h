@@ -1,4 +1,5 @@
-// The CSV tables of one run: the time series (walls, assembly, probes) as the
+// The CSV tables of one run: the time series (walls, assembly, probes, the
+// measures of the case's regions, the controlled box) as the
 // run goes, and the contact and particle snapshots at its end, with the
 // columns of the run's dimension; and the plate loading analyses when the
 // case asks for them (output.compression); and the ParaView files every
@@ -15,6 +16,7 @@
 #include "dem/io/compression_analysis.h"
 #include "dem/io/compression_csv.h"
 #include "dem/io/csv_writers.h"
+#include "dem/io/regions_csv.h"
 #include "dem/io/vtk_series.h"
 #include "dem/world.h"
 
@@ -53,6 +55,8 @@ class RunRecorder {
   io::WallsCsvT<Dim> walls_;
   io::AssemblyCsv assembly_;
   std::optional<io::ProbesCsv> probes_;
+  std::optional<io::RegionsCsvT<Dim>> regions_;  // when the case names regions
+  std::optional<io::BoxCsvT<Dim>> box_;          // from the first row with a box control
   std::optional<io::CompressionAnalysisT<Dim>> compression_;
   std::optional<io::CompressionCsvT<Dim>> compression_csv_;
   std::optional<io::VtkSeries> vtk_;

@@ -5,6 +5,13 @@
 //   dem_validate restitution --out DIR      (Miyata et al. 2002, eq. 17)
 //   dem_validate mindlin-loading --out DIR  (Randall 1989, 5.2)
 //   dem_validate box-settle --out DIR       (3D settling: weight on the floor, energy budget)
+//   dem_validate verification --case FILE --out DIR          (Cundall & Strack 1979, Tables 1-3: stages A and B)
+//   dem_validate randall-compression --case FILE --out DIR   (Randall 1989, 6.4.3: 100 kPa)
+//   dem_validate randall-shear --case FILE --out DIR         (Randall 1989, 6.5.2: constant-volume shear)
+//   dem_validate hopper --case FILE --out DIR [--runs 45:10,30:10,...]  (Randall 1989, 6.2: discharge rates)
+//   dem_validate deposition --case FILE --out DIR             (Randall 1989, 6.3: pluvial deposition)
+//   dem_validate rolling-to-rest --out DIR  (rolling resistance: a ball stops where the closed form says)
+//   dem_validate angle-of-repose --out DIR  (rolling resistance: the repose angle of a heap by mu_r)
 //   dem_validate miyata-compression --case FILE --out DIR
 //                                           (Miyata et al. 2002, 3.2-3.3: plate loading, Figs. 26-37)
 #include <CLI/CLI.hpp>
@@ -13,11 +20,19 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "dem/version.h"
 #include "contact_mechanics.h"
 #include "miyata_compression.h"
+#include "deposition.h"
+#include "hopper.h"
 #include "nine_disc.h"
+#include "randall_assembly.h"
+#include "rolling.h"
+#include "verification.h"
 
 namespace {
 
@@ -33,6 +48,9 @@ void report_nine_disc(const dem::validation::CompressionReport& c, const dem::va
               100.0 * (c.undamped_mean / feq - 1.0), c.undamped_amplitude / feq);
   std::printf("  loading speed 0.12 vs 0.04: amplitude %.4f vs %.4f F_eq (Fig. 7)\n", c.undamped_amplitude / feq,
               c.slow_amplitude / feq);
+  std::printf("  undamped: the slow run against the fast one superposed (linearity): largest difference %.2e F_eq; "
+              "mean periods %.2f and %.2f cycles; amplitude over the first and second half of the hold %.4f, %.4f\n",
+              c.superposition_error, c.fast_period, c.slow_period, c.early_amplitude, c.late_amplitude);
   const std::size_t s = d.distortion_start;
   for (const auto* h : {&d.phi15_ks2_3, &d.phi15_ks1, &d.phi30_ks2_3, &d.phi30_ks1}) {
     const auto peak = std::max_element(h->normal_force.begin() + static_cast<std::ptrdiff_t>(s), h->normal_force.end());
@@ -80,6 +98,40 @@ int main(int argc, char** argv) {
     sub->add_option("--out", out, "directory for the CSV files (created)")->required();
   }
   box->add_option("--cases", cases, "directory holding cases/validation")->check(CLI::ExistingDirectory);
+  std::filesystem::path verification_case;
+  auto* verification = app.add_subcommand(
+      "verification", "Cundall & Strack (1979) verification assembly, Tables 1-3: stages A and B (cases/ball)");
+  verification->add_option("--case", verification_case, "a cases/ball/verification_assembly*.case.txtpb file")
+      ->required()
+      ->check(CLI::ExistingFile);
+  verification->add_option("--out", out, "directory for verification.csv (stages A and B, wall by wall)")->required();
+  std::filesystem::path randall_case;
+  auto* randall_compression = app.add_subcommand(
+      "randall-compression", "Randall (1989) 6.4.3: a cases/randall assembly compressed to 100 kPa, then friction");
+  auto* randall_shear = app.add_subcommand(
+      "randall-shear", "Randall (1989) 6.5.2: the same, then sheared at constant volume");
+  for (auto* sub : {randall_compression, randall_shear}) {
+    sub->add_option("--case", randall_case, "a cases/randall case file")->required()->check(CLI::ExistingFile);
+    sub->add_option("--out", out, "directory for randall.csv, roses.csv, obliquity.csv and the snapshots")->required();
+  }
+  std::filesystem::path hopper_case;
+  std::vector<std::string> hopper_runs = {"45:10", "30:10", "15:10", "30:5", "30:14"};
+  auto* hopper = app.add_subcommand("hopper", "Randall (1989) 6.2: hopper discharge by half-angle and orifice");
+  hopper->add_option("--case", hopper_case, "cases/randall/hopper.case.txtpb")->required()->check(CLI::ExistingFile);
+  hopper->add_option("--out", out, "directory for hopper.csv, hopper_rates.csv and the velocity fields")->required();
+  hopper->add_option("--runs", hopper_runs, "half-angle (deg):orifice (mm) pairs")->delimiter(',');
+  std::filesystem::path deposition_case;
+  auto* deposition = app.add_subcommand("deposition", "Randall (1989) 6.3: pluvial deposition into a container");
+  deposition->add_option("--case", deposition_case, "cases/randall/pluvial_deposition.case.txtpb")
+      ->required()
+      ->check(CLI::ExistingFile);
+  deposition->add_option("--out", out, "directory for the bed's particles.csv and contacts.csv")->required();
+  auto* rolling_to_rest = app.add_subcommand("rolling-to-rest", "rolling resistance: a disc and a sphere roll to rest");
+  rolling_to_rest->add_option("--out", out, "directory for rolling_to_rest.csv")->required();
+  std::vector<double> rolling_frictions = {0.0, 0.025, 0.05, 0.1, 0.2, 0.4};
+  auto* repose = app.add_subcommand("angle-of-repose", "rolling resistance: angle of repose of a collapsed column");
+  repose->add_option("--out", out, "directory for angle_of_repose.csv")->required();
+  repose->add_option("--rolling-friction", rolling_frictions, "the mu_r values, in rising order")->delimiter(',');
   std::filesystem::path miyata_case;
   auto* miyata = app.add_subcommand("miyata-compression",
                                     "a plate loading case of Miyata et al. (2002) 3.2-3.3 (cases/miyata): three "
@@ -100,6 +152,39 @@ int main(int argc, char** argv) {
     if (*restitution) verdict = dem::validation::report_restitution(out);
     if (*mindlin) verdict = dem::validation::report_mindlin_loading(out);
     if (*box) verdict = dem::validation::report_box_settle(cases / "validation" / "box_settle.case.txtpb", out);
+    if (*randall_compression || *randall_shear) {
+      const dem::validation::RandallRun run = dem::validation::run_randall(randall_case, static_cast<bool>(*randall_shear), out);
+      dem::validation::print_randall(stdout, run);
+      verdict = dem::validation::judge_randall_compression(run);
+      if (*randall_shear) verdict.add(dem::validation::judge_randall_shear(run));
+    }
+    if (*hopper) {
+      std::vector<dem::validation::HopperRun> runs;
+      for (const std::string& spec : hopper_runs) {
+        const auto colon = spec.find(':');
+        if (colon == std::string::npos) throw std::runtime_error("--runs: expected ANGLE:MM, got " + spec);
+        runs.push_back(dem::validation::run_hopper(hopper_case, std::stod(spec.substr(0, colon)),
+                                                   1e-3 * std::stod(spec.substr(colon + 1)), out));
+        std::printf("%s: %.1f spheres/s\n", runs.back().name.c_str(), runs.back().rate);
+        std::fflush(stdout);
+      }
+      dem::validation::write_hopper_csv(out, runs);
+      dem::validation::print_hopper(stdout, runs);
+      verdict = dem::validation::judge_hopper(runs);
+    }
+    if (*deposition) {
+      const dem::validation::DepositionRun run = dem::validation::run_deposition(deposition_case, out);
+      dem::validation::print_deposition(stdout, run);
+      verdict = dem::validation::judge_deposition(run);
+    }
+    if (*rolling_to_rest) verdict = dem::validation::report_rolling_to_rest(out);
+    if (*repose) verdict = dem::validation::report_angle_of_repose(out, rolling_frictions);
+    if (*verification) {
+      const dem::validation::VerificationRun run = dem::validation::run_verification(verification_case);
+      dem::validation::print_verification(stdout, run);
+      dem::validation::write_verification_csv(out, run);
+      verdict = dem::validation::judge_verification(run);
+    }
     if (*miyata) {
       const dem::validation::MiyataRun run = dem::validation::run_miyata_compression(miyata_case, out);
       const dem::validation::MiyataFigures figures = dem::validation::miyata_figures(run);
@@ -113,6 +198,14 @@ int main(int argc, char** argv) {
       const auto distortion = dem::validation::run_distortion(cases / "ball");
       dem::validation::write_nine_disc_csv(compression, distortion, out);
       report_nine_disc(compression, distortion);
+      // Fig. 6's amplitude by time step: the seed's 0.15 F_eq fixes the
+      // loading time over the period, not the step itself.
+      std::printf("  undamped amplitude after 40 cycles of loading, by time step (fraction of the critical step):\n");
+      for (const auto& a : dem::validation::undamped_amplitude_by_time_step(
+               cases / "ball", {0.02, 0.04, 0.06, 0.08, 0.093, 0.12, 0.15, 0.2, 0.25, 0.3})) {
+        std::printf("    %.3f: amplitude %.4f F_eq, loading %.3f periods\n", a.time_step, a.amplitude,
+                    a.loading_over_period);
+      }
       std::printf("wrote %s and %s\n", (out / "nine_disc.csv").c_str(), (out / "nine_disc_distortion.csv").c_str());
       verdict = dem::validation::judge_nine_disc(compression, distortion);
     }

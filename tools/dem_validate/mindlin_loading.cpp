@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "dem/contact_driver.h"
+#include "dem/world.h"
 
 namespace dem::validation {
 
@@ -26,10 +29,10 @@ ContactDriverDef two_spheres() {
   return def;
 }
 
-// Hertz (Randall 3.13) inverted: the overlap that carries N.
-double overlap_for(double n) {
+// Hertz (Randall 3.13) inverted: the overlap that carries N at an
+// effective radius R* (two spheres: R/2; a sphere on a wall: R).
+double overlap_for(double n, double r_star = 0.5 * kRadius) {
   const double e_star = kYoungs / (2.0 * (1.0 - kPoisson * kPoisson));
-  const double r_star = 0.5 * kRadius;
   return std::pow(3.0 * n / (4.0 * e_star * std::sqrt(r_star)), 2.0 / 3.0);
 }
 
@@ -120,6 +123,82 @@ VaryingNormalResult mindlin_varying_normal_force() {
         r.largest_lag_error = std::max(r.largest_lag_error, std::abs((t - t0) - expected) / std::abs(expected));
       }
     }
+  }
+  return r;
+}
+
+FreshContactResult mindlin_fresh_contact_rising_normal_force(bool wall) {
+  // Bodies so heavy that the contact force cannot change their motion: the
+  // relative displacement is prescribed, as by Randall's kinematic walls (5.2).
+  MaterialDef steel;
+  steel.density = 1e30;
+  steel.friction = kFriction;
+  steel.youngs_modulus = kYoungs;
+  steel.poisson_ratio = kPoisson;
+  WorldDef3 def;
+  def.materials = {steel};
+  ContactModelDef model;
+  model.material_a = model.material_b = 0;
+  model.law = ContactLaw::kHertzMindlin;
+  def.contact_models = {model};
+  const double r_star = wall ? kRadius : 0.5 * kRadius;
+  const double g = shear_modulus_star();
+  const double mu = kFriction;
+  // N rises by a quarter over the run while delta goes to 0.8 of the final
+  // delta*: ds exceeds mu dN / (8 G* a) (3.65) by about six at every step,
+  // so the loading case (3.68-3.69) holds throughout.
+  constexpr int kSteps = 4000;
+  const double dt = 1e-7;
+  const double start_overlap = overlap_for(kNormalForce, r_star);
+  const double end_overlap = start_overlap * std::pow(1.25, 2.0 / 3.0);
+  const double end_slip = 3.0 * mu * 1.25 * kNormalForce / (16.0 * g * std::sqrt(r_star * end_overlap));
+  const double approach_speed = (end_overlap - start_overlap) / (kSteps * dt);
+  const double tangential_speed = 0.8 * end_slip / (kSteps * dt);
+  ParticleDef3 moving;
+  moving.radius = kRadius;
+  moving.velocity = {tangential_speed, 0.0, -approach_speed};
+  if (wall) {
+    WallDef3 plane;  // z = 0, normal +z, same steel
+    plane.name = "wall";
+    plane.h1 = plane.k1 = -1.0;
+    plane.h2 = plane.k2 = 1.0;
+    def.walls = {plane};
+    moving.position = {0.0, 0.0, kRadius - start_overlap};
+    def.particles = {moving};
+  } else {
+    ParticleDef3 fixed;
+    fixed.radius = kRadius;
+    moving.position = {0.0, 0.0, 2.0 * kRadius - start_overlap};
+    def.particles = {fixed, moving};
+  }
+  def.fixed_time_step = dt;
+  def.threads = 1;
+  // The world's first force pass forms the contact with its whole overlap.
+  World3 world(def);
+  FreshContactResult r;
+  r.wall = wall;
+  const std::string branch = wall ? "fresh_wall" : "fresh_pair";
+  for (int k = 0; k <= kSteps; ++k) {
+    if (k > 0) world.cycle();
+    const auto contacts = world.contacts();
+    if (contacts.size() != 1) throw std::runtime_error("fresh contact: expected one contact");
+    const ContactRecord3& c = contacts.front();
+    const auto p = world.particles();
+    const ParticleId id = wall ? 0 : 1;
+    // delta: the tangential displacement since the contact formed (the
+    // first pass already moved it by one step's displacement).
+    const double delta = (p.position[id].x() + tangential_speed * dt);
+    const double n = c.normal_force;
+    const double a = std::sqrt(r_star * c.overlap);
+    const double slip = 3.0 * mu * n / (16.0 * g * a);
+    const double theory = mu * n * (1.0 - std::pow(std::max(0.0, 1.0 - delta / slip), 1.5));
+    const double t = c.tangential_force.norm();
+    if (k == 0) r.initial_normal_force = n;
+    r.final_normal_force = n;
+    r.final_ratio = delta / slip;
+    r.sliding = r.sliding || c.sliding;
+    r.largest_error = std::max(r.largest_error, std::abs(t - theory) / (mu * n));
+    if (k % (kSteps / 20) == 0) r.points.push_back({branch, delta, t, theory});
   }
   return r;
 }

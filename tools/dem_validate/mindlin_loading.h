@@ -38,4 +38,22 @@ struct VaryingNormalResult {
 // tangential displacement loads, unloads and reloads.
 VaryingNormalResult mindlin_varying_normal_force();
 
+// A contact that forms with its whole overlap in one step, then carries a
+// slowly rising N while the tangential displacement loads it (dT >= mu dN
+// at every step): by Mindlin and Deresiewicz (Randall 3.4.1, 3.56-3.69) the
+// state stays on the constant-N curve of the current N,
+//   T = mu N [1 - (1 - delta / delta*)^(3/2)],  delta* = 3 mu N / (16 G* a),
+// with N and a as they stand. Two spheres (a pair) or a sphere on a wall of
+// the same steel, through the whole engine (3D).
+struct FreshContactResult {
+  bool wall = false;
+  double initial_normal_force = 0.0;  // N when the contact formed
+  double final_normal_force = 0.0;    // N at the end
+  double final_ratio = 0.0;           // delta / delta* at the end
+  double largest_error = 0.0;         // max |T - closed form| / (mu N) over the steps
+  bool sliding = false;               // any step at the Coulomb limit (must not happen below delta*)
+  std::vector<MindlinPoint> points;   // "fresh_pair" or "fresh_wall": delta, T, closed form
+};
+FreshContactResult mindlin_fresh_contact_rising_normal_force(bool wall);
+
 }  // namespace dem::validation

@@ -94,9 +94,13 @@ MiyataFigures miyata_figures(const MiyataRun& run) {
   const double load = loads[0].load + loads[1].load + loads[2].load;
   const int contacts = loads[0].contacts + loads[1].contacts + loads[2].contacts;
   if (load > 0.0) {
-    f.initial_load_share = loads[0].load / load;
-    f.transition_load_share = loads[1].load / load;
-    f.final_load_share = loads[2].load / load;
+    f.state_initial_load_share = loads[0].load / load;
+    f.state_transition_load_share = loads[1].load / load;
+    f.state_final_load_share = loads[2].load / load;
+    const auto& groups = run.results.load_by_formation[0];
+    f.initial_load_share = groups[0].load / load;
+    f.transition_load_share = groups[1].load / load;
+    f.final_load_share = groups[2].load / load;
   }
   if (contacts > 0) f.initial_contact_share = static_cast<double>(loads[0].contacts) / contacts;
 
@@ -142,9 +146,12 @@ void print_miyata_report(std::FILE* out, const MiyataRun& run, const MiyataFigur
                f.initial_contact_rate, f.transition_contact_rate, f.final_contact_rate, f.final_loading_contacts,
                f.final_bottom_contacts);
   std::fprintf(out,
-               "  load on the loading plate carried by contacts formed in the initial/transition/final states: "
-               "%.1f%% / %.1f%% / %.1f%% (initial contacts %.1f%% of all)\n",
+               "  Fig. 30, load on the loading plate carried by its first 40%% / next 30%% / last 30%% of contacts "
+               "by order of formation: %.1f%% / %.1f%% / %.1f%%\n"
+               "  (by the state each formed in, initial/transition/final: %.1f%% / %.1f%% / %.1f%%; initial "
+               "contacts %.1f%% of all)\n",
                100 * f.initial_load_share, 100 * f.transition_load_share, 100 * f.final_load_share,
+               100 * f.state_initial_load_share, 100 * f.state_transition_load_share, 100 * f.state_final_load_share,
                100 * f.initial_contact_share);
   if (run.results.force_distribution) {
     std::fprintf(out,
@@ -169,6 +176,7 @@ void write_miyata_summary(const std::filesystem::path& directory, const MiyataRu
                    "final_settlement,initial_softness,initial_stiffness,transition_stiffness,final_stiffness,"
                    "final_r_squared,initial_contact_rate,transition_contact_rate,final_contact_rate,"
                    "loading_contacts,bottom_contacts,initial_load_share,transition_load_share,final_load_share,"
+                   "state_initial_load_share,state_transition_load_share,state_final_load_share,"
                    "initial_contact_share,loading_decay_rate,loading_decay_rate_error,loading_excess_cv,"
                    "bottom_decay_rate,bottom_decay_rate_error,bottom_excess_cv,loading_largest_f,"
                    "loading_near_tail_share,loading_far_tail_share,bottom_largest_f,bottom_near_tail_share,"
@@ -177,7 +185,8 @@ void write_miyata_summary(const std::filesystem::path& directory, const MiyataRu
                  f.transition_settlement, f.final_settlement, f.initial_softness, f.initial_stiffness,
                  f.transition_stiffness, f.final_stiffness, f.final_r_squared, f.initial_contact_rate,
                  f.transition_contact_rate, f.final_contact_rate, f.final_loading_contacts, f.final_bottom_contacts,
-                 f.initial_load_share, f.transition_load_share, f.final_load_share, f.initial_contact_share,
+                 f.initial_load_share, f.transition_load_share, f.final_load_share, f.state_initial_load_share,
+                 f.state_transition_load_share, f.state_final_load_share, f.initial_contact_share,
                  f.loading_decay_rate, f.loading_decay_rate_error, f.loading_excess_cv, f.bottom_decay_rate,
                  f.bottom_decay_rate_error, f.bottom_excess_cv, f.largest_f[0], f.near_tail_share[0],
                  f.far_tail_share[0], f.largest_f[1], f.near_tail_share[1], f.far_tail_share[1], f.drops,

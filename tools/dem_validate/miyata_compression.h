@@ -62,10 +62,17 @@ struct MiyataFigures {
   double final_contact_rate = 0.0;
   int final_loading_contacts = 0;
   int final_bottom_contacts = 0;
-  // Fig. 30: the loading plate's load carried by contacts formed in each state.
+  // Fig. 30 as the seed defines it: the loading plate's load carried by the
+  // first 40 %, the next 30 % and the last 30 % of its contacts in the
+  // order they formed.
   double initial_load_share = 0.0;
   double transition_load_share = 0.0;
   double final_load_share = 0.0;
+  // The same load by the state of the stress-settlement curve each contact
+  // formed in, and the initial state's share of the contacts.
+  double state_initial_load_share = 0.0;
+  double state_transition_load_share = 0.0;
+  double state_final_load_share = 0.0;
   double initial_contact_share = 0.0;
   // Fig. 35: the tails' decay rates (0 when the case has no force distribution).
   double loading_decay_rate = 0.0;

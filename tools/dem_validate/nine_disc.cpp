@@ -27,6 +27,23 @@ double mean(const std::vector<double>& f, std::size_t from) {
          static_cast<double>(f.size() - from);
 }
 
+// The mean period, cycles, of the oscillation about `level` from `from`
+// on: the cycles between the first and the last upward crossing over the
+// crossings between them (linear interpolation inside a cycle).
+double mean_period(const std::vector<double>& f, std::size_t from, double level) {
+  std::vector<double> up;
+  for (std::size_t k = from + 1; k < f.size(); ++k) {
+    if (f[k - 1] < level && f[k] >= level) up.push_back(static_cast<double>(k - 1) + (level - f[k - 1]) / (f[k] - f[k - 1]));
+  }
+  return up.size() < 2 ? 0.0 : (up.back() - up.front()) / static_cast<double>(up.size() - 1);
+}
+
+double half_peak_to_peak(const std::vector<double>& f, std::size_t from, std::size_t to) {
+  const auto [lo, hi] = std::minmax_element(f.begin() + static_cast<std::ptrdiff_t>(from),
+                                            f.begin() + static_cast<std::ptrdiff_t>(to));
+  return 0.5 * (*hi - *lo);
+}
+
 }  // namespace
 
 ContactHistory follow_contact_c(const std::filesystem::path& case_file) {
@@ -64,7 +81,55 @@ CompressionReport run_compression(const std::filesystem::path& cases_dir) {
   for (const ContactHistory* h : {&r.contact_damping, &r.global_damping, &r.damped}) {
     r.damped_spread = std::max(r.damped_spread, std::abs(h->normal_force.back() / r.equilibrium_force - 1.0));
   }
+  // Entry k of a history is cycle k + 1; the fast response is 0 before cycle 1.
+  const std::vector<double>& fast = r.undamped.normal_force;
+  const std::vector<double>& slow = r.slow.normal_force;
+  const auto at = [&](std::ptrdiff_t k) { return k < 0 ? 0.0 : fast[static_cast<std::size_t>(k)]; };
+  for (std::size_t k = 0; k < slow.size() && k < fast.size(); ++k) {
+    const auto i = static_cast<std::ptrdiff_t>(k);
+    const double superposed = (at(i) + at(i - static_cast<std::ptrdiff_t>(kLoadingEnd)) +
+                               at(i - 2 * static_cast<std::ptrdiff_t>(kLoadingEnd))) / 3.0;
+    r.superposition_error = std::max(r.superposition_error, std::abs(slow[k] - superposed) / r.equilibrium_force);
+  }
+  r.fast_period = mean_period(fast, kLoadingEnd, r.undamped_mean);
+  r.slow_period = mean_period(slow, kSlowLoadingEnd, mean(slow, kSlowLoadingEnd));
+  const std::size_t middle = (kLoadingEnd + fast.size()) / 2;
+  r.early_amplitude = half_peak_to_peak(fast, kLoadingEnd, middle) / r.equilibrium_force;
+  r.late_amplitude = half_peak_to_peak(fast, middle, fast.size()) / r.equilibrium_force;
   return r;
+}
+
+std::vector<AmplitudeAtStep> undamped_amplitude_by_time_step(const std::filesystem::path& cases_dir,
+                                                              const std::vector<double>& fractions) {
+  const io::LoadedCase loaded = io::load_case_file(cases_dir / "nine_disc_undamped.case.txtpb");
+  const io::CaseDefinition def = io::convert_case(loaded.message, loaded.source);
+  const auto probe = def.output.probes.front();
+  std::vector<AmplitudeAtStep> out;
+  for (const double fraction : fractions) {
+    io::CaseDefinition run = def;
+    const double case_step = def.world.fixed_time_step;
+    run.world.fixed_time_step = 0.0;
+    run.world.time_step_fraction = fraction;
+    World world(run.world);
+    const double dt = world.time_step();
+    // The same wall displacement per cycle as the case (0.12).
+    for (StageDef& stage : run.stages) {
+      for (auto& [wall, motion] : stage.wall_motions) motion.velocity *= case_step / dt;
+    }
+    std::vector<double> force;
+    for (const StageDef& stage : run.stages) {
+      run_stage(world, stage, 1, [&](const World& w) {
+        const auto c = w.contact_between(probe.first, probe.second);
+        force.push_back(c ? c->normal_force : 0.0);
+        return true;
+      });
+    }
+    const double level = mean(force, kLoadingEnd);
+    const double period = mean_period(force, kLoadingEnd, level);
+    out.push_back({fraction, half_peak_to_peak(force, kLoadingEnd) / level,
+                   period > 0.0 ? static_cast<double>(kLoadingEnd) / period : 0.0});
+  }
+  return out;
 }
 
 DistortionReport run_distortion(const std::filesystem::path& cases_dir) {
@@ -128,8 +193,16 @@ Verdict judge_nine_disc(const CompressionReport& c, const DistortionReport& d) {
   // without damping the force oscillates about F_eq and does not settle.
   verdict.below("Fig. 6: damped runs' spread about F_eq", c.damped_spread, 0.01);
   verdict.near("Fig. 6: undamped mean / F_eq", c.undamped_mean / feq, 1.0, 0.01);
-  verdict.above("Fig. 6: undamped amplitude / F_eq", c.undamped_amplitude / feq, 0.05);
-  verdict.below("Fig. 6: undamped amplitude / F_eq (seed: about 0.15)", c.undamped_amplitude / feq, 0.5);
+  // Fig. 6's amplitude (the seed: about 0.15 F_eq) depends on the time
+  // step, which the seed does not give (docs/VALIDATION.md lists it by
+  // step). What the seed does determine: the undamped assembly is linear,
+  // so the two loading speeds of Fig. 7 are one response superposed; they
+  // oscillate at the same frequencies; and nothing damps the oscillation.
+  verdict.below("Figs. 6-7: slow loading against the fast response superposed, largest difference / F_eq",
+                c.superposition_error, 0.005);
+  verdict.near("Fig. 7: the two speeds' mean periods, slow over fast", c.slow_period / c.fast_period, 1.0, 0.05);
+  verdict.near("Fig. 6: undamped amplitude, second half of the hold over the first", c.late_amplitude / c.early_amplitude,
+               1.0, 0.05);
   // Damped: settled at the end (the last 500 cycles vary by under 1e-4 F_eq).
   const auto& f = c.damped.normal_force;
   if (f.size() >= 500) {

@@ -28,7 +28,34 @@ struct CompressionReport {
   double undamped_amplitude = 0.0;       // half the peak-to-peak of the undamped force after loading
   double slow_amplitude = 0.0;           // the same for the slow (0.04) loading
   double damped_spread = 0.0;            // largest |F_final / F_eq - 1| over the three damped runs
+  // What the seed determines of the undamped curves without giving the
+  // time step: the assembly is linear (every contact stays closed and
+  // sticking), so the slow loading (a third of the speed for three times
+  // the cycles) is the fast one's response added three times, 40 cycles
+  // apart, over three: F_slow(t) = (F_fast(t) + F_fast(t - 40) +
+  // F_fast(t - 80)) / 3. The largest difference over F_eq:
+  double superposition_error = 0.0;
+  // Both oscillate at the assembly's own frequencies ("the frequencies
+  // are about the same", Fig. 7): their mean periods, cycles, from the
+  // crossings of F_eq after loading.
+  double fast_period = 0.0;
+  double slow_period = 0.0;
+  // Undamped, nothing decays: the amplitude over the first and the second
+  // half of the hold, over F_eq.
+  double early_amplitude = 0.0;
+  double late_amplitude = 0.0;
 };
+
+// The undamped amplitude at contact C after the fast loading (walls in by
+// 0.12 per cycle for 40 cycles, as the case) with another fixed time step:
+// the seed's "about 0.15 F_eq" depends on the step, which it does not give.
+struct AmplitudeAtStep {
+  double time_step = 0.0;             // the fixed step, as a fraction of the case's critical step
+  double amplitude = 0.0;             // over F_eq
+  double loading_over_period = 0.0;   // the 40 loading cycles over the oscillation's mean period
+};
+std::vector<AmplitudeAtStep> undamped_amplitude_by_time_step(const std::filesystem::path& cases_dir,
+                                                              const std::vector<double>& fractions);
 CompressionReport run_compression(const std::filesystem::path& cases_dir);
 
 // Distortion at constant volume (Figs. 8-9): F_n and F_s at C during the

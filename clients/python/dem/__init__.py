@@ -16,7 +16,8 @@ case's stages run through the service (dem.programme); the seeds' figures
 """
 
 from . import _build_info, cases, errors
-from ._client import CONTACT_DTYPE, ContactStats, PlateForces, Reply, Status, WallForce
+from ._client import (CONTACT_DTYPE, ContactStats, PlateForces, RegionMeasures, RegionTelemetry, Reply, Status,
+                      WallForce)
 from .client import Client, list_servers
 from .errors import (CaseFileError, DdsError, DemError, NoSuchServer, ProgrammeError, ReplyTimeout,
                      ServerError)
@@ -38,6 +39,8 @@ __all__ = [
     "NoSuchServer",
     "PlateForces",
     "ProgrammeError",
+    "RegionMeasures",
+    "RegionTelemetry",
     "Reply",
     "ReplyTimeout",
     "ServerError",

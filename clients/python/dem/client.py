@@ -222,11 +222,13 @@ class Client:
 
     # --- telemetry ---------------------------------------------------------------
 
-    def subscribe(self, *, plate_forces=True, contact_stats=True, status=False, callback=None, capacity=100000):
+    def subscribe(self, *, plate_forces=True, contact_stats=True, status=False, region_measures=False, callback=None,
+                  capacity=100000):
         """The server's telemetry as a dem.Subscription: iterate over it, take
         samples with get()/drain(), or have ``callback(sample)`` called on a
-        thread of its own."""
-        native = _client.Telemetry(self._native, plate_forces, contact_stats, status, capacity)
+        thread of its own. ``region_measures``: also the measures of the
+        case's regions (dem.RegionTelemetry; output.region in the case)."""
+        native = _client.Telemetry(self._native, plate_forces, contact_stats, status, capacity, region_measures)
         return Subscription(native, callback=callback)
 
 

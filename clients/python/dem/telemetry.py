@@ -1,6 +1,7 @@
 """A server's telemetry in Python: plate forces (dem.PlateForces), contact
-statistics (dem.ContactStats) and, if asked, status (dem.Status), in the order
-they arrived. The C++ subscription queues them on a thread of its own; the
+statistics (dem.ContactStats) and, if asked, status (dem.Status) and the
+measures of the case's regions (dem.RegionTelemetry), in the order they
+arrived. The C++ subscription queues them on a thread of its own; the
 server never waits for this reader.
 
     with press.subscribe() as telemetry:
@@ -104,3 +105,5 @@ class Subscription:
 PlateForces = _client.PlateForces
 ContactStats = _client.ContactStats
 Status = _client.Status
+RegionTelemetry = _client.RegionTelemetry
+RegionMeasures = _client.RegionMeasures

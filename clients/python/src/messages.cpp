@@ -112,6 +112,35 @@ void bind_messages(py::module_& m) {
            std::to_string(s.contacts) + " contacts>";
   });
 
+  py::class_<RegionMeasures> region(m, "RegionMeasures",
+                                   "The state of one measurement region (Randall 1989, 4.6; docs/CASES.md, "
+                                   "regions.csv): stresses in Pa, compression positive; tensors row by row");
+  bind_members(region);
+  region.def("__repr__", [](const RegionMeasures& r) {
+    return "<RegionMeasures " + r.name + ": " + std::to_string(r.particles) + " particles, mean stress " +
+           std::to_string(r.mean_stress) + " Pa>";
+  });
+
+  py::class_<RegionTelemetry> regions(m, "RegionTelemetry", "The measures of a case's regions at one cycle");
+  bind_members(regions);
+  regions
+      .def(
+          "region",
+          [](const RegionTelemetry& t, const std::string& name) -> const RegionMeasures& {
+            for (const RegionMeasures& r : t.regions) {
+              if (r.name == name) return r;
+            }
+            std::string known;
+            for (const RegionMeasures& r : t.regions) known += (known.empty() ? "" : ", ") + r.name;
+            throw py::key_error("no region \"" + name + "\" (regions: " + known + ")");
+          },
+          py::arg("name"), py::return_value_policy::reference_internal,
+          "The region of that name; KeyError naming the regions there are otherwise")
+      .def("__repr__", [](const RegionTelemetry& t) {
+        return "<RegionTelemetry of " + t.server + " at cycle " + std::to_string(t.cycle) + ": " +
+               std::to_string(t.regions.size()) + " regions>";
+      });
+
   py::class_<Reply> reply(m, "Reply", "The server's complete reply to one command (chunks joined)");
   bind_members(reply, {"kind", "contacts", "data"});
   reply.def_property_readonly("kind", [](const Reply& r) { return kind_name(r.kind); }, "the command's kind")

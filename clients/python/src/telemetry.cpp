@@ -22,7 +22,7 @@ namespace py = pybind11;
 
 namespace {
 
-using Sample = std::variant<protocol::PlateForces, protocol::ContactStats, protocol::Status>;
+using Sample = std::variant<protocol::PlateForces, protocol::ContactStats, protocol::Status, protocol::RegionTelemetry>;
 
 // The samples a subscription delivered and Python has not taken yet. When
 // Python falls `capacity` samples behind, the oldest go (counted), so a
@@ -85,7 +85,8 @@ py::object to_python(Sample sample) {
 
 class Telemetry {
  public:
-  Telemetry(const ClientHandle& handle, bool plate_forces, bool contact_stats, bool status, std::size_t capacity)
+  Telemetry(const ClientHandle& handle, bool plate_forces, bool contact_stats, bool status, std::size_t capacity,
+            bool region_measures)
       : client_(handle.client), queue_(std::make_shared<SampleQueue>(capacity)) {
     if (!client_) throw std::runtime_error("this client is closed");
     client::TelemetryCallbacks callbacks;
@@ -93,6 +94,7 @@ class Telemetry {
     if (plate_forces) callbacks.plate_forces = enqueue;
     if (contact_stats) callbacks.contact_stats = enqueue;
     if (status) callbacks.status = enqueue;
+    if (region_measures) callbacks.region_measures = enqueue;
     subscription_ = std::make_unique<client::TelemetrySubscription>(*client_, std::move(callbacks));
   }
 
@@ -135,10 +137,11 @@ class Telemetry {
 
 void bind_telemetry(py::module_& m) {
   py::class_<Telemetry>(m, "Telemetry", "A server's telemetry, queued for Python (dem::client::TelemetrySubscription)")
-      .def(py::init<const ClientHandle&, bool, bool, bool, std::size_t>(), py::arg("client"),
-           py::arg("plate_forces"), py::arg("contact_stats"), py::arg("status"), py::arg("capacity"))
+      .def(py::init<const ClientHandle&, bool, bool, bool, std::size_t, bool>(), py::arg("client"),
+           py::arg("plate_forces"), py::arg("contact_stats"), py::arg("status"), py::arg("capacity"),
+           py::arg("region_measures") = false)
       .def("get", &Telemetry::get, py::arg("timeout"),
-           "The next sample (PlateForces, ContactStats or Status), or None after timeout seconds")
+           "The next sample (PlateForces, ContactStats, Status or RegionTelemetry), or None after timeout seconds")
       .def("drain", &Telemetry::drain, "Every sample queued now, oldest first")
       .def_property_readonly("matched_publishers", &Telemetry::matched_publishers)
       .def_property_readonly("dropped", &Telemetry::dropped, "samples dropped because Python fell behind")

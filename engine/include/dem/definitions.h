@@ -69,6 +69,16 @@ struct HertzDampingDef {
   bool tangential = false;
 };
 
+// Rolling resistance, an option of every law (Iwashita & Oda 1998; Ai et
+// al. 2011, model C; engine/src/rolling_resistance.h): a spring of
+// stiffness 2.25 k_n mu_r^2 R_r^2 on the bodies' relative rotation, its
+// torque capped at mu_r R_r F_n, with a dashpot at a fraction of its
+// critical damping while below the cap.
+struct RollingResistanceDef {
+  double friction = 0.0;       // mu_r, the coefficient of rolling friction (dimensionless); 0 = none
+  double damping_ratio = 0.0;  // eta_r, fraction of the rolling spring's critical damping
+};
+
 // The contact law for one pair of materials (or for every pair not named
 // elsewhere when both ids are kInvalidId). Friction and cohesion default to
 // the smaller of the two materials' values (Cundall & Strack eq. 19 and its
@@ -83,6 +93,7 @@ struct ContactModelDef {
   ContactLaw law = ContactLaw::kLinear;
   double restitution = 1.0;  // kLinearRestitution: e in (0, 1] (Miyata eq. 17)
   HertzDampingDef hertz;     // kHertzMindlin and kHertzLinearTangential
+  RollingResistanceDef rolling;  // any law
 };
 
 // Damping options. Contact damping c = beta * k (Cundall & Strack eq. 28)
@@ -172,6 +183,9 @@ struct WallDefT<2> {
   double h2 = 1.0;                 // m
   MaterialId material = 0;
   WallMotionT<2> motion;
+  // Taken out of the world (BasicWorld::remove_wall: a hopper's orifice
+  // opened, Randall 1989, 6.2): it keeps its id but touches nothing.
+  bool removed = false;
 };
 
 // A 3D wall is the rectangle P + s u + t v, h1 <= s <= h2, k1 <= t <= k2,
@@ -194,6 +208,48 @@ struct WallDefT<3> {
   MaterialId material = 0;
   WallMotionT<3> motion;
   std::vector<std::array<Vec3, 3>> triangles;  // m, vertices where they stand now
+  bool removed = false;  // taken out of the world: keeps its id, touches nothing
+};
+
+// Element-test control of a box of walls (a biaxial or triaxial cell): two
+// walls per axis, the lower one facing +axis and the upper one -axis, each
+// axis driven by a strain rate or held at a stress. Strains and stresses
+// are compression positive; the box's extent along an axis is the distance
+// between its two walls, and an axis's stress is the mean normal force of
+// its walls over the face the other extents span (2D: times the depth).
+//
+// A strain rate moves the two walls towards each other at rate x extent / 2
+// each, so the box deforms at that rate along its axes: the boundary
+// strain-rate tensor of Randall (1989) 4.5.2, in its principal axes. With
+// rates e and -e on two axes of a 2D box its area stays constant (to
+// second order in e dt per step): the constant-volume shear of Randall
+// 6.5.2. A stress target servos both walls of the axis: each moves inwards
+// at gain x (target - stress), capped at max_speed (the servo-controlled
+// boundary of 4.1). A stress path sets the targets of the axes that follow
+// it from the other axes' measured stresses every cycle: a constant mean
+// stress p holds the mean of all axes at p; a stress ratio R holds those
+// axes at sigma_1 / R, sigma_1 the largest stress of the other axes.
+enum class AxisControl { kStrainRate, kStress, kStressPath };
+enum class StressPath { kNone, kConstantMeanStress, kStressRatio };
+
+struct BoxAxisDef {
+  WallId lower = kInvalidId;  // faces +axis
+  WallId upper = kInvalidId;  // faces -axis
+  AxisControl control = AxisControl::kStrainRate;
+  double strain_rate = 0.0;  // 1/s, compression positive (kStrainRate)
+  double stress = 0.0;       // Pa, compression positive (kStress)
+};
+
+template <int Dim>
+struct BoxControlT {
+  std::array<BoxAxisDef, Dim> axes;
+  StressPath path = StressPath::kNone;
+  double path_value = 0.0;  // kConstantMeanStress: p, Pa; kStressRatio: sigma_1 / sigma_3 >= 1
+  double gain = 0.0;        // m/(s Pa), > 0 when an axis is stress-controlled
+  double max_speed = 0.0;   // m/s, > 0 when an axis is stress-controlled
+  // The box's extents when the control was set: its strains count from
+  // there. Left at zero, BasicWorld::set_box_control fills them in.
+  Vec<Dim> reference_extent = Vec<Dim>::Zero();
 };
 
 // Periodic boundaries (Miyata et al. 2002; Cundall's periodic cell): along
@@ -225,6 +281,7 @@ struct WorldDefT {
   std::vector<ParticleDefT<Dim>> particles;
   std::vector<WallDefT<Dim>> walls;
   PeriodicDefT<Dim> periodic;
+  std::optional<BoxControlT<Dim>> box_control;  // element-test control of a box of the walls
   DampingDef damping;
   Vec<Dim> gravity = Vec<Dim>::Zero();  // m/s^2, body force per unit mass
   // 2D only: discs or spheres in the plane (3D particles are spheres).
@@ -254,6 +311,8 @@ using WorldDef = WorldDefT<2>;
 using WorldDef3 = WorldDefT<3>;
 using PeriodicDef = PeriodicDefT<2>;
 using PeriodicDef3 = PeriodicDefT<3>;
+using BoxControl = BoxControlT<2>;
+using BoxControl3 = BoxControlT<3>;
 
 // A definition with one "default" material and a default contact model for
 // every pair, for programs that build worlds in code. Case conversion starts

@@ -105,10 +105,30 @@ struct ContactRecordT {
   double shear_damping = 0.0;          // D_s, N (eq. 27): signed in 2D, the magnitude in 3D
   bool sliding = false;                // |F_s| reached (F_s)max
   std::uint64_t formed_cycle = 0;      // the cycle the contact began touching
+  // The whole force the pass applied to the first particle (springs and
+  // dashpots); the second body received -force. The measures of a region
+  // (stress, its normal and tangential parts) read it.
+  Vec<Dim> force = Vec<Dim>::Zero();
+};
+
+// The box of an element test (BoxControlT) as it stands: its extents, the
+// stresses its walls carry and its strains since the control was set.
+template <int Dim>
+struct BoxMeasureT {
+  Vec<Dim> extent = Vec<Dim>::Zero();  // m, the distance between each axis's two walls
+  Vec<Dim> stress = Vec<Dim>::Zero();  // Pa, compression positive: each axis's walls' mean normal force over its face
+  Vec<Dim> target = Vec<Dim>::Zero();  // Pa, the stress each stress-controlled or path axis is held at now (0 for strain-rate axes)
+  // ln(reference / extent) per axis: compression positive, additive over stages.
+  Vec<Dim> strain = Vec<Dim>::Zero();
+  double volumetric_strain = 0.0;  // the sum of the axes' strains
+  double deviator_strain = 0.0;    // the largest axis strain minus the smallest
+  double mean_stress = 0.0;        // Pa, the mean of the axes' stresses
 };
 
 using WallMeasure = WallMeasureT<2>;
 using WallMeasure3 = WallMeasureT<3>;
+using BoxMeasure = BoxMeasureT<2>;
+using BoxMeasure3 = BoxMeasureT<3>;
 using ContactRecord = ContactRecordT<2>;
 using ContactRecord3 = ContactRecordT<3>;
 

@@ -27,8 +27,12 @@ struct WallThreshold {
 struct StopConditions {
   std::optional<double> kinetic_energy_below;  // J
   std::optional<double> out_of_balance_below;  // Delta F / F
-  // Every servo-controlled wall carries its target within this relative error.
+  // Every servo-controlled wall carries its target within this relative
+  // error, and so does every stress-controlled axis of the box control.
   std::optional<double> servo_tolerance;
+  // The box control's deviator strain (its largest axis strain minus its
+  // smallest, BoxMeasureT) has reached this.
+  std::optional<double> deviator_strain_above;
   std::optional<WallThreshold> wall_stress_above;      // Pa: normal force over wall_area
   std::optional<WallThreshold> wall_settlement_above;  // m: wall_settlement
   std::uint64_t min_cycles = 0;
@@ -62,10 +66,17 @@ struct TimeStepSetting {
 template <int Dim>
 struct StageDefT {
   std::string name;
-  // Done when the stage starts, in this order, before the wall motions.
+  // Done when the stage starts, in this order: trim, place a wall, remove
+  // walls, then the wall motions, the box control, damping, time step and
+  // friction.
   std::optional<TrimDef> trim;
   std::optional<PlaceWallDef> place_wall;
+  std::vector<WallId> remove_walls;                               // taken out when the stage starts
   std::vector<std::pair<WallId, WallMotionT<Dim>>> wall_motions;  // applied when the stage starts
+  // The box control from this stage on: set (or replaced) by box_control,
+  // released by release_box_control; otherwise it stays as it was.
+  std::optional<BoxControlT<Dim>> box_control;
+  bool release_box_control = false;
   std::optional<DampingDef> damping;                              // applied when the stage starts
   std::optional<TimeStepSetting> time_step;                       // from this stage on
   std::vector<std::pair<MaterialId, double>> frictions;           // materials' friction from this stage on
@@ -87,6 +98,13 @@ using StageObserverT = std::function<bool(const BasicWorld<Dim>&)>;
 template <int Dim>
 StageResult run_stage(BasicWorld<Dim>& world, const StageDefT<Dim>& stage, std::uint64_t interval = 0,
                       const std::type_identity_t<StageObserverT<Dim>>& observer = {});
+
+// The rest of a stage resumed `done` cycles into it (a checkpoint's): its
+// start actions - all of them, including the box control, whose strain
+// reference would otherwise move to the resumed state - are done and in
+// the state, so they go; the cycles and min_cycles left count from there.
+template <int Dim>
+StageDefT<Dim> stage_remainder(StageDefT<Dim> stage, std::uint64_t done);
 
 using StageDef = StageDefT<2>;
 using StageDef3 = StageDefT<3>;

@@ -73,6 +73,8 @@ struct ContactSnapshotT {
   Vec<Dim> dashpot_force = Vec<Dim>::Zero();
   Vec<Dim> tangential_spring = Vec<Dim>::Zero();
   Vec<Dim> relative_velocity = Vec<Dim>::Zero();
+  // The rolling spring's torque on the first body (rolling resistance only).
+  Spin<Dim> rolling_torque = Space<Dim>::zero_spin();
   // Where the last contact search ended (superquadric parametric angles,
   // ellipsoid Lagrange multipliers), if there was one.
   double search_first = 0.0;

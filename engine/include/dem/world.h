@@ -126,6 +126,20 @@ class BasicWorld {
   // How far a wall has moved along its normal, towards the particles, since
   // it was built or placed: a loading plate's settlement.
   double wall_settlement(WallId id) const;
+  // Takes a wall out of the world (opening a hopper's orifice, Randall
+  // 1989, 6.2): it keeps its id and definition but touches nothing from
+  // now on, and its contacts end at once.
+  void remove_wall(WallId id);
+
+  // Element-test control of a box of walls (BoxControlT): set, replaced or,
+  // with std::nullopt, released (the walls then keep the motion they were
+  // given last). Throws DefinitionError naming the field when the control
+  // makes no sense for the walls. Strains count from the box as it stands
+  // when a control is set, unless its reference_extent is given.
+  void set_box_control(const std::optional<BoxControlT<Dim>>& control);
+  const std::optional<BoxControlT<Dim>>& box_control() const;
+  // The box as the last force pass left it; requires a box control.
+  BoxMeasureT<Dim> box_measure() const;
 
   // Removes particles (trimming a sample's surface). The others keep their
   // order and are renumbered densely; contacts between them keep their
@@ -140,6 +154,12 @@ class BasicWorld {
   std::vector<Record> wall_contacts(WallId wall) const;
   // The touching contact between two particles, if any.
   std::optional<Record> contact_between(ParticleId a, ParticleId b) const;
+
+  // 2D: the out-of-plane depth that turns forces per unit depth into
+  // stresses (1 for discs; the mean diameter for spheres in the plane,
+  // Randall 1989, 4.4). 3D: 1.
+  double depth() const;
+  const PeriodicDefT<Dim>& periodic() const;
 
   DampingDef damping() const;
   void set_damping(const DampingDef& damping);

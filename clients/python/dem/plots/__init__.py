@@ -11,7 +11,10 @@ axes (or a new headless figure) and writes a PNG when given a path:
   cycles (Cundall & Strack Figs. 6, 7, 9);
 - plot_psi2_against_psi1: the oblique impact sweep (Randall Fig. 5.10);
 - plot_stress_settlement_family, plot_final_measure: a parameter sweep's
-  stress-settlement curves and final measures (dem.sweep.Results).
+  stress-settlement curves and final measures (dem.sweep.Results);
+- plot_rose, plot_obliquity_histogram, plot_shear_series,
+  plot_stress_path, plot_discharge, plot_velocity_field: Randall's
+  chapter 6 (granular.py).
 
 Figures are drawn on matplotlib's Agg canvas (figure.py), so nothing here
 needs a display.
@@ -21,6 +24,8 @@ from .contact_history import plot_contact_force_history
 from .figure import new_axes, save_png
 from .force_chains import plot_force_chains
 from .force_distribution import plot_force_distribution
+from .granular import (draw_randall_directory, plot_discharge, plot_obliquity_histogram, plot_rose, plot_shear_series,
+                       plot_stress_path, plot_velocity_field)
 from .oblique_impact import plot_psi2_against_psi1
 from .stress_settlement import LiveStressSettlement, StressSettlementSeries, plot_stress_settlement
 from .sweep import plot_final_measure, plot_stress_settlement_family
@@ -28,7 +33,14 @@ from .sweep import plot_final_measure, plot_stress_settlement_family
 __all__ = [
     "LiveStressSettlement",
     "StressSettlementSeries",
+    "draw_randall_directory",
     "new_axes",
+    "plot_discharge",
+    "plot_obliquity_histogram",
+    "plot_rose",
+    "plot_shear_series",
+    "plot_stress_path",
+    "plot_velocity_field",
     "plot_contact_force_history",
     "plot_force_chains",
     "plot_final_measure",

@@ -1,13 +1,15 @@
 """python3 -m dem.plots FIGURE ...: a figure from files, without a server.
 
     stress-settlement FILE PNG [--wall W ...]   from monitor.csv, walls.csv, compression.csv or a .mcap recording
+    randall DIR [OUT]                           Randall's chapter 6 figures from a dem_validate randall-* or hopper directory
 """
 
 import sys
 
+from .granular import main as randall
 from .stress_settlement import main as stress_settlement
 
-FIGURES = {"stress-settlement": stress_settlement}
+FIGURES = {"stress-settlement": stress_settlement, "randall": randall}
 
 if len(sys.argv) < 2 or sys.argv[1] not in FIGURES:
     sys.exit(__doc__.strip() + "\n")

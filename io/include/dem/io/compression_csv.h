@@ -25,7 +25,12 @@
 //   stress_drops.csv      state,peak_cycle,trough_cycle,peak_settlement,
 //                         peak_stress,trough_stress,relative_drop
 //   load_by_state.csv     plate,state,contacts,contact_share,load,
-//                         load_share,stress   (Fig. 30)
+//                         load_share,first_formed_cycle,last_formed_cycle,
+//                         stress: the contacts by the state they formed in
+//   load_by_formation.csv plate,group,... the same columns: Fig. 30 as the
+//                         seed defines it, the contacts in the order they
+//                         formed, the first 40 % (initial), the next 30 %
+//                         (transition), the last 30 % (final)
 //   force_distribution.csv  plate,f_low,f_high,contacts,
 //                         probability_density,load_share,load_density,
 //                         q_model,mueth       (Figs. 35 and 37)

@@ -10,6 +10,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace dem::io {
 
@@ -47,6 +48,17 @@ class CsvFile {
   void write_row(const Fields&... fields) {
     std::string line;
     (append_separated(line, fields), ...);
+    line += '\n';
+    write_line(line);
+  }
+
+  // A row of the leading fields followed by a run of numbers (tables whose
+  // columns depend on the dimension).
+  template <typename... Fields>
+  void write_row_then(const std::vector<double>& numbers, const Fields&... fields) {
+    std::string line;
+    (append_separated(line, fields), ...);
+    for (const double value : numbers) append_separated(line, value);
     line += '\n';
     write_line(line);
   }

@@ -44,15 +44,27 @@ struct PlateReading {
 template <int Dim>
 PlateReading read_plate(const BasicWorld<Dim>& world, const std::vector<WallMeasureT<Dim>>& measures, WallId plate);
 
-// The contacts on a plate formed in one state, and the normal force they carry.
+// A group of the contacts on a plate, and the normal force they carry.
 struct StateLoad {
   LoadingState state = LoadingState::kInitial;
   int contacts = 0;
-  double load = 0.0;  // N
+  double load = 0.0;                // N
+  std::uint64_t first_formed = 0;   // the earliest and latest cycle its contacts formed in (0 when empty)
+  std::uint64_t last_formed = 0;
 };
 
-// Miyata Fig. 30: the contacts grouped by the state they formed in.
+// The contacts grouped by the state of the stress-settlement curve
+// (Miyata 3.2(3)) they formed in.
 template <int Dim>
 std::array<StateLoad, 3> load_by_state(std::span<const PlateContactT<Dim>> contacts, const StateCycles& cycles);
+
+// Miyata Fig. 30 as the seed defines it: the plate's contacts in the order
+// they formed (ties by particle id); "the first 40 % of the contact points
+// newly created" are the initial group, "those formed between 40 and 70 %"
+// the transition group and the last 30 % the final group, so equal loads
+// would give 40/30/30 %. A contact of rank k (from 0) of n is initial when
+// k < 0.4 n, transition when k < 0.7 n, final otherwise.
+template <int Dim>
+std::array<StateLoad, 3> load_by_formation_order(std::span<const PlateContactT<Dim>> contacts);
 
 }  // namespace dem::io

@@ -9,11 +9,12 @@
 
 namespace dem::protocol {
 
-enum class TopicKind { kCommand, kReply, kStatus, kPlateForces, kContactStats, kNameClaim };
+enum class TopicKind { kCommand, kReply, kStatus, kPlateForces, kContactStats, kRegionMeasures, kNameClaim };
 
 // "rt/dem/<server>/command", ".../reply", ".../status", ".../plate_forces", ".../contact_stats",
-// ".../_name_claim" (a server's claim to its name, a writer that never writes: service/name_claim.h;
-// hidden from `ros2 topic list` by the leading underscore, as ROS 2 hides such names).
+// ".../region_measures", ".../_name_claim" (a server's claim to its name, a writer that never
+// writes: service/name_claim.h; hidden from `ros2 topic list` by the leading underscore, as ROS 2
+// hides such names).
 std::string topic_name(std::string_view server, TopicKind kind);
 
 // A server name is one ROS 2 name token: a letter, then letters, digits and

@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "dem/analysis/region_measures.h"
 #include "dem/protocol/messages.h"
 #include "dem/world.h"
 
@@ -32,6 +33,13 @@ std::vector<protocol::WallForce> read_walls(const BasicWorld<Dim>& world);
 // energy and out-of-balance ratio.
 template <int Dim>
 protocol::ContactStats read_contact_stats(const BasicWorld<Dim>& world);
+
+// The measures of the case's regions (output.region; dem/analysis) as the
+// telemetry carries them; the server, cycle, time and stamp are the
+// caller's to set.
+template <int Dim>
+protocol::RegionTelemetry read_regions(const BasicWorld<Dim>& world,
+                                       const std::vector<analysis::RegionT<Dim>>& regions);
 
 // Filters a contact query can combine; unset ones let everything through.
 struct ContactFilter {

@@ -6,7 +6,9 @@
 // stages.csv, a row per stage of a programme (one-shot or run_programme);
 // when the case asks for them (output.compression), the plate loading
 // analyses of a programme, the same files as dem_run writes
-// (io/compression_csv.h); and while a programme runs, its ParaView files
+// (io/compression_csv.h); the measures of the case's regions (regions.csv)
+// and of its controlled box (box.csv) at every row (io/regions_csv.h);
+// and while a programme runs, its ParaView files
 // (io/vtk_series.h) every vtk_interval cycles - the case's
 // output.vtk_interval unless the server was given one - and at its end.
 // A file that
@@ -27,6 +29,7 @@
 #include "dem/io/compression_settings.h"
 #include "dem/io/csv_file.h"
 #include "dem/io/csv_writers.h"
+#include "dem/io/regions_csv.h"
 #include "dem/io/vtk_series.h"
 #include "dem/programme.h"
 #include "dem/world.h"
@@ -44,7 +47,8 @@ class OutputRecorder {
   template <int Dim>
   void start(const std::string& case_name, const BasicWorld<Dim>& world,
              std::optional<io::CompressionSettings> compression = std::nullopt,
-             std::uint64_t vtk_interval = 0, const io::ResumePoint* resume = nullptr);
+             std::uint64_t vtk_interval = 0, const io::ResumePoint* resume = nullptr,
+             const std::vector<io::MeasurementRegion>& regions = {});
   // The tables' lengths (rows flushed) and the analyses' state, for a checkpoint.
   void fill(io::ResumePoint& point);
   // A row of the time series, unless this cycle has one already (a load
@@ -84,6 +88,10 @@ class OutputRecorder {
   template <int Dim>
   void make_compression(const BasicWorld<Dim>& world);
 
+  // A row of regions.csv and box.csv when `write`; otherwise (a resume)
+  // reopens those the checkpoint names.
+  template <int Dim>
+  void record_regions(const BasicWorld<Dim>& world, bool write);
   void fail(const std::exception& error);
   void close();
 
@@ -102,6 +110,13 @@ class OutputRecorder {
   std::unique_ptr<io::VtkSeries> vtk_;  // made at a programme's first row
   std::unique_ptr<Compression<2>> compression2_;
   std::unique_ptr<Compression<3>> compression3_;
+  // The case's regions (regions.csv) and its box control (box.csv), made
+  // at the first row that has them (or reopened at a resume).
+  std::vector<io::MeasurementRegion> regions_;
+  std::unique_ptr<io::RegionsCsvT<2>> regions2_;
+  std::unique_ptr<io::RegionsCsvT<3>> regions3_;
+  std::unique_ptr<io::BoxCsvT<2>> box2_;
+  std::unique_ptr<io::BoxCsvT<3>> box3_;
   std::optional<std::uint64_t> last_cycle_;
   std::optional<io::ResumePoint> resume_;  // while the tables it names are not all reopened
 };

@@ -1,4 +1,5 @@
-// Publishes plate forces, contact statistics and the status. Called from
+// Publishes plate forces, contact statistics, the measures of the case's
+// regions and the status. Called from
 // the engine thread only, and never blocks it: the telemetry writers keep
 // the last few samples and do not wait (docs/DDS.md), so a subscriber that
 // stops reading costs samples, counted here, never cycles.
@@ -20,6 +21,7 @@ class TelemetryPublisher {
 
   void publish(const protocol::PlateForces& plates, const protocol::ContactStats& stats);
   void publish(const protocol::Status& status);
+  void publish(const protocol::RegionTelemetry& regions);
 
   std::uint64_t dropped() const { return dropped_; }
   std::uint32_t matched_telemetry_readers() const { return plates_writer_.matched_readers(); }
@@ -30,9 +32,11 @@ class TelemetryPublisher {
   dds::Topic<protocol::PlateForces> plates_topic_;
   dds::Topic<protocol::ContactStats> stats_topic_;
   dds::Topic<protocol::Status> status_topic_;
+  dds::Topic<protocol::RegionTelemetry> regions_topic_;
   dds::Writer<protocol::PlateForces> plates_writer_;
   dds::Writer<protocol::ContactStats> stats_writer_;
   dds::Writer<protocol::Status> status_writer_;
+  dds::Writer<protocol::RegionTelemetry> regions_writer_;
   std::uint64_t dropped_ = 0;
 };
 

@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "dem/io/case_definition.h"
 #include "dem/health.h"
 #include "dem/io/checkpoint_store.h"
 #include "dem/io/compression_settings.h"
@@ -62,6 +63,8 @@ class WorldSession {
   virtual protocol::WallForce read_wall(WallId wall) const = 0;
   virtual std::vector<protocol::WallForce> read_walls() const = 0;
   virtual protocol::ContactStats read_contact_stats() const = 0;
+  // The measures of the case's regions; nothing when it names none.
+  virtual std::optional<protocol::RegionTelemetry> read_regions() const = 0;
   virtual std::vector<protocol::ContactEntry> query_contacts(const ContactFilter& filter) const = 0;
   virtual std::optional<ServoLimits> default_servo_limits(WallId wall,
                                                           const std::vector<ContactModelDef>& models) const = 0;
@@ -120,10 +123,12 @@ class WorldSession {
 
 // `compression`: the case's plate loading analyses (output.compression), if
 // any; `vtk_interval`: the case's cycles between ParaView files of a
-// programme (output.vtk_interval; 0 = none).
+// programme (output.vtk_interval; 0 = none); `regions`: the case's
+// measurement regions (output.region), published and written each row.
 template <int Dim>
 std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages = {},
                                            std::optional<io::CompressionSettings> compression = std::nullopt,
-                                           std::uint64_t vtk_interval = 0);
+                                           std::uint64_t vtk_interval = 0,
+                                           std::vector<io::MeasurementRegion> regions = {});
 
 }  // namespace dem::service

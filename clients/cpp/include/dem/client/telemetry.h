@@ -15,6 +15,8 @@ struct TelemetryCallbacks {
   std::function<void(const protocol::PlateForces&)> plate_forces;
   std::function<void(const protocol::ContactStats&)> contact_stats;
   std::function<void(const protocol::Status&)> status;
+  // The measures of the case's regions (output.region), when it has some.
+  std::function<void(const protocol::RegionTelemetry&)> region_measures;
 };
 
 class TelemetrySubscription {
@@ -35,12 +37,15 @@ class TelemetrySubscription {
   dds::Topic<protocol::PlateForces> plates_topic_;
   dds::Topic<protocol::ContactStats> stats_topic_;
   dds::Topic<protocol::Status> status_topic_;
+  dds::Topic<protocol::RegionTelemetry> regions_topic_;
   dds::Reader<protocol::PlateForces> plates_reader_;
   dds::Reader<protocol::ContactStats> stats_reader_;
   dds::Reader<protocol::Status> status_reader_;
+  dds::Reader<protocol::RegionTelemetry> regions_reader_;
   dds::ReadCondition plates_data_;
   dds::ReadCondition stats_data_;
   dds::ReadCondition status_data_;
+  dds::ReadCondition regions_data_;
   dds::GuardCondition wake_;
   dds::WaitSet waitset_;
   std::atomic<bool> stopping_{false};
