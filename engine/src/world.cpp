@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <chrono>
 #include <cmath>
@@ -132,6 +133,11 @@ void add_particles(WorldState<Dim>& s, const WorldDefT<Dim>& def) {
     }
   }();
   p.position.reserve(n);
+  // A superquadric's bounding radius samples its boundary 4,096 times
+  // (superquadric_bounding_radius); the particles of a packing's size class
+  // share one shape, so the last shape's radius is kept for the next.
+  std::array<double, 3> bounded_shape{0.0, 0.0, 0.0};
+  double bounding_radius = 0.0;
   for (const ParticleDefT<Dim>& d : def.particles) {
     const double density = s.materials[d.material].density;
     MassProperties mp = mass_properties(density, d.radius, discs);
@@ -142,7 +148,12 @@ void add_particles(WorldState<Dim>& s, const WorldDefT<Dim>& def) {
         // Unit thickness; the bounding circle serves the broad phase.
         const SuperquadricMass m = superquadric_mass({d.shape.a, d.shape.b, d.shape.n});
         mp = {density * m.area, density * m.polar_moment};
-        radius = superquadric_bounding_radius({d.shape.a, d.shape.b, d.shape.n});
+        const std::array<double, 3> shape{d.shape.a, d.shape.b, d.shape.n};
+        if (shape != bounded_shape || bounding_radius == 0.0) {
+          bounded_shape = shape;
+          bounding_radius = superquadric_bounding_radius({d.shape.a, d.shape.b, d.shape.n});
+        }
+        radius = bounding_radius;
         rotation = d.shape.angle;
         s.shape = ShapeKind::kSuperquadric;
       }

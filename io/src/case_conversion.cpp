@@ -413,7 +413,13 @@ class Converter {
       def.sizes.push_back({size.radius(), static_cast<int>(size.count()), to_shape<Dim>(size)});
     }
     def.seed = packing.seed();
-    if (packing.max_attempts() > 0) def.max_attempts = static_cast<int>(packing.max_attempts());
+    // Unset, the engine's default - but no more than the limit allows: a
+    // limit below the default (a small server, the fuzz targets) bounds the
+    // work of a packing that nearly cannot fit whether or not the case asks.
+    def.max_attempts = packing.max_attempts() > 0
+                           ? static_cast<int>(packing.max_attempts())
+                           : static_cast<int>(std::min<std::uint64_t>(
+                                 static_cast<std::uint64_t>(def.max_attempts), limits_.max_packing_attempts));
     def.stopped = limits_.stop_packing;
     return def;
   }

@@ -31,8 +31,10 @@ void run_case(const char* target, Load&& load) {
     loaded.source.directory = DEM_FUZZ_FILES_DIR;
     const io::AnyCaseDefinition definition = io::convert_any_case(loaded.message, loaded.source, limits());
     std::visit([&](const auto& d) { build_and_step(d, loaded.source); }, definition);
-  } catch (const io::CaseError&) {
-  } catch (const DefinitionError&) {
+  } catch (const io::CaseError& error) {
+    refused(error);
+  } catch (const DefinitionError& error) {
+    refused(error);
   } catch (const std::exception& error) {
     unexpected(target, error);
   }

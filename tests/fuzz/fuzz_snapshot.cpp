@@ -37,8 +37,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } else {
       restore_and_step<2>(message);
     }
-  } catch (const dem::io::SnapshotError&) {
-  } catch (const dem::DefinitionError&) {
+  } catch (const dem::io::SnapshotError& error) {
+    dem::fuzz::refused(error);
+  } catch (const dem::DefinitionError& error) {
+    dem::fuzz::refused(error);
   } catch (const std::exception& error) {
     dem::fuzz::unexpected("snapshot", error);
   }

@@ -114,6 +114,30 @@ TEST_F(CaseConversion, GeneratorFailureNamesTheSource) {
   }
 }
 
+// A packing that leaves max_attempts unset tries the engine's default
+// (100,000 a particle) - unless the limits allow fewer: then the limit
+// bounds the work, as it does for a case that asks.
+TEST_F(CaseConversion, AnUnsetMaxAttemptsIsCappedByTheLimit) {
+  auto& packing = *case_.mutable_particles(2)->mutable_random_packing();
+  packing.mutable_size(0)->set_count(35);  // jams, as above
+  packing.clear_max_attempts();
+  ResourceLimits limits = machine_limits();
+  limits.max_packing_attempts = 70;
+  try {
+    convert_case(case_, {.name = "case.txtpb"}, limits);
+    FAIL() << "35 discs fitted in the box";
+  } catch (const CaseError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("after 70 attempts"));
+  }
+  // Under the machine's limit (10,000,000) the engine's own default stays.
+  try {
+    convert_case(case_, {.name = "case.txtpb"});
+    FAIL() << "35 discs fitted in the box";
+  } catch (const CaseError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("after 100000 attempts"));
+  }
+}
+
 // Every pair within the tolerance gets a contact-table row: one far
 // beyond a particle's size would make the table quadratic.
 TEST_F(CaseConversion, AContactToleranceBeyondTheLargestDiameterIsRefused) {
