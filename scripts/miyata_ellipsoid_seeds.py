@@ -38,28 +38,27 @@ def substitute(text, pattern, replacement, what):
     return new
 
 
+# The overrides that change one place of the case: key -> (pattern,
+# replacement with {value} for the override's value, what it changes).
+OVERRIDES = {
+    "v": (r"velocity \{ z: -[0-9.e-]+ \}", "velocity {{ z: -{value} }}", "plate speed"),
+    "alpha": (r'(name: "load".*?damping \{ local_alpha: )[0-9.]+', r"\g<1>{value}", "loading damping"),
+    "e": (r"restitution: [0-9.]+", "restitution: {value}", "restitution"),
+    "n": (r"count: \d+", "count: {value}", "particle count"),
+    "trim": (r"trim \{ height: [0-9.]+ \}", "trim {{ height: {value} }}", "trim"),
+    "frac": (r"time_step \{ fraction: [0-9.]+ \}", "time_step {{ fraction: {value} }}", "time step"),
+    "loadfrac": (r'(name: "load".*?damping \{ local_alpha: [0-9.]+ \})',
+                 r"\g<1>\n  time_step {{ fraction: {value} }}", "loading stage"),
+    "z": (r"(max \{ x: [0-9.]+ y: [0-9.]+ z: )[0-9.]+", r"\g<1>{value}", "packing height"),
+}
+
+
 def variant_text(base, seed, overrides):
     text = substitute(base, r"seed: \d+", f"seed: {seed}", "packing seed")
     for key, value in overrides.items():
-        if key == "v":
-            text = substitute(text, r"velocity \{ z: -[0-9.e-]+ \}", f"velocity {{ z: -{value} }}", "plate speed")
-        elif key == "alpha":
-            text = substitute(text, r'(name: "load".*?damping \{ local_alpha: )[0-9.]+',
-                              rf"\g<1>{value}", "loading damping")
-        elif key == "e":
-            text = substitute(text, r"restitution: [0-9.]+", f"restitution: {value}", "restitution")
-        elif key == "n":
-            text = substitute(text, r"count: \d+", f"count: {value}", "particle count")
-        elif key == "trim":
-            text = substitute(text, r"trim \{ height: [0-9.]+ \}", f"trim {{ height: {value} }}", "trim")
-        elif key == "frac":
-            text = substitute(text, r"time_step \{ fraction: [0-9.]+ \}", f"time_step {{ fraction: {value} }}",
-                              "time step")
-        elif key == "loadfrac":
-            text = substitute(text, r'(name: "load".*?damping \{ local_alpha: [0-9.]+ \})',
-                              rf"\g<1>\n  time_step {{ fraction: {value} }}", "loading stage")
-        elif key == "z":
-            text = substitute(text, r"(max \{ x: [0-9.]+ y: [0-9.]+ z: )[0-9.]+", rf"\g<1>{value}", "packing height")
+        if key in OVERRIDES:
+            pattern, replacement, what = OVERRIDES[key]
+            text = substitute(text, pattern, replacement.format(value=value), what)
         elif key == "L":
             L = float(value)
             text = substitute(text, r"max \{ x: [0-9.]+ y: [0-9.]+ z:", f"max {{ x: {L} y: {L} z:", "packing box")
