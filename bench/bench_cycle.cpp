@@ -37,7 +37,8 @@ dem::WorldDef dense_assembly(int discs, int threads) {
   lattice.arrangement = LatticeArrangement::kHexagonal;
   def.particles = generate_lattice(lattice);
   const double width = columns * 0.02 + 0.011, height = rows * 0.02;
-  def.walls = {WallDef{"bottom", {0, 0}, {1, 0}, 0, width, 1, {}}, WallDef{"right", {width, 0}, {0, 1}, 0, 2 * height, 1, {}},
+  def.walls = {WallDef{"bottom", {0, 0}, {1, 0}, 0, width, 1, {}},
+               WallDef{"right", {width, 0}, {0, 1}, 0, 2 * height, 1, {}},
                WallDef{"left", {0, 2 * height}, {0, -1}, 0, 2 * height, 1, {}}};
   def.gravity = {0.0, -9.81};
   def.damping = {1e-4, 10.0};
@@ -55,7 +56,8 @@ void Dense(benchmark::State& state) {
   for (auto _ : state) world.cycle(kCyclesPerIteration);
   const dem::StepProfile& after = world.profile();
   const double cycles = static_cast<double>(after.cycles - before.cycles);
-  state.counters["rebuild_every"] = cycles / static_cast<double>(std::max<std::uint64_t>(after.contact_rebuilds - before.contact_rebuilds, 1));
+  state.counters["rebuild_every"] =
+      cycles / static_cast<double>(std::max<std::uint64_t>(after.contact_rebuilds - before.contact_rebuilds, 1));
   state.counters["us_find"] = 1e6 * (after.find_contacts - before.find_contacts) / cycles;
   state.counters["us_forces"] = 1e6 * (after.contact_forces - before.contact_forces) / cycles;
   state.counters["us_motion"] = 1e6 * (after.motion - before.motion) / cycles;
@@ -74,7 +76,8 @@ void Health(benchmark::State& state) {
   constexpr int kCycles = 50;
   const auto start = std::chrono::steady_clock::now();
   world.cycle(kCycles);
-  const double cycle_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / kCycles;
+  const double cycle_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / kCycles;
   dem::HealthMonitor monitor(world);
   double seconds = 0.0;
   for (auto _ : state) {

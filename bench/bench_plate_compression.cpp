@@ -7,7 +7,6 @@
 #include <time.h>
 
 #include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -98,22 +97,27 @@ int main(int argc, char** argv) {
                                                 : run(def.world, def.stages, t, cycles);
       const double timed_cycles = cycles > 0 ? static_cast<double>(cycles) : 2000.0;
       const dem::StepProfile& p = m.profile;
-      std::printf("  %d thread%s: timed %.3f s (cpu %.3f s), %.3e particle-steps/s; contacts/particle %.4f (reference %.2f, %+.2f%%), "
-                  "plate Fz %.5f N (reference %.4f, %+.1f%%), plate contacts %d, KE %.3e J\n",
-                  t, t == 1 ? "" : "s", m.timed_seconds, m.cpu_seconds, n * timed_cycles / m.timed_seconds, m.contacts_per_particle,
-                  big ? 5.02 : 4.78, 100.0 * (m.contacts_per_particle / (big ? 5.02 : 4.78) - 1.0), m.plate_force,
-                  big ? 0.0147 : 0.0119, 100.0 * (m.plate_force / (big ? 0.0147 : 0.0119) - 1.0), m.plate_contacts,
-                  m.kinetic_energy);
+      std::printf(
+          "  %d thread%s: timed %.3f s (cpu %.3f s), %.3e particle-steps/s; contacts/particle %.4f (reference %.2f, "
+          "%+.2f%%), "
+          "plate Fz %.5f N (reference %.4f, %+.1f%%), plate contacts %d, KE %.3e J\n",
+          t, t == 1 ? "" : "s", m.timed_seconds, m.cpu_seconds, n * timed_cycles / m.timed_seconds,
+          m.contacts_per_particle, big ? 5.02 : 4.78, 100.0 * (m.contacts_per_particle / (big ? 5.02 : 4.78) - 1.0),
+          m.plate_force, big ? 0.0147 : 0.0119, 100.0 * (m.plate_force / (big ? 0.0147 : 0.0119) - 1.0),
+          m.plate_contacts, m.kinetic_energy);
       const double per_step = 1e6 / static_cast<double>(p.cycles);
-      std::printf("    per step (warm-up and timed): find %.1f us, forces %.1f us, motion %.1f us, walls %.1f us; %llu rebuilds\n",
-                  per_step * p.find_contacts, per_step * p.contact_forces, per_step * p.motion, per_step * p.walls,
-                  static_cast<unsigned long long>(p.contact_rebuilds));
+      std::printf(
+          "    per step (warm-up and timed): find %.1f us, forces %.1f us, motion %.1f us, walls %.1f us; %llu "
+          "rebuilds\n",
+          per_step * p.find_contacts, per_step * p.contact_forces, per_step * p.motion, per_step * p.walls,
+          static_cast<unsigned long long>(p.contact_rebuilds));
       const auto rows = static_cast<double>(std::max<std::uint64_t>(p.pair_rows, 1));
-      std::printf("    contact table: %.2f pair rows and %.3f wall rows per particle, %.1f%% of pair rows cross blocks, "
-                  "%.1f%% near (sorted out %llu times)\n",
-                  static_cast<double>(p.pair_rows) / n, static_cast<double>(p.wall_rows) / n,
-                  100.0 * static_cast<double>(p.crossing_rows) / rows, 100.0 * static_cast<double>(p.near_rows) / rows,
-                  static_cast<unsigned long long>(p.near_sortings));
+      std::printf(
+          "    contact table: %.2f pair rows and %.3f wall rows per particle, %.1f%% of pair rows cross blocks, "
+          "%.1f%% near (sorted out %llu times)\n",
+          static_cast<double>(p.pair_rows) / n, static_cast<double>(p.wall_rows) / n,
+          100.0 * static_cast<double>(p.crossing_rows) / rows, 100.0 * static_cast<double>(p.near_rows) / rows,
+          static_cast<unsigned long long>(p.near_sortings));
     }
     std::printf("  total wall time %.1f s, peak RSS %.1f MiB\n",
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - total_start).count(), peak_rss_mib());

@@ -42,8 +42,8 @@ extern char** environ;
 namespace {
 
 using namespace std::chrono_literals;
-using dem::bench::LatticeTop;
 using dem::bench::lattice_case;
+using dem::bench::LatticeTop;
 using Clock = std::chrono::steady_clock;
 constexpr std::uint32_t kDomain = 126;
 
@@ -107,8 +107,7 @@ Rate engine_rate(dem::client::Client& watcher, pid_t server, std::chrono::second
   std::this_thread::sleep_for(seconds);
   const auto last = watcher.get_state();
   const auto cycles = static_cast<double>(last.state.cycle - first.state.cycle);
-  return {cycles / std::chrono::duration<double>(Clock::now() - start).count(),
-          cycles / (cpu_seconds(server) - cpu)};
+  return {cycles / std::chrono::duration<double>(Clock::now() - start).count(), cycles / (cpu_seconds(server) - cpu)};
 }
 
 struct Results {
@@ -129,8 +128,8 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   const pid_t server = spawn({DEM_SERVER_PROGRAM, "--name", "responsive", "--domain", std::to_string(kDomain),
-                              "--threads", "1", "--log-level", "warn", "--no-csv", "--telemetry-cycles", "100",
-                              "--out", std::string(DEM_BENCH_OUTPUT) + "/responsive"});
+                              "--threads", "1", "--log-level", "warn", "--no-csv", "--telemetry-cycles", "100", "--out",
+                              std::string(DEM_BENCH_OUTPUT) + "/responsive"});
   dem::client::Client owner(connect_options());
   owner.load_case_text(lattice_case(70, 70, LatticeTop::kWall), "lattice_70x70");
   const std::uint64_t run = owner.start_cycle(1'000'000'000);
@@ -142,8 +141,8 @@ int main(int argc, char** argv) {
   dem::client::Client watcher(connect_options());
   std::printf("server pid %d; RSS %.1f MiB after loading\n", server, rss_mib(server));
   const Rate quiet = engine_rate(watcher, server, std::chrono::seconds(baseline));
-  std::printf("engine without commands: %.0f cycles/s, %.0f cycles per CPU second of the server\n",
-              quiet.per_second, quiet.per_cpu_second);
+  std::printf("engine without commands: %.0f cycles/s, %.0f cycles per CPU second of the server\n", quiet.per_second,
+              quiet.per_cpu_second);
 
   Results results;
   std::atomic<bool> done{false};
@@ -197,11 +196,13 @@ int main(int argc, char** argv) {
             continue;
           }
           ++results.answered;
-          if (reply->status == dem::protocol::ReplyStatus::kBusy) ++results.busy;
-          else if (!reply->ok()) ++results.errors;
+          if (reply->status == dem::protocol::ReplyStatus::kBusy)
+            ++results.busy;
+          else if (!reply->ok())
+            ++results.errors;
           const auto kind = dem::protocol::command_kind(reply->kind);
-          results.server_ms[std::string(kind ? dem::protocol::to_string(*kind) : "unknown")].push_back(
-              reply->duration * 1e3);
+          results.server_ms[std::string(kind ? dem::protocol::to_string(*kind) : "unknown")].push_back(reply->duration *
+                                                                                                       1e3);
         }
       });
       auto next = Clock::now();
@@ -250,9 +251,10 @@ int main(int argc, char** argv) {
     loaded.per_cpu_second += r.per_cpu_second / static_cast<double>(rates.size());
   }
   std::printf("load: %.0f s, %llu commands sent (%.0f/s), %llu answered (%llu busy, %llu errors), %llu without reply\n",
-              load_seconds, static_cast<unsigned long long>(results.sent), static_cast<double>(results.sent) / load_seconds,
-              static_cast<unsigned long long>(results.answered), static_cast<unsigned long long>(results.busy),
-              static_cast<unsigned long long>(results.errors), static_cast<unsigned long long>(results.lost));
+              load_seconds, static_cast<unsigned long long>(results.sent),
+              static_cast<double>(results.sent) / load_seconds, static_cast<unsigned long long>(results.answered),
+              static_cast<unsigned long long>(results.busy), static_cast<unsigned long long>(results.errors),
+              static_cast<unsigned long long>(results.lost));
   std::printf("get_state round trip (client A): median %.3f ms, p99 %.3f ms, max %.3f ms (%zu)\n",
               percentile(results.round_trip_ms, 0.5), percentile(results.round_trip_ms, 0.99),
               percentile(results.round_trip_ms, 1.0), results.round_trip_ms.size());
@@ -260,12 +262,13 @@ int main(int argc, char** argv) {
     std::printf("on the server, %-18s median %.3f ms, p99 %.3f ms, max %.3f ms (%zu)\n", kind.c_str(),
                 percentile(ms, 0.5), percentile(ms, 0.99), percentile(ms, 1.0), ms.size());
   }
-  std::printf("engine: %.0f cycles/s without commands, %.0f with (%.1f%% less)\n", quiet.per_second,
-              loaded.per_second, 100.0 * (quiet.per_second - loaded.per_second) / quiet.per_second);
-  std::printf("engine per CPU second of the server: %.0f without commands, %.0f with (%.1f%% less: the server's own "
-              "cost of the commands)\n",
-              quiet.per_cpu_second, loaded.per_cpu_second,
-              100.0 * (quiet.per_cpu_second - loaded.per_cpu_second) / quiet.per_cpu_second);
+  std::printf("engine: %.0f cycles/s without commands, %.0f with (%.1f%% less)\n", quiet.per_second, loaded.per_second,
+              100.0 * (quiet.per_second - loaded.per_second) / quiet.per_second);
+  std::printf(
+      "engine per CPU second of the server: %.0f without commands, %.0f with (%.1f%% less: the server's own "
+      "cost of the commands)\n",
+      quiet.per_cpu_second, loaded.per_cpu_second,
+      100.0 * (quiet.per_cpu_second - loaded.per_cpu_second) / quiet.per_cpu_second);
 
   owner.stop();
   owner.await(run, 30s);

@@ -29,8 +29,8 @@ extern char** environ;
 
 namespace {
 
-using dem::bench::LatticeTop;
 using dem::bench::lattice_case;
+using dem::bench::LatticeTop;
 using namespace std::chrono_literals;
 constexpr std::uint32_t kDomain = 125;
 
@@ -38,9 +38,18 @@ constexpr std::uint32_t kDomain = 125;
 class Server {
  public:
   Server(const std::string& name, const std::vector<std::string>& options) {
-    std::vector<std::string> arguments{DEM_SERVER_PROGRAM, "--name",      name,    "--domain",
-                                       std::to_string(kDomain), "--threads", "1", "--log-level", "warn", "--no-csv",
-                                       "--out",           std::string(DEM_BENCH_OUTPUT) + "/" + name};
+    std::vector<std::string> arguments{DEM_SERVER_PROGRAM,
+                                       "--name",
+                                       name,
+                                       "--domain",
+                                       std::to_string(kDomain),
+                                       "--threads",
+                                       "1",
+                                       "--log-level",
+                                       "warn",
+                                       "--no-csv",
+                                       "--out",
+                                       std::string(DEM_BENCH_OUTPUT) + "/" + name};
     arguments.insert(arguments.end(), options.begin(), options.end());
     std::vector<char*> argv;
     for (std::string& argument : arguments) argv.push_back(argument.data());

@@ -106,7 +106,8 @@ void measure(benchmark::State& state, BasicWorld<Dim>& world) {
 }
 
 void Superquadrics(benchmark::State& state) {
-  World world(superquadric_bed(static_cast<int>(state.range(0)), state.range(1) != 0, static_cast<int>(state.range(2))));
+  World world(
+      superquadric_bed(static_cast<int>(state.range(0)), state.range(1) != 0, static_cast<int>(state.range(2))));
   measure(state, world);
 }
 
@@ -153,9 +154,8 @@ void SuperquadricContactSearch(benchmark::State& state) {
     }
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pairs.size()));
-  state.counters["ns_per_contact"] =
-      benchmark::Counter(static_cast<double>(state.iterations() * pairs.size()), benchmark::Counter::kIsRate |
-                                                                                    benchmark::Counter::kInvert);
+  state.counters["ns_per_contact"] = benchmark::Counter(static_cast<double>(state.iterations() * pairs.size()),
+                                                        benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   state.counters["touching_fraction"] =
       static_cast<double>(touching) / static_cast<double>(state.iterations() * pairs.size());
 }
@@ -210,9 +210,8 @@ void EllipsoidContactSearch(benchmark::State& state) {
     }
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pairs.size()));
-  state.counters["ns_per_contact"] =
-      benchmark::Counter(static_cast<double>(state.iterations() * pairs.size()), benchmark::Counter::kIsRate |
-                                                                                    benchmark::Counter::kInvert);
+  state.counters["ns_per_contact"] = benchmark::Counter(static_cast<double>(state.iterations() * pairs.size()),
+                                                        benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   state.counters["touching_fraction"] =
       static_cast<double>(touching) / static_cast<double>(state.iterations() * pairs.size());
 }

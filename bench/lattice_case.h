@@ -34,7 +34,8 @@ inline std::string lattice_case(int columns, int rows, LatticeTop top) {
   }
   const double width = 2 * r + (columns - 1) * spacing;
   const double height = 2 * r + (rows - 1) * spacing;
-  text << "wall { name: \"bottom\" point { x: " << width / 2 << " y: 0 } angle_deg: 0 h1: -1 h2: 1 material: \"wall\" }\n"
+  text << "wall { name: \"bottom\" point { x: " << width / 2
+       << " y: 0 } angle_deg: 0 h1: -1 h2: 1 material: \"wall\" }\n"
        << "wall { name: \"right\" point { x: " << width << " y: " << height / 2
        << " } angle_deg: 90 h1: -1 h2: 1 material: \"wall\" }\n"
        << "wall { name: \"left\" point { x: 0 y: " << height / 2

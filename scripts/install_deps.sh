@@ -15,6 +15,8 @@ packages=(
   libeigen3-dev libprotobuf-dev protobuf-compiler libspdlog-dev libfmt-dev libcli11-dev libssl-dev
   # tests and benchmarks; the fuzz targets (clang's libFuzzer, OpenMP for clang)
   libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev libomp-dev
+  # the house style (.clang-format; the test code_format)
+  clang-format
   # service (DDS) and its IDL compiler
   cyclonedds-dev cyclonedds-tools
   # Python client

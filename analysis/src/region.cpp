@@ -44,8 +44,7 @@ void check_region(const RegionT<Dim>& region) {
                                 " must be finite");
         }
         if (!(region.max[d] > region.min[d])) {
-          throw DefinitionError(label(region) + ": box.max." + kAxes[d] + " must be greater than box.min." +
-                                kAxes[d]);
+          throw DefinitionError(label(region) + ": box.max." + kAxes[d] + " must be greater than box.min." + kAxes[d]);
         }
       }
       return;

@@ -33,11 +33,10 @@ std::vector<Publication> PublicationMonitor::alive() const {
   for (std::size_t capacity = 256;; capacity *= 4) {
     std::vector<void*> samples(capacity, nullptr);
     std::vector<dds_sample_info_t> infos(capacity);
-    const auto count =
-        check(dds_read_mask(entity_.handle(), samples.data(), infos.data(), capacity,
-                            static_cast<std::uint32_t>(capacity),
-                            DDS_ANY_SAMPLE_STATE | DDS_ANY_VIEW_STATE | DDS_ALIVE_INSTANCE_STATE),
-              "reading DCPSPublication");
+    const auto count = check(
+        dds_read_mask(entity_.handle(), samples.data(), infos.data(), capacity, static_cast<std::uint32_t>(capacity),
+                      DDS_ANY_SAMPLE_STATE | DDS_ANY_VIEW_STATE | DDS_ALIVE_INSTANCE_STATE),
+        "reading DCPSPublication");
     Loan loan(entity_.handle(), samples, count);
     if (static_cast<std::size_t>(count) == capacity) continue;  // there may be more: read again with room
     std::vector<Publication> publications;

@@ -36,8 +36,8 @@ class Domain {
   Domain(std::uint32_t id, std::string config) : id_(id), config_(std::move(config)) {
     const dds_entity_t handle = dds_create_domain(id, config_.c_str());
     if (handle == DDS_RETCODE_PRECONDITION_NOT_MET) {
-      throw DdsError(handle, "domain " + std::to_string(id) +
-                                 " was created outside dem::dds (its configuration is unknown)");
+      throw DdsError(handle,
+                     "domain " + std::to_string(id) + " was created outside dem::dds (its configuration is unknown)");
     }
     entity_ = Entity(check(handle, "creating DDS domain " + std::to_string(id) + " with " + config_));
   }

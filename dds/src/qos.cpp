@@ -57,8 +57,7 @@ Qos& Qos::transient_local() {
   dds_qset_durability(qos_, DDS_DURABILITY_TRANSIENT_LOCAL);
   return *this;
 }
-Qos& Qos::resource_limits(std::int32_t max_samples, std::int32_t max_instances,
-                          std::int32_t max_samples_per_instance) {
+Qos& Qos::resource_limits(std::int32_t max_samples, std::int32_t max_instances, std::int32_t max_samples_per_instance) {
   dds_qset_resource_limits(qos_, max_samples, max_instances, max_samples_per_instance);
   return *this;
 }

@@ -7,9 +7,9 @@ namespace dem::dds {
 std::vector<SerializedSample> SerializedReader::take(std::size_t max) {
   std::vector<ddsi_serdata*> data(max, nullptr);
   std::vector<dds_sample_info_t> infos(max);
-  const auto count = check(dds_takecdr(entity_.handle(), data.data(), static_cast<std::uint32_t>(max), infos.data(),
-                                       DDS_ANY_STATE),
-                           "taking serialized samples from " + topic_name_);
+  const auto count =
+      check(dds_takecdr(entity_.handle(), data.data(), static_cast<std::uint32_t>(max), infos.data(), DDS_ANY_STATE),
+            "taking serialized samples from " + topic_name_);
   std::vector<SerializedSample> samples;
   samples.reserve(static_cast<std::size_t>(count));
   for (std::int32_t i = 0; i < count; ++i) {

@@ -81,8 +81,8 @@ BoxMeasureT<Dim> measure_box(const Walls<Dim>& walls, const BoxControlT<Dim>& bo
   m.stress = box_stress(walls, box, m.extent);
   m.target = box_targets(box, m.stress);
   for (int i = 0; i < Dim; ++i) {
-    m.strain[i] = box.reference_extent[i] > 0.0 && m.extent[i] > 0.0 ? std::log(box.reference_extent[i] / m.extent[i])
-                                                                       : 0.0;
+    m.strain[i] =
+        box.reference_extent[i] > 0.0 && m.extent[i] > 0.0 ? std::log(box.reference_extent[i] / m.extent[i]) : 0.0;
   }
   m.volumetric_strain = m.strain.sum();
   m.deviator_strain = m.strain.maxCoeff() - m.strain.minCoeff();

@@ -16,8 +16,8 @@ namespace {
 // axis the cells wrap around; with fewer than three cells there, some
 // neighbours coincide and are visited once.
 template <int Dim, typename Visit>
-void for_each_near(const CellGrid<Dim>& grid, const Particles<Dim>& particles, const Periodic<Dim>& periodic,
-                   Slot i, double tolerance, Visit visit) {
+void for_each_near(const CellGrid<Dim>& grid, const Particles<Dim>& particles, const Periodic<Dim>& periodic, Slot i,
+                   double tolerance, Visit visit) {
   const Vec<Dim>& xi = particles.position[i];
   const ParticleId id = particles.id[i];
   const auto home = grid.cell_of(xi);
@@ -56,8 +56,8 @@ void for_each_near(const CellGrid<Dim>& grid, const Particles<Dim>& particles, c
 }  // namespace
 
 template <int Dim>
-std::vector<ContactKey> find_pair_keys(const Particles<Dim>& particles, const Periodic<Dim>& periodic,
-                                       double tolerance, int threads) {
+std::vector<ContactKey> find_pair_keys(const Particles<Dim>& particles, const Periodic<Dim>& periodic, double tolerance,
+                                       int threads) {
   const auto n = static_cast<std::int32_t>(particles.size());
   if (n < 2) return {};
   double max_radius = 0.0;

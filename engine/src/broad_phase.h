@@ -15,8 +15,8 @@ namespace dem {
 // Particle pairs with gap < tolerance, across periodic boundaries through
 // the nearest image, as pair-row keys (first: the lower id's slot), sorted.
 template <int Dim>
-std::vector<ContactKey> find_pair_keys(const Particles<Dim>& particles, const Periodic<Dim>& periodic,
-                                       double tolerance, int threads);
+std::vector<ContactKey> find_pair_keys(const Particles<Dim>& particles, const Periodic<Dim>& periodic, double tolerance,
+                                       int threads);
 
 // (particle slot, wall) pairs whose gap to the wall is < tolerance, sorted.
 template <int Dim>

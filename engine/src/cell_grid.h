@@ -18,7 +18,7 @@ struct CellGrid {
   using Cell = std::array<std::int64_t, Dim>;
   Vec<Dim> origin = Vec<Dim>::Zero();
   Vec<Dim> cell_size = Vec<Dim>::Ones();  // along each axis; periodic axes are tiled exactly
-  Cell counts{};                         // cells along each axis
+  Cell counts{};                          // cells along each axis
   std::array<bool, Dim> wraps{};
   // CSR: the particles (slots) of cell c are cell_particles[cell_start[c] .. cell_start[c + 1]).
   std::vector<std::int32_t> cell_start;

@@ -16,8 +16,8 @@ namespace {
 std::vector<std::int32_t> row_begins(const std::vector<Slot>& first, const std::vector<Slot>& particle_begin) {
   std::vector<std::int32_t> begins(particle_begin.size());
   for (std::size_t b = 0; b < particle_begin.size(); ++b) {
-    begins[b] = static_cast<std::int32_t>(std::lower_bound(first.begin(), first.end(), particle_begin[b]) -
-                                          first.begin());
+    begins[b] =
+        static_cast<std::int32_t>(std::lower_bound(first.begin(), first.end(), particle_begin[b]) - first.begin());
   }
   return begins;
 }

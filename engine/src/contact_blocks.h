@@ -19,9 +19,9 @@ namespace dem {
 
 template <int Dim>
 struct ContactBlocks {
-  std::vector<Slot> particle_begin;         // block b holds slots [particle_begin[b], particle_begin[b + 1])
-  std::vector<std::int32_t> pair_begin;     // its pair rows [pair_begin[b], pair_begin[b + 1])
-  std::vector<std::int32_t> wall_begin;     // its wall rows
+  std::vector<Slot> particle_begin;      // block b holds slots [particle_begin[b], particle_begin[b + 1])
+  std::vector<std::int32_t> pair_begin;  // its pair rows [pair_begin[b], pair_begin[b + 1])
+  std::vector<std::int32_t> wall_begin;  // its wall rows
   // Cross rows, by the block holding their first particle, ascending:
   // row cross_row[k] sets its second particle's share aside in deferred[cross_slot[k]].
   std::vector<std::int32_t> cross_begin;

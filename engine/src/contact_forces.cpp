@@ -26,8 +26,8 @@ struct WallSum {
 // The pair rows of block b: shares added to the block's own particles, or
 // set aside for the other blocks' (contact_blocks.h).
 template <Pass kPass, bool kEnergy, typename Law, typename Shape, int Dim>
-void pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows, ContactBlocks<Dim>& blocks,
-                int b, ContactEnergy& energy) {
+void pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows, ContactBlocks<Dim>& blocks, int b,
+                ContactEnergy& energy) {
   std::int32_t cross = blocks.cross_begin[b];
   const std::int32_t cross_end = blocks.cross_begin[b + 1];
   std::int32_t next_cross = cross < cross_end ? blocks.cross_row[cross] : -1;
@@ -60,8 +60,8 @@ void pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& 
 
 // The wall rows of block b, with each wall's share of them.
 template <Pass kPass, bool kEnergy, typename Law, typename Shape, int Dim>
-void wall_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows,
-                const ContactBlocks<Dim>& blocks, int b, ContactEnergy& energy, WallSum<Dim>* walls) {
+void wall_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows, const ContactBlocks<Dim>& blocks,
+                int b, ContactEnergy& energy, WallSum<Dim>* walls) {
   for (std::int32_t r = blocks.wall_begin[b]; r < blocks.wall_begin[b + 1]; ++r) {
     const RowResult<Dim> c = wall_row<kPass, kEnergy, Law, Shape, Dim>(in, rows, r, energy);
     if (!c.touching) continue;
@@ -112,8 +112,8 @@ template <int Dim>
 using PairBlockFn = void (*)(const PassInputs<Dim>&, Particles<Dim>&, ContactRows<Dim>&, ContactBlocks<Dim>&, int,
                              ContactEnergy&);
 template <int Dim>
-using WallBlockFn = void (*)(const PassInputs<Dim>&, Particles<Dim>&, ContactRows<Dim>&, const ContactBlocks<Dim>&,
-                             int, ContactEnergy&, WallSum<Dim>*);
+using WallBlockFn = void (*)(const PassInputs<Dim>&, Particles<Dim>&, ContactRows<Dim>&, const ContactBlocks<Dim>&, int,
+                             ContactEnergy&, WallSum<Dim>*);
 
 // The one parameter set every pair of bodies uses, if they all share one
 // (a single material): the rows then skip the table lookup.
@@ -125,7 +125,7 @@ const ContactParams* shared_params(const WorldState<Dim>& s) {
 
 template <int Dim>
 PassInputs<Dim> inputs(const WorldState<Dim>& s, const std::vector<EllipsoidFrame>& frames) {
-  return {s.particles, s.walls, s.periodic, s.params,          shared_params(s),
+  return {s.particles, s.walls, s.periodic,     s.params,     shared_params(s),
           s.time_step, s.cycle, near_margin(s), frames.data()};
 }
 
@@ -140,8 +140,8 @@ void frame_ellipsoids(const Particles<Dim>& p, std::vector<EllipsoidFrame>& fram
 }
 
 template <typename Law, int Dim, bool kPrefetch>
-void batched_pair_rows(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows,
-                       ContactBlocks<Dim>& blocks, int b, ContactEnergy&) {
+void batched_pair_rows(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows, ContactBlocks<Dim>& blocks,
+                       int b, ContactEnergy&) {
   batched_pair_block<Law, Dim, kPrefetch>(in, p, rows, blocks, b);
 }
 
@@ -264,8 +264,13 @@ void visit_rows(const WorldState<Dim>& s, std::optional<std::size_t> only_pair_r
   ContactEnergy unused;
   const Particles<Dim>& p = s.particles;
   auto report = [&](bool wall, std::size_t r, const RowResult<Dim>& c, const ContactRows<Dim>& rows) {
-    RowReport<Dim> out{wall,    r,           to_record(c, p.id[rows.first[r]], rows.formed_cycle[r]),
-                       c.forces.shear_damping, c.force, c.moment_first, c.moment_second};
+    RowReport<Dim> out{wall,
+                       r,
+                       to_record(c, p.id[rows.first[r]], rows.formed_cycle[r]),
+                       c.forces.shear_damping,
+                       c.force,
+                       c.moment_first,
+                       c.moment_second};
     if (wall) {
       out.record.second_wall = rows.second[r];
     } else {
@@ -274,16 +279,17 @@ void visit_rows(const WorldState<Dim>& s, std::optional<std::size_t> only_pair_r
     visit(out);
   };
   with_shape<Dim>(s.shape, [&]<typename Shape>() {
-    if (!only_wall) with_law(s.pair_law, [&]<typename Law>() {
-      const ContactRows<Dim>& rows = s.contacts.pairs;
-      const std::size_t begin = only_pair_row.value_or(0);
-      const std::size_t end = only_pair_row ? begin + 1 : rows.size();
-      for (std::size_t r = begin; r < end; ++r) {
-        if (!rows.touching(r)) continue;
-        const RowResult<Dim> c = pair_row<Pass::kEvaluate, false, Law, Shape, Dim>(in, rows, r, unused);
-        if (c.touching) report(false, r, c, rows);
-      }
-    });
+    if (!only_wall)
+      with_law(s.pair_law, [&]<typename Law>() {
+        const ContactRows<Dim>& rows = s.contacts.pairs;
+        const std::size_t begin = only_pair_row.value_or(0);
+        const std::size_t end = only_pair_row ? begin + 1 : rows.size();
+        for (std::size_t r = begin; r < end; ++r) {
+          if (!rows.touching(r)) continue;
+          const RowResult<Dim> c = pair_row<Pass::kEvaluate, false, Law, Shape, Dim>(in, rows, r, unused);
+          if (c.touching) report(false, r, c, rows);
+        }
+      });
     if (only_pair_row) return;
     with_law(s.wall_law, [&]<typename Law>() {
       const ContactRows<Dim>& rows = s.contacts.walls;
@@ -333,7 +339,8 @@ std::vector<ContactRecordT<Dim>> report_contacts(const WorldState<Dim>& state) {
 template <int Dim>
 std::vector<ContactRecordT<Dim>> report_wall_contacts(const WorldState<Dim>& state, WallId wall) {
   std::vector<ContactRecordT<Dim>> records;
-  visit_rows(state, std::nullopt, [&](const RowReport<Dim>& r) { records.push_back(r.record); }, wall);
+  visit_rows(
+      state, std::nullopt, [&](const RowReport<Dim>& r) { records.push_back(r.record); }, wall);
   return records;
 }
 

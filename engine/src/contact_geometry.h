@@ -18,14 +18,14 @@ namespace dem {
 
 template <int Dim>
 struct ContactGeometry {
-  double overlap = 0.0;               // > 0 in contact
-  Vec<Dim> normal = Vec<Dim>::Zero(); // e_i, from the first body towards the second
-  Vec<Dim> point = Vec<Dim>::Zero();  // halfway through the overlap
+  double overlap = 0.0;                // > 0 in contact
+  Vec<Dim> normal = Vec<Dim>::Zero();  // e_i, from the first body towards the second
+  Vec<Dim> point = Vec<Dim>::Zero();   // halfway through the overlap
   // From each centre to its own surface point of the contact: the lever of
   // the contact force, as BALL takes it (Sum M = F_s R for a disc).
   Vec<Dim> arm_first = Vec<Dim>::Zero();
   Vec<Dim> arm_second = Vec<Dim>::Zero();  // 0 for a wall
-  double effective_radius = 0.0;      // R* for the Hertz laws
+  double effective_radius = 0.0;           // R* for the Hertz laws
 };
 
 // Discs and spheres: the line of centres (eqs. 8-10). Their moments keep
@@ -55,12 +55,12 @@ struct RoundShape {
   // From the separation d of the centres (first to second) and its square.
   template <int Dim>
   [[gnu::always_inline]] static ContactGeometry<Dim> geometry(const Vec<Dim>& d, double distance2, double rx, double ry,
-                                       const Vec<Dim>& first_centre) {
+                                                              const Vec<Dim>& first_centre) {
     ContactGeometry<Dim> g;
     const double distance = std::sqrt(distance2);
     const bool apart = !(distance > 0.0);  // centres on each other: no normal, no contact
     const double inverse = 1.0 / distance;
-    g.overlap = apart ? -1.0 : rx + ry - distance;  // eq. 8
+    g.overlap = apart ? -1.0 : rx + ry - distance;                                              // eq. 8
     for (int k = 0; k < Dim; ++k) g.normal[k] = apart ? (k == 0 ? 1.0 : 0.0) : d[k] * inverse;  // eq. 9
     g.point = first_centre + (rx - 0.5 * g.overlap) * g.normal;
     g.arm_first = rx * g.normal;
@@ -190,8 +190,8 @@ struct EllipsoidShape {
       return g;
     }
     const Vec3 cy = cx + d;  // the nearest image of y
-    const EllipsoidContact c = ellipsoid_contact(fx, cx, fy, cy, search.valid ? search.first : 0.0,
-                                                 search.valid ? search.second : 0.0);
+    const EllipsoidContact c =
+        ellipsoid_contact(fx, cx, fy, cy, search.valid ? search.first : 0.0, search.valid ? search.second : 0.0);
     search = {c.multiplier_i, c.multiplier_j, true};
     ContactGeometry<3> g;
     g.overlap = c.overlap;

@@ -19,7 +19,7 @@ struct ContactHistory {
   double normal_force = 0.0;                  // F_n, for laws that keep it (kNormalHistory)
   bool touching = false;
   bool sliding = false;
-  MindlinRow<Dim> mindlin;                    // Hertz-Mindlin only (kMindlin)
+  MindlinRow<Dim> mindlin;  // Hertz-Mindlin only (kMindlin)
 };
 
 template <int Dim>
@@ -40,9 +40,9 @@ struct PairProperties {
 // The forces of one contact, compressive normal positive (Cundall & Strack Fig. 3).
 template <int Dim>
 struct ContactForces {
-  double normal = 0.0;                          // F_n, the spring
-  double normal_damping = 0.0;                  // D_n (eq. 26)
-  ShearForce<Dim> shear = zero_shear<Dim>();    // F_s, the spring
+  double normal = 0.0;                                // F_n, the spring
+  double normal_damping = 0.0;                        // D_n (eq. 26)
+  ShearForce<Dim> shear = zero_shear<Dim>();          // F_s, the spring
   ShearForce<Dim> shear_damping = zero_shear<Dim>();  // D_s (eq. 27)
 };
 

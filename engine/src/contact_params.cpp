@@ -43,16 +43,16 @@ ContactParamTable::ContactParamTable(const std::vector<MaterialDef>& materials,
     if (model.law == ContactLaw::kLinearRestitution && model.restitution < 1.0) {
       // Miyata eq. 17: c_n = 2 ln(1/e) sqrt(k_n m* / (pi^2 + ln^2(1/e))).
       const double log_inverse = std::log(1.0 / model.restitution);
-      p.restitution_viscosity = 2.0 * log_inverse *
-                                std::sqrt(p.normal_stiffness / (std::numbers::pi * std::numbers::pi +
-                                                                log_inverse * log_inverse));
+      p.restitution_viscosity =
+          2.0 * log_inverse *
+          std::sqrt(p.normal_stiffness / (std::numbers::pi * std::numbers::pi + log_inverse * log_inverse));
     }
     const double c = compliance(materials[a]) + compliance(materials[b]);
     const double g = shear_compliance(materials[a]) + shear_compliance(materials[b]);
     p.contact_modulus = c > 0.0 ? 1.0 / c : 0.0;
     p.shear_modulus = g > 0.0 ? 1.0 / g : 0.0;
-    p.damping_ratio = model.hertz.restitution ? damping_ratio_from_restitution(*model.hertz.restitution)
-                                              : model.hertz.damping_ratio;
+    p.damping_ratio =
+        model.hertz.restitution ? damping_ratio_from_restitution(*model.hertz.restitution) : model.hertz.damping_ratio;
     p.tangential_damping_ratio = model.hertz.tangential ? p.damping_ratio : 0.0;
     p.rolling_friction = model.rolling.friction;
     p.rolling_damping_ratio = model.rolling.damping_ratio;

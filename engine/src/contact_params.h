@@ -11,8 +11,8 @@ namespace dem {
 struct ContactParams {
   bool defined = false;
   ContactLaw law = ContactLaw::kLinear;
-  double friction = 0.0;          // tan(phi_mu) of the pair (eq. 19)
-  double cohesion = 0.0;          // c of the pair (eq. 19)
+  double friction = 0.0;  // tan(phi_mu) of the pair (eq. 19)
+  double cohesion = 0.0;  // c of the pair (eq. 19)
   // Linear laws
   double normal_stiffness = 0.0;  // k_n
   double shear_stiffness = 0.0;   // k_s
@@ -21,9 +21,9 @@ struct ContactParams {
   // Miyata eq. 17 without the effective mass: c_n = restitution_viscosity sqrt(m*).
   double restitution_viscosity = 0.0;
   // Hertz laws
-  double contact_modulus = 0.0;   // E* (Randall 3.6, 4.7)
-  double shear_modulus = 0.0;     // G* (Randall 4.8-4.10)
-  double damping_ratio = 0.0;     // beta, fraction of critical (Randall 4.13)
+  double contact_modulus = 0.0;  // E* (Randall 3.6, 4.7)
+  double shear_modulus = 0.0;    // G* (Randall 4.8-4.10)
+  double damping_ratio = 0.0;    // beta, fraction of critical (Randall 4.13)
   // The same fraction on the tangential stiffness (Randall 4.19), 0 when
   // the model has no tangential dashpot.
   double tangential_damping_ratio = 0.0;

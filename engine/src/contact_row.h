@@ -70,8 +70,8 @@ template <typename Shape, int Dim>
 Vec<Dim> contact_velocity(const Particles<Dim>& p, Slot x, const Vec<Dim>& second_velocity,
                           const Spin<Dim>& second_spin, double second_radius, const ContactGeometry<Dim>& g) {
   if constexpr (Shape::round) {
-    return relative_contact_velocity(p.velocity[x], p.angular_velocity[x], p.radius[x], second_velocity,
-                                     second_spin, second_radius, g.normal);
+    return relative_contact_velocity(p.velocity[x], p.angular_velocity[x], p.radius[x], second_velocity, second_spin,
+                                     second_radius, g.normal);
   } else {
     return (p.velocity[x] + cross(p.angular_velocity[x], g.arm_first)) -
            (second_velocity + cross(second_spin, g.arm_second));
@@ -112,8 +112,7 @@ RowResult<Dim> pair_row(const PassInputs<Dim>& in, RowsOf<kPass, Dim> rows, std:
   ContactHistory<Dim> h = load_history<Law>(rows, r);
   if (g.overlap <= 0.0 && (!h.touching || kPass == Pass::kEvaluate)) return out;  // eq. 8: apart
   if (kPass == Pass::kEvaluate && !h.touching) return out;
-  const Vec<Dim> relative =
-      contact_velocity<Shape>(p, x, p.velocity[y], p.angular_velocity[y], p.radius[y], g);
+  const Vec<Dim> relative = contact_velocity<Shape>(p, x, p.velocity[y], p.angular_velocity[y], p.radius[y], g);
   if constexpr (kPass == Pass::kAdvance) {
     if constexpr (kEnergy) {
       if (h.touching) settle_contact_work(rows.dashpot[r], relative, in.dt, energy);

@@ -55,9 +55,9 @@ struct ContactSearch {
 struct ContactColumns {
   bool normal_force = false;  // laws whose normal force is history (BALL's eq. 18) or whose dN matters (Mindlin)
   bool mindlin = false;
-  bool search = false;        // shaped particles
-  bool dashpot = false;       // energy budget
-  bool rolling = false;       // rolling resistance (rolling_resistance.h)
+  bool search = false;   // shaped particles
+  bool dashpot = false;  // energy budget
+  bool rolling = false;  // rolling resistance (rolling_resistance.h)
 };
 
 template <int Dim>
@@ -72,7 +72,7 @@ struct ContactRows {
   std::vector<std::uint8_t> flags;
   std::vector<ShearForce<Dim>> shear;  // F_s: signed along t_i (2D) or a tangent-plane vector (3D)
   // Optional, by law, shape and energy budget.
-  std::vector<double> normal_force;    // F_n as history, compressive positive
+  std::vector<double> normal_force;  // F_n as history, compressive positive
   std::vector<MindlinRow<Dim>> mindlin;
   std::vector<ContactSearch> search;
   std::vector<DashpotWork<Dim>> dashpot;

@@ -1,11 +1,10 @@
 #include "ellipsoid.h"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
-
-#include <Eigen/Eigenvalues>
 
 namespace dem {
 

@@ -44,11 +44,11 @@ struct EllipsoidFrame {
 EllipsoidFrame ellipsoid_frame(const Vec3& axes, const Quaternion& orientation);
 
 struct EllipsoidContact {
-  double overlap;            // > 0 in contact
-  Vec3 normal;               // from the first body towards the second
-  Vec3 point;                // halfway between the two surface points
-  double effective_radius;   // R_e (see ellipsoid.cpp)
-  Vec3 first_point, second_point;  // P_i on i (deepest in j's potential), P_j on j
+  double overlap;                     // > 0 in contact
+  Vec3 normal;                        // from the first body towards the second
+  Vec3 point;                         // halfway between the two surface points
+  double effective_radius;            // R_e (see ellipsoid.cpp)
+  Vec3 first_point, second_point;     // P_i on i (deepest in j's potential), P_j on j
   double multiplier_i, multiplier_j;  // where the searches ended: pass them back next cycle
 };
 
@@ -71,8 +71,7 @@ struct EllipsoidFaceContact {
 };
 EllipsoidFaceContact ellipsoid_plane_contact(const EllipsoidFrame& body, const Vec3& centre, const Vec3& on_plane,
                                              const Vec3& towards);
-EllipsoidFaceContact ellipsoid_plane_contact(const PlacedEllipsoid& body, const Vec3& on_plane,
-                                             const Vec3& towards);
+EllipsoidFaceContact ellipsoid_plane_contact(const PlacedEllipsoid& body, const Vec3& on_plane, const Vec3& towards);
 
 // Principal curvatures (1/m) of an ellipsoid's surface at a point on it.
 Eigen::Vector2d ellipsoid_principal_curvatures(const PlacedEllipsoid& body, const Vec3& point);

@@ -37,17 +37,17 @@ DEM_INLINE double dashpot_coefficient(const PairProperties& pair, double damping
 // dashpot on a tangential stiffness (Randall 4.19), off unless asked for.
 template <int Dim>
 DEM_INLINE ContactForces<Dim> hertz_forces(const ContactHistory<Dim>& h, const ContactKinematics<Dim>& k,
-                                const PairProperties& pair, const ContactParams& p, const HertzContact& c,
-                                double tangential_stiffness) {
+                                           const PairProperties& pair, const ContactParams& p, const HertzContact& c,
+                                           double tangential_stiffness) {
   ContactForces<Dim> f;
   f.normal = c.normal_force;
   f.normal_damping =
       dashpot_coefficient(pair, p.damping_ratio, 2.0 * p.contact_modulus * c.contact_radius) * k.normal_velocity;
   f.shear = h.shear;
   // No tangential dashpot while sliding: friction alone damps.
-  f.shear_damping = choose(h.sliding, zero_shear<Dim>(),
-                           ShearForce<Dim>(dashpot_coefficient(pair, p.tangential_damping_ratio, tangential_stiffness) *
-                                           k.shear_velocity));
+  f.shear_damping = choose(
+      h.sliding, zero_shear<Dim>(),
+      ShearForce<Dim>(dashpot_coefficient(pair, p.tangential_damping_ratio, tangential_stiffness) * k.shear_velocity));
   return f;
 }
 
@@ -57,8 +57,8 @@ struct HertzMindlinLaw {
   static constexpr bool kBatchable = false;  // the loading history branches per contact
 
   template <int Dim>
-  [[gnu::always_inline]] static void advance(ContactHistory<Dim>& h, const ContactKinematics<Dim>& k, const PairProperties& pair,
-                      const ContactParams& p, double dt) {
+  [[gnu::always_inline]] static void advance(ContactHistory<Dim>& h, const ContactKinematics<Dim>& k,
+                                             const PairProperties& pair, const ContactParams& p, double dt) {
     // A fresh contact: its normal force and contact area are set before the
     // tangential increment (Randall 3.4: "update the normal force and contact
     // area radius followed by calculating dT using the new values"), so the
@@ -123,7 +123,7 @@ struct HertzMindlinLaw {
 
   template <int Dim>
   [[gnu::always_inline]] static ContactForces<Dim> forces(const ContactHistory<Dim>& h, const ContactKinematics<Dim>& k,
-                                   const PairProperties& pair, const ContactParams& p) {
+                                                          const PairProperties& pair, const ContactParams& p) {
     const HertzContact c = hertz_contact(k.overlap, pair, p);
     return hertz_forces(h, k, pair, p, c, 8.0 * p.shear_modulus * c.contact_radius * h.mindlin.theta);
   }
@@ -135,8 +135,8 @@ struct HertzLinearTangentialLaw {
   static constexpr bool kBatchable = true;  // branch-free enough for contact_batch.h
 
   template <int Dim>
-  [[gnu::always_inline]] static void advance(ContactHistory<Dim>& h, const ContactKinematics<Dim>& k, const PairProperties& pair,
-                      const ContactParams& p, double dt) {
+  [[gnu::always_inline]] static void advance(ContactHistory<Dim>& h, const ContactKinematics<Dim>& k,
+                                             const PairProperties& pair, const ContactParams& p, double dt) {
     const HertzContact c = hertz_contact(k.overlap, pair, p);
     const double stiffness = 8.0 * p.shear_modulus * c.contact_radius;  // Miyata eq. 31
     h.shear = choose(h.touching, h.shear, zero_shear<Dim>()) + stiffness * k.shear_velocity * dt;
@@ -146,7 +146,7 @@ struct HertzLinearTangentialLaw {
 
   template <int Dim>
   [[gnu::always_inline]] static ContactForces<Dim> forces(const ContactHistory<Dim>& h, const ContactKinematics<Dim>& k,
-                                   const PairProperties& pair, const ContactParams& p) {
+                                                          const PairProperties& pair, const ContactParams& p) {
     const HertzContact c = hertz_contact(k.overlap, pair, p);
     return hertz_forces(h, k, pair, p, c, 8.0 * p.shear_modulus * c.contact_radius);
   }

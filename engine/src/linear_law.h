@@ -16,8 +16,8 @@ struct LinearLaw {
   static constexpr bool kBatchable = true;  // branch-free enough for contact_batch.h
 
   template <int Dim>
-  [[gnu::always_inline]] static void advance(ContactHistory<Dim>& h, const ContactKinematics<Dim>& k, const PairProperties&,
-                      const ContactParams& p, double dt) {
+  [[gnu::always_inline]] static void advance(ContactHistory<Dim>& h, const ContactKinematics<Dim>& k,
+                                             const PairProperties&, const ContactParams& p, double dt) {
     // A contact that forms during the step starts from its overlap (the
     // integral of eq. 16 since touching) and no shear history.
     h.normal_force = choose(h.touching, h.normal_force + p.normal_stiffness * k.normal_velocity * dt,  // eqs. 16, 18
@@ -31,7 +31,7 @@ struct LinearLaw {
 
   template <int Dim>
   [[gnu::always_inline]] static ContactForces<Dim> forces(const ContactHistory<Dim>& h, const ContactKinematics<Dim>& k,
-                                   const PairProperties&, const ContactParams& p) {
+                                                          const PairProperties&, const ContactParams& p) {
     // Dashpots (eqs. 26-28); no shear dashpot while sliding: friction alone damps.
     return {h.normal_force, p.normal_viscosity * k.normal_velocity, h.shear,
             choose(h.sliding, zero_shear<Dim>(), ShearForce<Dim>(p.shear_viscosity * k.shear_velocity))};

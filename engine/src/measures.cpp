@@ -36,8 +36,8 @@ AssemblyMeasures measure_assembly(const WorldState<Dim>& s) {
   AssemblyMeasures m;
   double max_resultant = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    m.kinetic_energy += 0.5 * p.mass[i] * p.velocity[i].squaredNorm() +
-                        0.5 * p.spin_energy_product(i, p.angular_velocity[i]);
+    m.kinetic_energy +=
+        0.5 * p.mass[i] * p.velocity[i].squaredNorm() + 0.5 * p.spin_energy_product(i, p.angular_velocity[i]);
     max_resultant = std::max(max_resultant, (p.force[i] + p.mass[i] * s.gravity).norm());
   }
   Strain strain;
@@ -58,8 +58,8 @@ AssemblyMeasures measure_assembly(const WorldState<Dim>& s) {
       effective_radius = p.radius[x] * p.radius[y] / (p.radius[x] + p.radius[y]);
       held = strain_energy(s.pair_law, c, s.params(p.material[x], p.material[y]), effective_radius);
     } else {
-      held = strain_energy(s.wall_law, c, s.params(p.material[x], s.walls.def[c.second_wall].material),
-                           effective_radius);
+      held =
+          strain_energy(s.wall_law, c, s.params(p.material[x], s.walls.def[c.second_wall].material), effective_radius);
     }
     strain.normal += held.normal;
     strain.tangential += held.tangential;

@@ -72,8 +72,7 @@ double mindlin_step(MindlinHistory& h, double& T, double N, double dN, double a,
   }
   // (4.15): the sign of the mu dN term is negative for unloading only.
   const double unloading_flag = branch == Branch::kUnloading ? -1.0 : 1.0;
-  const double increment =
-      cdf * (theta * (stiffness * ds * cdf - mu * dN * unloading_flag) + mu * dN * unloading_flag);
+  const double increment = cdf * (theta * (stiffness * ds * cdf - mu * dN * unloading_flag) + mu * dN * unloading_flag);
   T += increment;
 
   // DD (4.17-4.18): how far the contact lags behind its constant-N curve.

@@ -12,7 +12,6 @@
 
 namespace dem {
 
-
 // Advances the tangential force T over one step in which the normal force
 // went to N (by dN), the contact radius is a and the tangential
 // displacement increment is ds. Returns theta (the stiffness factor of the

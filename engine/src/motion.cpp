@@ -28,7 +28,6 @@ namespace {
 // drift passes 1e-12, not every step.
 void turn(double& angle, double omega, double dt) { angle += omega * dt; }
 
-
 DEM_INLINE void turn(Quaternion& q, const Vec3& omega, double dt) {
   const double hx = 0.5 * dt * omega.x(), hy = 0.5 * dt * omega.y(), hz = 0.5 * dt * omega.z();
   const double h2 = hx * hx + hy * hy + hz * hz;
@@ -103,8 +102,17 @@ template <int Dim>
 MotionConstants<Dim> motion_constants(const MotionInputs<Dim>& in) {
   const DampingDef& d = in.damping;
   const double dt = in.dt;
-  MotionConstants<Dim> c{in.periodic, in.gravity, dt, d.global_alpha, d.global_alpha_rotation.value_or(d.global_alpha),
-                         0.0, 0.0, 0.0, 0.0, d.local_alpha, d.local_alpha_rotation.value_or(d.local_alpha),
+  MotionConstants<Dim> c{in.periodic,
+                         in.gravity,
+                         dt,
+                         d.global_alpha,
+                         d.global_alpha_rotation.value_or(d.global_alpha),
+                         0.0,
+                         0.0,
+                         0.0,
+                         0.0,
+                         d.local_alpha,
+                         d.local_alpha_rotation.value_or(d.local_alpha),
                          in.periodic.any()};
   c.keep = 1.0 - 0.5 * c.alpha * dt;
   c.scale = 1.0 / (1.0 + 0.5 * c.alpha * dt);
@@ -180,8 +188,8 @@ MotionStep move_particles(Particles<Dim>& p, const MotionInputs<Dim>& in) {
   const auto partials = for_blocks<MotionStep>(
       static_cast<std::int64_t>(p.size()), in.threads, [&](std::int64_t begin, std::int64_t end, MotionStep& step) {
         if constexpr (!kLocal && !kTensor && !kEnergy) {
-          move_plain_block(p, c.gravity, c.cell, c.dt, c.keep, c.scale, c.keep_rotation, c.scale_rotation, begin,
-                           end, step);
+          move_plain_block(p, c.gravity, c.cell, c.dt, c.keep, c.scale, c.keep_rotation, c.scale_rotation, begin, end,
+                           step);
         } else {
           move_block<Dim, kLocal, kTensor, kEnergy>(p, c, begin, end, step);
         }
@@ -219,7 +227,7 @@ MotionStep integrate_motion(Particles<Dim>& p, const MotionInputs<Dim>& in) {
   const bool tensor = Dim == 3 && !p.principal_inertia.empty();
   MotionStep step;
   auto run = [&]<bool kLocal, bool kTensor, bool kEnergy>() {
-    step = move_particles<Dim, kLocal, kTensor && Dim == 3, kEnergy>(p, in);
+    step = move_particles < Dim, kLocal, kTensor && Dim == 3, kEnergy > (p, in);
   };
   auto with_energy = [&]<bool kLocal, bool kTensor>() {
     if (in.energy_budget) {

@@ -27,9 +27,9 @@ struct MotionInputs {
   const DampingDef& damping;
   double dt;
   int threads;
-  bool energy_budget;    // book gravity's work and the damping's losses
-  bool keep_force;       // remember each |sum F| for the next step's check
-  bool check_step;       // Randall's particle-wise check against the kept |sum F|
+  bool energy_budget;  // book gravity's work and the damping's losses
+  bool keep_force;     // remember each |sum F| for the next step's check
+  bool check_step;     // Randall's particle-wise check against the kept |sum F|
 };
 
 // Time-centred central differences (Cundall & Strack eqs. 35-36, then

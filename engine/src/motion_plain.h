@@ -37,8 +37,8 @@ void large_half_angle(double h2, double& cosine, double& sine_over_h);
 
 template <int Dim>
 void move_plain_block(Particles<Dim>& p, const Vec<Dim>& gravity, const Periodic<Dim>& cell, double dt, double keep,
-                      double scale, double keep_rotation, double scale_rotation, std::int64_t begin,
-                      std::int64_t end, MotionStep& step) {
+                      double scale, double keep_rotation, double scale_rotation, std::int64_t begin, std::int64_t end,
+                      MotionStep& step) {
   constexpr int D = Dim;
   constexpr int S = Dim == 3 ? 3 : 1;  // components of a spin
   double* __restrict x = p.position.data()->data();

@@ -57,8 +57,8 @@ std::optional<std::string> deepest_overlap(const BasicWorld<Dim>& world, double 
   const std::string other = deepest->second_particle != kInvalidId
                                 ? "particle " + std::to_string(deepest->second_particle)
                                 : "wall " + world.wall(deepest->second_wall).name;
-  return "the contact of particle " + std::to_string(deepest->first) + " and " + other + " overlaps " +
-         number(worst) + " of the smaller radius (the limit is " + number(limit) + ")";
+  return "the contact of particle " + std::to_string(deepest->first) + " and " + other + " overlaps " + number(worst) +
+         " of the smaller radius (the limit is " + number(limit) + ")";
 }
 
 template ParticleScan scan_particles(const BasicWorld<2>&);
@@ -99,8 +99,9 @@ StepHealth HealthMonitorT<Dim>::assess(const BasicWorld<Dim>& world) {
   if (!bad) bad = particles.non_finite;
   if (bad) {
     health.problem = HealthProblem::kNonFinite;
-    health.message = at + *bad + ": the simulation blew up; reduce the time step (time_step.fraction) or check "
-                                 "the stiffnesses and masses";
+    health.message = at + *bad +
+                     ": the simulation blew up; reduce the time step (time_step.fraction) or check "
+                     "the stiffnesses and masses";
     return health;
   }
   const EnergyBudget& e = measures.energy;
@@ -113,7 +114,8 @@ StepHealth HealthMonitorT<Dim>::assess(const BasicWorld<Dim>& world) {
     referenced_ = true;
   }
   const double created = referenced_ ? health::created_energy(e) - created_at_start_ : 0.0;
-  const double in_play = std::abs(e.initial_kinetic) + std::abs(e.gravity_work) + std::abs(e.wall_work) + held_at_start_;
+  const double in_play =
+      std::abs(e.initial_kinetic) + std::abs(e.gravity_work) + std::abs(e.wall_work) + held_at_start_;
   most_in_play_ = std::max(most_in_play_, in_play);
   const bool beyond = referenced_ && created > round_off_ && created > limits_.max_energy_growth * most_in_play_;
   if (!beyond) suspect_created_ = 0.0;
@@ -123,7 +125,8 @@ StepHealth HealthMonitorT<Dim>::assess(const BasicWorld<Dim>& world) {
   }
   if (beyond && (health.cycle >= suspect_cycle_ + 2 || created >= 2.0 * suspect_created_)) {
     health.problem = HealthProblem::kEnergyGrowth;
-    health.message = at + health::number(created) + " J of energy appeared without work done (the most energy in play was " +
+    health.message = at + health::number(created) +
+                     " J of energy appeared without work done (the most energy in play was " +
                      health::number(most_in_play_) + " J; the limit is " + health::number(limits_.max_energy_growth) +
                      " times that): the integration is unstable; reduce the time step (time_step.fraction)";
     return health;
@@ -147,8 +150,9 @@ StepHealth HealthMonitorT<Dim>::assess(const BasicWorld<Dim>& world) {
   }
   if (const auto overlap = health::deepest_overlap(world, measures.deepest_overlap, limits_.max_overlap_fraction)) {
     health.problem = HealthProblem::kOverlap;
-    health.message = at + *overlap + ": the particles pass through each other; reduce the time step or the "
-                                     "loading rate, or stiffen the contacts";
+    health.message = at + *overlap +
+                     ": the particles pass through each other; reduce the time step or the "
+                     "loading rate, or stiffen the contacts";
     return health;
   }
   return health;

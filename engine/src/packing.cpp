@@ -191,9 +191,8 @@ std::vector<ParticleDefT<Dim>> generate_random_packing(const RandomPackingDefT<D
       }
       if (!done) {
         throw DefinitionError("random packing: no free place for particle " + std::to_string(k + 1) + " of " +
-                              std::to_string(size.count) + " with radius " + std::to_string(size.radius) +
-                              " after " + std::to_string(def.max_attempts) +
-                              " attempts; enlarge the box or reduce the count");
+                              std::to_string(size.count) + " with radius " + std::to_string(size.radius) + " after " +
+                              std::to_string(def.max_attempts) + " attempts; enlarge the box or reduce the count");
       }
     }
   }

@@ -26,24 +26,24 @@ using Slot = std::int32_t;  // index into the particle arrays
 template <int Dim>
 struct Particles {
   // Read by every contact of the force pass.
-  std::vector<Vec<Dim>> position;          // x_i at cycle N
-  std::vector<Vec<Dim>> velocity;          // x_dot_i at N - 1/2 (time-centred, eq. 22)
+  std::vector<Vec<Dim>> position;           // x_i at cycle N
+  std::vector<Vec<Dim>> velocity;           // x_dot_i at N - 1/2 (time-centred, eq. 22)
   std::vector<Spin<Dim>> angular_velocity;  // at N - 1/2 (eq. 23)
-  std::vector<double> radius;              // bounding radius for shaped particles
+  std::vector<double> radius;               // bounding radius for shaped particles
   std::vector<double> mass;
   std::vector<MaterialId> material;
   // Written by the force pass (eqs. 20-21): the sums of the contact forces and moments.
   std::vector<Vec<Dim>> force;
   std::vector<Spin<Dim>> moment;
   // Read and written by the law of motion only.
-  std::vector<double> inertia;             // about the centre; an ellipsoid's smallest principal moment
-  std::vector<Orientation<Dim>> rotation;  // accumulated angle (2D) or unit quaternion (3D) (eq. 23a)
-  std::vector<double> previous_force;      // |sum F| of the last cycle (Randall 4.38)
+  std::vector<double> inertia;               // about the centre; an ellipsoid's smallest principal moment
+  std::vector<Orientation<Dim>> rotation;    // accumulated angle (2D) or unit quaternion (3D) (eq. 23a)
+  std::vector<double> previous_force;        // |sum F| of the last cycle (Randall 4.38)
   std::vector<Vec<Dim>> reference_position;  // where the particle was at the last contact-table rebuild
   // Cold.
-  std::vector<ShapeDefT<Dim>> shape;       // superquadric or ellipsoid worlds only (empty otherwise)
-  std::vector<Vec3> principal_inertia;     // ellipsoid worlds only: about the body's own axes
-  std::vector<ParticleId> id;              // the particle in each slot
+  std::vector<ShapeDefT<Dim>> shape;    // superquadric or ellipsoid worlds only (empty otherwise)
+  std::vector<Vec3> principal_inertia;  // ellipsoid worlds only: about the body's own axes
+  std::vector<ParticleId> id;           // the particle in each slot
 
   // The slot of each particle id (indexed by id, not by slot).
   std::vector<Slot> slot;

@@ -59,8 +59,8 @@ bool conditions_hold(const BasicWorld<Dim>& world, const StopConditions& until) 
 }
 
 bool has_condition(const StopConditions& until) {
-  return until.kinetic_energy_below || until.out_of_balance_below || until.servo_tolerance ||
-         until.wall_stress_above || until.wall_settlement_above || until.deviator_strain_above;
+  return until.kinetic_energy_below || until.out_of_balance_below || until.servo_tolerance || until.wall_stress_above ||
+         until.wall_settlement_above || until.deviator_strain_above;
 }
 
 // Miyata et al. (2002) 3.1, eq. 60: remove the particles whose centres lie
@@ -90,7 +90,8 @@ void place_on_sample(BasicWorld<Dim>& world, const PlaceWallDef& place) {
   }
   const auto p = world.particles();
   double reach = -std::numeric_limits<double>::infinity();
-  for (ParticleId i = 0; i < world.particle_count(); ++i) reach = std::max(reach, -p.position[i].dot(normal) + p.radius[i]);
+  for (ParticleId i = 0; i < world.particle_count(); ++i)
+    reach = std::max(reach, -p.position[i].dot(normal) + p.radius[i]);
   const double shift = -wall.point.dot(normal) - (reach + place.clearance);
   world.place_wall(place.wall, Vec<Dim>(wall.point + shift * normal));
 }

@@ -38,7 +38,6 @@ std::vector<RollingRow> touching_rows(const WorldState<Dim>& s) {
 double rolling_part(double w, const Vec3&) { return w; }
 Vec3 rolling_part(const Vec3& w, const Vec3& e) { return w - w.dot(e) * e; }
 
-
 template <int Dim>
 Spin<Dim> scaled_to(const Spin<Dim>& m, double limit) {
   const double size = magnitude(m);
@@ -81,8 +80,8 @@ void apply_rolling_resistance(WorldState<Dim>& s) {
     const bool hertz = law == ContactLaw::kHertzMindlin || law == ContactLaw::kHertzLinearTangential;
     const double normal_stiffness =
         hertz ? 2.0 * params.contact_modulus * std::sqrt(rolling_radius * c.overlap) : params.normal_stiffness;
-    const double stiffness = 2.25 * normal_stiffness * params.rolling_friction * params.rolling_friction *
-                             rolling_radius * rolling_radius;
+    const double stiffness =
+        2.25 * normal_stiffness * params.rolling_friction * params.rolling_friction * rolling_radius * rolling_radius;
     const double inverse_inertia =
         1.0 / (p.inertia[x] + p.mass[x] * rx * rx) + (c.wall ? 0.0 : 1.0 / (p.inertia[y] + p.mass[y] * ry * ry));
     const Spin<Dim> other_spin = c.wall ? s.walls.last_angular_velocity[c.second] : p.angular_velocity[y];

@@ -18,10 +18,8 @@ class Hasher {
     }
   }
   template <typename T>
-    requires std::is_arithmetic_v<T>
-  void add(T value) {
-    add_bytes(&value, sizeof(T));
-  }
+  requires std::is_arithmetic_v<T>
+  void add(T value) { add_bytes(&value, sizeof(T)); }
   template <typename Derived>
   void add(const Eigen::MatrixBase<Derived>& v) {
     for (Eigen::Index i = 0; i < v.size(); ++i) add(static_cast<double>(v[i]));

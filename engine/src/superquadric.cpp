@@ -208,8 +208,8 @@ Curvature superquadric_curvature(const Superquadric& s, const Vec2& p) {
   return {radius, Vec2(fx, fy) / gradient};
 }
 
-SuperquadricContact superquadric_contact(const PlacedSuperquadric& i, const PlacedSuperquadric& j,
-                                         double alpha_i_hint, double alpha_j_hint, bool use_hints) {
+SuperquadricContact superquadric_contact(const PlacedSuperquadric& i, const PlacedSuperquadric& j, double alpha_i_hint,
+                                         double alpha_j_hint, bool use_hints) {
   SuperquadricContact c;
   const Turn turn_i(i.angle), turn_j(j.angle);
   const RadialAngle on_i = minimise_potential(i, turn_i, j, turn_j, alpha_i_hint, use_hints);
@@ -268,8 +268,8 @@ SuperquadricMass superquadric_mass(const Superquadric& s) {
   const double n = s.n;
   const double g1 = std::tgamma(1.0 / n), g3 = std::tgamma(3.0 / n);
   const double area = 4.0 * s.a * s.b / (n * n) * g1 * g1 / std::tgamma(2.0 / n + 1.0);
-  const double polar = 4.0 * (s.a * s.a * s.a * s.b + s.a * s.b * s.b * s.b) / (n * n) * g1 * g3 /
-                       std::tgamma(4.0 / n + 1.0);
+  const double polar =
+      4.0 * (s.a * s.a * s.a * s.b + s.a * s.b * s.b * s.b) / (n * n) * g1 * g3 / std::tgamma(4.0 / n + 1.0);
   return {area, polar};
 }
 

@@ -52,15 +52,15 @@ Curvature superquadric_curvature(const Superquadric& s, const Vec2& local);
 // each body's frame) is returned, and may be passed back in (alpha_i,
 // alpha_j) to start the next search near them.
 struct SuperquadricContact {
-  double overlap;       // delta_n = rho_i + rho_j - d; > 0 in contact
-  Vec2 normal;          // from C_i towards C_j
-  Vec2 point;           // halfway through the overlap on the line of centres of curvature
+  double overlap;  // delta_n = rho_i + rho_j - d; > 0 in contact
+  Vec2 normal;     // from C_i towards C_j
+  Vec2 point;      // halfway through the overlap on the line of centres of curvature
   double alpha_i, alpha_j;
   double radius_i, radius_j;       // the radii of curvature rho_i, rho_j
   Vec2 first_point, second_point;  // P_i and P_j in the plane
 };
-SuperquadricContact superquadric_contact(const PlacedSuperquadric& i, const PlacedSuperquadric& j,
-                                         double alpha_i_hint, double alpha_j_hint, bool use_hints);
+SuperquadricContact superquadric_contact(const PlacedSuperquadric& i, const PlacedSuperquadric& j, double alpha_i_hint,
+                                         double alpha_j_hint, bool use_hints);
 
 // The point of a placed superquadric deepest past a line whose unit normal
 // `outward` points away from the body's side: its support point in the

@@ -14,11 +14,11 @@ namespace dem {
 // Relative velocity of the first body's surface point with respect to the
 // second's (Cundall & Strack eq. 11); e points from the first to the second.
 DEM_INLINE Vec2 relative_contact_velocity(const Vec2& v1, double w1, double r1, const Vec2& v2, double w2, double r2,
-                                      const Vec2& e) {
+                                          const Vec2& e) {
   return (v1 - v2) - (w1 * r1 + w2 * r2) * clockwise_perpendicular(e);
 }
 DEM_INLINE Vec3 relative_contact_velocity(const Vec3& v1, const Vec3& w1, double r1, const Vec3& v2, const Vec3& w2,
-                                      double r2, const Vec3& e) {
+                                          double r2, const Vec3& e) {
   return (v1 + w1.cross(r1 * e)) - (v2 - w2.cross(r2 * e));
 }
 
@@ -90,7 +90,9 @@ DEM_INLINE void carry_shear(Vec3& shear, const Vec3& e) {
 DEM_INLINE double shear_lever(double total_shear, const Vec2&) { return total_shear; }
 DEM_INLINE Vec3 shear_lever(const Vec3& total_shear, const Vec3& e) { return e.cross(-total_shear); }
 DEM_INLINE double shear_moment(double total_shear, double r, const Vec2& e) { return r * shear_lever(total_shear, e); }
-DEM_INLINE Vec3 shear_moment(const Vec3& total_shear, double r, const Vec3& e) { return r * shear_lever(total_shear, e); }
+DEM_INLINE Vec3 shear_moment(const Vec3& total_shear, double r, const Vec3& e) {
+  return r * shear_lever(total_shear, e);
+}
 
 // The signed F_s of Fig. 3 in 2D, the magnitude in 3D, for reports.
 inline double reported_shear(double shear) { return shear; }

@@ -1,9 +1,9 @@
 #include "walls.h"
 
-#include "box_control.h"
-
 #include <algorithm>
 #include <cmath>
+
+#include "box_control.h"
 
 namespace dem {
 
@@ -60,9 +60,7 @@ WallPoint<3> closest_point(const WallDefT<3>& wall, const Vec3& x) {
 }
 
 Eccentricity<2> wall_centre(const WallDefT<2>& wall) { return 0.5 * (wall.h1 + wall.h2); }
-Eccentricity<3> wall_centre(const WallDefT<3>& wall) {
-  return {0.5 * (wall.h1 + wall.h2), 0.5 * (wall.k1 + wall.k2)};
-}
+Eccentricity<3> wall_centre(const WallDefT<3>& wall) { return {0.5 * (wall.h1 + wall.h2), 0.5 * (wall.k1 + wall.k2)}; }
 Eccentricity<2> wall_half_size(const WallDefT<2>& wall) { return 0.5 * (wall.h2 - wall.h1); }
 Eccentricity<3> wall_half_size(const WallDefT<3>& wall) {
   return {0.5 * (wall.h2 - wall.h1), 0.5 * (wall.k2 - wall.k1)};
@@ -110,8 +108,8 @@ namespace {
 template <int Dim>
 Vec<Dim> servo_velocity(const WallDefT<Dim>& wall, double measured_normal_force) {
   const ServoDef& servo = *wall.motion.servo;
-  const double speed = std::clamp(servo.gain * (servo.target_force - measured_normal_force),
-                                  -servo.max_speed, servo.max_speed);
+  const double speed =
+      std::clamp(servo.gain * (servo.target_force - measured_normal_force), -servo.max_speed, servo.max_speed);
   return speed * wall_normal(wall);
 }
 
@@ -210,8 +208,8 @@ WallMeasureT<Dim> measure_wall(const Walls<Dim>& walls, WallId id) {
     if constexpr (Dim == 2) {
       m.eccentricity = (walls.normal_force_arm[id] / m.normal_force - wall_centre(wall)) / wall_half_size(wall);
     } else {
-      m.eccentricity = (walls.normal_force_arm[id] / m.normal_force - wall_centre(wall))
-                           .cwiseQuotient(wall_half_size(wall));
+      m.eccentricity =
+          (walls.normal_force_arm[id] / m.normal_force - wall_centre(wall)).cwiseQuotient(wall_half_size(wall));
     }
   }
   return m;

@@ -13,8 +13,8 @@ namespace dem {
 
 template <int Dim>
 struct Walls {
-  std::vector<WallDefT<Dim>> def;        // current P, directions and commanded motion
-  std::vector<Vec<Dim>> initial_point;   // P when the world was built (settlement)
+  std::vector<WallDefT<Dim>> def;       // current P, directions and commanded motion
+  std::vector<Vec<Dim>> initial_point;  // P when the world was built (settlement)
   // The motion that carried each wall over the last cycle: the force law at
   // cycle N needs the velocity over [N-1, N], like the particles' x_dot_{N-1/2}.
   std::vector<Vec<Dim>> last_velocity;

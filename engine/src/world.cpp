@@ -254,8 +254,10 @@ void build(WorldState<Dim>& s, const WorldDefT<Dim>& def) {
   const double reach = 2.0 * *std::max_element(p.radius.begin(), p.radius.end()) + s.contact_tolerance;
   for (int d = 0; d < Dim; ++d) {
     check(!s.periodic.repeats(d) || s.periodic.length[d] > 2.0 * reach,
-          "periodic: the period along axis " + std::to_string(d) + " must exceed twice the largest diameter plus "
-          "the contact tolerance (" + std::to_string(2.0 * reach) + ")");
+          "periodic: the period along axis " + std::to_string(d) +
+              " must exceed twice the largest diameter plus "
+              "the contact tolerance (" +
+              std::to_string(2.0 * reach) + ")");
   }
   s.critical_time_step = estimate_critical_time_step(s);
   s.time_step_fraction = def.time_step_fraction;
@@ -318,17 +320,29 @@ void BasicWorld<Dim>::cycle(std::uint64_t n) {
 }
 
 template <int Dim>
-std::uint64_t BasicWorld<Dim>::cycle_count() const { return state_->cycle; }
+std::uint64_t BasicWorld<Dim>::cycle_count() const {
+  return state_->cycle;
+}
 template <int Dim>
-double BasicWorld<Dim>::time() const { return state_->time; }
+double BasicWorld<Dim>::time() const {
+  return state_->time;
+}
 template <int Dim>
-double BasicWorld<Dim>::time_step() const { return state_->time_step; }
+double BasicWorld<Dim>::time_step() const {
+  return state_->time_step;
+}
 template <int Dim>
-double BasicWorld<Dim>::critical_time_step() const { return state_->critical_time_step; }
+double BasicWorld<Dim>::critical_time_step() const {
+  return state_->critical_time_step;
+}
 template <int Dim>
-int BasicWorld<Dim>::particle_count() const { return static_cast<int>(state_->particles.size()); }
+int BasicWorld<Dim>::particle_count() const {
+  return static_cast<int>(state_->particles.size());
+}
 template <int Dim>
-int BasicWorld<Dim>::wall_count() const { return state_->walls.size(); }
+int BasicWorld<Dim>::wall_count() const {
+  return state_->walls.size();
+}
 
 template <int Dim>
 ParticleViewT<Dim> BasicWorld<Dim>::particles() const {
@@ -377,9 +391,13 @@ std::vector<WallMeasureT<Dim>> BasicWorld<Dim>::wall_measures() const {
 }
 
 template <int Dim>
-AssemblyMeasures BasicWorld<Dim>::assembly_measures() const { return measure_assembly(*state_); }
+AssemblyMeasures BasicWorld<Dim>::assembly_measures() const {
+  return measure_assembly(*state_);
+}
 template <int Dim>
-std::vector<ContactRecordT<Dim>> BasicWorld<Dim>::contacts() const { return report_contacts(*state_); }
+std::vector<ContactRecordT<Dim>> BasicWorld<Dim>::contacts() const {
+  return report_contacts(*state_);
+}
 template <int Dim>
 std::vector<ContactRecordT<Dim>> BasicWorld<Dim>::wall_contacts(WallId wall) const {
   return report_wall_contacts(*state_, wall);
@@ -390,12 +408,18 @@ std::optional<ContactRecordT<Dim>> BasicWorld<Dim>::contact_between(ParticleId a
 }
 
 template <int Dim>
-double BasicWorld<Dim>::depth() const { return state_->depth; }
+double BasicWorld<Dim>::depth() const {
+  return state_->depth;
+}
 template <int Dim>
-const PeriodicDefT<Dim>& BasicWorld<Dim>::periodic() const { return state_->periodic_def; }
+const PeriodicDefT<Dim>& BasicWorld<Dim>::periodic() const {
+  return state_->periodic_def;
+}
 
 template <int Dim>
-DampingDef BasicWorld<Dim>::damping() const { return state_->damping; }
+DampingDef BasicWorld<Dim>::damping() const {
+  return state_->damping;
+}
 
 template <int Dim>
 void BasicWorld<Dim>::set_damping(const DampingDef& damping) {
@@ -429,23 +453,41 @@ void BasicWorld<Dim>::set_friction(MaterialId material, double friction) {
 }
 
 template <int Dim>
-const std::vector<MaterialDef>& BasicWorld<Dim>::materials() const { return state_->materials; }
+const std::vector<MaterialDef>& BasicWorld<Dim>::materials() const {
+  return state_->materials;
+}
 template <int Dim>
-Vec<Dim> BasicWorld<Dim>::gravity() const { return state_->gravity; }
+Vec<Dim> BasicWorld<Dim>::gravity() const {
+  return state_->gravity;
+}
 template <int Dim>
-void BasicWorld<Dim>::set_gravity(const Vec<Dim>& gravity) { state_->gravity = gravity; }
+void BasicWorld<Dim>::set_gravity(const Vec<Dim>& gravity) {
+  state_->gravity = gravity;
+}
 template <int Dim>
-int BasicWorld<Dim>::threads() const { return state_->threads; }
+int BasicWorld<Dim>::threads() const {
+  return state_->threads;
+}
 template <int Dim>
-const StepProfile& BasicWorld<Dim>::profile() const { return state_->profile; }
+const StepProfile& BasicWorld<Dim>::profile() const {
+  return state_->profile;
+}
 template <int Dim>
-void BasicWorld<Dim>::set_threads(int threads) { state_->threads = resolve_threads(threads); }
+void BasicWorld<Dim>::set_threads(int threads) {
+  state_->threads = resolve_threads(threads);
+}
 template <int Dim>
-WorldSnapshotT<Dim> BasicWorld<Dim>::snapshot() const { return save_snapshot(*state_); }
+WorldSnapshotT<Dim> BasicWorld<Dim>::snapshot() const {
+  return save_snapshot(*state_);
+}
 template <int Dim>
-std::uint64_t BasicWorld<Dim>::state_hash() const { return hash_state(*state_); }
+std::uint64_t BasicWorld<Dim>::state_hash() const {
+  return hash_state(*state_);
+}
 template <int Dim>
-bool BasicWorld<Dim>::energy_budget() const { return state_->energy_budget; }
+bool BasicWorld<Dim>::energy_budget() const {
+  return state_->energy_budget;
+}
 
 template void find_contacts(WorldState<2>&);
 template void find_contacts(WorldState<3>&);

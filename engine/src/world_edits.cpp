@@ -9,9 +9,9 @@
 
 #include "box_control.h"
 #include "contact_forces.h"
-#include "rolling_resistance.h"
 #include "dem/error.h"
 #include "dem/world.h"
+#include "rolling_resistance.h"
 #include "walls.h"
 #include "world_state.h"
 

@@ -44,7 +44,7 @@ struct WorldState {
   double critical_time_step = 0.0;
   double time_step_fraction = 0.1;  // the user's settings the step came from
   double fixed_time_step = 0.0;
-  double contact_tolerance = 0.0;   // BALL's TOL
+  double contact_tolerance = 0.0;  // BALL's TOL
   bool energy_budget = false;
   bool rolling = false;  // some pair of materials has rolling resistance (rolling_resistance.h)
   int threads = 1;

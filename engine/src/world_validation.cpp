@@ -23,7 +23,8 @@ void validate_wall(const WallDefT<2>& wall, const std::string& where) {
 void validate_wall(const WallDefT<3>& wall, const std::string& where) {
   check(std::abs(wall.direction.norm() - 1.0) < 1e-9 && std::abs(wall.direction2.norm() - 1.0) < 1e-9,
         where + ": direction and direction2 must be unit vectors");
-  check(std::abs(wall.direction.dot(wall.direction2)) < 1e-9, where + ": direction2 must be perpendicular to direction");
+  check(std::abs(wall.direction.dot(wall.direction2)) < 1e-9,
+        where + ": direction2 must be perpendicular to direction");
   check(wall.h2 > wall.h1, where + ": h2 must be greater than h1");
   check(wall.k2 > wall.k1, where + ": k2 must be greater than k1");
   for (std::size_t k = 0; k < wall.triangles.size(); ++k) {
@@ -59,8 +60,8 @@ void validate_world(const WorldDefT<Dim>& def) {
     const ContactModelDef& model = def.contact_models[k];
     const std::string where = "contact model " + std::to_string(k);
     const bool both_default = model.material_a == kInvalidId && model.material_b == kInvalidId;
-    const bool both_valid = model.material_a >= 0 && model.material_a < materials && model.material_b >= 0 &&
-                            model.material_b < materials;
+    const bool both_valid =
+        model.material_a >= 0 && model.material_a < materials && model.material_b >= 0 && model.material_b < materials;
     check(both_default || both_valid, where + ": unknown material id");
     const bool linear = model.law == ContactLaw::kLinear || model.law == ContactLaw::kLinearRestitution;
     if (linear) {
@@ -125,11 +126,9 @@ void validate_world(const WorldDefT<Dim>& def) {
   }
   for (int d = 0; d < Dim; ++d) {
     if (!def.periodic.axes[d]) continue;
-    check(def.periodic.max[d] > def.periodic.min[d],
-          "periodic: max must exceed min along axis " + std::to_string(d));
+    check(def.periodic.max[d] > def.periodic.min[d], "periodic: max must exceed min along axis " + std::to_string(d));
   }
-  check(def.time_step_fraction > 0.0 && def.time_step_fraction <= 1.0,
-        "world: time_step_fraction must be in (0, 1]");
+  check(def.time_step_fraction > 0.0 && def.time_step_fraction <= 1.0, "world: time_step_fraction must be in (0, 1]");
   check(def.fixed_time_step >= 0.0, "world: fixed_time_step must be >= 0");
   check(def.contact_tolerance >= 0.0, "world: contact_tolerance must be >= 0");
   check_damping(def.damping);

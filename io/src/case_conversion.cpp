@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <string>
@@ -275,11 +275,10 @@ class Converter {
       largest = std::max(largest, radius);
     }
     if (world.contact_tolerance > 2.0 * largest) {
-      throw CaseError(describe_problem(source_, "numerics.contact_tolerance",
-                                       "must be at most the largest particle's diameter (" +
-                                           format_number(2.0 * largest) + " m), got " +
-                                           format_number(world.contact_tolerance) +
-                                           " m; leave it out for a tenth of the mean radius"));
+      throw CaseError(describe_problem(
+          source_, "numerics.contact_tolerance",
+          "must be at most the largest particle's diameter (" + format_number(2.0 * largest) + " m), got " +
+              format_number(world.contact_tolerance) + " m; leave it out for a tenth of the mean radius"));
     }
   }
 
@@ -418,8 +417,8 @@ class Converter {
     // work of a packing that nearly cannot fit whether or not the case asks.
     def.max_attempts = packing.max_attempts() > 0
                            ? static_cast<int>(packing.max_attempts())
-                           : static_cast<int>(std::min<std::uint64_t>(
-                                 static_cast<std::uint64_t>(def.max_attempts), limits_.max_packing_attempts));
+                           : static_cast<int>(std::min<std::uint64_t>(static_cast<std::uint64_t>(def.max_attempts),
+                                                                      limits_.max_packing_attempts));
     def.stopped = limits_.stop_packing;
     return def;
   }
@@ -572,8 +571,7 @@ CaseDefinitionT<Dim> convert_case(const proto::Case& message, const CaseSource& 
 template CaseDefinitionT<2> convert_case<2>(const proto::Case&, const CaseSource&, const ResourceLimits&);
 template CaseDefinitionT<3> convert_case<3>(const proto::Case&, const CaseSource&, const ResourceLimits&);
 
-AnyCaseDefinition convert_any_case(const proto::Case& message, const CaseSource& source,
-                                   const ResourceLimits& limits) {
+AnyCaseDefinition convert_any_case(const proto::Case& message, const CaseSource& source, const ResourceLimits& limits) {
   if (case_dimension(message) == 3) return convert_case<3>(message, source, limits);
   return convert_case<2>(message, source, limits);
 }

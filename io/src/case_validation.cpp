@@ -12,8 +12,8 @@
 
 #include "case_names.h"
 #include "compression_output_checks.h"
-#include "dem/math.h"
 #include "contact_model_checks.h"
+#include "dem/math.h"
 #include "field_path.h"
 #include "format_number.h"
 #include "problem_list.h"
@@ -244,8 +244,8 @@ class CaseChecker {
     }
     // Three uint32 factors overflow 64 bits together: the count saturates.
     particle_count_ = saturating_add(
-        particle_count_, saturating_multiply(saturating_multiply(lattice.columns(), lattice.rows()),
-                                             std::max(lattice.layers(), 1u)));
+        particle_count_,
+        saturating_multiply(saturating_multiply(lattice.columns(), lattice.rows()), std::max(lattice.layers(), 1u)));
   }
 
   void check_random_packing(const std::string& path, const proto::RandomPacking& packing) {
@@ -463,11 +463,12 @@ class CaseChecker {
   // finite corners not on one line; the faces replace the rectangle's extent.
   void check_faces(const std::string& path, const proto::Wall& wall) {
     if (wall.face_size() == 0) return;
-    for (const auto& [name, value] : {std::pair{".h1", wall.h1()}, {".h2", wall.h2()}, {".k1", wall.k1()},
-                                      {".k2", wall.k2()}}) {
+    for (const auto& [name, value] :
+         {std::pair{".h1", wall.h1()}, {".h2", wall.h2()}, {".k1", wall.k1()}, {".k2", wall.k2()}}) {
       if (value != 0) {
-        problems_.add(path + name, "must be left out for a wall of faces (their extent along direction and "
-                                   "direction2 replaces the rectangle's)");
+        problems_.add(path + name,
+                      "must be left out for a wall of faces (their extent along direction and "
+                      "direction2 replaces the rectangle's)");
       }
     }
     for (int k = 0; k < wall.face_size(); ++k) {
@@ -503,8 +504,9 @@ class CaseChecker {
       return high - low;
     };
     if (!(extent(u) > 0) || !(extent(v) > 0)) {
-      problems_.add(path + ".face", "span nothing along direction or direction2; those should lie along the faces "
-                                    "(the normal, direction x direction2, faces the particles)");
+      problems_.add(path + ".face",
+                    "span nothing along direction or direction2; those should lie along the faces "
+                    "(the normal, direction x direction2, faces the particles)");
     }
   }
 
@@ -627,8 +629,8 @@ class CaseChecker {
       find_wall(problems_, walls_, axis_path + ".lower_wall", axis.lower_wall());
       find_wall(problems_, walls_, axis_path + ".upper_wall", axis.upper_wall());
       if (!axis.lower_wall().empty() && axis.lower_wall() == axis.upper_wall()) {
-        problems_.add(axis_path + ".upper_wall", "must differ from lower_wall (both are " +
-                                                     in_quotes(axis.lower_wall()) + ")");
+        problems_.add(axis_path + ".upper_wall",
+                      "must differ from lower_wall (both are " + in_quotes(axis.lower_wall()) + ")");
       }
       switch (axis.control_case()) {
         case proto::BoxAxis::kStrainRate:
@@ -644,8 +646,9 @@ class CaseChecker {
           servo = true;
           break;
         case proto::BoxAxis::CONTROL_NOT_SET:
-          problems_.add(axis_path, "says nothing of what drives it; set strain_rate (1/s), stress (Pa) or "
-                                   "stress_path: true");
+          problems_.add(axis_path,
+                        "says nothing of what drives it; set strain_rate (1/s), stress (Pa) or "
+                        "stress_path: true");
           break;
       }
     }
@@ -665,8 +668,9 @@ class CaseChecker {
         break;
       case proto::BoxControl::PATH_NOT_SET:
         if (path_axes > 0) {
-          problems_.add(path, "an axis follows the stress path, but no path is set; set constant_mean_stress or "
-                              "stress_ratio");
+          problems_.add(path,
+                        "an axis follows the stress path, but no path is set; set constant_mean_stress or "
+                        "stress_ratio");
         }
         break;
     }
@@ -784,15 +788,14 @@ class CaseChecker {
         case proto::MeasurementRegion::kBox: {
           const proto::Box& box = region.box();
           if (!vector(path + ".box.min", box.min()) || !vector(path + ".box.max", box.max())) break;
-          const std::pair<double, double> sides[] = {{box.min().x(), box.max().x()},
-                                                     {box.min().y(), box.max().y()},
-                                                     {box.min().z(), box.max().z()}};
+          const std::pair<double, double> sides[] = {
+              {box.min().x(), box.max().x()}, {box.min().y(), box.max().y()}, {box.min().z(), box.max().z()}};
           for (int d = 0; d < (dimension_ == 3 ? 3 : 2); ++d) {
             const char axis = "xyz"[d];
             if (!(sides[d].second > sides[d].first)) {
               problems_.add(path + ".box.max." + axis, "must be greater than box.min." + std::string(1, axis) + " (" +
-                                                           format_number(sides[d].second) + " <= " +
-                                                           format_number(sides[d].first) + ")");
+                                                           format_number(sides[d].second) +
+                                                           " <= " + format_number(sides[d].first) + ")");
             }
           }
           break;
@@ -802,7 +805,8 @@ class CaseChecker {
           problems_.positive(path + ".ball.radius", region.ball().radius());
           break;
         case proto::MeasurementRegion::SHAPE_NOT_SET:
-          problems_.add(path, "has no shape; set whole: true, box { min ... max ... } or ball { centre ... radius ... }");
+          problems_.add(path,
+                        "has no shape; set whole: true, box { min ... max ... } or ball { centre ... radius ... }");
           break;
       }
     }
@@ -842,7 +846,7 @@ class CaseChecker {
   std::uint64_t particle_count_ = 0;
   bool count_known_ = true;  // false once a csv_file source holds an unknown number
   ShapeMix shapes_;
-  int dimension_ = 0;        // 2 or 3; 0 until known (or when the case declares neither)
+  int dimension_ = 0;            // 2 or 3; 0 until known (or when the case declares neither)
   bool box_controlled_ = false;  // a box control is set in the stage being checked
 };
 

@@ -45,8 +45,7 @@ std::uint64_t number(std::string_view text, std::string_view what) {
 
 }  // namespace
 
-void PeriodicCheckpoints::begin(const std::filesystem::path& directory, std::string case_digest,
-                                std::uint64_t cycle) {
+void PeriodicCheckpoints::begin(const std::filesystem::path& directory, std::string case_digest, std::uint64_t cycle) {
   store_.reset();
   if (settings_.enabled() && !directory.empty()) store_.emplace(directory, settings_.keep);
   case_digest_ = std::move(case_digest);

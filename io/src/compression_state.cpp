@@ -28,7 +28,8 @@ class Reader {
   }
   void expect(std::string_view word) {
     std::string token;
-    if (!(in_ >> token) || token != word) throw std::runtime_error("the plate loading analyses' state lacks " + std::string(word));
+    if (!(in_ >> token) || token != word)
+      throw std::runtime_error("the plate loading analyses' state lacks " + std::string(word));
   }
 
  private:
@@ -121,7 +122,8 @@ void CompressionAnalysisT<Dim>::restore(std::string_view state) {
   for (CompressionSample& s : samples) s = get_sample(in);
   in.expect("snapshots");
   std::vector<PlateSnapshotT<Dim>> snapshots(in.next<std::uint64_t>());
-  if (snapshots.size() > targets_.size()) throw std::runtime_error("the plate loading analyses' state has more snapshots than targets");
+  if (snapshots.size() > targets_.size())
+    throw std::runtime_error("the plate loading analyses' state has more snapshots than targets");
   for (PlateSnapshotT<Dim>& s : snapshots) {
     s.index = in.next<int>();
     s.target_stress = in.next<double>();

@@ -39,17 +39,19 @@ void WallsCsvT<Dim>::write(const BasicWorld<Dim>& world) {
     } else {
       file_.write_row(world.cycle_count(), world.time(), name, m.force.x(), m.force.y(), m.force.z(), m.moment.x(),
                       m.moment.y(), m.moment.z(), m.normal_force, m.contacts, m.eccentricity.x(), m.eccentricity.y(),
-                      m.point.x(), m.point.y(), m.point.z(), m.displacement.x(), m.displacement.y(),
-                      m.displacement.z(), stress, settlement);
+                      m.point.x(), m.point.y(), m.point.z(), m.displacement.x(), m.displacement.y(), m.displacement.z(),
+                      stress, settlement);
     }
   }
   file_.flush();
 }
 
 AssemblyCsv::AssemblyCsv(const std::filesystem::path& directory, const TableSizes* resume)
-    : file_(directory, "assembly.csv",
-            "cycle,time,kinetic_energy,out_of_balance,max_contact_force,contacts,sliding_contacts,time_step_ratio,gravity_work,wall_work,strain_energy,contact_damping,friction,global_damping,local_damping,energy_residual",
-            resume) {}
+    : file_(
+          directory, "assembly.csv",
+          "cycle,time,kinetic_energy,out_of_balance,max_contact_force,contacts,sliding_contacts,time_step_ratio,"
+          "gravity_work,wall_work,strain_energy,contact_damping,friction,global_damping,local_damping,energy_residual",
+          resume) {}
 
 template <int Dim>
 AssemblyMeasures AssemblyCsv::write(const BasicWorld<Dim>& world) {

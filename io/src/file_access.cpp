@@ -72,8 +72,8 @@ std::filesystem::path FileAccess::readable(const std::filesystem::path& requeste
   std::error_code error;
   // canonical() resolves every link and "..": what is checked is what would be opened.
   const std::filesystem::path canonical = std::filesystem::canonical(joined, error);
-  const bool inside =
-      !error && std::any_of(roots_.begin(), roots_.end(), [&](const auto& root) { return lies_within(canonical, root); });
+  const bool inside = !error && std::any_of(roots_.begin(), roots_.end(),
+                                            [&](const auto& root) { return lies_within(canonical, root); });
   // Whether a file outside exists is not said either.
   if (!inside) {
     throw FileAccessError(name + ": not a file in the directories this server reads (" + allowed + ")");

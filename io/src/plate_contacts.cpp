@@ -44,7 +44,8 @@ template <int Dim>
 std::array<StateLoad, 3> load_by_state(std::span<const PlateContactT<Dim>> contacts, const StateCycles& cycles) {
   std::array<StateLoad, 3> loads;
   for (std::size_t k = 0; k < loads.size(); ++k) loads[k].state = kLoadingStates[k];
-  for (const PlateContactT<Dim>& c : contacts) add_to(loads[static_cast<std::size_t>(state_at(c.formed_cycle, cycles))], c);
+  for (const PlateContactT<Dim>& c : contacts)
+    add_to(loads[static_cast<std::size_t>(state_at(c.formed_cycle, cycles))], c);
   return loads;
 }
 

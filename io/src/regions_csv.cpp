@@ -64,8 +64,8 @@ std::string region_columns() {
   columns += principal_columns("stress", Dim);
   columns += ",mean_stress,deviator_stress,sin_phi,tangential_share";
   columns += tensor_columns("fabric", Dim, true) + principal_columns("fabric", Dim) + ",anisotropy";
-  columns += tensor_columns("weighted_fabric", Dim, true) + principal_columns("weighted_fabric", Dim) +
-             ",weighted_anisotropy";
+  columns +=
+      tensor_columns("weighted_fabric", Dim, true) + principal_columns("weighted_fabric", Dim) + ",weighted_anisotropy";
   columns += ",fabric_trace,mean_normal_force,max_normal_force,mean_rotation,mean_abs_rotation";
   return columns;
 }

@@ -32,9 +32,7 @@ std::uint64_t usable_memory() {
   return memory;
 }
 
-std::string bytes_text(std::uint64_t bytes) {
-  return std::to_string(bytes / (1024 * 1024)) + " MiB";
-}
+std::string bytes_text(std::uint64_t bytes) { return std::to_string(bytes / (1024 * 1024)) + " MiB"; }
 
 }  // namespace
 
@@ -80,8 +78,8 @@ std::optional<std::string> particle_count_problem(std::uint64_t particles, const
   }
   const std::uint64_t needed = saturating_multiply(particles, kBytesPerParticle);
   if (needed > limits.memory_bytes) {
-    return "define " + count + " particles, which need about " + bytes_text(needed) + ", more than the memory budget of " +
-           bytes_text(limits.memory_bytes);
+    return "define " + count + " particles, which need about " + bytes_text(needed) +
+           ", more than the memory budget of " + bytes_text(limits.memory_bytes);
   }
   return std::nullopt;
 }

@@ -60,8 +60,8 @@ void ShapeMix::note(ProblemList& problems, const std::string& path, bool shaped,
     return s ? "a superquadric" : "a disc";
   };
   problems.add(path, std::string("is ") + kind(shaped) + ", but " + first_->path + " is " + kind(first_->shaped) +
-                         "; a case's particles are all " + (three ? "spheres or all ellipsoids" :
-                                                                    "discs or all superquadrics"));
+                         "; a case's particles are all " +
+                         (three ? "spheres or all ellipsoids" : "discs or all superquadrics"));
   reported_ = true;
 }
 

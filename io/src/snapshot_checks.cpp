@@ -109,9 +109,9 @@ void check_names(Problems& problems, const proto::Snapshot& m) {
   for (int i = 0; i < m.settings().material_size(); ++i) {
     const std::string& name = m.settings().material(i).name();
     if (const auto [first, inserted] = materials.emplace(name, i); !inserted) {
-      problems.emplace_back(item("settings.material", i) + ".name",
-                            "duplicate material name \"" + name + "\" (" + item("settings.material", first->second) +
-                                " has it too)");
+      problems.emplace_back(
+          item("settings.material", i) + ".name",
+          "duplicate material name \"" + name + "\" (" + item("settings.material", first->second) + " has it too)");
     }
   }
 }
@@ -122,7 +122,8 @@ void check_counts(Problems& problems, const proto::Snapshot& m, const ResourceLi
   }
   for (int i = 0; i < m.wall_size(); ++i) {
     if (m.wall(i).contacts() < 0) {
-      problems.emplace_back(item("wall", i) + ".contacts", "must be >= 0 (got " + std::to_string(m.wall(i).contacts()) + ")");
+      problems.emplace_back(item("wall", i) + ".contacts",
+                            "must be >= 0 (got " + std::to_string(m.wall(i).contacts()) + ")");
     }
   }
   if (const auto problem = particle_count_problem(static_cast<std::uint64_t>(m.particles().radius_size()), limits)) {

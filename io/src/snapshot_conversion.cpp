@@ -16,67 +16,164 @@ namespace {
 // A snapshot must hold every field of the engine's definition and state
 // structs, or a restored world would not continue bit for bit. These
 // mirrors fail the build when a struct grows, pointing here.
-#define DEM_SNAPSHOT_COVERS(Type, Mirror)        \
+#define DEM_SNAPSHOT_COVERS(Type, Mirror)       \
   static_assert(sizeof(Type) == sizeof(Mirror), \
                 #Type " changed: update idl/dem/snapshot.proto and io/src/snapshot_conversion.cpp")
-struct MaterialMirror { std::string name; double density, friction, cohesion, youngs_modulus, poisson_ratio; };
-struct HertzDampingMirror { double damping_ratio; std::optional<double> restitution; bool tangential; };
-struct ContactModelMirror {
-  MaterialId a, b; LinearLawDef linear; std::optional<double> friction, cohesion; ContactLaw law;
-  double restitution; HertzDampingDef hertz; RollingResistanceDef rolling;
+struct MaterialMirror {
+  std::string name;
+  double density, friction, cohesion, youngs_modulus, poisson_ratio;
 };
-struct RollingMirror { double friction, damping_ratio; };
+struct HertzDampingMirror {
+  double damping_ratio;
+  std::optional<double> restitution;
+  bool tangential;
+};
+struct ContactModelMirror {
+  MaterialId a, b;
+  LinearLawDef linear;
+  std::optional<double> friction, cohesion;
+  ContactLaw law;
+  double restitution;
+  HertzDampingDef hertz;
+  RollingResistanceDef rolling;
+};
+struct RollingMirror {
+  double friction, damping_ratio;
+};
 struct DampingMirror {
-  double contact_beta, global_alpha; std::optional<double> global_alpha_rotation; double local_alpha;
+  double contact_beta, global_alpha;
+  std::optional<double> global_alpha_rotation;
+  double local_alpha;
   std::optional<double> local_alpha_rotation;
 };
 struct EnergyMirror {
   double initial_kinetic, gravity_work, wall_work, kinetic, strain, contact_damping, friction, global_damping,
       local_damping, removed;
 };
-struct ServoMirror { double target_force, gain, max_speed; };
-template <int Dim> struct WorldDefMirror {
-  std::vector<MaterialDef> m; std::vector<ContactModelDef> c; std::vector<ParticleDefT<Dim>> p;
-  std::vector<WallDefT<Dim>> w; PeriodicDefT<Dim> periodic; std::optional<BoxControlT<Dim>> box; DampingDef d;
-  Vec<Dim> g; PlanarParticle pp;
-  double f, fixed, tol; int threads; bool energy_budget;
+struct ServoMirror {
+  double target_force, gain, max_speed;
 };
-template <int Dim> struct ParticleMirror {
-  Vec<Dim> position; double radius; MaterialId material; Vec<Dim> velocity; Spin<Dim> angular_velocity;
+template <int Dim>
+struct WorldDefMirror {
+  std::vector<MaterialDef> m;
+  std::vector<ContactModelDef> c;
+  std::vector<ParticleDefT<Dim>> p;
+  std::vector<WallDefT<Dim>> w;
+  PeriodicDefT<Dim> periodic;
+  std::optional<BoxControlT<Dim>> box;
+  DampingDef d;
+  Vec<Dim> g;
+  PlanarParticle pp;
+  double f, fixed, tol;
+  int threads;
+  bool energy_budget;
+};
+template <int Dim>
+struct ParticleMirror {
+  Vec<Dim> position;
+  double radius;
+  MaterialId material;
+  Vec<Dim> velocity;
+  Spin<Dim> angular_velocity;
   ShapeDefT<Dim> shape;
 };
-struct Shape2Mirror { double a, b, n, angle; };
-struct Shape3Mirror { Vec3 axes; Quaternion orientation; };
-template <int Dim> struct PeriodicMirror { std::array<bool, Dim> axes; Vec<Dim> min, max; };
+struct Shape2Mirror {
+  double a, b, n, angle;
+};
+struct Shape3Mirror {
+  Vec3 axes;
+  Quaternion orientation;
+};
+template <int Dim>
+struct PeriodicMirror {
+  std::array<bool, Dim> axes;
+  Vec<Dim> min, max;
+};
 struct Wall2Mirror {
-  std::string name; Vec2 point, direction; double h1, h2; MaterialId material; WallMotionT<2> motion; bool removed;
+  std::string name;
+  Vec2 point, direction;
+  double h1, h2;
+  MaterialId material;
+  WallMotionT<2> motion;
+  bool removed;
 };
 struct Wall3Mirror {
-  std::string name; Vec3 point, direction; double h1, h2; Vec3 direction2; double k1, k2; MaterialId material;
-  WallMotionT<3> motion; std::vector<std::array<Vec3, 3>> triangles; bool removed;
+  std::string name;
+  Vec3 point, direction;
+  double h1, h2;
+  Vec3 direction2;
+  double k1, k2;
+  MaterialId material;
+  WallMotionT<3> motion;
+  std::vector<std::array<Vec3, 3>> triangles;
+  bool removed;
 };
-struct BoxAxisMirror { WallId lower, upper; AxisControl control; double strain_rate, stress; };
-template <int Dim> struct BoxControlMirror {
-  std::array<BoxAxisDef, Dim> axes; StressPath path; double path_value, gain, max_speed; Vec<Dim> reference_extent;
+struct BoxAxisMirror {
+  WallId lower, upper;
+  AxisControl control;
+  double strain_rate, stress;
 };
-struct MindlinMirror { double direction; bool unloading, reloading; double t_star, t_star2, lag; };
-template <int Dim> struct ContactSnapshotMirror {
-  ParticleId first; std::int32_t second; bool with_wall; double normal_force; ShearForce<Dim> shear_force; bool sliding;
-  double overlap, normal_damping; ShearForce<Dim> shear_damping; Vec<Dim> normal, point, force;
-  Spin<Dim> moment_first, moment_second; std::uint64_t formed_cycle; bool touching; MindlinHistory mindlin;
-  Vec<Dim> mindlin_axis; double mindlin_theta; Vec<Dim> dashpot_force, tangential_spring, relative_velocity;
-  double search_first, search_second; bool has_search; Spin<Dim> rolling_torque;
+template <int Dim>
+struct BoxControlMirror {
+  std::array<BoxAxisDef, Dim> axes;
+  StressPath path;
+  double path_value, gain, max_speed;
+  Vec<Dim> reference_extent;
 };
-template <int Dim> struct WallSnapshotMirror {
-  Vec<Dim> initial_point, last_velocity; Spin<Dim> last_angular_velocity; Vec<Dim> force; Spin<Dim> moment;
-  double normal_force; int contacts; Eccentricity<Dim> normal_force_arm;
+struct MindlinMirror {
+  double direction;
+  bool unloading, reloading;
+  double t_star, t_star2, lag;
 };
-template <int Dim> struct WorldSnapshotMirror {
-  WorldDefT<Dim> def; std::vector<Orientation<Dim>> rotation; std::vector<Vec<Dim>> force;
-  std::vector<Spin<Dim>> moment; std::vector<WallSnapshotT<Dim>> walls; std::vector<ContactSnapshotT<Dim>> contacts;
-  std::vector<Vec<Dim>> reference_positions; double particle_travel, wall_travel; bool contacts_stale;
-  std::vector<ParticleId> particle_order; std::uint64_t sorted_cycle;
-  EnergyBudget energy; double tangential_work; std::uint64_t cycle; double time, time_step, critical_time_step;
+template <int Dim>
+struct ContactSnapshotMirror {
+  ParticleId first;
+  std::int32_t second;
+  bool with_wall;
+  double normal_force;
+  ShearForce<Dim> shear_force;
+  bool sliding;
+  double overlap, normal_damping;
+  ShearForce<Dim> shear_damping;
+  Vec<Dim> normal, point, force;
+  Spin<Dim> moment_first, moment_second;
+  std::uint64_t formed_cycle;
+  bool touching;
+  MindlinHistory mindlin;
+  Vec<Dim> mindlin_axis;
+  double mindlin_theta;
+  Vec<Dim> dashpot_force, tangential_spring, relative_velocity;
+  double search_first, search_second;
+  bool has_search;
+  Spin<Dim> rolling_torque;
+};
+template <int Dim>
+struct WallSnapshotMirror {
+  Vec<Dim> initial_point, last_velocity;
+  Spin<Dim> last_angular_velocity;
+  Vec<Dim> force;
+  Spin<Dim> moment;
+  double normal_force;
+  int contacts;
+  Eccentricity<Dim> normal_force_arm;
+};
+template <int Dim>
+struct WorldSnapshotMirror {
+  WorldDefT<Dim> def;
+  std::vector<Orientation<Dim>> rotation;
+  std::vector<Vec<Dim>> force;
+  std::vector<Spin<Dim>> moment;
+  std::vector<WallSnapshotT<Dim>> walls;
+  std::vector<ContactSnapshotT<Dim>> contacts;
+  std::vector<Vec<Dim>> reference_positions;
+  double particle_travel, wall_travel;
+  bool contacts_stale;
+  std::vector<ParticleId> particle_order;
+  std::uint64_t sorted_cycle;
+  EnergyBudget energy;
+  double tangential_work;
+  std::uint64_t cycle;
+  double time, time_step, critical_time_step;
 };
 DEM_SNAPSHOT_COVERS(ContactSnapshotT<2>, ContactSnapshotMirror<2>);
 DEM_SNAPSHOT_COVERS(ContactSnapshotT<3>, ContactSnapshotMirror<3>);
@@ -165,20 +262,28 @@ constexpr std::size_t width = Packing<T>::width;
 
 proto::SnapshotContactLaw to_proto(ContactLaw law) {
   switch (law) {
-    case ContactLaw::kLinear: return proto::SNAPSHOT_LAW_LINEAR;
-    case ContactLaw::kLinearRestitution: return proto::SNAPSHOT_LAW_LINEAR_RESTITUTION;
-    case ContactLaw::kHertzMindlin: return proto::SNAPSHOT_LAW_HERTZ_MINDLIN;
-    case ContactLaw::kHertzLinearTangential: return proto::SNAPSHOT_LAW_HERTZ_LINEAR_TANGENTIAL;
+    case ContactLaw::kLinear:
+      return proto::SNAPSHOT_LAW_LINEAR;
+    case ContactLaw::kLinearRestitution:
+      return proto::SNAPSHOT_LAW_LINEAR_RESTITUTION;
+    case ContactLaw::kHertzMindlin:
+      return proto::SNAPSHOT_LAW_HERTZ_MINDLIN;
+    case ContactLaw::kHertzLinearTangential:
+      return proto::SNAPSHOT_LAW_HERTZ_LINEAR_TANGENTIAL;
   }
   return proto::SNAPSHOT_LAW_LINEAR;
 }
 
 ContactLaw from_proto(proto::SnapshotContactLaw law) {
   switch (law) {
-    case proto::SNAPSHOT_LAW_LINEAR_RESTITUTION: return ContactLaw::kLinearRestitution;
-    case proto::SNAPSHOT_LAW_HERTZ_MINDLIN: return ContactLaw::kHertzMindlin;
-    case proto::SNAPSHOT_LAW_HERTZ_LINEAR_TANGENTIAL: return ContactLaw::kHertzLinearTangential;
-    default: return ContactLaw::kLinear;
+    case proto::SNAPSHOT_LAW_LINEAR_RESTITUTION:
+      return ContactLaw::kLinearRestitution;
+    case proto::SNAPSHOT_LAW_HERTZ_MINDLIN:
+      return ContactLaw::kHertzMindlin;
+    case proto::SNAPSHOT_LAW_HERTZ_LINEAR_TANGENTIAL:
+      return ContactLaw::kHertzLinearTangential;
+    default:
+      return ContactLaw::kLinear;
   }
 }
 
@@ -467,9 +572,9 @@ void check_particles(Problems& problems, const proto::SnapshotParticles& p, cons
       problems.add("particles.radius[" + std::to_string(i) + "]", "must be a finite number > 0");
     }
     if (!in_range(p.material(i), n.materials)) {
-      problems.add("particles.material[" + std::to_string(i) + "]",
-                   "material " + std::to_string(p.material(i)) + " out of range for " + std::to_string(n.materials) +
-                       " materials");
+      problems.add("particles.material[" + std::to_string(i) + "]", "material " + std::to_string(p.material(i)) +
+                                                                        " out of range for " +
+                                                                        std::to_string(n.materials) + " materials");
     }
   }
 }
@@ -501,8 +606,8 @@ void check_wall(Problems& problems, const proto::SnapshotWall& w, int index, con
     check_array(problems, path + ".triangles", w.triangles(), static_cast<std::size_t>(w.triangles_size() / per_face),
                 static_cast<std::size_t>(per_face));
   }
-  for (const auto& [name, value] : {std::pair{"h1", w.h1()}, {"h2", w.h2()}, {"k1", w.k1()}, {"k2", w.k2()},
-                                    {"normal_force", w.normal_force()}}) {
+  for (const auto& [name, value] :
+       {std::pair{"h1", w.h1()}, {"h2", w.h2()}, {"k1", w.k1()}, {"k2", w.k2()}, {"normal_force", w.normal_force()}}) {
     check_finite(problems, path + "." + name, value);
   }
 }
@@ -519,26 +624,25 @@ void check_contacts(Problems& problems, const proto::SnapshotContacts& c, const 
   sizes = check_length(problems, "contacts.has_search", c.has_search(), n.contacts) && sizes;
   const std::size_t shear = width<ShearForce<Dim>>;
   const std::size_t spin = width<Spin<Dim>>;
-  for (const auto& [name, values, item_width] :
-       {std::tuple{"normal_force", &c.normal_force(), std::size_t{1}},
-        {"shear_force", &c.shear_force(), shear},
-        {"overlap", &c.overlap(), std::size_t{1}},
-        {"normal_damping", &c.normal_damping(), std::size_t{1}},
-        {"shear_damping", &c.shear_damping(), shear},
-        {"normal", &c.normal(), std::size_t{Dim}},
-        {"point", &c.point(), std::size_t{Dim}},
-        {"force", &c.force(), std::size_t{Dim}},
-        {"moment_first", &c.moment_first(), spin},
-        {"moment_second", &c.moment_second(), spin},
-        {"mindlin_direction", &c.mindlin_direction(), std::size_t{1}},
-        {"mindlin_t_star", &c.mindlin_t_star(), std::size_t{1}},
-        {"mindlin_t_star2", &c.mindlin_t_star2(), std::size_t{1}},
-        {"mindlin_lag", &c.mindlin_lag(), std::size_t{1}},
-        {"mindlin_axis", &c.mindlin_axis(), std::size_t{Dim}},
-        {"dashpot_force", &c.dashpot_force(), std::size_t{Dim}},
-        {"relative_velocity", &c.relative_velocity(), std::size_t{Dim}},
-        {"search_first", &c.search_first(), std::size_t{1}},
-        {"search_second", &c.search_second(), std::size_t{1}}}) {
+  for (const auto& [name, values, item_width] : {std::tuple{"normal_force", &c.normal_force(), std::size_t{1}},
+                                                 {"shear_force", &c.shear_force(), shear},
+                                                 {"overlap", &c.overlap(), std::size_t{1}},
+                                                 {"normal_damping", &c.normal_damping(), std::size_t{1}},
+                                                 {"shear_damping", &c.shear_damping(), shear},
+                                                 {"normal", &c.normal(), std::size_t{Dim}},
+                                                 {"point", &c.point(), std::size_t{Dim}},
+                                                 {"force", &c.force(), std::size_t{Dim}},
+                                                 {"moment_first", &c.moment_first(), spin},
+                                                 {"moment_second", &c.moment_second(), spin},
+                                                 {"mindlin_direction", &c.mindlin_direction(), std::size_t{1}},
+                                                 {"mindlin_t_star", &c.mindlin_t_star(), std::size_t{1}},
+                                                 {"mindlin_t_star2", &c.mindlin_t_star2(), std::size_t{1}},
+                                                 {"mindlin_lag", &c.mindlin_lag(), std::size_t{1}},
+                                                 {"mindlin_axis", &c.mindlin_axis(), std::size_t{Dim}},
+                                                 {"dashpot_force", &c.dashpot_force(), std::size_t{Dim}},
+                                                 {"relative_velocity", &c.relative_velocity(), std::size_t{Dim}},
+                                                 {"search_first", &c.search_first(), std::size_t{1}},
+                                                 {"search_second", &c.search_second(), std::size_t{1}}}) {
     sizes = check_array(problems, std::string("contacts.") + name, *values, n.contacts, item_width) && sizes;
   }
   // Added after version 1 was first written: empty in older snapshots.
@@ -574,8 +678,8 @@ void check(const proto::Snapshot& m, Problems& problems, const ResourceLimits& l
     return;
   }
   if (m.dimension() != Dim) {
-    problems.add("dimension", "the snapshot is " + std::to_string(m.dimension()) + "D, expected " +
-                                  std::to_string(Dim) + "D");
+    problems.add("dimension",
+                 "the snapshot is " + std::to_string(m.dimension()) + "D, expected " + std::to_string(Dim) + "D");
     return;
   }
   for (const auto& [path, message] : snapshot_value_problems(m, limits)) problems.add(path, message);
@@ -588,13 +692,17 @@ void check(const proto::Snapshot& m, Problems& problems, const ResourceLimits& l
   check_particles<Dim>(problems, m.particles(), n);
   for (int i = 0; i < m.wall_size(); ++i) check_wall<Dim>(problems, m.wall(i), i, n);
   check_contacts<Dim>(problems, m.contacts(), n);
-  for (const auto& [name, value] :
-       {std::pair{"energy.initial_kinetic", m.energy().initial_kinetic()}, {"energy.gravity_work", m.energy().gravity_work()},
-        {"energy.wall_work", m.energy().wall_work()}, {"energy.kinetic", m.energy().kinetic()},
-        {"energy.strain", m.energy().strain()}, {"energy.contact_damping", m.energy().contact_damping()},
-        {"energy.friction", m.energy().friction()}, {"energy.global_damping", m.energy().global_damping()},
-        {"energy.local_damping", m.energy().local_damping()}, {"energy.removed", m.energy().removed()},
-        {"tangential_work", m.tangential_work()}}) {
+  for (const auto& [name, value] : {std::pair{"energy.initial_kinetic", m.energy().initial_kinetic()},
+                                    {"energy.gravity_work", m.energy().gravity_work()},
+                                    {"energy.wall_work", m.energy().wall_work()},
+                                    {"energy.kinetic", m.energy().kinetic()},
+                                    {"energy.strain", m.energy().strain()},
+                                    {"energy.contact_damping", m.energy().contact_damping()},
+                                    {"energy.friction", m.energy().friction()},
+                                    {"energy.global_damping", m.energy().global_damping()},
+                                    {"energy.local_damping", m.energy().local_damping()},
+                                    {"energy.removed", m.energy().removed()},
+                                    {"tangential_work", m.tangential_work()}}) {
     check_finite(problems, name, value);
   }
   if (m.reference_positions_size() > 0) {
@@ -603,8 +711,8 @@ void check(const proto::Snapshot& m, Problems& problems, const ResourceLimits& l
   if (m.has_box_control()) {
     const proto::SnapshotBoxControl& box = m.box_control();
     if (box.axis_size() != Dim) {
-      problems.add("box_control.axis", "has " + std::to_string(box.axis_size()) + " axes, expected " +
-                                           std::to_string(Dim));
+      problems.add("box_control.axis",
+                   "has " + std::to_string(box.axis_size()) + " axes, expected " + std::to_string(Dim));
     }
     for (int i = 0; i < box.axis_size(); ++i) {
       const std::string path = "box_control.axis[" + std::to_string(i) + "]";
@@ -674,7 +782,8 @@ void get_settings(const proto::SnapshotSettings& settings, WorldDefT<Dim>& def) 
   def.threads = settings.threads();
   def.energy_budget = settings.energy_budget();
   def.planar_particle = settings.planar_spheres() ? PlanarParticle::kSphere : PlanarParticle::kDisc;
-  for (int axis = 0; axis < Dim; ++axis) def.periodic.axes[static_cast<std::size_t>(axis)] = settings.periodic_axes(axis);
+  for (int axis = 0; axis < Dim; ++axis)
+    def.periodic.axes[static_cast<std::size_t>(axis)] = settings.periodic_axes(axis);
   def.periodic.min = get<Vec<Dim>>(settings.periodic_min(), 0);
   def.periodic.max = get<Vec<Dim>>(settings.periodic_max(), 0);
 }
@@ -823,10 +932,10 @@ WorldSnapshotT<Dim> snapshot_from_proto(const proto::Snapshot& m, SnapshotInfo* 
   if (m.has_box_control()) s.def.box_control = get_box_control<Dim>(m.box_control());
   get_contacts(m.contacts(), s);
   const proto::SnapshotEnergy& energy = m.energy();
-  s.energy = EnergyBudget{energy.initial_kinetic(), energy.gravity_work(),   energy.wall_work(),
-                          energy.kinetic(),         energy.strain(),         energy.contact_damping(),
-                          energy.friction(),        energy.global_damping(), energy.local_damping(),
-                          energy.removed()};
+  s.energy =
+      EnergyBudget{energy.initial_kinetic(), energy.gravity_work(),    energy.wall_work(), energy.kinetic(),
+                   energy.strain(),          energy.contact_damping(), energy.friction(),  energy.global_damping(),
+                   energy.local_damping(),   energy.removed()};
   s.tangential_work = m.tangential_work();
   for (int i = 0; i < m.reference_positions_size() / Dim; ++i) {
     s.reference_positions.push_back(get<Vec<Dim>>(m.reference_positions(), i));

@@ -5,8 +5,8 @@
 namespace dem::io {
 
 bool has_stop_condition(const StopConditions& until) {
-  return until.kinetic_energy_below || until.out_of_balance_below || until.servo_tolerance ||
-         until.wall_stress_above || until.wall_settlement_above;
+  return until.kinetic_energy_below || until.out_of_balance_below || until.servo_tolerance || until.wall_stress_above ||
+         until.wall_settlement_above;
 }
 
 template <int Dim>

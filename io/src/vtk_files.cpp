@@ -127,8 +127,8 @@ void write_particles_vtp(const std::filesystem::path& file, const WorldSnapshotT
       shape_tensor.add(std::array<double, 3>{axis.x(), axis.y(), axis.z()});
     }
   }
-  data.point_data = {id, material, radius, velocity, angular_velocity, contacts, orientation, semi_axes, exponent,
-                     shape_tensor};
+  data.point_data = {id,       material,    radius,    velocity, angular_velocity,
+                     contacts, orientation, semi_axes, exponent, shape_tensor};
   data.point_scalars = "radius";
   add_time(data, snapshot);
   vtk::DataArray material_names{.name = "material_names", .type = "String"};
@@ -153,9 +153,10 @@ void write_contacts_vtp(const std::filesystem::path& file, const WorldSnapshotT<
   for (const ContactSnapshotT<Dim>& c : snapshot.contacts) {
     if (!c.touching) continue;
     const Vec<Dim>& from = particles[c.first].position;
-    const Vec<Dim> to = c.with_wall ? c.point
-                                    : Vec<Dim>(from + nearest_separation<Dim>(from, particles[c.second].position,
-                                                                              snapshot.def.periodic));
+    const Vec<Dim> to =
+        c.with_wall
+            ? c.point
+            : Vec<Dim>(from + nearest_separation<Dim>(from, particles[c.second].position, snapshot.def.periodic));
     const auto start = static_cast<std::int64_t>(data.points.size());
     data.points.push_back(point3<Dim>(from));
     data.points.push_back(point3<Dim>(to));

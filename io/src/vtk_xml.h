@@ -19,7 +19,7 @@ struct DataArray {
   std::string name;
   std::string type;  // "Float64", "Int32", "Int64", "UInt64", "UInt8", "String"
   int components = 1;
-  std::string values;   // the ASCII numbers, separated by spaces
+  std::string values;     // the ASCII numbers, separated by spaces
   std::size_t count = 0;  // numbers added (strings, for "String")
   std::size_t tuples() const { return type == "String" ? count : count / static_cast<std::size_t>(components); }
   void add(double value);

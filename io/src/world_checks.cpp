@@ -17,7 +17,8 @@ void check_fixed_step(double step, double critical, const CaseSource& source, co
         source, path + ".fixed",
         format_number(step) + " s exceeds the critical time step " + format_number(critical) +
             " s (2 sqrt(m/k) for linear laws, Rayleigh's for Hertz laws), beyond which central differences are "
-            "unstable and the run blows up; use at most " + format_number(critical) + " s, or a fraction instead"));
+            "unstable and the run blows up; use at most " +
+            format_number(critical) + " s, or a fraction instead"));
   }
 }
 
@@ -31,7 +32,8 @@ void check_built_world(const BasicWorld<Dim>& world, const CaseSource& source) {
     throw CaseError(describe_problem(source, "time_step",
                                      "the time step works out to " + format_number(step) +
                                          " s; the particles' masses and the contact stiffnesses give no finite "
-                                         "critical step (" + format_number(critical) + " s)"));
+                                         "critical step (" +
+                                         format_number(critical) + " s)"));
   }
   check_fixed_step(step, critical, source, "time_step");
 }

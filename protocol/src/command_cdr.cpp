@@ -49,11 +49,20 @@ std::optional<T> decode_cdr(std::string_view bytes) {
   bool little = false;
   std::uint32_t version = CDR_ENC_VERSION_1;
   switch (encoding_of(bytes)) {
-    case 0x0000: break;  // CDR_BE
-    case 0x0001: little = true; break;  // CDR_LE
-    case 0x0006: version = CDR_ENC_VERSION_2; break;  // CDR2_BE
-    case 0x0007: little = true; version = CDR_ENC_VERSION_2; break;  // CDR2_LE
-    default: return std::nullopt;
+    case 0x0000:
+      break;  // CDR_BE
+    case 0x0001:
+      little = true;
+      break;  // CDR_LE
+    case 0x0006:
+      version = CDR_ENC_VERSION_2;
+      break;  // CDR2_BE
+    case 0x0007:
+      little = true;
+      version = CDR_ENC_VERSION_2;
+      break;  // CDR2_LE
+    default:
+      return std::nullopt;
   }
   // Cyclone normalizes in place, in a buffer aligned for any primitive.
   const auto size = static_cast<std::uint32_t>(bytes.size() - 4);
@@ -74,7 +83,7 @@ std::optional<T> decode_cdr(std::string_view bytes) {
   return message;
 }
 
-#define DEM_INSTANTIATE(T)                         \
+#define DEM_INSTANTIATE(T)                   \
   template std::string encode_cdr(const T&); \
   template std::optional<T> decode_cdr(std::string_view);
 DEM_PROTOCOL_FOR_EACH_MESSAGE(DEM_INSTANTIATE)

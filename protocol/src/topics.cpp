@@ -13,13 +13,20 @@ std::string topic_name(std::string_view server, TopicKind kind) {
   std::string name(kPrefix);
   name += server;
   switch (kind) {
-    case TopicKind::kCommand: return name + "/command";
-    case TopicKind::kReply: return name + "/reply";
-    case TopicKind::kStatus: return name + std::string(kStatusSuffix);
-    case TopicKind::kPlateForces: return name + "/plate_forces";
-    case TopicKind::kContactStats: return name + "/contact_stats";
-    case TopicKind::kRegionMeasures: return name + "/region_measures";
-    case TopicKind::kNameClaim: return name + "/_name_claim";
+    case TopicKind::kCommand:
+      return name + "/command";
+    case TopicKind::kReply:
+      return name + "/reply";
+    case TopicKind::kStatus:
+      return name + std::string(kStatusSuffix);
+    case TopicKind::kPlateForces:
+      return name + "/plate_forces";
+    case TopicKind::kContactStats:
+      return name + "/contact_stats";
+    case TopicKind::kRegionMeasures:
+      return name + "/region_measures";
+    case TopicKind::kNameClaim:
+      return name + "/_name_claim";
   }
   return name;
 }

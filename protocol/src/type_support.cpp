@@ -41,10 +41,10 @@ void with_c_sample(const T& message, const std::function<void(const void*)>& use
   use(&sample);
 }
 
-#define DEM_INSTANTIATE(T)                                                         \
-  template const dds_topic_descriptor_t* detail::descriptor_of<T>();               \
-  template dds_return_t detail::write_sample(dds_entity_t, const T&);              \
-  template T detail::read_sample<T>(const void*);                                  \
+#define DEM_INSTANTIATE(T)                                            \
+  template const dds_topic_descriptor_t* detail::descriptor_of<T>();  \
+  template dds_return_t detail::write_sample(dds_entity_t, const T&); \
+  template T detail::read_sample<T>(const void*);                     \
   template void with_c_sample(const T&, const std::function<void(const void*)>&);
 DEM_PROTOCOL_FOR_EACH_MESSAGE(DEM_INSTANTIATE)
 #undef DEM_INSTANTIATE

@@ -31,7 +31,9 @@ bool ActiveRun::advance(std::uint64_t cycles, const WorldSession& world) {
 }
 
 bool ActiveRun::check(const WorldSession& world) {
-  const auto reached = [](double value, double target, bool rising) { return rising ? value >= target : value <= target; };
+  const auto reached = [](double value, double target, bool rising) {
+    return rising ? value >= target : value <= target;
+  };
   if (goal_.wall && (goal_.stress || goal_.settlement)) {
     const protocol::WallForce plate = world.read_wall(*goal_.wall);
     if (goal_.stress && reached(plate.normal_stress, *goal_.stress, stress_rising_)) {

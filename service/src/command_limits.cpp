@@ -94,9 +94,9 @@ void check_command(const protocol::Command& c, const CommandLimits& limits) {
         vector("query.box_max", q.box_max);
       }
       if (q.min_normal_force) number("query.min_normal_force", *q.min_normal_force);
-      require(q.chunk_size <= limits.max_chunk_contacts,
-              "query.chunk_size: " + std::to_string(q.chunk_size) + " contacts a chunk, more than the limit of " +
-                  std::to_string(limits.max_chunk_contacts));
+      require(q.chunk_size <= limits.max_chunk_contacts, "query.chunk_size: " + std::to_string(q.chunk_size) +
+                                                             " contacts a chunk, more than the limit of " +
+                                                             std::to_string(limits.max_chunk_contacts));
       break;
     }
     case CommandKind::kSaveSnapshot:

@@ -24,7 +24,8 @@ std::optional<ReceivedCommand> CommandQueue::pop(std::chrono::milliseconds timeo
 
 std::vector<ReceivedCommand> CommandQueue::take_all() {
   std::lock_guard lock(mutex_);
-  std::vector<ReceivedCommand> all(std::make_move_iterator(commands_.begin()), std::make_move_iterator(commands_.end()));
+  std::vector<ReceivedCommand> all(std::make_move_iterator(commands_.begin()),
+                                   std::make_move_iterator(commands_.end()));
   commands_.clear();
   return all;
 }

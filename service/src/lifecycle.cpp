@@ -36,8 +36,8 @@ std::optional<std::string> refusal(ServerState state, CommandKind kind) {
       }
     case ServerState::kError:
       // The world is back at the last good state: it may be read and saved.
-      if (kind == CommandKind::kLoadCase || kind == CommandKind::kLoadSnapshot ||
-          kind == CommandKind::kQueryContacts || kind == CommandKind::kSaveSnapshot) {
+      if (kind == CommandKind::kLoadCase || kind == CommandKind::kLoadSnapshot || kind == CommandKind::kQueryContacts ||
+          kind == CommandKind::kSaveSnapshot) {
         return std::nullopt;
       }
       return "the server is in error after a failed run (its world is back at the last good state, which "

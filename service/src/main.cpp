@@ -20,12 +20,12 @@
 #include <thread>
 
 #include "dem/io/resource_limits.h"
-#include "dem/version.h"
 #include "dem/protocol/topics.h"
 #include "dem/service/background_load.h"
 #include "dem/service/command_error.h"
 #include "dem/service/name_claim.h"
 #include "dem/service/server.h"
+#include "dem/version.h"
 
 namespace {
 
@@ -88,8 +88,9 @@ class SignalWatcher {
 
 int main(int argc, char** argv) {
   dem::service::ServerOptions options;
-  CLI::App app{"Runs one DEM simulation as a service on Cyclone DDS (loopback by default), driven by commands and "
-               "publishing plate forces, contact statistics and its status."};
+  CLI::App app{
+      "Runs one DEM simulation as a service on Cyclone DDS (loopback by default), driven by commands and "
+      "publishing plate forces, contact statistics and its status."};
   app.set_version_flag("--version", "dem_server " DEM_VERSION);
   std::string log_level = "info";
   std::string initial_case;

@@ -17,7 +17,7 @@ constexpr std::chrono::milliseconds kPoll{50};
 
 // What the other participants of the domain have under the name.
 struct Rivals {
-  bool holder = false;           // a status writer: a server serving under the name
+  bool holder = false;            // a status writer: a server serving under the name
   bool earlier_claimant = false;  // a claim from a participant whose GUID is below ours
 };
 
@@ -44,9 +44,10 @@ NameClaim::NameClaim(const dds::Participant& participant, const std::string& nam
   std::this_thread::sleep_for(discovery);
   Rivals rivals = look();
   if (rivals.holder) {
-    spdlog::warn("a server named {} is on DDS domain {}: waiting up to {} s for it to leave (a server that died keeps "
-                 "its name until its lease runs out)",
-                 name, domain, std::chrono::duration<double>(wait).count());
+    spdlog::warn(
+        "a server named {} is on DDS domain {}: waiting up to {} s for it to leave (a server that died keeps "
+        "its name until its lease runs out)",
+        name, domain, std::chrono::duration<double>(wait).count());
     const auto deadline = Clock::now() + wait;
     while (rivals.holder && Clock::now() < deadline) {
       std::this_thread::sleep_for(kPoll);

@@ -18,7 +18,7 @@ std::string directory_name(const std::string& case_name) {
 }  // namespace
 
 std::filesystem::path OutputRecorder::case_directory_of(const std::filesystem::path& output,
-                                                       const std::string& case_name) {
+                                                        const std::string& case_name) {
   return output / directory_name(case_name);
 }
 
@@ -38,10 +38,10 @@ std::unique_ptr<OutputRecorder::Compression<Dim>>& OutputRecorder::compression()
 template <int Dim>
 void OutputRecorder::make_compression(const BasicWorld<Dim>& world) {
   const io::TableSizes* tables = resume_ ? &resume_->tables : nullptr;
-  compression<Dim>().reset(new Compression<Dim>{
-      io::CompressionAnalysisT<Dim>(*compression_settings_),
-      io::CompressionCsvT<Dim>(directory_, world.wall(compression_settings_->loading_plate).name,
-                               world.wall(compression_settings_->bottom_plate).name, tables)});
+  compression<Dim>().reset(
+      new Compression<Dim>{io::CompressionAnalysisT<Dim>(*compression_settings_),
+                           io::CompressionCsvT<Dim>(directory_, world.wall(compression_settings_->loading_plate).name,
+                                                    world.wall(compression_settings_->bottom_plate).name, tables)});
   if (resume_ && !resume_->analysis.empty()) compression<Dim>()->analysis.restore(resume_->analysis);
 }
 
@@ -202,8 +202,8 @@ void OutputRecorder::record_stage(std::size_t stage, const std::string& name, co
   if (!assembly_) return;
   try {
     if (!stages_) {
-      stages_ = std::make_unique<io::CsvFile>(directory_, "stages.csv",
-                                              "stage,name,cycles_run,condition_met,cycle,time");
+      stages_ =
+          std::make_unique<io::CsvFile>(directory_, "stages.csv", "stage,name,cycles_run,condition_met,cycle,time");
     }
     stages_->write_row(stage + 1, name, result.cycles_run, result.condition_met, cycle, time);
     stages_->flush();
@@ -258,11 +258,9 @@ void OutputRecorder::close() {
 }
 
 template void OutputRecorder::start(const std::string&, const BasicWorld<2>&, std::optional<io::CompressionSettings>,
-                                    std::uint64_t, const io::ResumePoint*,
-                                    const std::vector<io::MeasurementRegion>&);
+                                    std::uint64_t, const io::ResumePoint*, const std::vector<io::MeasurementRegion>&);
 template void OutputRecorder::start(const std::string&, const BasicWorld<3>&, std::optional<io::CompressionSettings>,
-                                    std::uint64_t, const io::ResumePoint*,
-                                    const std::vector<io::MeasurementRegion>&);
+                                    std::uint64_t, const io::ResumePoint*, const std::vector<io::MeasurementRegion>&);
 template void OutputRecorder::record(const BasicWorld<2>&, std::optional<std::size_t>);
 template void OutputRecorder::record(const BasicWorld<3>&, std::optional<std::size_t>);
 template void OutputRecorder::finish(const BasicWorld<2>&);

@@ -29,8 +29,8 @@ void ReplySender::send(const ReceivedCommand& received, protocol::Reply reply) {
 
   const auto kind = protocol::command_kind(command.kind);
   const std::string_view kind_name = kind ? protocol::to_string(*kind) : "unknown";
-  const auto log_level = reply.ok() || reply.status == protocol::ReplyStatus::kCancelled ? spdlog::level::info
-                                                                                        : spdlog::level::warn;
+  const auto log_level =
+      reply.ok() || reply.status == protocol::ReplyStatus::kCancelled ? spdlog::level::info : spdlog::level::warn;
   spdlog::log(log_level, "replied to request {} from {}: {} -> {} in {:.3f} s: {}", command.request_id,
               command.client_id, kind_name, protocol::to_string(reply.status), reply.duration, reply.message);
 

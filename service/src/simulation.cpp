@@ -31,7 +31,6 @@ std::string join(const std::vector<std::string>& lines) {
   return text;
 }
 
-
 // A case's world built, with what the reply says about it.
 template <int Dim>
 Simulation::Prepared prepared_case(const io::CaseDefinitionT<Dim>& definition, const io::CaseSource& case_source,
@@ -77,8 +76,8 @@ std::string Simulation::install(Prepared prepared) {
 Simulation::Prepared Simulation::Preparer::prepare_case(const protocol::LoadCaseArgs& args) const {
   const int sources = static_cast<int>(!args.path.empty()) + static_cast<int>(!args.text.empty()) +
                       static_cast<int>(!args.binary.empty());
-  require(sources == 1, "load_case takes exactly one of a path, a text or a binary case (got " +
-                            std::to_string(sources) + ")");
+  require(sources == 1,
+          "load_case takes exactly one of a path, a text or a binary case (got " + std::to_string(sources) + ")");
   std::string source;
   try {
     io::LoadedCase loaded;
@@ -146,9 +145,7 @@ Simulation::Prepared Simulation::Preparer::prepare_snapshot(std::string_view byt
   }
 }
 
-std::string Simulation::snapshot_bytes() const {
-  return world().snapshot_bytes(snapshot_info());
-}
+std::string Simulation::snapshot_bytes() const { return world().snapshot_bytes(snapshot_info()); }
 
 WallId Simulation::find_wall(const std::string& name, std::int32_t id) const {
   const WorldSession& w = world();
@@ -176,7 +173,8 @@ std::string Simulation::set_wall_velocity(const protocol::WallVelocityArgs& args
   const protocol::Vector3& v = args.twist.linear;
   const protocol::Vector3& w = args.twist.angular;
   return "wall " + world().wall_name(wall) + " moves at (" + format_value(v.x) + ", " + format_value(v.y) +
-         (dimension() == 3 ? ", " + format_value(v.z) + ") m/s, (" + format_value(w.x) + ", " + format_value(w.y) + ", " + format_value(w.z) + ")"
+         (dimension() == 3 ? ", " + format_value(v.z) + ") m/s, (" + format_value(w.x) + ", " + format_value(w.y) +
+                                 ", " + format_value(w.z) + ")"
                            : ") m/s, " + format_value(w.z)) +
          " rad/s";
 }
@@ -230,7 +228,8 @@ std::string Simulation::set_parameter(const protocol::ParameterArgs& args) {
     if (name == "time_step_fraction") {
       require(args.value > 0.0 && args.value <= 1.0, "time_step_fraction must be in (0, 1]");
       w.set_time_step_fraction(args.value);
-      return "time step now " + format_value(w.time_step()) + " s (" + format_value(args.value) + " of the critical step)";
+      return "time step now " + format_value(w.time_step()) + " s (" + format_value(args.value) +
+             " of the critical step)";
     }
     if (name == "friction") {
       require(args.value >= 0.0, "friction must be >= 0");
@@ -248,8 +247,8 @@ std::string Simulation::set_parameter(const protocol::ParameterArgs& args) {
     if (name == "gravity") {
       const protocol::Vector3& g = args.vector;
       w.set_gravity(g);
-      return "gravity set to (" + format_value(g.x) + ", " + format_value(g.y) + (dimension() == 3 ? ", " + format_value(g.z) : "") +
-             ") m/s^2";
+      return "gravity set to (" + format_value(g.x) + ", " + format_value(g.y) +
+             (dimension() == 3 ? ", " + format_value(g.z) : "") + ") m/s^2";
     }
   } catch (const DefinitionError& error) {
     throw CommandError(ReplyStatus::kBadRequest, error.what());

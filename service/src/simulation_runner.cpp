@@ -61,17 +61,17 @@ void SimulationRunner::load_initial_case(const std::filesystem::path& path, bool
   }
   if (resume) {
     // Where the checkpoints of this case are: the case directory install() will use.
-    const io::CheckpointStore store(OutputRecorder::case_directory_of(options_.output_directory, prepared.case_name) /
-                                        "checkpoints",
-                                    options_.checkpoints.keep);
+    const io::CheckpointStore store(
+        OutputRecorder::case_directory_of(options_.output_directory, prepared.case_name) / "checkpoints",
+        options_.checkpoints.keep);
     std::optional<io::CheckpointStore::Latest> latest = store.latest();
     if (!latest) {
       throw CommandError(ReplyStatus::kNotFound, "--resume: no whole checkpoint in " + store.directory().string() +
                                                      " (start without --resume to begin afresh)");
     }
     if (latest->point.case_digest != prepared.digest) {
-      throw CommandError(ReplyStatus::kInvalidCase, "--resume: " + latest->path.string() +
-                                                        " belongs to another case (or this one changed since)");
+      throw CommandError(ReplyStatus::kInvalidCase,
+                         "--resume: " + latest->path.string() + " belongs to another case (or this one changed since)");
     }
     try {
       prepared.world->restore_bytes(latest->snapshot_bytes, latest->path.string());
@@ -143,15 +143,14 @@ void SimulationRunner::finish() {
   }
   state_ = ServerState::kShutdown;
   // A one-shot server's last word keeps how its programme ended.
-  message_ = (programme_ ? message_ + "; " : std::string()) +
-             (simulation_.loaded() ? "shut down at cycle " + std::to_string(simulation_.world().cycle_count())
-                                   : "shut down");
+  message_ =
+      (programme_ ? message_ + "; " : std::string()) +
+      (simulation_.loaded() ? "shut down at cycle " + std::to_string(simulation_.world().cycle_count()) : "shut down");
   publish_status();
   using namespace std::chrono_literals;
   replies_.flush(2s);
   telemetry_.flush_status(2s);
-  spdlog::info("{}; {} commands served, {} telemetry samples dropped", message_, cache_.served(),
-               telemetry_.dropped());
+  spdlog::info("{}; {} commands served, {} telemetry samples dropped", message_, cache_.served(), telemetry_.dropped());
 }
 
 // --- commands ------------------------------------------------------------
@@ -369,10 +368,10 @@ protocol::Reply SimulationRunner::save_snapshot(const protocol::SnapshotArgs& ar
 std::string SimulationRunner::load_snapshot(const protocol::SnapshotArgs& args) {
   if (args.transfer) {
     require(!args.data.empty(), "load_snapshot with transfer needs the snapshot's bytes");
-    return install(prepare_in_background("load_snapshot", [preparer = simulation_.preparer(), data = args.data](
-                                                              std::function<bool()>) {
-      return preparer.prepare_snapshot(data, "<transferred snapshot>");
-    }));
+    return install(prepare_in_background("load_snapshot",
+                                         [preparer = simulation_.preparer(), data = args.data](std::function<bool()>) {
+                                           return preparer.prepare_snapshot(data, "<transferred snapshot>");
+                                         }));
   }
   require(!args.path.empty(), "load_snapshot needs a path, or transfer with the bytes");
   const std::filesystem::path path = snapshot_path(args.path);
@@ -387,14 +386,11 @@ std::string SimulationRunner::load_snapshot(const protocol::SnapshotArgs& args) 
     throw CommandError(ReplyStatus::kFailed, read_error.what());
   }
   return install(prepare_in_background(
-      "load_snapshot",
-      [preparer = simulation_.preparer(), bytes = std::move(bytes), source = path.string()](std::function<bool()>) {
-        return preparer.prepare_snapshot(bytes, source);
-      }));
+      "load_snapshot", [preparer = simulation_.preparer(), bytes = std::move(bytes), source = path.string()](
+                           std::function<bool()>) { return preparer.prepare_snapshot(bytes, source); }));
 }
 
-Simulation::Prepared SimulationRunner::prepare_in_background(const std::string& what,
-                                                            BackgroundLoad::Prepare prepare) {
+Simulation::Prepared SimulationRunner::prepare_in_background(const std::string& what, BackgroundLoad::Prepare prepare) {
   if (abandoned_ && abandoned_->finished()) abandoned_.reset();
   if (abandoned_) {
     throw CommandError(ReplyStatus::kBusy, "busy: an abandoned load is still ending; send " + what + " again later");
@@ -464,7 +460,8 @@ std::optional<std::string> SimulationRunner::ownership_refusal(const ReceivedCom
     spdlog::info("{} ends the {}, whose client has left", received.command.client_id, run);
     return std::nullopt;
   }
-  return "the running " + run + " belongs to that client, which is still here; send it with force to end it anyway "
+  return "the running " + run +
+         " belongs to that client, which is still here; send it with force to end it anyway "
          "(demctl stop --force)";
 }
 
@@ -473,8 +470,10 @@ void SimulationRunner::note_owner_left() {
   const ReceivedCommand* owner = run_owner();
   if (owner_left_logged_ || owner == nullptr || owner->writer == 0 || writer_alive_(owner->writer)) return;
   owner_left_logged_ = true;
-  spdlog::warn("client {}, which started the running {}, has left the domain: the run goes on, and any client may "
-               "stop it", owner->command.client_id, protocol::to_string(*protocol::command_kind(owner->command.kind)));
+  spdlog::warn(
+      "client {}, which started the running {}, has left the domain: the run goes on, and any client may "
+      "stop it",
+      owner->command.client_id, protocol::to_string(*protocol::command_kind(owner->command.kind)));
   message_ += "; its client has left";
 }
 
@@ -516,11 +515,10 @@ void SimulationRunner::run_chunk() {
   WorldSession& world = simulation_.world();
   const auto target = std::chrono::duration<double>(options_.chunk_duration).count();
   const auto by_rate = cycles_per_second_ > 0.0 ? static_cast<std::uint64_t>(cycles_per_second_ * target) : 1;
-  const std::uint64_t cycles =
-      std::clamp<std::uint64_t>(std::min({by_rate, active_->cycles_to_next_stop(),
-                                          schedule_.cycles_until_due(world.cycle_count(), world.time(),
-                                                                     world.time_step())}),
-                                1, kMaxChunk);
+  const std::uint64_t cycles = std::clamp<std::uint64_t>(
+      std::min({by_rate, active_->cycles_to_next_stop(),
+                schedule_.cycles_until_due(world.cycle_count(), world.time(), world.time_step())}),
+      1, kMaxChunk);
   const auto start = std::chrono::steady_clock::now();
   try {
     world.cycle(cycles);
@@ -578,9 +576,10 @@ void SimulationRunner::fail_unhealthy(const StepHealth& problem) {
 
 void SimulationRunner::complete_run() {
   const WorldSession& world = simulation_.world();
-  std::string message = "ran " + std::to_string(active_->done()) + " cycles to cycle " +
-                        std::to_string(world.cycle_count());
-  if (active_->condition_met()) message = active_->condition() + " after " + std::to_string(active_->done()) + " cycles";
+  std::string message =
+      "ran " + std::to_string(active_->done()) + " cycles to cycle " + std::to_string(world.cycle_count());
+  if (active_->condition_met())
+    message = active_->condition() + " after " + std::to_string(active_->done()) + " cycles";
   if (world.cycle_count() != last_telemetry_cycle_) publish_telemetry();
   end_run(ReplyStatus::kOk, message);
 }
@@ -639,7 +638,8 @@ protocol::Status SimulationRunner::status() const {
     s.command_request_id = command.request_id;
     s.command_cycles_done = active_->done();
     s.command_cycles_total = active_->total();
-    s.progress = active_->total() > 0 ? static_cast<double>(active_->done()) / static_cast<double>(active_->total()) : 0.0;
+    s.progress =
+        active_->total() > 0 ? static_cast<double>(active_->done()) / static_cast<double>(active_->total()) : 0.0;
   } else if (programme_ && state_ == ServerState::kRunning) {
     // A one-shot run's programme shows as a running command of no client.
     s.command = "programme";

@@ -53,12 +53,18 @@ void SimulationRunner::run_programme(const ReceivedCommand& received) {
   reply.cycles_run = simulation_.world().cycle_count() - start;
   reply.message = message_;
   switch (programme_->outcome()) {
-    case ProgrammeOutcome::kCompleted: reply.status = ReplyStatus::kOk; break;
-    case ProgrammeOutcome::kStopped: reply.status = ReplyStatus::kCancelled; break;
-    default: reply.status = ReplyStatus::kFailed; break;
+    case ProgrammeOutcome::kCompleted:
+      reply.status = ReplyStatus::kOk;
+      break;
+    case ProgrammeOutcome::kStopped:
+      reply.status = ReplyStatus::kCancelled;
+      break;
+    default:
+      reply.status = ReplyStatus::kFailed;
+      break;
   }
   programme_.reset();  // cycle and run_until record the tables at the telemetry interval again
-  announce();  // before the reply: who reads it sees the programme ended
+  announce();          // before the reply: who reads it sees the programme ended
   send(received, std::move(reply));
 }
 
@@ -82,10 +88,11 @@ void SimulationRunner::run_stages(std::size_t first, std::size_t count, std::uin
     announce();
     StageResult result;
     try {
-      result = world.run_stage(i, [this] { return between_programme_cycles(); }, done);
+      result = world.run_stage(
+          i, [this] { return between_programme_cycles(); }, done);
     } catch (const std::exception& error) {
-      programme_->fail("the engine failed at cycle " + std::to_string(world.cycle_count()) + " in " +
-                       stage_label(i) + ": " + error.what());
+      programme_->fail("the engine failed at cycle " + std::to_string(world.cycle_count()) + " in " + stage_label(i) +
+                       ": " + error.what());
       break;
     }
     if (programme_->outcome() == ProgrammeOutcome::kFailed || programme_unhealthy(true)) break;
@@ -169,8 +176,9 @@ void SimulationRunner::end_programme() {
   const std::uint64_t snapshot_cycle = failed ? programme_->last_good().cycle() : world.cycle_count();
   bool written = true;
   try {
-    io::write_snapshot_bytes(recorder_.own_file(name), failed ? programme_->last_good().bytes(simulation_.snapshot_info())
-                                          : simulation_.snapshot_bytes());
+    io::write_snapshot_bytes(recorder_.own_file(name), failed
+                                                           ? programme_->last_good().bytes(simulation_.snapshot_info())
+                                                           : simulation_.snapshot_bytes());
   } catch (const std::exception& error) {
     written = false;
     spdlog::error("the snapshot cannot be written: {}", error.what());

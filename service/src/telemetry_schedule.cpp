@@ -18,7 +18,8 @@ bool TelemetrySchedule::due(std::uint64_t cycle, double time) const {
 
 std::uint64_t TelemetrySchedule::cycles_until_due(std::uint64_t cycle, double time, double time_step) const {
   std::uint64_t cycles = std::numeric_limits<std::uint64_t>::max();
-  if (every_cycles_ > 0) cycles = std::min(cycles, last_cycle_ + every_cycles_ - std::min(cycle, last_cycle_ + every_cycles_));
+  if (every_cycles_ > 0)
+    cycles = std::min(cycles, last_cycle_ + every_cycles_ - std::min(cycle, last_cycle_ + every_cycles_));
   if (every_seconds_ > 0.0 && time_step > 0.0) {
     const double left = (last_time_ + every_seconds_ * (1.0 - kSlack) - time) / time_step;
     cycles = std::min(cycles, left <= 0.0 ? 0 : static_cast<std::uint64_t>(std::ceil(left)));

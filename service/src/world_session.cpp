@@ -16,7 +16,9 @@ Vec2 vector_of(const protocol::Vector3& v, std::integral_constant<int, 2>, const
   }
   return {v.x, v.y};
 }
-Vec3 vector_of(const protocol::Vector3& v, std::integral_constant<int, 3>, const std::string&) { return {v.x, v.y, v.z}; }
+Vec3 vector_of(const protocol::Vector3& v, std::integral_constant<int, 3>, const std::string&) {
+  return {v.x, v.y, v.z};
+}
 double spin_of(const protocol::Vector3& w, std::integral_constant<int, 2>, const std::string& what) {
   if (w.x != 0.0 || w.y != 0.0) {
     throw CommandError(protocol::ReplyStatus::kBadRequest, what + ": a 2D wall turns about z only, x and y must be 0");
@@ -98,7 +100,9 @@ class WorldSessionT final : public WorldSession {
   void set_time_step_fraction(double fraction) override { world_.set_time_step_fraction(fraction); }
   const std::vector<MaterialDef>& materials() const override { return world_.materials(); }
   void set_friction(MaterialId material, double friction) override { world_.set_friction(material, friction); }
-  void set_gravity(const protocol::Vector3& gravity) override { world_.set_gravity(vector_of(gravity, kDim, "gravity")); }
+  void set_gravity(const protocol::Vector3& gravity) override {
+    world_.set_gravity(vector_of(gravity, kDim, "gravity"));
+  }
   void set_threads(int threads) override { world_.set_threads(threads); }
 
   std::string snapshot_bytes(const io::SnapshotInfo& info) const override {
@@ -118,14 +122,12 @@ class WorldSessionT final : public WorldSession {
   std::size_t stage_count() const override { return stages_.size(); }
   const std::string& stage_name(std::size_t stage) const override { return stages_.at(stage).name; }
   std::uint64_t stage_cycles(std::size_t stage) const override { return stages_.at(stage).cycles; }
-  StageResult run_stage(std::size_t stage, const std::function<bool()>& between_cycles,
-                        std::uint64_t done) override {
+  StageResult run_stage(std::size_t stage, const std::function<bool()>& between_cycles, std::uint64_t done) override {
     // Resumed: the start actions are done and in the state.
     const StageDefT<Dim> running = done > 0 ? stage_remainder(stages_.at(stage), done) : stages_.at(stage);
     // An observer interval of one cycle: the caller decides what is due
     // (rows, telemetry, commands); run_stage alone decides the stage's end.
-    StageResult result =
-        dem::run_stage(world_, running, 1, [&](const BasicWorld<Dim>&) { return between_cycles(); });
+    StageResult result = dem::run_stage(world_, running, 1, [&](const BasicWorld<Dim>&) { return between_cycles(); });
     result.cycles_run += done;
     return result;
   }
@@ -170,8 +172,8 @@ template <int Dim>
 std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages,
                                            std::optional<io::CompressionSettings> compression,
                                            std::uint64_t vtk_interval, std::vector<io::MeasurementRegion> regions) {
-  return std::make_unique<WorldSessionT<Dim>>(std::move(world), std::move(stages), std::move(compression),
-                                              vtk_interval, std::move(regions));
+  return std::make_unique<WorldSessionT<Dim>>(std::move(world), std::move(stages), std::move(compression), vtk_interval,
+                                              std::move(regions));
 }
 
 template std::unique_ptr<WorldSession> make_session<2>(BasicWorld<2>, std::vector<StageDefT<2>>,

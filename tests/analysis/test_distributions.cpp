@@ -58,13 +58,13 @@ TEST(Distributions, RoseCountsEachNormalAtBothEnds) {
 
 TEST(Distributions, ObliquitiesFromMinusOneToOne) {
   // mu = 0.5: F_s / (mu F_n) = -1 (sliding), 0.2, 0.99, 1.
-  const AssemblySample s = star({0.0, 1.0, 2.0, 3.0}, {2.0, 2.0, 2.0, 2.0}, {-1.0, 0.2, 0.99, 1.0},
-                                {true, false, false, true});
+  const AssemblySample s =
+      star({0.0, 1.0, 2.0, 3.0}, {2.0, 2.0, 2.0, 2.0}, {-1.0, 0.2, 0.99, 1.0}, {true, false, false, true});
   const auto histogram = obliquity_histogram(s, Region{"all"}, 0.5, 20);
   ASSERT_EQ(histogram.size(), 20u);
-  EXPECT_EQ(histogram[0].contacts, 1);    // [-1, -0.9)
-  EXPECT_EQ(histogram[12].contacts, 1);   // 0.2 in [0.2, 0.3)
-  EXPECT_EQ(histogram[19].contacts, 2);   // 0.99 and 1 in the last class
+  EXPECT_EQ(histogram[0].contacts, 1);   // [-1, -0.9)
+  EXPECT_EQ(histogram[12].contacts, 1);  // 0.2 in [0.2, 0.3)
+  EXPECT_EQ(histogram[19].contacts, 2);  // 0.99 and 1 in the last class
   EXPECT_NEAR(histogram[19].share, 0.5, 1e-12);
   EXPECT_NEAR(histogram[0].low, -1.0, 1e-12);
 }

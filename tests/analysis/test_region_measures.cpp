@@ -147,9 +147,10 @@ TEST(RegionMeasures, AMeasurementCircleInsideAPackingReadsItsStress) {
   const RegionMeasures m = measure_region(s, circle);
   // The discs whose centres lie inside stand for the circle's area times
   // its solid fraction: near F / (2R), off by the discs cut by its edge.
-  std::printf("measurement circle of radius 12 in a square packing: sigma_xx %.5f (3), sigma_yy %.5f (1), "
-              "porosity %.5f (%.5f), %d discs\n",
-              m.stress(0, 0), m.stress(1, 1), m.porosity, 1.0 - kPi / 4.0, m.particles);
+  std::printf(
+      "measurement circle of radius 12 in a square packing: sigma_xx %.5f (3), sigma_yy %.5f (1), "
+      "porosity %.5f (%.5f), %d discs\n",
+      m.stress(0, 0), m.stress(1, 1), m.porosity, 1.0 - kPi / 4.0, m.particles);
   EXPECT_NEAR(m.stress(0, 0), 3.0, 0.03);
   EXPECT_NEAR(m.stress(1, 1), 1.0, 0.01);
   EXPECT_NEAR(m.porosity, 1.0 - kPi / 4.0, 0.005);
@@ -233,7 +234,7 @@ TEST(RegionMeasures, CubicPackingOfSpheresGivesTheBoundaryTractions) {
           int next[3] = {i, j, l};
           ++next[axis];
           add_contact(s, a, index[axis] + 1 < k ? id(next[0], next[1], next[2]) : -1, e, Vec3(-force[axis] * e), r,
-                         2 * axis + 1);
+                      2 * axis + 1);
           if (index[axis] == 0) add_contact(s, a, -1, Vec3(-e), Vec3(force[axis] * e), r, 2 * axis);
         }
       }
@@ -290,7 +291,9 @@ TEST(RegionMeasures, WorldPressedByWallsCarriesTheirStress) {
   const AssemblySample s = sample(world);
   ASSERT_EQ(s.contacts.size(), 24u);
   // The cells of the packing tile this box exactly.
-  const Region cells{"cells", RegionShape::kBox, {1.0 - 0.5 * spacing, 1.0 - 0.5 * spacing},
+  const Region cells{"cells",
+                     RegionShape::kBox,
+                     {1.0 - 0.5 * spacing, 1.0 - 0.5 * spacing},
                      {1.0 + 2.5 * spacing, 1.0 + 2.5 * spacing}};
   const RegionMeasures m = measure_region(s, cells);
   const double expected = k * delta / spacing;
@@ -303,7 +306,8 @@ TEST(RegionMeasures, WorldPressedByWallsCarriesTheirStress) {
   EXPECT_NEAR(m.stress(0, 1) / expected, 0.0, 1e-9);
   // The side wall carries three contacts of k delta over the sample's side.
   const auto walls = world.wall_measures();
-  EXPECT_NEAR(walls[1].normal_force, 3.0 * k * delta, 1e-8 * k * delta);  // overlaps of 1e-7 on positions of 1: round-off 1e-9
+  EXPECT_NEAR(walls[1].normal_force, 3.0 * k * delta,
+              1e-8 * k * delta);  // overlaps of 1e-7 on positions of 1: round-off 1e-9
   EXPECT_NEAR(m.stress(0, 0) * 3.0 * spacing / walls[1].normal_force, 1.0, 1e-6);
   EXPECT_NEAR(m.coordination, 4.0, 1e-12);
 }

@@ -14,17 +14,18 @@ constexpr double kPi = std::numbers::pi;
 
 TEST(SolidVolume, DiscInABoxAgainstQuadrantsHalvesAndSegments) {
   const Box<2> box{{0.0, 0.0}, {10.0, 10.0}};
-  EXPECT_NEAR(disc_in_box({5.0, 5.0}, 1.0, box), kPi, 1e-12);          // inside
-  EXPECT_NEAR(disc_in_box({0.0, 0.0}, 1.0, box), kPi / 4.0, 1e-12);    // on a corner
-  EXPECT_NEAR(disc_in_box({5.0, 10.0}, 1.0, box), kPi / 2.0, 1e-12);   // on a side
-  EXPECT_NEAR(disc_in_box({20.0, 5.0}, 1.0, box), 0.0, 1e-15);         // outside
+  EXPECT_NEAR(disc_in_box({5.0, 5.0}, 1.0, box), kPi, 1e-12);         // inside
+  EXPECT_NEAR(disc_in_box({0.0, 0.0}, 1.0, box), kPi / 4.0, 1e-12);   // on a corner
+  EXPECT_NEAR(disc_in_box({5.0, 10.0}, 1.0, box), kPi / 2.0, 1e-12);  // on a side
+  EXPECT_NEAR(disc_in_box({20.0, 5.0}, 1.0, box), 0.0, 1e-15);        // outside
   // Centre 0.4 outside the side x = 0: the segment beyond a chord at
   // distance d = 0.4, r^2 acos(d/r) - d sqrt(r^2 - d^2).
   const double d = 0.4;
   EXPECT_NEAR(disc_in_box({-d, 5.0}, 1.0, box), std::acos(d) - d * std::sqrt(1.0 - d * d), 1e-12);
   // A disc larger than a thin box: the strip's width times the chords.
   const Box<2> strip{{-0.5, -5.0}, {0.5, 5.0}};
-  const double strip_area = 2.0 * (0.5 * std::sqrt(0.75) + std::asin(0.5));  // integral of 2 sqrt(1 - x^2) over [-0.5, 0.5]
+  const double strip_area =
+      2.0 * (0.5 * std::sqrt(0.75) + std::asin(0.5));  // integral of 2 sqrt(1 - x^2) over [-0.5, 0.5]
   EXPECT_NEAR(disc_in_box({0.0, 0.0}, 1.0, strip), strip_area, 1e-12);
 }
 

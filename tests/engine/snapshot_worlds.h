@@ -21,10 +21,9 @@ inline WorldDef settling_box() {
   packing.sizes = {{0.012, 40}, {0.008, 60}};
   packing.seed = 11;
   def.particles = generate_random_packing(packing);
-  def.walls = {WallDef{"bottom", {0.15, 0.0}, {1, 0}, -0.2, 0.2, 1, {}},
-               WallDef{"right", {0.3, 0.15}, {0, 1}, -0.2, 0.2, 1, {}},
-               WallDef{"top", {0.15, 0.3}, {-1, 0}, -0.2, 0.2, 1, {}},
-               WallDef{"left", {0.0, 0.15}, {0, -1}, -0.2, 0.2, 1, {}}};
+  def.walls = {
+      WallDef{"bottom", {0.15, 0.0}, {1, 0}, -0.2, 0.2, 1, {}}, WallDef{"right", {0.3, 0.15}, {0, 1}, -0.2, 0.2, 1, {}},
+      WallDef{"top", {0.15, 0.3}, {-1, 0}, -0.2, 0.2, 1, {}}, WallDef{"left", {0.0, 0.15}, {0, -1}, -0.2, 0.2, 1, {}}};
   def.walls[2].motion.servo = ServoDef{200.0, 1e-3, 0.05};
   def.walls[3].motion.velocity = {0.001, 0.0};
   def.gravity = {0.0, -9.81};

@@ -50,9 +50,9 @@ TEST(ContactLaw, Fig1HandCalculationOfTheFirstCycles) {
     // The walls and discs move over one step at the velocities of the
     // last one; the forces follow from the new relative displacements.
     world.cycle();
-    force_a += k * (v - velocity_x) * dt;          // eq. 2 with eq. 5
+    force_a += k * (v - velocity_x) * dt;           // eq. 2 with eq. 5
     force_b += k * (velocity_x - velocity_y) * dt;  // eq. 6
-    force_c += k * (v + velocity_y) * dt;          // eq. 7
+    force_c += k * (v + velocity_y) * dt;           // eq. 7
     double engine_a = 0.0, engine_b = 0.0, engine_c = 0.0;
     for (const ContactRecord& c : world.contacts()) {
       if (c.second_wall == 0) engine_a = c.normal_force;
@@ -69,8 +69,8 @@ TEST(ContactLaw, Fig1HandCalculationOfTheFirstCycles) {
     // The velocities over the step just taken came from the last cycle's force sums.
     EXPECT_NEAR(world.particles().velocity[0].x(), velocity_x, 2.0 * tol / m * dt * cycle) << "cycle " << cycle;
     EXPECT_NEAR(world.particles().velocity[1].x(), velocity_y, 2.0 * tol / m * dt * cycle) << "cycle " << cycle;
-    std::printf("cycle %d: F_A=%.6e F_B=%.6e F_C=%.6e (hand: %.6e %.6e %.6e)\n", cycle, engine_a, engine_b,
-                engine_c, force_a, force_b, force_c);
+    std::printf("cycle %d: F_A=%.6e F_B=%.6e F_C=%.6e (hand: %.6e %.6e %.6e)\n", cycle, engine_a, engine_b, engine_c,
+                force_a, force_b, force_c);
     velocity_x += (force_a - force_b) / m * dt;  // eqs. 2-4: force sums, then Newton's second law
     velocity_y += (force_b - force_c) / m * dt;
   }
@@ -81,7 +81,8 @@ TEST(ContactLaw, Fig1HandCalculationOfTheFirstCycles) {
 // (F_s)max = F_n tan(phi) + c.
 WorldDef disc_dragged_into_corner(double disc_friction, double wall_friction, double cohesion) {
   WorldDef def;
-  def.materials = {MaterialDef{"disc", 1000.0, disc_friction, cohesion}, MaterialDef{"floor", 1.0, wall_friction, 2.0 * cohesion}};
+  def.materials = {MaterialDef{"disc", 1000.0, disc_friction, cohesion},
+                   MaterialDef{"floor", 1.0, wall_friction, 2.0 * cohesion}};
   def.contact_models = {testing::linear_model(1.0e7, 0.8e7)};
   def.particles = {ParticleDef{{0.0, 0.1}, 0.1, 0}};
   WallDef floor{"floor", {0.0, 0.0}, {1.0, 0.0}, -100.0, 100.0, 1, {}};

@@ -33,10 +33,9 @@ WorldDef box_of_discs() {
   packing.sizes = {{0.006, 80}, {0.0045, 120}};
   packing.seed = 3;
   def.particles = generate_random_packing(packing);
-  def.walls = {WallDef{"bottom", {0.1, 0.0}, {1, 0}, -0.2, 0.2, 0, {}},
-               WallDef{"right", {0.2, 0.1}, {0, 1}, -0.2, 0.2, 0, {}},
-               WallDef{"top", {0.1, 0.2}, {-1, 0}, -0.2, 0.2, 0, {}},
-               WallDef{"left", {0.0, 0.1}, {0, -1}, -0.2, 0.2, 0, {}}};
+  def.walls = {
+      WallDef{"bottom", {0.1, 0.0}, {1, 0}, -0.2, 0.2, 0, {}}, WallDef{"right", {0.2, 0.1}, {0, 1}, -0.2, 0.2, 0, {}},
+      WallDef{"top", {0.1, 0.2}, {-1, 0}, -0.2, 0.2, 0, {}}, WallDef{"left", {0.0, 0.1}, {0, -1}, -0.2, 0.2, 0, {}}};
   def.damping.local_alpha = 0.5;
   def.threads = 1;
   return def;
@@ -77,9 +76,10 @@ TEST(BoxControl, StrainRatesDeformTheBoxAtConstantArea) {
   const double t = cycles * dt;
   // Each step shortens y by rate dt and lengthens x as much: (1 -+ rate dt)^n.
   const double y = 0.2 * std::pow(1.0 - rate * dt, cycles), x = 0.2 * std::pow(1.0 + rate * dt, cycles);
-  std::printf("after %.4f s at 2/s: extents %.9f x %.9f (expected %.9f x %.9f), area change %.2e, deviator strain "
-              "%.6f (2 x rate x t = %.6f)\n",
-              t, m.extent.x(), m.extent.y(), x, y, m.extent.prod() / 0.04 - 1.0, m.deviator_strain, 2.0 * rate * t);
+  std::printf(
+      "after %.4f s at 2/s: extents %.9f x %.9f (expected %.9f x %.9f), area change %.2e, deviator strain "
+      "%.6f (2 x rate x t = %.6f)\n",
+      t, m.extent.x(), m.extent.y(), x, y, m.extent.prod() / 0.04 - 1.0, m.deviator_strain, 2.0 * rate * t);
   EXPECT_NEAR(m.extent.x(), x, 1e-12);
   EXPECT_NEAR(m.extent.y(), y, 1e-12);
   // Constant area to second order: (1 - (rate dt)^2)^n.
@@ -125,9 +125,10 @@ TEST(BoxControl, ServosAndAConstantMeanStressPath) {
   });
   ASSERT_TRUE(result.condition_met);
   m = world.box_measure();
-  std::printf("constant mean stress path to deviator strain %.4f: sigma_x %.1f, sigma_y %.1f, mean %.1f Pa "
-              "(p %.0f; worst %.2f%% off after 0.2%%), x target %.1f\n",
-              m.deviator_strain, m.stress.x(), m.stress.y(), m.mean_stress, p, 100.0 * worst, m.target.x());
+  std::printf(
+      "constant mean stress path to deviator strain %.4f: sigma_x %.1f, sigma_y %.1f, mean %.1f Pa "
+      "(p %.0f; worst %.2f%% off after 0.2%%), x target %.1f\n",
+      m.deviator_strain, m.stress.x(), m.stress.y(), m.mean_stress, p, 100.0 * worst, m.target.x());
   EXPECT_GT(m.stress.y(), 1.2 * m.stress.x());  // the compressed axis carries more
   EXPECT_NEAR(m.target.x(), 2.0 * p - m.stress.y(), 1e-9 * p);
   EXPECT_LT(worst, 0.05);
@@ -276,9 +277,8 @@ TEST(BoxControl, ACubeOfSixWallsInThreeDimensions) {
   compress.until.check_interval = 100;
   ASSERT_TRUE(run_stage(pressed, compress).condition_met);
   m = pressed.box_measure();
-  std::printf("3D servos: stresses %.1f, %.1f, %.1f Pa (target %.0f) after %llu cycles, extents %.6f m\n",
-              m.stress.x(), m.stress.y(), m.stress.z(), p, static_cast<unsigned long long>(pressed.cycle_count()),
-              m.extent.x());
+  std::printf("3D servos: stresses %.1f, %.1f, %.1f Pa (target %.0f) after %llu cycles, extents %.6f m\n", m.stress.x(),
+              m.stress.y(), m.stress.z(), p, static_cast<unsigned long long>(pressed.cycle_count()), m.extent.x());
   for (int axis = 0; axis < 3; ++axis) {
     EXPECT_NEAR(m.stress[axis] / p, 1.0, 0.01) << "axis " << axis;
     const auto& lower = pressed.wall_measures()[static_cast<std::size_t>(2 * axis)];

@@ -15,7 +15,8 @@ const Vec3 kAxes{0.371, 0.260, 0.182};  // Miyata's section 3.3 particle
 
 TEST(Ellipsoid, SpheresOverlapAsSpheresWithHertzRadius) {
   const PlacedEllipsoid i{Vec3::Constant(0.15), Vec3::Zero(), Quaternion::Identity()};
-  const PlacedEllipsoid j{Vec3::Constant(0.10), Vec3(0.2, 0.1, -0.05), Quaternion(Eigen::AngleAxisd(1.0, Vec3::UnitY()))};
+  const PlacedEllipsoid j{Vec3::Constant(0.10), Vec3(0.2, 0.1, -0.05),
+                          Quaternion(Eigen::AngleAxisd(1.0, Vec3::UnitY()))};
   const EllipsoidContact c = ellipsoid_contact(i, j);
   const double d = j.centre.norm();
   EXPECT_NEAR(c.overlap, 0.25 - d, 1e-12);
@@ -64,7 +65,8 @@ TEST(Ellipsoid, PlaneDistanceAndSupportPoint) {
 
 TEST(Ellipsoid, TurnedPairMatchesAFineSearch) {
   const PlacedEllipsoid i{kAxes, Vec3::Zero(), Quaternion(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()))};
-  const PlacedEllipsoid j{kAxes, Vec3(0.55, 0.25, 0.1), Quaternion(Eigen::AngleAxisd(-1.2, Vec3(0, 1, 1).normalized()))};
+  const PlacedEllipsoid j{kAxes, Vec3(0.55, 0.25, 0.1),
+                          Quaternion(Eigen::AngleAxisd(-1.2, Vec3(0, 1, 1).normalized()))};
   const EllipsoidContact c = ellipsoid_contact(i, j);
   // The minimum of j's potential over i's surface, by brute force on a fine grid.
   const Eigen::Matrix3d ri = i.orientation.toRotationMatrix(), rj = j.orientation.toRotationMatrix();

@@ -54,9 +54,10 @@ TEST(EllipsoidWorld, EqualAxesReproduceTheSphere) {
     peak_ellipsoid = std::max(peak_ellipsoid, ellipsoid.wall_measures()[0].normal_force);
   }
   const auto s = sphere.particles(), e = ellipsoid.particles();
-  std::printf("peak force sphere %.9e, ellipsoid %.9e; rebound velocity (%.9f %.9f) vs (%.9f %.9f), spin %.6f vs %.6f\n",
-              peak_sphere, peak_ellipsoid, s.velocity[0].x(), s.velocity[0].z(), e.velocity[0].x(), e.velocity[0].z(),
-              s.angular_velocity[0].y(), e.angular_velocity[0].y());
+  std::printf(
+      "peak force sphere %.9e, ellipsoid %.9e; rebound velocity (%.9f %.9f) vs (%.9f %.9f), spin %.6f vs %.6f\n",
+      peak_sphere, peak_ellipsoid, s.velocity[0].x(), s.velocity[0].z(), e.velocity[0].x(), e.velocity[0].z(),
+      s.angular_velocity[0].y(), e.angular_velocity[0].y());
   EXPECT_GT(peak_sphere, 0.0);
   EXPECT_NEAR(peak_ellipsoid / peak_sphere, 1.0, 1e-9);
   EXPECT_NEAR((e.velocity[0] - s.velocity[0]).norm(), 0.0, 1e-9);
@@ -77,8 +78,9 @@ TEST(EllipsoidWorld, TumblingFreeEllipsoidKeepsEnergyAndAngularMomentum) {
     const auto v = world.particles();
     const Quaternion q = v.rotation[0];
     const Vec3 body = q.conjugate() * v.angular_velocity[0];
-    const Vec3 principal = 2650.0 * (4.0 / 3.0 * std::numbers::pi * 0.371 * 0.260 * 0.182) / 5.0 *
-                           Vec3(0.260 * 0.260 + 0.182 * 0.182, 0.371 * 0.371 + 0.182 * 0.182, 0.371 * 0.371 + 0.260 * 0.260);
+    const Vec3 principal =
+        2650.0 * (4.0 / 3.0 * std::numbers::pi * 0.371 * 0.260 * 0.182) / 5.0 *
+        Vec3(0.260 * 0.260 + 0.182 * 0.182, 0.371 * 0.371 + 0.182 * 0.182, 0.371 * 0.371 + 0.260 * 0.260);
     return Vec3(q * principal.cwiseProduct(body));
   };
   const double e0 = world.assembly_measures().kinetic_energy;

@@ -5,7 +5,6 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-
 #include "dem/health.h"
 #include "dem/packing.h"
 #include "model_builders.h"

@@ -31,8 +31,8 @@ TEST(Periodic, DiscsCollideThroughTheBoundary) {
     touching += !world.contacts().empty();
   }
   const auto p = world.particles();
-  std::printf("velocities after the collision: %.6f %.6f, %d cycles in contact\n", p.velocity[0].x(),
-              p.velocity[1].x(), touching);
+  std::printf("velocities after the collision: %.6f %.6f, %d cycles in contact\n", p.velocity[0].x(), p.velocity[1].x(),
+              touching);
   EXPECT_GT(touching, 10);
   // Equal discs, elastic and frictionless: they exchange velocities.
   EXPECT_NEAR(p.velocity[0].x(), 1.0, 1e-3);

@@ -52,9 +52,12 @@ void expect_exact_continuation(WorldDefT<Dim> def, int before, int after, const 
   restored.cycle(after);
   const EnergyBudget a = original.assembly_measures().energy, b = restored.assembly_measures().energy;
   const std::uint64_t rebuilds = restored.profile().contact_rebuilds - rebuilds_before;
-  std::printf("%s after %d + %d cycles (%llu table rebuilds): %zu contacts, original %016llx, restored %016llx, damping %.9e vs %.9e J\n",
-              what, before, after, static_cast<unsigned long long>(rebuilds), original.contacts().size(), static_cast<unsigned long long>(original.state_hash()),
-              static_cast<unsigned long long>(restored.state_hash()), a.contact_damping, b.contact_damping);
+  std::printf(
+      "%s after %d + %d cycles (%llu table rebuilds): %zu contacts, original %016llx, restored %016llx, damping %.9e "
+      "vs %.9e J\n",
+      what, before, after, static_cast<unsigned long long>(rebuilds), original.contacts().size(),
+      static_cast<unsigned long long>(original.state_hash()), static_cast<unsigned long long>(restored.state_hash()),
+      a.contact_damping, b.contact_damping);
   EXPECT_GT(original.contacts().size(), 20u);
   EXPECT_EQ(restored.state_hash(), original.state_hash());
   EXPECT_EQ(parallel.state_hash(), original.state_hash());

@@ -26,8 +26,9 @@ WorldDef nine(bool superquadric) {
   for (ParticleDef& p : def.particles) {
     if (superquadric) p.shape = ShapeDefT<2>{50.0, 50.0, 2.0, 0.0};
   }
-  def.walls = {WallDef{"bottom", {150, 0}, {1, 0}, -200, 200, 0, {}}, WallDef{"right", {300, 150}, {0, 1}, -200, 200, 0, {}},
-               WallDef{"top", {150, 300}, {-1, 0}, -200, 200, 0, {}}, WallDef{"left", {0, 150}, {0, -1}, -200, 200, 0, {}}};
+  def.walls = {
+      WallDef{"bottom", {150, 0}, {1, 0}, -200, 200, 0, {}}, WallDef{"right", {300, 150}, {0, 1}, -200, 200, 0, {}},
+      WallDef{"top", {150, 300}, {-1, 0}, -200, 200, 0, {}}, WallDef{"left", {0, 150}, {0, -1}, -200, 200, 0, {}}};
   def.walls[0].motion.velocity = {0.0, 12.0};
   def.walls[1].motion.velocity = {-12.0, 0.0};
   def.walls[2].motion.velocity = {0.0, -12.0};

@@ -53,7 +53,7 @@ TEST(TriangleWalls, TriangularCoordinatesAreAreaFractions) {
   const Triangle t{Vec3(0.0, 0.0, 1.0), Vec3(2.0, 0.0, 1.0), Vec3(0.0, 2.0, 1.0)};
   const Vec3 inside = triangular_coordinates(t, {0.5, 0.5, 1.0});  // eqs. 57-58
   EXPECT_NEAR(inside.sum(), 1.0, 1e-15);
-  EXPECT_NEAR(inside.x(), 0.5, 1e-15);   // opposite corner I: area 1 of 2
+  EXPECT_NEAR(inside.x(), 0.5, 1e-15);  // opposite corner I: area 1 of 2
   EXPECT_NEAR(inside.y(), 0.25, 1e-15);
   EXPECT_NEAR(inside.z(), 0.25, 1e-15);
   const Vec3 outside = triangular_coordinates(t, {1.5, 1.5, 1.0});  // past the edge JK (eq. 59 fails)

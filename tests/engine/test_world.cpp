@@ -28,7 +28,8 @@ WorldDef dense_box(int columns, int rows) {
   // Slightly varied radii, so the packing is not perfectly regular.
   for (std::size_t i = 0; i < def.particles.size(); ++i) def.particles[i].radius *= 1.0 - 0.05 * double(i % 7) / 7.0;
   const double width = columns * 0.0205 + 0.012, height = rows * 0.0205 + 0.012;
-  def.walls = {WallDef{"bottom", {0, 0}, {1, 0}, 0, width, 1, {}}, WallDef{"right", {width, 0}, {0, 1}, 0, 2 * height, 1, {}},
+  def.walls = {WallDef{"bottom", {0, 0}, {1, 0}, 0, width, 1, {}},
+               WallDef{"right", {width, 0}, {0, 1}, 0, 2 * height, 1, {}},
                WallDef{"left", {0, 2 * height}, {0, -1}, 0, 2 * height, 1, {}}};
   def.gravity = {0.0, -9.81};
   def.damping = {1e-5, 1.0};
@@ -46,8 +47,8 @@ TEST(World, SameStateHashForOneAndTwoThreads) {
   serial.cycle(300);
   parallel.cycle(300);
   std::printf("hash after 300 cycles: 1 thread %016llx, 2 threads %016llx, %zu contacts\n",
-              static_cast<unsigned long long>(serial.state_hash()), static_cast<unsigned long long>(parallel.state_hash()),
-              serial.contacts().size());
+              static_cast<unsigned long long>(serial.state_hash()),
+              static_cast<unsigned long long>(parallel.state_hash()), serial.contacts().size());
   EXPECT_GT(serial.contacts().size(), 3000u);
   EXPECT_EQ(serial.state_hash(), parallel.state_hash());
 }
@@ -111,8 +112,8 @@ TEST(World, WallMeasuresSeeTheWeightOnTheFloor) {
   const auto walls = world.wall_measures();
   // Side walls are vertical: the floor carries the weight less the side walls' friction.
   const double carried = walls[0].force.y() + walls[1].force.y() + walls[2].force.y();
-  std::printf("weight %.6g N, walls carry %.6g N (floor %.6g, %d contacts), out-of-balance %.3g\n", weight,
-              -carried, -walls[0].force.y(), walls[0].contacts, world.assembly_measures().out_of_balance);
+  std::printf("weight %.6g N, walls carry %.6g N (floor %.6g, %d contacts), out-of-balance %.3g\n", weight, -carried,
+              -walls[0].force.y(), walls[0].contacts, world.assembly_measures().out_of_balance);
   EXPECT_NEAR(-carried, weight, 1e-3 * weight);
   EXPECT_EQ(walls[0].contacts, 10);
   EXPECT_GT(walls[0].normal_force, 0.0);

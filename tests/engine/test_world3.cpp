@@ -52,11 +52,10 @@ WorldDef3 spheres_in_a_box(int per_side, int threads) {
     w.k2 = 0.4;
     return w;
   };
-  def.walls = {floor,
-               side("x0", {0.0, 0.05, 0.0}, Vec3::UnitY(), Vec3::UnitZ()),    // normal +x
-               side("x1", {0.1, 0.05, 0.0}, Vec3::UnitZ(), Vec3::UnitY()),    // normal -x
-               side("y0", {0.05, 0.0, 0.0}, Vec3::UnitZ(), Vec3::UnitX()),    // normal +y
-               side("y1", {0.05, 0.1, 0.0}, Vec3::UnitX(), Vec3::UnitZ())};   // normal -y
+  def.walls = {floor, side("x0", {0.0, 0.05, 0.0}, Vec3::UnitY(), Vec3::UnitZ()),  // normal +x
+               side("x1", {0.1, 0.05, 0.0}, Vec3::UnitZ(), Vec3::UnitY()),         // normal -x
+               side("y0", {0.05, 0.0, 0.0}, Vec3::UnitZ(), Vec3::UnitX()),         // normal +y
+               side("y1", {0.05, 0.1, 0.0}, Vec3::UnitX(), Vec3::UnitZ())};        // normal -y
   def.walls[2].h1 = def.walls[3].h1 = 0.0;
   def.walls[2].h2 = def.walls[3].h2 = 0.4;
   def.walls[2].k1 = def.walls[3].k1 = -0.05;

@@ -28,10 +28,9 @@ World settled_box() {
   packing.sizes = {{0.03, 150}, {0.02, 150}};
   packing.seed = 5;
   def.particles = generate_random_packing(packing);
-  def.walls = {WallDef{"bottom", {0.5, 0.0}, {1, 0}, -0.5, 0.5, 0, {}},
-               WallDef{"right", {1.0, 0.0}, {0, 1}, 0.0, 3.0, 0, {}},
-               WallDef{"left", {0.0, 3.0}, {0, -1}, 0.0, 3.0, 0, {}},
-               WallDef{"plate", {0.5, 2.5}, {-1, 0}, -0.5, 0.5, 0, {}}};
+  def.walls = {
+      WallDef{"bottom", {0.5, 0.0}, {1, 0}, -0.5, 0.5, 0, {}}, WallDef{"right", {1.0, 0.0}, {0, 1}, 0.0, 3.0, 0, {}},
+      WallDef{"left", {0.0, 3.0}, {0, -1}, 0.0, 3.0, 0, {}}, WallDef{"plate", {0.5, 2.5}, {-1, 0}, -0.5, 0.5, 0, {}}};
   def.gravity = {0.0, -9.81};
   def.energy_budget = true;
   def.damping.local_alpha = 0.3;

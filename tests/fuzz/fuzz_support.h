@@ -6,6 +6,8 @@
 // a sanitizer report or an input that takes seconds is a bug.
 #pragma once
 
+#include <google/protobuf/stubs/logging.h>
+
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -13,8 +15,6 @@
 #include <filesystem>
 #include <memory>
 #include <string>
-
-#include <google/protobuf/stubs/logging.h>
 
 #include "dem/io/file_access.h"
 #include "dem/io/resource_limits.h"

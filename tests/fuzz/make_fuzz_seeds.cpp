@@ -116,7 +116,8 @@ int main() {
   c.parameter.material = "disc";
   c.parameter.value = 0.3;
   write(commands / "set_parameter.cdr", protocol::encode_command(c));
-  for (const auto kind : {CommandKind::kStop, CommandKind::kGetState, CommandKind::kShutdown, CommandKind::kRunProgramme}) {
+  for (const auto kind :
+       {CommandKind::kStop, CommandKind::kGetState, CommandKind::kShutdown, CommandKind::kRunProgramme}) {
     write(commands / (std::string(protocol::to_string(kind)) + ".cdr"), protocol::encode_command(command(kind)));
   }
   return 0;

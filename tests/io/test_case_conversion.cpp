@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <optional>
-#include <filesystem>
 #include <string>
 #include <variant>
 

@@ -698,8 +698,7 @@ const Mistake kMistakes3d[] = {
      },
      "particles[0].particle.superquadric: is for 2D cases only (this case is 3D); 3D particles are spheres or "
      "ellipsoids (set ellipsoid)"},
-    {"EllipsoidWithRadius",
-     [](auto& c) { ellipsoid(sphere(c), 0.002, 0.0015, 0.001); },
+    {"EllipsoidWithRadius", [](auto& c) { ellipsoid(sphere(c), 0.002, 0.0015, 0.001); },
      "particles[0].particle.radius: is set by the shape (its bounding radius); leave it out"},
     {"EllipsoidWithoutSemiAxes", [](auto& c) { sphere(c).clear_radius(), sphere(c).mutable_ellipsoid(); },
      "particles[0].particle.ellipsoid.semi_axes: must be set"},
@@ -747,7 +746,9 @@ const Mistake kMistakes3d[] = {
      },
      "wall[0].face[1]: is degenerate: its corners i, j, k lie on one line (or coincide)"},
     {"FacesWithExtent",
-     [](auto& c) { face(*c.mutable_wall(0), {0, 0, 0}, {0.01, 0, 0}, {0.01, 0.01, 0}); },
+     [](auto& c) {
+       face(*c.mutable_wall(0), {0, 0, 0}, {0.01, 0, 0}, {0.01, 0.01, 0});
+     },
      "wall[0].h2: must be left out for a wall of faces"},
     {"FacesAcrossTheFrame",
      [](auto& c) {

@@ -39,7 +39,7 @@ TEST(CheckpointStore, ResumeTextReadsBackExactly) {
   EXPECT_EQ(read.case_digest, "abc123");
   EXPECT_EQ(read.tables, point.tables);
   EXPECT_EQ(read.analysis, point.analysis);
-  EXPECT_EQ(read.vtk_steps, point.vtk_steps);  // times to the bit
+  EXPECT_EQ(read.vtk_steps, point.vtk_steps);                                 // times to the bit
   EXPECT_THROW(parse_resume("dem.resume 1\ncycle 7\n"), std::runtime_error);  // cut short
 }
 
@@ -53,7 +53,8 @@ TEST(CheckpointStore, KeepsTheNewestAndSkipsADamagedOne) {
     store.write(serialize_snapshot(world.snapshot(), SnapshotInfo{}), point_at(cycle));
   }
   int resumes = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(directory)) resumes += entry.path().extension() == ".resume";
+  for (const auto& entry : std::filesystem::directory_iterator(directory))
+    resumes += entry.path().extension() == ".resume";
   EXPECT_EQ(resumes, 2);
   ASSERT_TRUE(store.latest());
   EXPECT_EQ(store.latest()->point.cycle, 300u);

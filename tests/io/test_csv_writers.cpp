@@ -264,9 +264,27 @@ TEST_F(CsvWriters3d, WallsHaveThreeComponentsAndTwoEccentricities) {
   walls.write(world_);
   const auto rows = read_csv(directory_ / "walls.csv");
   ASSERT_EQ(rows.size(), 2u);
-  EXPECT_EQ(rows[0], (Row{"cycle", "time", "wall", "fx", "fy", "fz", "moment_x", "moment_y", "moment_z", "normal_force",
-                          "contacts", "eccentricity_u", "eccentricity_v", "x", "y", "z", "dx", "dy", "dz",
-                          "normal_stress", "settlement"}));
+  EXPECT_EQ(rows[0], (Row{"cycle",
+                          "time",
+                          "wall",
+                          "fx",
+                          "fy",
+                          "fz",
+                          "moment_x",
+                          "moment_y",
+                          "moment_z",
+                          "normal_force",
+                          "contacts",
+                          "eccentricity_u",
+                          "eccentricity_v",
+                          "x",
+                          "y",
+                          "z",
+                          "dx",
+                          "dy",
+                          "dz",
+                          "normal_stress",
+                          "settlement"}));
   const WallMeasure3 measure = world_.wall_measures()[0];
   const Row& row = rows[1];
   EXPECT_EQ(row[2], "floor");

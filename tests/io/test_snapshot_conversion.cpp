@@ -128,7 +128,8 @@ TEST(SnapshotConversion, EllipsoidsOnTriangleFacesContinueBitForBit) {
   ASSERT_GT(original.wall_measures()[0].contacts, 3);
   const proto::Snapshot message = snapshot_to_proto(original.snapshot(), SnapshotInfo{});
   EXPECT_EQ(message.wall(0).triangles_size(), 18);
-  EXPECT_GT(message.contacts().first_size(), static_cast<int>(original.contacts().size()));  // rows that do not touch too
+  EXPECT_GT(message.contacts().first_size(),
+            static_cast<int>(original.contacts().size()));  // rows that do not touch too
   World3 restored(snapshot_from_proto<3>(message));
   original.cycle(1500);
   restored.cycle(1500);
@@ -203,7 +204,8 @@ TEST(SnapshotConversion, KeepsShapesAndPeriodicBoundaries) {
   WorldSnapshot3 snapshot3 = stack.snapshot();
   for (std::size_t i = 0; i < snapshot3.def.particles.size(); ++i) {
     snapshot3.def.particles[i].shape.axes = {0.004, 0.003, 0.002 + 1e-4 * static_cast<double>(i)};
-    snapshot3.def.particles[i].shape.orientation = Quaternion(Eigen::AngleAxisd(0.1 * static_cast<double>(i), Vec3::UnitZ()));
+    snapshot3.def.particles[i].shape.orientation =
+        Quaternion(Eigen::AngleAxisd(0.1 * static_cast<double>(i), Vec3::UnitZ()));
   }
   const WorldSnapshot3 back3 = snapshot_from_proto<3>(snapshot_to_proto(snapshot3, SnapshotInfo{}));
   for (std::size_t i = 0; i < back3.def.particles.size(); ++i) {

@@ -58,9 +58,11 @@ class Filler {
 template <class T>
 void expect_same(const T& got, const T& wanted, const std::string& path) {
   if constexpr (Message<T>) {
-    std::apply([&](const auto&... field) { (expect_same(got.*field.member, wanted.*field.member,
-                                                        path + "." + std::string(field.name)), ...); },
-               Fields<T>::list);
+    std::apply(
+        [&](const auto&... field) {
+          (expect_same(got.*field.member, wanted.*field.member, path + "." + std::string(field.name)), ...);
+        },
+        Fields<T>::list);
   } else if constexpr (IsVector<T>::value) {
     ASSERT_EQ(got.size(), wanted.size()) << path;
     for (std::size_t i = 0; i < got.size(); ++i) expect_same(got[i], wanted[i], path + "[" + std::to_string(i) + "]");
@@ -97,12 +99,11 @@ TYPED_TEST(EveryMessage, EveryMemberCountsInEquality) {
   Filler().fill(message);
   std::apply(
       [&](const auto&... field) {
-        ((
-             [&] {
-               TypeParam changed = message;
-               changed.*field.member = {};
-               EXPECT_FALSE(changed == message) << field.name;
-             }()),
+        (([&] {
+           TypeParam changed = message;
+           changed.*field.member = {};
+           EXPECT_FALSE(changed == message) << field.name;
+         }()),
          ...);
       },
       Fields<TypeParam>::list);

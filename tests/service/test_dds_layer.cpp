@@ -208,7 +208,8 @@ TEST(DdsLayer, ReturnCodesBecomeExceptionsNamingTheAction) {
     FAIL();
   } catch (const dds::DdsError& error) {
     EXPECT_EQ(error.code(), DDS_RETCODE_BAD_PARAMETER);
-    EXPECT_EQ(std::string(error.what()), std::string("creating a widget: ") + dds_strretcode(DDS_RETCODE_BAD_PARAMETER));
+    EXPECT_EQ(std::string(error.what()),
+              std::string("creating a widget: ") + dds_strretcode(DDS_RETCODE_BAD_PARAMETER));
   }
 }
 
@@ -263,8 +264,9 @@ TEST(DdsLayer, ParticipantsOfADomainShareItsConfiguration) {
   dds::Participant second(kDdsDomainConfiguration);  // the same configuration: shared
   EXPECT_EQ(first.config(), second.config());
   try {
-    dds::Participant other(kDdsDomainConfiguration, "<CycloneDDS><Domain><General><AllowMulticast>true"
-                                                     "</AllowMulticast></General></Domain></CycloneDDS>");
+    dds::Participant other(kDdsDomainConfiguration,
+                           "<CycloneDDS><Domain><General><AllowMulticast>true"
+                           "</AllowMulticast></General></Domain></CycloneDDS>");
     FAIL() << "a second configuration for a running domain was accepted";
   } catch (const dds::DdsError& error) {
     EXPECT_NE(std::string(error.what()).find("already runs with"), std::string::npos) << error.what();
@@ -321,7 +323,8 @@ TEST(Protocol, TopicNamesFollowRos2Conventions) {
   EXPECT_EQ(protocol::server_of_status_topic("rt/other/x/status"), std::nullopt);
   EXPECT_EQ(protocol::server_of_status_topic("rt/dem/a/b/status"), std::nullopt);
   for (const char* good : {"a", "dem", "Press_2", "x1"}) EXPECT_TRUE(protocol::valid_server_name(good)) << good;
-  for (const char* bad : {"", "2a", "_a", "a-b", "a/b", "a b", "ä"}) EXPECT_FALSE(protocol::valid_server_name(bad)) << bad;
+  for (const char* bad : {"", "2a", "_a", "a-b", "a/b", "a b", "ä"})
+    EXPECT_FALSE(protocol::valid_server_name(bad)) << bad;
   EXPECT_FALSE(protocol::valid_server_name(std::string(65, 'a')));
 }
 

@@ -16,9 +16,9 @@ namespace fs = std::filesystem;
 
 std::vector<std::string> server_arguments(const std::string& name, std::uint32_t domain, const fs::path& out,
                                           const fs::path& case_path, std::vector<std::string> more) {
-  std::vector<std::string> arguments = {"--name", name, "--domain", std::to_string(domain), "--case",
-                                        case_path.string(), "--out", out.string(), "--threads", "1",
-                                        "--log-level", "warn"};
+  std::vector<std::string> arguments = {
+      "--name",     name,        "--domain", std::to_string(domain), "--case", case_path.string(), "--out",
+      out.string(), "--threads", "1",        "--log-level",          "warn"};
   arguments.insert(arguments.end(), more.begin(), more.end());
   return arguments;
 }
@@ -28,13 +28,13 @@ TEST(Checkpoints, AOneShotRunKilledAndResumedEndsAsOneNeverInterrupted) {
   const fs::path whole = output_directory("checkpoints_whole");
   const fs::path killed = output_directory("checkpoints_killed");
   const std::uint32_t domain = kCheckpointsOneShot;
-  ServerProcess first(server_arguments("whole", domain, whole, case_path, {"--run-and-exit", "--vtk-interval", "5000"}));
+  ServerProcess first(
+      server_arguments("whole", domain, whole, case_path, {"--run-and-exit", "--vtk-interval", "5000"}));
   ASSERT_EQ(first.wait(120s), 0);
 
   // Killed in the loading stage (from cycle 25,100), the analyses under way.
-  ServerProcess second(
-      server_arguments("killed", domain, killed, case_path,
-                       {"--run-and-exit", "--vtk-interval", "5000", "--checkpoint-cycles", "5000"}));
+  ServerProcess second(server_arguments("killed", domain, killed, case_path,
+                                        {"--run-and-exit", "--vtk-interval", "5000", "--checkpoint-cycles", "5000"}));
   const fs::path directory = killed / "miyata_cs_reduced";
   ASSERT_TRUE(eventually([&] { return newest_checkpoint(directory) >= 40000; }, 120s));
   second.signal(SIGKILL);
@@ -42,9 +42,9 @@ TEST(Checkpoints, AOneShotRunKilledAndResumedEndsAsOneNeverInterrupted) {
   EXPECT_FALSE(fs::exists(directory / "final.snapshot"));
 
   // Another name: the killed server's stays on the domain until its lease runs out.
-  ServerProcess third(server_arguments("resumed", domain, killed, case_path,
-                                       {"--run-and-exit", "--vtk-interval", "5000", "--resume", "--checkpoint-cycles",
-                                        "5000"}));
+  ServerProcess third(
+      server_arguments("resumed", domain, killed, case_path,
+                       {"--run-and-exit", "--vtk-interval", "5000", "--resume", "--checkpoint-cycles", "5000"}));
   ASSERT_EQ(third.wait(120s), 0);
   int compared = 0;
   for (const auto& entry : fs::directory_iterator(whole / "miyata_cs_reduced")) {
@@ -106,8 +106,7 @@ TEST(Checkpoints, AnInteractiveServerKilledAndResumedTakesUpItsWorld) {
   EXPECT_EQ(client.get_state().state_hash, whole_hash);
   client.shutdown();
   EXPECT_EQ(server.wait(20s), 0);
-  EXPECT_EQ(read_text(out / "nine_disc_damped" / "walls.csv"),
-            read_text(whole / "nine_disc_damped" / "walls.csv"));
+  EXPECT_EQ(read_text(out / "nine_disc_damped" / "walls.csv"), read_text(whole / "nine_disc_damped" / "walls.csv"));
 }
 
 }  // namespace

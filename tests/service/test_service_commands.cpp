@@ -83,8 +83,7 @@ TEST(Commands, WallVelocityAndServoSteerTheWalls) {
   EXPECT_NE(s.client.call(by_id).message.find("wall bottom moves"), std::string::npos);
 
   const protocol::Reply servo = s.client.set_wall_servo("top", 5e7, 1e-12, 10.0);
-  EXPECT_NE(servo.message.find("servo-controlled to 5e+07 Pa (gain 1e-12 m/(Pa s), at most 10 m/s)"),
-            std::string::npos)
+  EXPECT_NE(servo.message.find("servo-controlled to 5e+07 Pa (gain 1e-12 m/(Pa s), at most 10 m/s)"), std::string::npos)
       << servo.message;
   const protocol::Reply chosen = s.client.set_wall_servo("right", 1e7);
   EXPECT_NE(chosen.message.find("servo-controlled to 1e+07 Pa"), std::string::npos) << chosen.message;
@@ -246,10 +245,11 @@ TEST(Commands, ShutdownRepliesThenPublishesAFinalStatus) {
   client.load_case_file(case_file(kNineDisc));
   std::mutex mutex;
   std::vector<protocol::Status> seen;
-  client::TelemetrySubscription watcher(client, {.plate_forces = {}, .contact_stats = {}, .status = [&](const auto& st) {
-                                                   std::lock_guard lock(mutex);
-                                                   seen.push_back(st);
-                                                 }});
+  client::TelemetrySubscription watcher(client,
+                                        {.plate_forces = {}, .contact_stats = {}, .status = [&](const auto& st) {
+                                           std::lock_guard lock(mutex);
+                                           seen.push_back(st);
+                                         }});
   ASSERT_TRUE(eventually([&] { return watcher.matched_publishers() > 0; }, 10s));
   EXPECT_EQ(client.stop().message, "nothing was running");
   EXPECT_EQ(client.shutdown().message, "shutting down");
@@ -276,10 +276,11 @@ TEST(Commands, TelemetryFollowsSimulatedTime) {
   });
   std::mutex mutex;
   std::vector<std::uint64_t> cycles;
-  client::TelemetrySubscription telemetry(s.client, {.plate_forces = [&](const auto& p) {
-                                                       std::lock_guard lock(mutex);
-                                                       cycles.push_back(p.cycle);
-                                                     },
+  client::TelemetrySubscription telemetry(s.client, {.plate_forces =
+                                                         [&](const auto& p) {
+                                                           std::lock_guard lock(mutex);
+                                                           cycles.push_back(p.cycle);
+                                                         },
                                                      .contact_stats = {},
                                                      .status = {}});
   ASSERT_TRUE(eventually([&] { return telemetry.matched_publishers() > 0; }, 10s));

@@ -92,7 +92,8 @@ TEST(Errors, NegativeOrZeroCycleCountsAreBadRequests) {
   EXPECT_EQ(f.refused(until).status, ReplyStatus::kBadRequest);
   until.run_until.max_cycles = 10;
   until.run_until.kinetic_energy.reset();
-  EXPECT_EQ(f.refused(until).message, "run_until needs a condition: a plate's stress or settlement, or the kinetic energy");
+  EXPECT_EQ(f.refused(until).message,
+            "run_until needs a condition: a plate's stress or settlement, or the kinetic energy");
   f.expect_untouched();
 }
 
@@ -147,8 +148,9 @@ TEST(Errors, AGarbageSnapshotIsAnInvalidSnapshot) {
   load.snapshot.data = "this is not a snapshot at all";
   const protocol::Reply reply = f.refused(load);
   EXPECT_EQ(reply.status, ReplyStatus::kInvalidSnapshot);
-  EXPECT_EQ(reply.message, "<transferred snapshot>: not a dem snapshot (it does not start with the \"DEMSNAP1\" "
-                           "header; snapshots written before the header was added must be saved again)");
+  EXPECT_EQ(reply.message,
+            "<transferred snapshot>: not a dem snapshot (it does not start with the \"DEMSNAP1\" "
+            "header; snapshots written before the header was added must be saved again)");
   // A real snapshot cut short, or with one byte changed: its frame says so.
   const std::string good = f.client.save_snapshot({}, true).data;
   std::string cut = good.substr(0, good.size() / 2);
@@ -157,7 +159,8 @@ TEST(Errors, AGarbageSnapshotIsAnInvalidSnapshot) {
   std::string changed = good;
   changed[changed.size() / 2] = static_cast<char>(changed[changed.size() / 2] ^ 4);
   load.snapshot.data = changed;
-  EXPECT_EQ(f.refused(load).message, "<transferred snapshot>: corrupt: its SHA-256 checksum does not match its contents");
+  EXPECT_EQ(f.refused(load).message,
+            "<transferred snapshot>: corrupt: its SHA-256 checksum does not match its contents");
   // A case's bytes are no snapshot either.
   load.snapshot.data = io::load_case_file(case_file("nine_disc_damped")).message.SerializeAsString();
   EXPECT_NE(f.refused(load).message.find("not a dem snapshot"), std::string::npos);
@@ -183,7 +186,7 @@ TEST(Errors, ACommandForAnotherServerIsIgnored) {
   shutdown.request_id = 1'000'000;
   writer.write(shutdown);
   EXPECT_FALSE(f.client.await(1'000'000, 1500ms));  // no reply ...
-  f.expect_untouched();                              // ... and still serving
+  f.expect_untouched();                             // ... and still serving
   EXPECT_NE(f.client.status().state, protocol::ServerState::kShutdown);
 }
 

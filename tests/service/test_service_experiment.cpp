@@ -25,11 +25,13 @@ TEST(Experiment, NineDiscTestThroughDemServerMatchesTheEngine) {
   client::Client client(connect_options("nine", kExperimentNineDisc));
   std::mutex mutex;
   std::map<std::uint64_t, protocol::PlateForces> published;
-  client::TelemetrySubscription telemetry(client, {.plate_forces = [&](const protocol::PlateForces& p) {
-                                                     std::lock_guard lock(mutex);
-                                                     published[p.cycle] = p;
-                                                   },
-                                                   .contact_stats = {}, .status = {}});
+  client::TelemetrySubscription telemetry(client, {.plate_forces =
+                                                       [&](const protocol::PlateForces& p) {
+                                                         std::lock_guard lock(mutex);
+                                                         published[p.cycle] = p;
+                                                       },
+                                                   .contact_stats = {},
+                                                   .status = {}});
   ASSERT_TRUE(eventually([&] { return telemetry.matched_publishers() > 0; }, 10s));
 
   // The same case in an engine of our own, one thread as the server's.

@@ -53,9 +53,9 @@ TEST(Files, CasesAndParticleFilesAreReadOnlyFromTheAllowedDirectories) {
                                   (allowed / "link.case.txtpb").string(), std::string("/etc/passwd")}) {
     const protocol::Reply reply = load_path(client, path);
     EXPECT_EQ(reply.status, ReplyStatus::kNotFound) << path;
-    EXPECT_NE(reply.message.find("not a file in the directories this server reads (" +
-                                 fs::canonical(allowed).string() + ")"),
-              std::string::npos)
+    EXPECT_NE(
+        reply.message.find("not a file in the directories this server reads (" + fs::canonical(allowed).string() + ")"),
+        std::string::npos)
         << reply.message;
     EXPECT_EQ(reply.message.find("the-secret"), std::string::npos) << reply.message;
     EXPECT_EQ(reply.message.find("root:"), std::string::npos) << reply.message;
@@ -68,8 +68,7 @@ TEST(Files, CasesAndParticleFilesAreReadOnlyFromTheAllowedDirectories) {
                         secret.string() + "\" material: \"disc\" } }\n";
   const protocol::Reply reply = reply_to(client, text);
   EXPECT_EQ(reply.status, ReplyStatus::kInvalidCase);
-  EXPECT_NE(reply.message.find("not a file in the directories this server reads"), std::string::npos)
-      << reply.message;
+  EXPECT_NE(reply.message.find("not a file in the directories this server reads"), std::string::npos) << reply.message;
   EXPECT_EQ(reply.message.find("the-secret"), std::string::npos) << reply.message;
   EXPECT_EQ(client.get_state().state.case_name, "nine_disc_damped");  // untouched
 }

@@ -3,7 +3,6 @@
 // while every command still gets its one reply, and get_state answered at
 // once while the engine cycles (docs/RELIABILITY.md).
 #include <gtest/gtest.h>
-
 #include <signal.h>
 #include <sys/wait.h>
 
@@ -153,9 +152,9 @@ TEST(Limits, AStalledClientDoesNotHoldUpTheOthersReplies) {
   InProcessServer server(server_options("stalled", kLimitsStalledClient));
   client::Client client(connect_options("stalled", kLimitsStalledClient));
   client.load_case_file(case_file("nine_disc_damped"));
-  const pid_t monitor = spawn(DEM_DEMCTL_PROGRAM,
-                              {"monitor", "--server", "stalled", "--domain", std::to_string(kLimitsStalledClient)},
-                              /*quiet=*/true);
+  const pid_t monitor =
+      spawn(DEM_DEMCTL_PROGRAM, {"monitor", "--server", "stalled", "--domain", std::to_string(kLimitsStalledClient)},
+            /*quiet=*/true);
   const std::uint64_t served = client.status().commands_served;
   ASSERT_TRUE(eventually([&] { return client.get_state().state.commands_served >= served + 2; }, 20s));
   std::this_thread::sleep_for(1s);  // its readers match

@@ -64,8 +64,9 @@ TEST(Loading, ALoadOutlastingItsTimeLimitIsRefused) {
   const std::optional<protocol::Reply> failed = client.await(start_slow_load(client), 20s);
   ASSERT_TRUE(failed);
   EXPECT_EQ(failed->status, ReplyStatus::kFailed);
-  EXPECT_EQ(failed->message, "load_case: preparing it took more than 0.3 s (--load-seconds); is there a random "
-                             "packing that nearly cannot fit?");
+  EXPECT_EQ(failed->message,
+            "load_case: preparing it took more than 0.3 s (--load-seconds); is there a random "
+            "packing that nearly cannot fit?");
   EXPECT_EQ(client.get_state().state.case_name, "nine_disc_damped");
   wait_for_abandoned_loads();
   // Once it has ended, loads work again (while it ends, another is answered busy).

@@ -50,8 +50,21 @@ std::filesystem::path variant(const std::filesystem::path& directory, const std:
 
 std::vector<std::string> one_shot(const std::string& name, Domain domain, const std::filesystem::path& out,
                                   const std::filesystem::path& case_path, const std::string& telemetry_cycles) {
-  return {"--name", name, "--domain", std::to_string(domain), "--case", case_path.string(), "--run-and-exit",
-          "--threads", "1", "--out", out.string(), "--telemetry-cycles", telemetry_cycles, "--log-level", "warn"};
+  return {"--name",
+          name,
+          "--domain",
+          std::to_string(domain),
+          "--case",
+          case_path.string(),
+          "--run-and-exit",
+          "--threads",
+          "1",
+          "--out",
+          out.string(),
+          "--telemetry-cycles",
+          telemetry_cycles,
+          "--log-level",
+          "warn"};
 }
 
 TEST(OneShot, RunsTheProgrammeToItsEndAsTheEngineDoesAndExitsZero) {
@@ -99,11 +112,13 @@ TEST(OneShot, PublishesTelemetryAndAnswersCommandsWhileItRunsAndAStopEndsIt) {
   client::Client client(connect_options("longrun", kOneShotStop));
   std::mutex mutex;
   std::vector<std::uint64_t> samples;
-  client::TelemetrySubscription telemetry(client, {.plate_forces = [&](const protocol::PlateForces& p) {
-                                                     std::lock_guard lock(mutex);
-                                                     samples.push_back(p.cycle);
-                                                   },
-                                                   .contact_stats = {}, .status = {}});
+  client::TelemetrySubscription telemetry(client, {.plate_forces =
+                                                       [&](const protocol::PlateForces& p) {
+                                                         std::lock_guard lock(mutex);
+                                                         samples.push_back(p.cycle);
+                                                       },
+                                                   .contact_stats = {},
+                                                   .status = {}});
   // The programme shows as a running command, with its progress.
   ASSERT_TRUE(client.wait_for_status(
       [](const protocol::Status& s) { return s.state == ServerState::kRunning && s.command_cycles_done > 0; }, 20s));
@@ -149,8 +164,7 @@ TEST(OneShot, SigtermStopsItWithAFinalSnapshot) {
       [](const protocol::Status& s) { return s.state == ServerState::kRunning && s.command_cycles_done > 0; }, 20s));
   process.signal(SIGTERM);
   EXPECT_EQ(process.wait(30s), 4);
-  const io::LoadedSnapshot final_state =
-      io::read_snapshot_file<2>(out / "nine_disc_damped" / "final.snapshot");
+  const io::LoadedSnapshot final_state = io::read_snapshot_file<2>(out / "nine_disc_damped" / "final.snapshot");
   EXPECT_GT(final_state.snapshot.cycle, 0u);
   EXPECT_TRUE(std::filesystem::exists(out / "nine_disc_damped" / "particles.csv"));
 }
@@ -159,10 +173,10 @@ TEST(OneShot, AFailedRunExitsOneWithTheErrorLoggedAndTheLastGoodState) {
   const auto out = output_directory("one_shot_failure");
   const auto log = out / "dem_server.log";
   // The server's log goes to a file, to look for the error in it.
-  const std::string command = std::string(DEM_SERVER_PROGRAM) + " --name boom --domain " +
-                              std::to_string(kOneShotFailure) + " --case " DEM_SERVICE_TEST_DATA
-                              "/blows_up.case.txtpb --run-and-exit --threads 1 --out " +
-                              out.string() + " 2>" + log.string();
+  const std::string command =
+      std::string(DEM_SERVER_PROGRAM) + " --name boom --domain " + std::to_string(kOneShotFailure) +
+      " --case " DEM_SERVICE_TEST_DATA "/blows_up.case.txtpb --run-and-exit --threads 1 --out " + out.string() + " 2>" +
+      log.string();
   const pid_t pid = spawn("/bin/sh", {"-c", command});
   int status = 0;
   ASSERT_EQ(waitpid(pid, &status, 0), pid);
@@ -211,8 +225,8 @@ TEST(OneShot, BadStartsExitWithTheirCodes) {
   std::string text = read_text(case_file("nine_disc_damped"));
   text.erase(text.find("stage {"));
   std::ofstream(stageless) << text;
-  ServerProcess no_stages({"--name", "bad", "--domain", domain, "--case", stageless.string(), "--run-and-exit",
-                           "--out", out.string(), "--log-level", "off"});
+  ServerProcess no_stages({"--name", "bad", "--domain", domain, "--case", stageless.string(), "--run-and-exit", "--out",
+                           out.string(), "--log-level", "off"});
   EXPECT_EQ(no_stages.wait(20s), 3);
 }
 
@@ -228,8 +242,8 @@ TEST(OneShot, TakesItsSettingsFromTheEnvironment) {
   ASSERT_EQ(setenv("DEM_THREADS", "1", 1), 0);
   ASSERT_EQ(setenv("DEM_LOG_LEVEL", "warn", 1), 0);
   ServerProcess process({});
-  for (const char* name : {"DEM_SERVER", "DEM_DOMAIN", "DEM_CASE", "DEM_OUT", "DEM_RUN_AND_EXIT", "DEM_THREADS",
-                           "DEM_LOG_LEVEL"}) {
+  for (const char* name :
+       {"DEM_SERVER", "DEM_DOMAIN", "DEM_CASE", "DEM_OUT", "DEM_RUN_AND_EXIT", "DEM_THREADS", "DEM_LOG_LEVEL"}) {
     unsetenv(name);
   }
   EXPECT_EQ(process.wait(120s), 0);

@@ -82,8 +82,8 @@ TEST(Ownership, OfTwoServersStartedAtTheSameInstantOneTakesTheName) {
 // 5, the other serves.
 TEST(Ownership, OfTwoProgramsStartedAtTheSameInstantOneExitsWithCode5) {
   const std::vector<std::string> arguments{
-      "--name", "twins", "--domain", std::to_string(kOwnershipSimultaneousPrograms), "--name-wait", "2",
-      "--log-level", "error"};
+      "--name",      "twins", "--domain",    std::to_string(kOwnershipSimultaneousPrograms),
+      "--name-wait", "2",     "--log-level", "error"};
   ServerProcess first(arguments);
   ServerProcess second(arguments);
   int refused = -1;
@@ -120,8 +120,9 @@ TEST(Ownership, OnlyTheOwnerStopsARunUnlessForced) {
       FAIL() << "another client ended the run";
     } catch (const client::ServerError& error) {
       EXPECT_EQ(error.status(), ReplyStatus::kRefused);
-      EXPECT_NE(std::string(error.what()).find("refused: the running cycle (request " + std::to_string(run) +
-                                               ") of client " + owner.client_id() + " belongs to that client"),
+      EXPECT_NE(std::string(error.what())
+                    .find("refused: the running cycle (request " + std::to_string(run) + ") of client " +
+                          owner.client_id() + " belongs to that client"),
                 std::string::npos)
           << error.what();
     }
@@ -151,7 +152,7 @@ TEST(Ownership, TheRunOfAClientThatLeftGoesOnAndAnyoneMayStopIt) {
   ASSERT_TRUE(eventually([&] { return other.status().message.find("its client has left") != std::string::npos; }, 10s))
       << other.status().message;
   EXPECT_EQ(other.status().state, protocol::ServerState::kRunning);  // it went on
-  EXPECT_TRUE(other.stop().ok());                                     // and anyone may stop it
+  EXPECT_TRUE(other.stop().ok());                                    // and anyone may stop it
   EXPECT_TRUE(eventually([&] { return other.status().state == protocol::ServerState::kLoaded; }, 10s));
 }
 

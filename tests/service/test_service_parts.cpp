@@ -211,9 +211,15 @@ TEST(Simulation, ChecksArgumentsAndChangesNothingWhenTheyAreWrong) {
   EXPECT_EQ(status_of([&] { simulation.set_wall_velocity({"top", -1, {{NAN, 0, 0}, {}}}); }), ReplyStatus::kBadRequest);
   EXPECT_EQ(status_of([&] { simulation.set_wall_servo({"top", -1, 1e6, -1.0, 0.0}); }), ReplyStatus::kBadRequest);
   EXPECT_EQ(status_of([&] { simulation.set_parameter({"contact_damping", "", -1.0, {}}); }), ReplyStatus::kBadRequest);
-  EXPECT_EQ(status_of([&] { simulation.set_parameter({"time_step_fraction", "", 1.5, {}}); }), ReplyStatus::kBadRequest);
+  EXPECT_EQ(status_of([&] {
+              simulation.set_parameter({"time_step_fraction", "", 1.5, {}});
+            }),
+            ReplyStatus::kBadRequest);
   EXPECT_EQ(status_of([&] { simulation.set_parameter({"friction", "sand", 0.3, {}}); }), ReplyStatus::kNotFound);
-  EXPECT_EQ(status_of([&] { simulation.set_parameter({"gravity", "", 0.0, {0, -9.81, 1}}); }), ReplyStatus::kBadRequest);
+  EXPECT_EQ(status_of([&] {
+              simulation.set_parameter({"gravity", "", 0.0, {0, -9.81, 1}});
+            }),
+            ReplyStatus::kBadRequest);
   EXPECT_EQ(status_of([&] { simulation.set_parameter({"viscosity", "", 1.0, {}}); }), ReplyStatus::kNotFound);
   EXPECT_EQ(world.state_hash(), hash);
   EXPECT_EQ(world.damping().contact_beta, 0.01);

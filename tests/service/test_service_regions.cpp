@@ -6,7 +6,6 @@
 // and state as one never interrupted. DDS domains 220 and 222 (issue 13's
 // tests use 220-239).
 #include <gtest/gtest.h>
-
 #include <signal.h>
 
 #include <fstream>
@@ -83,8 +82,12 @@ TEST(Regions, TheirMeasuresArePublishedAndWritten) {
 TEST(Regions, AnElementTestKilledInItsShearAndResumedEndsAsOneNeverInterrupted) {
   const fs::path case_path = fs::path(DEM_CASES_DIR) / "randall" / "graded_reduced.case.txtpb";
   const auto arguments = [&](const std::string& name, const fs::path& out, std::vector<std::string> more) {
-    std::vector<std::string> all = {"--name", name, "--domain", std::to_string(kRegionCheckpoints), "--case",
-                                    case_path.string(), "--out", out.string(), "--threads", "1", "--log-level", "warn",
+    std::vector<std::string> all = {"--name",        name,
+                                    "--domain",      std::to_string(kRegionCheckpoints),
+                                    "--case",        case_path.string(),
+                                    "--out",         out.string(),
+                                    "--threads",     "1",
+                                    "--log-level",   "warn",
                                     "--run-and-exit"};
     all.insert(all.end(), more.begin(), more.end());
     return all;

@@ -1,9 +1,8 @@
 // Continuing from a snapshot gives bit-identical results to a run that
 // never stopped: saved by path or transferred, restored into the same
 // server or another one.
-#include <gtest/gtest.h>
-
 #include <google/protobuf/util/message_differencer.h>
+#include <gtest/gtest.h>
 
 #include "dem/io/snapshot_file.h"
 #include "service_test_support.h"

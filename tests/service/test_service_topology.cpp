@@ -52,11 +52,11 @@ TEST(Topology, ALateJoiningMonitorSeesTheCurrentStatus) {
   dds::Participant late(kTopologyLateJoiner);
   std::mutex mutex;
   std::optional<protocol::Status> seen;
-  client::TelemetrySubscription monitor(late, "durable", {.plate_forces = {}, .contact_stats = {},
-                                                          .status = [&](const protocol::Status& s) {
-                                                            std::lock_guard lock(mutex);
-                                                            seen = s;
-                                                          }});
+  client::TelemetrySubscription monitor(
+      late, "durable", {.plate_forces = {}, .contact_stats = {}, .status = [&](const protocol::Status& s) {
+                          std::lock_guard lock(mutex);
+                          seen = s;
+                        }});
   ASSERT_TRUE(eventually(
       [&] {
         std::lock_guard lock(mutex);
@@ -113,8 +113,8 @@ TEST(Topology, ASubscriberThatStopsReadingDoesNotStallTheEngine) {
   ::kill(monitor, SIGSTOP);
   // A healthy subscriber in this process keeps reading.
   std::atomic<std::uint64_t> last_cycle{0};
-  client::TelemetrySubscription healthy(client, {.plate_forces = [&](const auto& p) { last_cycle = p.cycle; },
-                                                 .contact_stats = {}, .status = {}});
+  client::TelemetrySubscription healthy(
+      client, {.plate_forces = [&](const auto& p) { last_cycle = p.cycle; }, .contact_stats = {}, .status = {}});
   ASSERT_TRUE(eventually([&] { return healthy.matched_publishers() > 0; }, 10s));
 
   const auto start = std::chrono::steady_clock::now();

@@ -139,8 +139,8 @@ TEST(MiyataCompression, EllipsoidsReduced) {
   }
   std::sort(r_squared.begin(), r_squared.end());
   const double median = r_squared[r_squared.size() / 2];
-  std::printf("final state's R² over the packings: lowest %.4f, median %.4f, highest %.4f\n", r_squared.front(),
-              median, r_squared.back());
+  std::printf("final state's R² over the packings: lowest %.4f, median %.4f, highest %.4f\n", r_squared.front(), median,
+              r_squared.back());
   EXPECT_GT(median, 0.95);
 }
 

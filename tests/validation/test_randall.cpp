@@ -30,7 +30,8 @@ TEST(Randall, GradedAssemblyAt100KpaThenShearedAtConstantVolume) {
 // 200 spheres through 5 and 10 mm at a half-angle of 30 degrees.
 TEST(Randall, AWiderOrificeDischargesFaster) {
   std::vector<HopperRun> runs;
-  for (const double orifice : {0.005, 0.010}) runs.push_back(run_hopper(kCases / "hopper_reduced.case.txtpb", 30.0, orifice));
+  for (const double orifice : {0.005, 0.010})
+    runs.push_back(run_hopper(kCases / "hopper_reduced.case.txtpb", 30.0, orifice));
   print_hopper(stdout, runs);
   const Verdict verdict = judge_hopper(runs);
   verdict.print(stdout, "hopper");

@@ -12,10 +12,10 @@
 #include <iostream>
 #include <string>
 
-#include "dem/version.h"
 #include "dem/error.h"
 #include "dem/io/case_error.h"
 #include "dem/io/resource_limits.h"
+#include "dem/version.h"
 #include "run_case.h"
 
 namespace {
@@ -37,11 +37,13 @@ std::function<std::string(const std::string&)> whole_number(std::string meaning)
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Runs a DEM case headless and writes its results as CSV files, a final snapshot and, when asked, "
-               "ParaView files."};
+  CLI::App app{
+      "Runs a DEM case headless and writes its results as CSV files, a final snapshot and, when asked, "
+      "ParaView files."};
   app.set_version_flag("--version", "dem_run " DEM_VERSION);
-  app.footer("Exit codes: 0 done, 1 other failure, 2 bad arguments, 3 an invalid case (file, line and field named),\n"
-             "130 interrupted (Ctrl-C): the tables and final.snapshot hold the state reached.");
+  app.footer(
+      "Exit codes: 0 done, 1 other failure, 2 bad arguments, 3 an invalid case (file, line and field named),\n"
+      "130 interrupted (Ctrl-C): the tables and final.snapshot hold the state reached.");
   dem::run::RunOptions options;
   int threads = 0;
   app.add_option("case", options.case_path, "case file in protobuf text format")->required();
@@ -54,7 +56,7 @@ int main(int argc, char** argv) {
                                                  "cycles between ParaView files (particles.pvd, contacts.pvd, "
                                                  "walls.pvd and vtk/); 0 = none (default: the case's "
                                                  "output.vtk_interval)")
-                                       ->check(whole_number("0 = none"));
+                                      ->check(whole_number("0 = none"));
   app.add_flag("-q,--quiet", options.quiet, "print errors only: no progress line and no summary");
   app.add_option("--checkpoint-cycles", options.checkpoints.cycles,
                  "write a checkpoint to OUT/checkpoints every N cycles (0: none)");

@@ -47,18 +47,20 @@ std::pair<BasicWorld<Dim>, io::ResumePoint> resume_from(const RunOptions& option
                              " (run without --resume to start afresh)");
   }
   if (latest->point.case_digest != digest) {
-    throw std::runtime_error("--resume: " + latest->path.string() + " belongs to another case (or this one changed "
+    throw std::runtime_error("--resume: " + latest->path.string() +
+                             " belongs to another case (or this one changed "
                              "since): run it without --resume into a fresh directory");
   }
-  if (latest->point.stage >= stage_count) throw std::runtime_error("--resume: the checkpoint's stage is past the case's");
+  if (latest->point.stage >= stage_count)
+    throw std::runtime_error("--resume: the checkpoint's stage is past the case's");
   BasicWorld<Dim> world(io::parse_snapshot<Dim>(latest->snapshot_bytes, latest->path.string()).snapshot);
   return {std::move(world), std::move(latest->point)};
 }
 
 // The run itself, once per dimension.
 template <int Dim>
-RunOutcome run_definition(io::CaseDefinitionT<Dim>& definition, const io::CaseSource& source,
-                          const RunOptions& options, const std::string& digest) {
+RunOutcome run_definition(io::CaseDefinitionT<Dim>& definition, const io::CaseSource& source, const RunOptions& options,
+                          const std::string& digest) {
   if (definition.stages.empty()) {
     throw io::CaseError(
         io::describe_problem(source, "stage", "the case defines no stages, so there is nothing to run"));
@@ -82,16 +84,15 @@ RunOutcome run_definition(io::CaseDefinitionT<Dim>& definition, const io::CaseSo
   const bool hertz = std::ranges::any_of(definition.world.contact_models, [](const ContactModelDef& m) {
     return m.law == ContactLaw::kHertzMindlin || m.law == ContactLaw::kHertzLinearTangential;
   });
-  RunRecorder<Dim> recorder(options.output_directory, definition.output, world, hertz,
-                            resumed ? &*resumed : nullptr);
+  RunRecorder<Dim> recorder(options.output_directory, definition.output, world, hertz, resumed ? &*resumed : nullptr);
   RunCheckpoints<Dim> checkpoints(options.output_directory, options.checkpoints, digest, world.cycle_count());
   const io::SnapshotInfo info{definition.name, definition.description};
   ProgressLine progress(!options.quiet && isatty(fileno(stderr)) == 1);
   const bool summary = !options.quiet;
   if (summary) print_case_header(std::cout, definition, world);
   if (summary && resumed) {
-    std::cout << "resumed from the checkpoint at cycle " << resumed->cycle << " (stage " << resumed->stage + 1
-              << ", " << resumed->stage_cycles << " cycles into it)\n";
+    std::cout << "resumed from the checkpoint at cycle " << resumed->cycle << " (stage " << resumed->stage + 1 << ", "
+              << resumed->stage_cycles << " cycles into it)\n";
   }
 
   if (!resumed) recorder.record(world, 0);

@@ -12,9 +12,9 @@ namespace dem::run {
 struct RunOptions {
   std::filesystem::path case_path;
   std::filesystem::path output_directory;
-  std::optional<int> threads;  // overrides the case's numerics.threads
+  std::optional<int> threads;                 // overrides the case's numerics.threads
   std::optional<std::uint64_t> vtk_interval;  // overrides the case's output.vtk_interval (0: none)
-  bool quiet = false;          // no progress line and no summary
+  bool quiet = false;                         // no progress line and no summary
   // Periodic checkpoints in <output_directory>/checkpoints (none by default).
   io::CheckpointSettings checkpoints;
   // Continue from the newest checkpoint there into the same tables.

@@ -17,8 +17,8 @@ namespace dem::run {
 template <int Dim>
 class RunCheckpoints {
  public:
-  RunCheckpoints(const std::filesystem::path& output_directory, io::CheckpointSettings settings, std::string case_digest,
-                 std::uint64_t start_cycle)
+  RunCheckpoints(const std::filesystem::path& output_directory, io::CheckpointSettings settings,
+                 std::string case_digest, std::uint64_t start_cycle)
       : periodic_(settings) {
     periodic_.begin(output_directory / "checkpoints", std::move(case_digest), start_cycle);
   }
@@ -36,8 +36,8 @@ class RunCheckpoints {
     return periodic_.due(world.cycle_count());
   }
 
-  void write(const BasicWorld<Dim>& world, const io::SnapshotInfo& info, RunRecorder<Dim>& recorder,
-             std::size_t stage, std::uint64_t stage_cycles) {
+  void write(const BasicWorld<Dim>& world, const io::SnapshotInfo& info, RunRecorder<Dim>& recorder, std::size_t stage,
+             std::uint64_t stage_cycles) {
     io::ResumePoint point{.cycle = world.cycle_count(), .stage = stage, .stage_cycles = stage_cycles};
     recorder.fill(point);
     periodic_.write(io::serialize_snapshot(world.snapshot(), info), std::move(point));

@@ -18,8 +18,8 @@ std::string brief(double value) {
 }  // namespace
 
 bool has_condition(const StopConditions& until) {
-  return until.kinetic_energy_below || until.out_of_balance_below || until.servo_tolerance ||
-         until.wall_stress_above || until.wall_settlement_above;
+  return until.kinetic_energy_below || until.out_of_balance_below || until.servo_tolerance || until.wall_stress_above ||
+         until.wall_settlement_above;
 }
 
 namespace {

@@ -66,10 +66,11 @@ Verdict report_hertz_impact(const std::filesystem::path& out) {
       const double fe = r.peak_normal_force / t.peak_normal_force - 1.0;
       csv << which << ',' << v << ',' << r.contact_duration << ',' << t.contact_duration << ',' << de << ','
           << r.peak_normal_force << ',' << t.peak_normal_force << ',' << fe << ',' << r.restitution << '\n';
-      std::printf("  %-13s V = %.1f m/s: T_c %.4e s (theory %.4e, %+.3f%%), N_max %.4e N (theory %.4e, %+.3f%%), "
-                  "e = %.6f\n",
-                  which, v, r.contact_duration, t.contact_duration, 100.0 * de, r.peak_normal_force,
-                  t.peak_normal_force, 100.0 * fe, r.restitution);
+      std::printf(
+          "  %-13s V = %.1f m/s: T_c %.4e s (theory %.4e, %+.3f%%), N_max %.4e N (theory %.4e, %+.3f%%), "
+          "e = %.6f\n",
+          which, v, r.contact_duration, t.contact_duration, 100.0 * de, r.peak_normal_force, t.peak_normal_force,
+          100.0 * fe, r.restitution);
       // Randall 5.12: Hertz's duration and peak force within 1%; elastic and
       // undamped, the sphere leaves as fast as it came.
       char label[64];
@@ -115,8 +116,7 @@ Verdict report_oblique_impact(const std::filesystem::path& out) {
     // 5.14-5.16), e = sqrt(cos^2 + (sin - 2 mu cos)^2) of the angle.
     const double a = angle * std::numbers::pi / 180.0;
     const double rigid_psi2 = psi1 - 4.0 * chi;
-    const double rigid_e =
-        std::hypot(std::cos(a), std::sin(a) - 2.0 * s.friction * std::cos(a));
+    const double rigid_e = std::hypot(std::cos(a), std::sin(a) - 2.0 * s.friction * std::cos(a));
     csv << angle << ',' << psi1 << ',' << psi2 << ',' << r.restitution << ',' << r.sliding_throughout << ','
         << rigid_psi2 << ',' << rigid_e << '\n';
     std::printf("  %5.1f  %7.3f  %+7.3f  %.5f      %s", angle, psi1, psi2, r.restitution,
@@ -161,12 +161,14 @@ Verdict report_oblique_impact(const std::filesystem::path& out) {
     }
   }
   const double mean_restitution = restitution_sum / angles;
-  std::printf("  sliding throughout against rigid-body impulse theory: largest |e - e_rigid| %.2e, "
-              "|psi2 - (psi1 - 4 chi)| %.2e\n",
-              largest_e_error, largest_psi2_error);
-  std::printf("  mean restitution over the %d angles 0-87.5 deg: %.4f (Randall's simulation 0.936, Maw et al.'s "
-              "steel pucks 0.93)\n",
-              angles, mean_restitution);
+  std::printf(
+      "  sliding throughout against rigid-body impulse theory: largest |e - e_rigid| %.2e, "
+      "|psi2 - (psi1 - 4 chi)| %.2e\n",
+      largest_e_error, largest_psi2_error);
+  std::printf(
+      "  mean restitution over the %d angles 0-87.5 deg: %.4f (Randall's simulation 0.936, Maw et al.'s "
+      "steel pucks 0.93)\n",
+      angles, mean_restitution);
   // Where the contact slides throughout, rigid-body impulse theory is
   // exact: e and psi2 to the accuracy of the normal impact (e_n = 1 to 1e-6).
   verdict.below("sliding throughout: largest |e - rigid-body e|", largest_e_error, 1e-5);
@@ -220,9 +222,10 @@ Verdict report_mindlin_loading(const std::filesystem::path& out) {
               r.normal_force, r.friction_force, r.slip_displacement);
   std::printf("  constant N, loading / unloading / reloading: largest error %.4f%% of mu N over %zu points\n",
               100.0 * r.largest_error, r.points.size());
-  std::printf("  varying N: largest |T|/(mu N) = %.6f, %d sliding steps, %d lagging steps with theta = 1 "
-              "(largest error %.2e)\n",
-              v.largest_ratio, v.sliding_steps, v.lagging_checks, v.largest_lag_error);
+  std::printf(
+      "  varying N: largest |T|/(mu N) = %.6f, %d sliding steps, %d lagging steps with theta = 1 "
+      "(largest error %.2e)\n",
+      v.largest_ratio, v.sliding_steps, v.lagging_checks, v.largest_lag_error);
   verdict.near("normal force reached, N", r.normal_force, 88.0, 1e-6);
   verdict.near("points on the loading, unloading and reloading branches", static_cast<double>(r.points.size()), 60.0,
                0.0);
@@ -253,9 +256,9 @@ Verdict report_mindlin_loading(const std::filesystem::path& out) {
       csv << p.branch << ',' << p.displacement << ',' << p.simulated << ',' << p.theory << '\n';
     }
     const std::string which = wall ? "fresh wall contact" : "fresh pair contact";
-    std::printf("  %s, N rising %.2f -> %.2f N to delta/delta* = %.3f: largest error %.4f%% of mu N%s\n",
-                which.c_str(), f.initial_normal_force, f.final_normal_force, f.final_ratio,
-                100.0 * f.largest_error, f.sliding ? " (SLID)" : "");
+    std::printf("  %s, N rising %.2f -> %.2f N to delta/delta* = %.3f: largest error %.4f%% of mu N%s\n", which.c_str(),
+                f.initial_normal_force, f.final_normal_force, f.final_ratio, 100.0 * f.largest_error,
+                f.sliding ? " (SLID)" : "");
     verdict.below(which + ": largest |T - mu N (1 - (1 - delta/delta*)^1.5)| / (mu N)", f.largest_error, 0.01);
     verdict.expect(which + ": no sliding below delta*", !f.sliding);
   }
@@ -277,10 +280,11 @@ Verdict report_box_settle(const std::filesystem::path& case_file, const std::fil
               r.at_rest ? "at rest" : "NOT at rest within the stage's cycles");
   std::printf("  weight %.6e N, floor carries %.6e N (%+.4f%%), side walls %.2e N\n", r.weight, r.floor_force,
               100.0 * (r.floor_force / r.weight - 1.0), r.side_walls_vertical);
-  std::printf("  energy: gravity work %.6e J = kinetic %.3e + strain %.3e + dashpots %.6e + friction %.6e + "
-              "local damping %.6e + global damping %.3e; residual %+.3e J (%+.4f%% of the potential energy drop)\n",
-              e.gravity_work, e.kinetic, e.strain, e.contact_damping, e.friction, e.local_damping, e.global_damping,
-              e.residual(), 100.0 * e.residual() / e.gravity_work);
+  std::printf(
+      "  energy: gravity work %.6e J = kinetic %.3e + strain %.3e + dashpots %.6e + friction %.6e + "
+      "local damping %.6e + global damping %.3e; residual %+.3e J (%+.4f%% of the potential energy drop)\n",
+      e.gravity_work, e.kinetic, e.strain, e.contact_damping, e.friction, e.local_damping, e.global_damping,
+      e.residual(), 100.0 * e.residual() / e.gravity_work);
   verdict.near("spheres", r.particles, 2000, 0);
   verdict.expect("at rest within the stage's cycles", r.at_rest);
   verdict.near("floor force / weight", r.floor_force / r.weight, 1.0, 0.005);

@@ -52,13 +52,16 @@ void print_deposition(std::FILE* out, const DepositionRun& run) {
                static_cast<unsigned long long>(run.cycles), run.seconds, run.at_rest ? "at rest" : "NOT at rest");
   std::fprintf(out, "  weight %.6e N, carried by the container's walls %.6e N (%+.3f %%)\n", run.weight,
                run.walls_vertical, 100.0 * (run.walls_vertical / run.weight - 1.0));
-  std::fprintf(out, "  time step over the particle-wise critical step (Randall 4.35-4.40): at most %.3f while it rains "
-                    "(Rayleigh step), %.3f while it settles (0.3 of it)\n",
+  std::fprintf(out,
+               "  time step over the particle-wise critical step (Randall 4.35-4.40): at most %.3f while it rains "
+               "(Rayleigh step), %.3f while it settles (0.3 of it)\n",
                run.rain_step_ratio, run.settle_step_ratio);
-  std::fprintf(out, "  bed (region \"%s\"): porosity %.4f, coordination %.3f (without rattlers %.3f, %d of %d "
-                    "rattlers), sliding %.1f %%, fabric anisotropy %.4f, vertical over horizontal stress %.3f\n",
+  std::fprintf(out,
+               "  bed (region \"%s\"): porosity %.4f, coordination %.3f (without rattlers %.3f, %d of %d "
+               "rattlers), sliding %.1f %%, fabric anisotropy %.4f, vertical over horizontal stress %.3f\n",
                b.region.c_str(), b.porosity, b.coordination, b.mechanical_coordination, b.rattlers, b.particles,
-               100.0 * b.sliding_fraction, b.fabric.anisotropy, b.stress(0, 0) > 0.0 ? b.stress(1, 1) / b.stress(0, 0) : 0.0);
+               100.0 * b.sliding_fraction, b.fabric.anisotropy,
+               b.stress(0, 0) > 0.0 ? b.stress(1, 1) / b.stress(0, 0) : 0.0);
 }
 
 Verdict judge_deposition(const DepositionRun& run) {

@@ -23,12 +23,12 @@ struct DepositionRun {
   int particles = 0;
   std::uint64_t cycles = 0;
   double seconds = 0.0;
-  bool at_rest = false;             // the settle stage met its condition
-  double weight = 0.0;              // N (spheres in the plane: their own weight)
-  double walls_vertical = 0.0;      // N: the vertical force the container's walls carry
-  double rain_step_ratio = 0.0;     // the largest dt over the particle-wise critical step while it rains
-  double settle_step_ratio = 0.0;   // and while it settles (at the smaller step)
-  analysis::RegionMeasures bed;     // the case's first region at the end
+  bool at_rest = false;            // the settle stage met its condition
+  double weight = 0.0;             // N (spheres in the plane: their own weight)
+  double walls_vertical = 0.0;     // N: the vertical force the container's walls carry
+  double rain_step_ratio = 0.0;    // the largest dt over the particle-wise critical step while it rains
+  double settle_step_ratio = 0.0;  // and while it settles (at the smaller step)
+  analysis::RegionMeasures bed;    // the case's first region at the end
 };
 
 DepositionRun run_deposition(const std::filesystem::path& case_file,

@@ -18,7 +18,7 @@ namespace dem::validation {
 
 namespace {
 
-constexpr double kWedgeHeight = 0.05;       // m above the orifice
+constexpr double kWedgeHeight = 0.05;        // m above the orifice
 constexpr double kGenerationBottom = 0.008;  // m: the spheres are generated above this
 constexpr double kGenerationTop = 0.054;     // m
 
@@ -86,7 +86,8 @@ HopperRun run_hopper(const std::filesystem::path& case_file, double half_angle_d
   const double half_width = 0.5 * orifice + kGenerationBottom * std::tan(run.half_angle);
   generation.min = {-half_width, kGenerationBottom};
   generation.max = {half_width, kGenerationTop};
-  for (const proto::SizeClass& size : packing.size()) generation.sizes.push_back({size.radius(), static_cast<int>(size.count())});
+  for (const proto::SizeClass& size : packing.size())
+    generation.sizes.push_back({size.radius(), static_cast<int>(size.count())});
   generation.seed = packing.seed();
   def.world.particles = generate_random_packing(generation);
 
@@ -132,7 +133,8 @@ HopperRun run_hopper(const std::filesystem::path& case_file, double half_angle_d
 void print_hopper(std::FILE* out, const std::vector<HopperRun>& runs) {
   std::fprintf(out, "Hopper discharge (Randall 6.2, Platts): %d spheres of 0.3 mm\n",
                runs.empty() ? 0 : runs.front().particles);
-  std::fprintf(out, "  run              filled in  steady from  rate (spheres/s)  R^2 (20-70 %%)  left in  wall clock\n");
+  std::fprintf(out,
+               "  run              filled in  steady from  rate (spheres/s)  R^2 (20-70 %%)  left in  wall clock\n");
   for (const HopperRun& r : runs) {
     std::fprintf(out, "  %-15s  %.4f s   %.4f s     %9.1f        %.4f         %.3f s  %.0f s%s\n", r.name.c_str(),
                  r.fill_seconds, r.steady_from, r.rate, r.rate_r_squared, r.time.empty() ? 0.0 : r.time.back(),
@@ -146,7 +148,8 @@ void write_hopper_csv(const std::filesystem::path& out, const std::vector<Hopper
                     "run,half_angle_deg,orifice,particles,fill_time,steady_from,rate,r_squared,empty_after");
   for (const HopperRun& r : runs) {
     const double degrees = r.half_angle * 180.0 / std::numbers::pi;
-    for (std::size_t k = 0; k < r.time.size(); ++k) series.write_row(r.name, degrees, r.orifice, r.time[k], r.discharged[k]);
+    for (std::size_t k = 0; k < r.time.size(); ++k)
+      series.write_row(r.name, degrees, r.orifice, r.time[k], r.discharged[k]);
     rates.write_row(r.name, degrees, r.orifice, r.particles, r.fill_seconds, r.steady_from, r.rate, r.rate_r_squared,
                     r.time.empty() ? 0.0 : r.time.back());
   }

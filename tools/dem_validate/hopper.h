@@ -15,13 +15,13 @@
 namespace dem::validation {
 
 struct HopperRun {
-  std::string name;           // "30 deg, 10 mm"
-  double half_angle = 0.0;    // rad, from the vertical
-  double orifice = 0.0;       // m
+  std::string name;         // "30 deg, 10 mm"
+  double half_angle = 0.0;  // rad, from the vertical
+  double orifice = 0.0;     // m
   int particles = 0;
-  double fill_seconds = 0.0;  // simulated time to fill, s
-  bool filled = false;        // at rest before the orifice opened
-  std::vector<double> time;   // s since the orifice opened
+  double fill_seconds = 0.0;    // simulated time to fill, s
+  bool filled = false;          // at rest before the orifice opened
+  std::vector<double> time;     // s since the orifice opened
   std::vector<int> discharged;  // particles below the orifice's line then
   double rate = 0.0;            // particles/s: least squares over 20-70 % discharged
   double rate_r_squared = 0.0;  // how straight the discharge is there

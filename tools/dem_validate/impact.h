@@ -12,9 +12,9 @@ namespace dem::validation {
 
 // A sphere of one material; the wall (or the second sphere) is of the same material.
 struct Sphere {
-  double radius = 1e-3;            // m
-  double density = 7800.0;         // kg/m^3
-  double youngs_modulus = 210e9;   // Pa
+  double radius = 1e-3;           // m
+  double density = 7800.0;        // kg/m^3
+  double youngs_modulus = 210e9;  // Pa
   double poisson_ratio = 0.28;
   double friction = 0.12;
 };
@@ -27,9 +27,9 @@ struct ImpactSample {
 };
 
 struct ImpactResult {
-  double contact_duration = 0.0;     // s, from first touch to separation, interpolated
-  double peak_normal_force = 0.0;    // N
-  double restitution = 0.0;          // normal: v_n after / before; oblique: |v| after / before
+  double contact_duration = 0.0;           // s, from first touch to separation, interpolated
+  double peak_normal_force = 0.0;          // N
+  double restitution = 0.0;                // normal: v_n after / before; oblique: |v| after / before
   double normal_velocity_after = 0.0;      // m/s, away from the wall
   double tangential_velocity_after = 0.0;  // m/s, of the contact point, along the incident direction
   bool sliding_throughout = false;
@@ -53,7 +53,7 @@ struct HertzTheory {
 HertzTheory hertz_theory(double effective_mass, double effective_radius, double contact_modulus, double speed);
 
 // Maw's parameters (Randall 5.14-5.16).
-double maw_chi(double poisson_ratio);                        // (5.14), solid sphere K^2 = 2/5
+double maw_chi(double poisson_ratio);                                                  // (5.14), solid sphere K^2 = 2/5
 double maw_psi(double poisson_ratio, double friction, double tangential_over_normal);  // (5.15)
 
 }  // namespace dem::validation

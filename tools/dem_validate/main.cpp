@@ -15,7 +15,6 @@
 //   dem_validate miyata-compression --case FILE --out DIR
 //                                           (Miyata et al. 2002, 3.2-3.3: plate loading, Figs. 26-37)
 #include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <cstdio>
 #include <exception>
@@ -24,11 +23,11 @@
 #include <string>
 #include <vector>
 
-#include "dem/version.h"
 #include "contact_mechanics.h"
-#include "miyata_compression.h"
+#include "dem/version.h"
 #include "deposition.h"
 #include "hopper.h"
+#include "miyata_compression.h"
 #include "nine_disc.h"
 #include "randall_assembly.h"
 #include "rolling.h"
@@ -48,9 +47,10 @@ void report_nine_disc(const dem::validation::CompressionReport& c, const dem::va
               100.0 * (c.undamped_mean / feq - 1.0), c.undamped_amplitude / feq);
   std::printf("  loading speed 0.12 vs 0.04: amplitude %.4f vs %.4f F_eq (Fig. 7)\n", c.undamped_amplitude / feq,
               c.slow_amplitude / feq);
-  std::printf("  undamped: the slow run against the fast one superposed (linearity): largest difference %.2e F_eq; "
-              "mean periods %.2f and %.2f cycles; amplitude over the first and second half of the hold %.4f, %.4f\n",
-              c.superposition_error, c.fast_period, c.slow_period, c.early_amplitude, c.late_amplitude);
+  std::printf(
+      "  undamped: the slow run against the fast one superposed (linearity): largest difference %.2e F_eq; "
+      "mean periods %.2f and %.2f cycles; amplitude over the first and second half of the hold %.4f, %.4f\n",
+      c.superposition_error, c.fast_period, c.slow_period, c.early_amplitude, c.late_amplitude);
   const std::size_t s = d.distortion_start;
   for (const auto* h : {&d.phi15_ks2_3, &d.phi15_ks1, &d.phi30_ks2_3, &d.phi30_ks1}) {
     const auto peak = std::max_element(h->normal_force.begin() + static_cast<std::ptrdiff_t>(s), h->normal_force.end());
@@ -80,16 +80,18 @@ int main(int argc, char** argv) {
   CLI::App app{"dem_validate: reproduce the seeds' validation checks and write their figures"};
   app.set_version_flag("--version", "dem_validate " DEM_VERSION);
   app.require_subcommand(1);
-  app.footer("Every subcommand writes its figures as CSV files into --out DIR (required: nothing is written\n"
-             "where it was not asked for), prints them and ends with its verdict: each check against the seed's\n"
-             "or the theory's bound, pass or FAIL. dem_validate SUBCOMMAND --help lists its options.\n"
-             "Exit codes: 0 every check passed, 1 a check failed or the run failed, 2 bad arguments.");
+  app.footer(
+      "Every subcommand writes its figures as CSV files into --out DIR (required: nothing is written\n"
+      "where it was not asked for), prints them and ends with its verdict: each check against the seed's\n"
+      "or the theory's bound, pass or FAIL. dem_validate SUBCOMMAND --help lists its options.\n"
+      "Exit codes: 0 every check passed, 1 a check failed or the run failed, 2 bad arguments.");
   std::filesystem::path out;
   std::filesystem::path cases = default_cases();
   auto* nine = app.add_subcommand("nine-disc", "Cundall & Strack (1979) nine-disc test, Figs. 6-9");
   nine->add_option("--out", out, "directory for nine_disc.csv and nine_disc_distortion.csv")->required();
   nine->add_option("--cases", cases, "directory holding the cases/ball case files")->check(CLI::ExistingDirectory);
-  auto* hertz = app.add_subcommand("hertz-impact", "Hertz normal impact, sphere-wall and sphere-sphere (Randall 5.3.1)");
+  auto* hertz =
+      app.add_subcommand("hertz-impact", "Hertz normal impact, sphere-wall and sphere-sphere (Randall 5.3.1)");
   auto* oblique = app.add_subcommand("oblique-impact", "oblique impact sweep 0-90 degrees (Randall 5.4, Maw et al.)");
   auto* restitution = app.add_subcommand("restitution", "linear spring-dashpot restitution (Miyata eq. 17)");
   auto* mindlin = app.add_subcommand("mindlin-loading", "Mindlin-Deresiewicz loading history (Randall 5.2)");
@@ -108,8 +110,8 @@ int main(int argc, char** argv) {
   std::filesystem::path randall_case;
   auto* randall_compression = app.add_subcommand(
       "randall-compression", "Randall (1989) 6.4.3: a cases/randall assembly compressed to 100 kPa, then friction");
-  auto* randall_shear = app.add_subcommand(
-      "randall-shear", "Randall (1989) 6.5.2: the same, then sheared at constant volume");
+  auto* randall_shear =
+      app.add_subcommand("randall-shear", "Randall (1989) 6.5.2: the same, then sheared at constant volume");
   for (auto* sub : {randall_compression, randall_shear}) {
     sub->add_option("--case", randall_case, "a cases/randall case file")->required()->check(CLI::ExistingFile);
     sub->add_option("--out", out, "directory for randall.csv, roses.csv, obliquity.csv and the snapshots")->required();
@@ -153,7 +155,8 @@ int main(int argc, char** argv) {
     if (*mindlin) verdict = dem::validation::report_mindlin_loading(out);
     if (*box) verdict = dem::validation::report_box_settle(cases / "validation" / "box_settle.case.txtpb", out);
     if (*randall_compression || *randall_shear) {
-      const dem::validation::RandallRun run = dem::validation::run_randall(randall_case, static_cast<bool>(*randall_shear), out);
+      const dem::validation::RandallRun run =
+          dem::validation::run_randall(randall_case, static_cast<bool>(*randall_shear), out);
       dem::validation::print_randall(stdout, run);
       verdict = dem::validation::judge_randall_compression(run);
       if (*randall_shear) verdict.add(dem::validation::judge_randall_shear(run));

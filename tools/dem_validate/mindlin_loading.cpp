@@ -101,10 +101,10 @@ VaryingNormalResult mindlin_varying_normal_force() {
     int steps;
   };
   const double unit = 0.3 * base / 1000.0;
-  const Phase phases[] = {{+unit, 0.05 * unit, 1000},  // N rising fast, small tangential motion: lagging
-                          {+unit, 2.0 * unit, 1000},   // N rising, tangential loading towards slip
-                          {-unit, 1.0 * unit, 1000},   // N falling while loading: sliding
-                          {0.0, -2.0 * unit, 1000},    // unloading at constant N
+  const Phase phases[] = {{+unit, 0.05 * unit, 1000},        // N rising fast, small tangential motion: lagging
+                          {+unit, 2.0 * unit, 1000},         // N rising, tangential loading towards slip
+                          {-unit, 1.0 * unit, 1000},         // N falling while loading: sliding
+                          {0.0, -2.0 * unit, 1000},          // unloading at constant N
                           {-0.5 * unit, 1.5 * unit, 1000}};  // N falling, reloading
   for (const Phase& phase : phases) {
     for (int k = 0; k < phase.steps; ++k) {

@@ -10,7 +10,7 @@
 namespace dem::validation {
 
 struct MindlinPoint {
-  std::string branch;  // loading, unloading, reloading
+  std::string branch;   // loading, unloading, reloading
   double displacement;  // m, tangential
   double simulated;     // N
   double theory;        // N, closed form
@@ -21,17 +21,17 @@ struct MindlinLoadingResult {
   double friction_force = 0.0;     // mu N
   double slip_displacement = 0.0;  // 3 mu N / (16 G* a): full slip on virgin loading
   std::vector<MindlinPoint> points;
-  double largest_error = 0.0;      // max |simulated - theory| / (mu N) over the points
+  double largest_error = 0.0;  // max |simulated - theory| / (mu N) over the points
 };
 
 // Two spheres R = 10 mm, mu = 0.3, E = 210 GPa, nu = 0.3, pressed to N = 88 N.
 MindlinLoadingResult mindlin_constant_normal_force(int steps_per_branch);
 
 struct VaryingNormalResult {
-  double largest_ratio = 0.0;     // max |T| / (mu N) over the history (must not exceed 1)
+  double largest_ratio = 0.0;  // max |T| / (mu N) over the history (must not exceed 1)
   int sliding_steps = 0;
-  int lagging_checks = 0;         // steps where N grew faster than T could follow
-  double largest_lag_error = 0.0; // max |dT - 8 G* a ds| / |dT| on those steps (theta = 1, eq. 3.98)
+  int lagging_checks = 0;          // steps where N grew faster than T could follow
+  double largest_lag_error = 0.0;  // max |dT - 8 G* a ds| / |dT| on those steps (theta = 1, eq. 3.98)
 };
 
 // The same contact under a history in which N rises and falls while the

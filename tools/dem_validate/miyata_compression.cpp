@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <variant>
 #include <limits>
+#include <variant>
 
 #include "dem/io/case_conversion.h"
 #include "dem/io/case_loader.h"
@@ -186,11 +186,10 @@ void write_miyata_summary(const std::filesystem::path& directory, const MiyataRu
                  f.transition_stiffness, f.final_stiffness, f.final_r_squared, f.initial_contact_rate,
                  f.transition_contact_rate, f.final_contact_rate, f.final_loading_contacts, f.final_bottom_contacts,
                  f.initial_load_share, f.transition_load_share, f.final_load_share, f.state_initial_load_share,
-                 f.state_transition_load_share, f.state_final_load_share, f.initial_contact_share,
-                 f.loading_decay_rate, f.loading_decay_rate_error, f.loading_excess_cv, f.bottom_decay_rate,
-                 f.bottom_decay_rate_error, f.bottom_excess_cv, f.largest_f[0], f.near_tail_share[0],
-                 f.far_tail_share[0], f.largest_f[1], f.near_tail_share[1], f.far_tail_share[1], f.drops,
-                 f.largest_drop);
+                 f.state_transition_load_share, f.state_final_load_share, f.initial_contact_share, f.loading_decay_rate,
+                 f.loading_decay_rate_error, f.loading_excess_cv, f.bottom_decay_rate, f.bottom_decay_rate_error,
+                 f.bottom_excess_cv, f.largest_f[0], f.near_tail_share[0], f.far_tail_share[0], f.largest_f[1],
+                 f.near_tail_share[1], f.far_tail_share[1], f.drops, f.largest_drop);
 }
 
 Verdict judge_miyata(const MiyataRun& run, const MiyataFigures& f) {

@@ -23,7 +23,7 @@ namespace dem::validation {
 struct MiyataRun {
   std::string name;
   int dimension = 2;
-  bool rough = false;         // a stage trims the surface with an amplitude (eq. 60)
+  bool rough = false;          // a stage trims the surface with an amplitude (eq. 60)
   double target_stress = 0.0;  // Pa: the stress the last stage that has one loads the plate to; 0 without
 
   int particles = 0;  // after trimming

@@ -33,14 +33,15 @@ double mean(const std::vector<double>& f, std::size_t from) {
 double mean_period(const std::vector<double>& f, std::size_t from, double level) {
   std::vector<double> up;
   for (std::size_t k = from + 1; k < f.size(); ++k) {
-    if (f[k - 1] < level && f[k] >= level) up.push_back(static_cast<double>(k - 1) + (level - f[k - 1]) / (f[k] - f[k - 1]));
+    if (f[k - 1] < level && f[k] >= level)
+      up.push_back(static_cast<double>(k - 1) + (level - f[k - 1]) / (f[k] - f[k - 1]));
   }
   return up.size() < 2 ? 0.0 : (up.back() - up.front()) / static_cast<double>(up.size() - 1);
 }
 
 double half_peak_to_peak(const std::vector<double>& f, std::size_t from, std::size_t to) {
-  const auto [lo, hi] = std::minmax_element(f.begin() + static_cast<std::ptrdiff_t>(from),
-                                            f.begin() + static_cast<std::ptrdiff_t>(to));
+  const auto [lo, hi] =
+      std::minmax_element(f.begin() + static_cast<std::ptrdiff_t>(from), f.begin() + static_cast<std::ptrdiff_t>(to));
   return 0.5 * (*hi - *lo);
 }
 
@@ -88,7 +89,8 @@ CompressionReport run_compression(const std::filesystem::path& cases_dir) {
   for (std::size_t k = 0; k < slow.size() && k < fast.size(); ++k) {
     const auto i = static_cast<std::ptrdiff_t>(k);
     const double superposed = (at(i) + at(i - static_cast<std::ptrdiff_t>(kLoadingEnd)) +
-                               at(i - 2 * static_cast<std::ptrdiff_t>(kLoadingEnd))) / 3.0;
+                               at(i - 2 * static_cast<std::ptrdiff_t>(kLoadingEnd))) /
+                              3.0;
     r.superposition_error = std::max(r.superposition_error, std::abs(slow[k] - superposed) / r.equilibrium_force);
   }
   r.fast_period = mean_period(fast, kLoadingEnd, r.undamped_mean);
@@ -100,7 +102,7 @@ CompressionReport run_compression(const std::filesystem::path& cases_dir) {
 }
 
 std::vector<AmplitudeAtStep> undamped_amplitude_by_time_step(const std::filesystem::path& cases_dir,
-                                                              const std::vector<double>& fractions) {
+                                                             const std::vector<double>& fractions) {
   const io::LoadedCase loaded = io::load_case_file(cases_dir / "nine_disc_undamped.case.txtpb");
   const io::CaseDefinition def = io::convert_case(loaded.message, loaded.source);
   const auto probe = def.output.probes.front();
@@ -201,8 +203,8 @@ Verdict judge_nine_disc(const CompressionReport& c, const DistortionReport& d) {
   verdict.below("Figs. 6-7: slow loading against the fast response superposed, largest difference / F_eq",
                 c.superposition_error, 0.005);
   verdict.near("Fig. 7: the two speeds' mean periods, slow over fast", c.slow_period / c.fast_period, 1.0, 0.05);
-  verdict.near("Fig. 6: undamped amplitude, second half of the hold over the first", c.late_amplitude / c.early_amplitude,
-               1.0, 0.05);
+  verdict.near("Fig. 6: undamped amplitude, second half of the hold over the first",
+               c.late_amplitude / c.early_amplitude, 1.0, 0.05);
   // Damped: settled at the end (the last 500 cycles vary by under 1e-4 F_eq).
   const auto& f = c.damped.normal_force;
   if (f.size() >= 500) {

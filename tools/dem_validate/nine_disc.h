@@ -23,11 +23,11 @@ ContactHistory follow_contact_c(const std::filesystem::path& case_file);
 // Undistorted compression (Figs. 6-7).
 struct CompressionReport {
   ContactHistory undamped, contact_damping, global_damping, damped, slow;
-  double equilibrium_force = 0.0;        // F_eq: the fully damped run's final force at C
-  double undamped_mean = 0.0;            // time mean of the undamped force after loading
-  double undamped_amplitude = 0.0;       // half the peak-to-peak of the undamped force after loading
-  double slow_amplitude = 0.0;           // the same for the slow (0.04) loading
-  double damped_spread = 0.0;            // largest |F_final / F_eq - 1| over the three damped runs
+  double equilibrium_force = 0.0;   // F_eq: the fully damped run's final force at C
+  double undamped_mean = 0.0;       // time mean of the undamped force after loading
+  double undamped_amplitude = 0.0;  // half the peak-to-peak of the undamped force after loading
+  double slow_amplitude = 0.0;      // the same for the slow (0.04) loading
+  double damped_spread = 0.0;       // largest |F_final / F_eq - 1| over the three damped runs
   // What the seed determines of the undamped curves without giving the
   // time step: the assembly is linear (every contact stays closed and
   // sticking), so the slow loading (a third of the speed for three times
@@ -50,12 +50,12 @@ struct CompressionReport {
 // 0.12 per cycle for 40 cycles, as the case) with another fixed time step:
 // the seed's "about 0.15 F_eq" depends on the step, which it does not give.
 struct AmplitudeAtStep {
-  double time_step = 0.0;             // the fixed step, as a fraction of the case's critical step
-  double amplitude = 0.0;             // over F_eq
-  double loading_over_period = 0.0;   // the 40 loading cycles over the oscillation's mean period
+  double time_step = 0.0;            // the fixed step, as a fraction of the case's critical step
+  double amplitude = 0.0;            // over F_eq
+  double loading_over_period = 0.0;  // the 40 loading cycles over the oscillation's mean period
 };
 std::vector<AmplitudeAtStep> undamped_amplitude_by_time_step(const std::filesystem::path& cases_dir,
-                                                              const std::vector<double>& fractions);
+                                                             const std::vector<double>& fractions);
 CompressionReport run_compression(const std::filesystem::path& cases_dir);
 
 // Distortion at constant volume (Figs. 8-9): F_n and F_s at C during the

@@ -188,8 +188,9 @@ void print_randall(std::FILE* out, const RandallRun& run) {
                m.principal_stress.values[0] / 1e3, m.principal_stress.values[1] / 1e3, m.sin_phi, m.fabric.anisotropy,
                m.weighted_fabric.anisotropy, rose_roughness(run.rose), rose_roughness(run.weighted_rose),
                100.0 * m.sliding_fraction, 100.0 * sliding_share(run.obliquity));
-  std::fprintf(out, "    Randall: coordination 3.15 (uniform), 3.57 (graded); F_max / F_mean 0.53/0.143 = 3.7 "
-                    "(uniform), 0.59/0.123 = 4.8 (graded); porosity 16 %% and 14 %%\n");
+  std::fprintf(out,
+               "    Randall: coordination 3.15 (uniform), 3.57 (graded); F_max / F_mean 0.53/0.143 = 3.7 "
+               "(uniform), 0.59/0.123 = 4.8 (graded); porosity 16 %% and 14 %%\n");
   if (run.shear.empty()) return;
   std::fprintf(out, "  constant-volume shear, %zu samples to deviator strain %.4f %%:\n", run.shear.size(),
                100.0 * run.shear.back().deviator_strain);
@@ -213,9 +214,10 @@ void print_randall(std::FILE* out, const RandallRun& run) {
   }
   double worst = 0.0;
   for (const ShearSample& s : run.shear) worst = std::max(worst, s.out_of_balance);
-  std::fprintf(out, "    largest Delta F / F during the shear %.4f; Randall: peak sin(phi) about 0.3 (uniform, just "
-                    "after 0.1 %%) and 0.36 (graded, by 0.05 %%), tangential share 15 %% and 14 %%, sliding never "
-                    "above 25 %%\n",
+  std::fprintf(out,
+               "    largest Delta F / F during the shear %.4f; Randall: peak sin(phi) about 0.3 (uniform, just "
+               "after 0.1 %%) and 0.36 (graded, by 0.05 %%), tangential share 15 %% and 14 %%, sliding never "
+               "above 25 %%\n",
                worst);
 }
 

@@ -25,9 +25,9 @@ namespace dem::validation {
 // The assembly at one moment of the shear.
 struct ShearSample {
   std::uint64_t cycle = 0;
-  double deviator_strain = 0.0;    // the box's, sigma_y's axis shortened, sigma_x's lengthened
+  double deviator_strain = 0.0;  // the box's, sigma_y's axis shortened, sigma_x's lengthened
   double volumetric_strain = 0.0;
-  double out_of_balance = 0.0;     // Delta F / F
+  double out_of_balance = 0.0;                    // Delta F / F
   std::vector<analysis::RegionMeasures> regions;  // the case's regions, in order
 };
 
@@ -36,7 +36,7 @@ struct RandallRun {
   int particles = 0;
   std::uint64_t cycles = 0;
   double seconds = 0.0;
-  double friction = 0.0;  // tan(phi) between the particles after the friction stage
+  double friction = 0.0;    // tan(phi) between the particles after the friction stage
   bool compressed = false;  // the compression and friction stages met their conditions
   // At quasi-equilibrium at 100 kPa with friction (6.4.3), in the case's
   // first region (a measurement circle well inside the walls).

@@ -35,8 +35,8 @@ RollingToRest roll(double rolling_friction) {
   ParticleDefT<Dim> ball;
   ball.radius = kRadius;
   const bool disc = Dim == 2;
-  const double mass =
-      disc ? kDensity * std::numbers::pi * kRadius * kRadius : kDensity * 4.0 / 3.0 * std::numbers::pi * std::pow(kRadius, 3);
+  const double mass = disc ? kDensity * std::numbers::pi * kRadius * kRadius
+                           : kDensity * 4.0 / 3.0 * std::numbers::pi * std::pow(kRadius, 3);
   // Resting on the plane: pressed in by its weight.
   const double overlap = mass * kGravity / 1e6;
   ball.position[Dim - 1] = kRadius - overlap;
@@ -194,8 +194,7 @@ Verdict report_rolling_to_rest(const std::filesystem::path& out) {
                     r.largest_slip);
       const char* ball = dimension == 2 ? "disc" : "sphere";
       std::printf("  %-6s mu_r = %.2f: stops after %.5f s (theory %.5f), %.4f mm (theory %.4f), slip at most %.1e v0\n",
-                  ball, mu, r.stop_time, r.theory_time, 1e3 * r.stop_distance, 1e3 * r.theory_distance,
-                  r.largest_slip);
+                  ball, mu, r.stop_time, r.theory_time, 1e3 * r.stop_distance, 1e3 * r.theory_distance, r.largest_slip);
       char label[64];
       std::snprintf(label, sizeof label, "%s mu_r = %.2f", ball, mu);
       v.near(std::string(label) + ": stopping distance / v0^2 / (2a)", r.stop_distance / r.theory_distance, 1.0, 0.01);

@@ -19,12 +19,12 @@ namespace dem::validation {
 struct RollingToRest {
   int dimension = 3;
   double rolling_friction = 0.0;
-  double speed = 0.0;              // v0, m/s
-  double stop_time = 0.0;          // s, when its speed first falls to 0.1 % of v0
-  double stop_distance = 0.0;      // m, travelled by then
-  double theory_time = 0.0;        // v0 / a
-  double theory_distance = 0.0;    // v0^2 / (2 a)
-  double largest_slip = 0.0;       // max |contact point speed| / v0 while rolling (0: no slip)
+  double speed = 0.0;            // v0, m/s
+  double stop_time = 0.0;        // s, when its speed first falls to 0.1 % of v0
+  double stop_distance = 0.0;    // m, travelled by then
+  double theory_time = 0.0;      // v0 / a
+  double theory_distance = 0.0;  // v0^2 / (2 a)
+  double largest_slip = 0.0;     // max |contact point speed| / v0 while rolling (0: no slip)
 };
 RollingToRest roll_to_rest(int dimension, double rolling_friction);
 

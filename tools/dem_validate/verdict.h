@@ -12,7 +12,7 @@
 namespace dem::validation {
 
 struct Check {
-  std::string name;    // what is checked: "sphere-wall V = 0.4 m/s: contact duration / Hertz's"
+  std::string name;  // what is checked: "sphere-wall V = 0.4 m/s: contact duration / Hertz's"
   bool passed = false;
   std::string detail;  // what was measured against what: "1.0031, expected 1 within 0.01"
 };
@@ -20,10 +20,11 @@ struct Check {
 class Verdict {
  public:
   void expect(std::string name, bool passed, std::string detail = {});
-  void near(std::string name, double measured, double expected, double tolerance);  // |measured - expected| <= tolerance
-  void below(std::string name, double measured, double bound);                     // measured < bound
-  void above(std::string name, double measured, double bound);                     // measured > bound
-  void at_least(std::string name, double measured, double bound);                  // measured >= bound
+  void near(std::string name, double measured, double expected,
+            double tolerance);                                     // |measured - expected| <= tolerance
+  void below(std::string name, double measured, double bound);     // measured < bound
+  void above(std::string name, double measured, double bound);     // measured > bound
+  void at_least(std::string name, double measured, double bound);  // measured >= bound
   void add(const Verdict& other);
 
   bool passed() const;

@@ -19,11 +19,11 @@ namespace dem::validation {
 // One stage's state when it has come to rest: Table 1's columns.
 struct VerificationStage {
   std::string name;
-  bool settled = false;           // its stop condition held within its cycles
+  bool settled = false;  // its stop condition held within its cycles
   std::uint64_t cycle = 0;
-  std::array<WallMeasure, 4> walls;  // 1 bottom, 2 right, 3 top, 4 left
-  double ratio = 0.0;             // F_H / F_V
-  double out_of_balance = 0.0;    // Delta F / F
+  std::array<WallMeasure, 4> walls;     // 1 bottom, 2 right, 3 top, 4 left
+  double ratio = 0.0;                   // F_H / F_V
+  double out_of_balance = 0.0;          // Delta F / F
   double largest_wall_obliquity = 0.0;  // max over walls of |shear force| / normal force
   int contacts = 0;
   int sliding = 0;

@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "dem/version.h"
 #include "dem/io/snapshot_file.h"
 #include "dem/io/vtk_series.h"
+#include "dem/version.h"
 
 namespace {
 

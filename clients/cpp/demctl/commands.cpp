@@ -66,15 +66,16 @@ class ProgressBar {
     const int filled = static_cast<int>(s.progress * kWidth + 0.5);
     char pace[96] = "";
     if (rate_ > 0.0) {
-      const auto left = s.command_cycles_total > s.command_cycles_done ? s.command_cycles_total - s.command_cycles_done : 0;
+      const auto left =
+          s.command_cycles_total > s.command_cycles_done ? s.command_cycles_total - s.command_cycles_done : 0;
       std::snprintf(pace, sizeof pace, ", %.0f cycles/s, %s%s left", rate_, s.command == "cycle" ? "" : "at most ",
                     duration(static_cast<double>(left) / rate_).c_str());
     }
-    const int width = std::fprintf(stderr, "\r[%s%s] %3.0f%%  cycle %llu, %llu of %llu%s%*s",
-                                   std::string(filled, '#').c_str(), std::string(kWidth - filled, '-').c_str(),
-                                   100.0 * s.progress, static_cast<unsigned long long>(s.cycle),
-                                   static_cast<unsigned long long>(s.command_cycles_done),
-                                   static_cast<unsigned long long>(s.command_cycles_total), pace, 4, "");
+    const int width =
+        std::fprintf(stderr, "\r[%s%s] %3.0f%%  cycle %llu, %llu of %llu%s%*s", std::string(filled, '#').c_str(),
+                     std::string(kWidth - filled, '-').c_str(), 100.0 * s.progress,
+                     static_cast<unsigned long long>(s.cycle), static_cast<unsigned long long>(s.command_cycles_done),
+                     static_cast<unsigned long long>(s.command_cycles_total), pace, 4, "");
     std::fflush(stderr);
     width_ = std::max(width_, width);
     shown_ = true;
@@ -316,9 +317,9 @@ int contacts(const Global& global, const dem::protocol::ContactQueryArgs& query,
                   "first,second_kind,second,x,y,z,nx,ny,nz,overlap,normal_force,shear_force,normal_damping,"
                   "shear_damping,sliding");
     for (const auto& c : reply.contacts) {
-      out.row(c.first, c.second_wall >= 0 ? "wall" : "particle", second(c), c.point.x, c.point.y, c.point.z,
-              c.normal.x, c.normal.y, c.normal.z, c.overlap, c.normal_force, c.shear_force, c.normal_damping,
-              c.shear_damping, c.sliding);
+      out.row(c.first, c.second_wall >= 0 ? "wall" : "particle", second(c), c.point.x, c.point.y, c.point.z, c.normal.x,
+              c.normal.y, c.normal.z, c.overlap, c.normal_force, c.shear_force, c.normal_damping, c.shear_damping,
+              c.sliding);
     }
     std::cout << "wrote " << csv << '\n';
   }

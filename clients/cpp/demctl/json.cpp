@@ -61,7 +61,8 @@ class Json {
     if constexpr (std::is_same_v<Integer, bool>) {
       text_ += number ? "true" : "false";
     } else {
-      text_ += std::to_string(static_cast<std::conditional_t<std::is_signed_v<Integer>, long long, unsigned long long>>(number));
+      text_ += std::to_string(
+          static_cast<std::conditional_t<std::is_signed_v<Integer>, long long, unsigned long long>>(number));
     }
     return *this;
   }

@@ -8,10 +8,10 @@
 #include <cstdlib>
 #include <iostream>
 
-#include "dem/version.h"
 #include "commands.h"
 #include "dem/client/errors.h"
 #include "dem/dds/error.h"
+#include "dem/version.h"
 #include "exit_codes.h"
 #include "interrupt.h"
 
@@ -31,9 +31,10 @@ int main(int argc, char** argv) {
   CLI::App app{"Drives and watches dem_server simulations over DDS (loopback only by default)."};
   app.set_version_flag("--version", "demctl " DEM_VERSION);
   app.require_subcommand(1);
-  app.footer("Exit codes: 0 done, 1 other failure, 2 bad arguments, 3 no such server within --timeout,\n"
-             "4 the server replied with an error, 5 no reply in time, 6 run-until --wait reached its cycle cap\n"
-             "before its condition, 130 interrupted.");
+  app.footer(
+      "Exit codes: 0 done, 1 other failure, 2 bad arguments, 3 no such server within --timeout,\n"
+      "4 the server replied with an error, 5 no reply in time, 6 run-until --wait reached its cycle cap\n"
+      "before its condition, 130 interrupted.");
   app.fallthrough();  // --server and --domain may also follow the subcommand
   app.add_option("-s,--server", global.server, "server name (default $DEM_SERVER, else dem)")->capture_default_str();
   app.add_option("-d,--domain", global.domain, "DDS domain id (default $DEM_DOMAIN, else 0)")
@@ -71,7 +72,8 @@ int main(int argc, char** argv) {
 
   std::string wall;
   std::vector<double> values;
-  auto* velocity = app.add_subcommand("wall-velocity", "move a wall: velocity of its point P, angular velocity about z");
+  auto* velocity =
+      app.add_subcommand("wall-velocity", "move a wall: velocity of its point P, angular velocity about z");
   velocity->add_option("WALL", wall, "wall name")->required();
   velocity->add_option("VALUES", values, "VX VY [VZ] [OMEGA] in m/s and rad/s")->required()->expected(2, 4);
   velocity->callback([&] { action = [&] { return demctl::wall_velocity(global, wall, values); }; });
@@ -97,8 +99,9 @@ int main(int argc, char** argv) {
   double until_stress = 0.0;
   double until_settlement = 0.0;
   double until_energy = 0.0;
-  auto* run_until = app.add_subcommand("run-until", "run until a plate's stress or settlement, or the kinetic energy, "
-                                                    "reaches a value, at most --max-cycles");
+  auto* run_until = app.add_subcommand("run-until",
+                                       "run until a plate's stress or settlement, or the kinetic energy, "
+                                       "reaches a value, at most --max-cycles");
   run_until->add_option("--wall", until.wall, "the plate for --stress and --settlement");
   auto* stress_option = run_until->add_option("--stress", until_stress, "Pa");
   auto* settlement_option = run_until->add_option("--settlement", until_settlement, "m");
@@ -116,8 +119,9 @@ int main(int argc, char** argv) {
 
   std::uint32_t first_stage = 0;
   std::uint32_t stage_count = 0;
-  auto* programme = app.add_subcommand("run-programme", "run the loaded case's stages as dem_run does (trim, place "
-                                                        "walls, wall motions, stop conditions)");
+  auto* programme = app.add_subcommand("run-programme",
+                                       "run the loaded case's stages as dem_run does (trim, place "
+                                       "walls, wall motions, stop conditions)");
   programme->add_option("--from", first_stage, "the first stage to run, counted from 1 (default: the first)");
   programme->add_option("--stages", stage_count, "how many stages to run (default: to the last)");
   programme->add_flag("-w,--wait", wait, "wait for the end, with a progress bar (Ctrl-C stops the run)");
@@ -135,9 +139,8 @@ int main(int argc, char** argv) {
   int limit = 20;
   auto* contacts = app.add_subcommand("contacts", "query contacts: all, on a wall, in a box, above a force");
   auto* wall_option = contacts->add_option("--wall", query.wall, "contacts on this wall");
-  auto* box_option = contacts->add_option("--box", box, "XMIN,YMIN,XMAX,YMAX: contact points inside")
-                         ->delimiter(',')
-                         ->expected(4);
+  auto* box_option =
+      contacts->add_option("--box", box, "XMIN,YMIN,XMAX,YMAX: contact points inside")->delimiter(',')->expected(4);
   auto* force_option = contacts->add_option("--min-force", min_force, "N: contacts carrying more");
   contacts->add_option("--csv", csv, "write every contact to this file");
   contacts->add_option("--limit", limit, "rows to print")->capture_default_str();
@@ -166,8 +169,9 @@ int main(int argc, char** argv) {
 
   std::string parameter;
   std::string value;
-  auto* set = app.add_subcommand("set", "set a parameter: contact_damping, global_damping, local_damping, "
-                                        "time_step_fraction, friction.MATERIAL, gravity GX,GY[,GZ]");
+  auto* set = app.add_subcommand("set",
+                                 "set a parameter: contact_damping, global_damping, local_damping, "
+                                 "time_step_fraction, friction.MATERIAL, gravity GX,GY[,GZ]");
   set->add_option("PARAM", parameter)->required();
   set->add_option("VALUE", value)->required();
   set->callback([&] { action = [&] { return demctl::set(global, parameter, value); }; });
@@ -183,8 +187,9 @@ int main(int argc, char** argv) {
                                            "and go, each row naming its server");
   monitor->add_flag("--all", monitor_options.all, "follow every server of the domain, as --sweep does")
       ->excludes(sweep_option);
-  monitor->add_option("--idle-exit", monitor_options.idle_exit,
-                      "with --sweep or --all: stop once none of those servers has been there for S seconds")
+  monitor
+      ->add_option("--idle-exit", monitor_options.idle_exit,
+                   "with --sweep or --all: stop once none of those servers has been there for S seconds")
       ->check(CLI::PositiveNumber);
   monitor->callback([&] {
     if (samples_option->count() > 0) monitor_options.samples = samples;
@@ -194,12 +199,13 @@ int main(int argc, char** argv) {
   demctl::RecordOptions record_options;
   std::uint64_t record_samples = 0;
   double record_duration = 0.0;
-  auto* record = app.add_subcommand("record", "record the telemetry to an MCAP file (ros2msg schemas, CDR messages: "
-                                              "a ROS 2 bag, for Foxglove and Python's dem.recording)");
+  auto* record = app.add_subcommand("record",
+                                    "record the telemetry to an MCAP file (ros2msg schemas, CDR messages: "
+                                    "a ROS 2 bag, for Foxglove and Python's dem.recording)");
   record->add_option("FILE", record_options.file, "the .mcap file to write")->required();
-  auto* record_samples_option =
-      record->add_option("-n,--samples", record_samples, "stop after N plate forces samples (default: Ctrl-C or the "
-                                                          "server stopping)");
+  auto* record_samples_option = record->add_option("-n,--samples", record_samples,
+                                                   "stop after N plate forces samples (default: Ctrl-C or the "
+                                                   "server stopping)");
   auto* record_duration_option =
       record->add_option("--duration", record_duration, "stop after this many seconds")->check(CLI::PositiveNumber);
   record->callback([&] {

@@ -120,8 +120,7 @@ const dem::protocol::WallForce* find(const PlateForces& plates, const std::strin
 // walls); with a server column when following several servers.
 class RowWriter {
  public:
-  RowWriter(const MonitorOptions& options, int server_width)
-      : options_(options), server_width_(server_width) {}
+  RowWriter(const MonitorOptions& options, int server_width) : options_(options), server_width_(server_width) {}
 
   void write(const Row& row) {
     if (walls_.empty()) header(row.plates);
@@ -170,8 +169,9 @@ class RowWriter {
     if (!options_.csv.empty()) {
       std::string header = server_width_ > 0 ? "server,cycle,time" : "cycle,time";
       for (const auto& name : walls_) header += "," + name + "_stress," + name + "_settlement";
-      header += ",contacts,coordination_number,sliding_fraction,mean_normal_force,max_normal_force,"
-                "kinetic_energy,out_of_balance";
+      header +=
+          ",contacts,coordination_number,sliding_fraction,mean_normal_force,max_normal_force,"
+          "kinetic_energy,out_of_balance";
       csv_ = std::make_unique<CsvWriter>(options_.csv, header);
     }
   }
@@ -191,10 +191,10 @@ int monitor_one(const Global& global, const MonitorOptions& options) {
   dem::client::Client client(connect_options(global));
   Inbox inbox;
   const std::string& name = global.server;
-  dem::client::TelemetrySubscription subscription(
-      client, {.plate_forces = [&](const PlateForces& p) { inbox.add(name, p); },
-               .contact_stats = [&](const ContactStats& s) { inbox.add(name, s); },
-               .status = {}});
+  dem::client::TelemetrySubscription subscription(client,
+                                                  {.plate_forces = [&](const PlateForces& p) { inbox.add(name, p); },
+                                                   .contact_stats = [&](const ContactStats& s) { inbox.add(name, s); },
+                                                   .status = {}});
   RowWriter writer(options, 0);
   std::fprintf(stderr, "monitoring server %s (Ctrl-C to stop)\n", name.c_str());
   while (!interrupted() && !enough(options, writer)) {
@@ -245,9 +245,10 @@ int monitor_fleet(const Global& global, const MonitorOptions& options) {
         if (!added) continue;
         entry->second.subscription = std::make_unique<dem::client::TelemetrySubscription>(
             participant, name,
-            dem::client::TelemetryCallbacks{.plate_forces = [&inbox, name](const PlateForces& p) { inbox.add(name, p); },
-                                            .contact_stats = [&inbox, name](const ContactStats& s) { inbox.add(name, s); },
-                                            .status = [&inbox, name](const Status& s) { inbox.add(name, s); }});
+            dem::client::TelemetryCallbacks{
+                .plate_forces = [&inbox, name](const PlateForces& p) { inbox.add(name, p); },
+                .contact_stats = [&inbox, name](const ContactStats& s) { inbox.add(name, s); },
+                .status = [&inbox, name](const Status& s) { inbox.add(name, s); }});
         std::fprintf(stderr, "following server %s\n", name.c_str());
       }
       // A server that left is let go a second later, so its last samples are read.

@@ -2,8 +2,9 @@
 // contact statistics) recorded as a ROS 2 bag holds it, in MCAP
 // (dem::client::TelemetryRecorder), until Ctrl-C, --samples plate forces
 // samples, --duration seconds, or the server stops.
-#include <cstdio>
 #include <unistd.h>
+
+#include <cstdio>
 
 #include "commands.h"
 #include "dem/client/telemetry_recorder.h"
@@ -29,16 +30,18 @@ int record(const Global& global, const RecordOptions& options) {
     recorder.poll(100ms);
     const auto& counts = recorder.counts();
     if (terminal) {
-      std::fprintf(stderr, "\r%llu messages: %llu plate forces, %llu contact statistics, %llu status",
-                   static_cast<unsigned long long>(counts.total()), static_cast<unsigned long long>(counts.plate_forces),
-                   static_cast<unsigned long long>(counts.contact_stats), static_cast<unsigned long long>(counts.status));
+      std::fprintf(
+          stderr, "\r%llu messages: %llu plate forces, %llu contact statistics, %llu status",
+          static_cast<unsigned long long>(counts.total()), static_cast<unsigned long long>(counts.plate_forces),
+          static_cast<unsigned long long>(counts.contact_stats), static_cast<unsigned long long>(counts.status));
     }
     if (interrupted()) break;
     if (options.samples && counts.plate_forces >= *options.samples) {
       ended = "the samples asked for are in";
       break;
     }
-    if (options.duration && std::chrono::steady_clock::now() - start >= std::chrono::duration<double>(*options.duration)) {
+    if (options.duration &&
+        std::chrono::steady_clock::now() - start >= std::chrono::duration<double>(*options.duration)) {
       ended = "the duration has passed";
       break;
     }

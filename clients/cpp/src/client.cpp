@@ -94,7 +94,8 @@ Client::~Client() {
 void Client::connect() {
   const auto deadline = std::chrono::steady_clock::now() + options_.timeout;
   const auto remaining = [&] {
-    return std::max(0ms, std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()));
+    return std::max(0ms,
+                    std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()));
   };
   const std::string where = "server \"" + options_.server + "\" on DDS domain " + std::to_string(options_.domain);
   // The server's durable status says it is there.
@@ -399,8 +400,10 @@ std::vector<ServerInfo> list_servers(std::uint32_t domain, const std::string& dd
     // The status is durable: it arrives as soon as the reader matches.
     for (auto waited = 0ms; waited < 1000ms && !info.status; waited += 20ms) {
       std::vector<protocol::Status> statuses = reader.take();
-      if (!statuses.empty()) info.status = std::move(statuses.back());
-      else std::this_thread::sleep_for(20ms);
+      if (!statuses.empty())
+        info.status = std::move(statuses.back());
+      else
+        std::this_thread::sleep_for(20ms);
     }
     if (!info.status || info.status->state != protocol::ServerState::kShutdown) servers.push_back(std::move(info));
   }

@@ -9,9 +9,9 @@ namespace dem::client {
 namespace {
 
 // Record opcodes (MCAP spec, "Records").
-constexpr std::uint8_t kHeader = 0x01, kFooter = 0x02, kSchema = 0x03, kChannel = 0x04, kMessage = 0x05,
-                       kChunk = 0x06, kMessageIndex = 0x07, kChunkIndex = 0x08, kStatistics = 0x0B,
-                       kSummaryOffset = 0x0E, kDataEnd = 0x0F;
+constexpr std::uint8_t kHeader = 0x01, kFooter = 0x02, kSchema = 0x03, kChannel = 0x04, kMessage = 0x05, kChunk = 0x06,
+                       kMessageIndex = 0x07, kChunkIndex = 0x08, kStatistics = 0x0B, kSummaryOffset = 0x0E,
+                       kDataEnd = 0x0F;
 constexpr std::string_view kMagic("\x89MCAP0\r\n", 8);
 // A chunk is closed at about this size: big enough for efficient reading,
 // small enough that a reader never waits long for the next.
@@ -21,7 +21,8 @@ constexpr std::size_t kChunkSize = 1u << 20;
 // byte length + entries), as every record is made of.
 template <typename Integer>
 void put_integer(std::string& out, Integer value) {
-  for (std::size_t i = 0; i < sizeof(Integer); ++i) out += static_cast<char>((static_cast<std::uint64_t>(value) >> (8 * i)) & 0xFF);
+  for (std::size_t i = 0; i < sizeof(Integer); ++i)
+    out += static_cast<char>((static_cast<std::uint64_t>(value) >> (8 * i)) & 0xFF);
 }
 void put_string(std::string& out, std::string_view text) {
   put_integer(out, static_cast<std::uint32_t>(text.size()));

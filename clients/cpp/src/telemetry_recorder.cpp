@@ -14,7 +14,8 @@ std::string ros_topic(const std::string& dds_topic) { return dds_topic.substr(2)
 
 std::uint64_t now_ns() {
   return static_cast<std::uint64_t>(
-      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch()).count());
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
+          .count());
 }
 
 // A chunk at least every second, so a recording cut short loses at most that.
@@ -48,14 +49,15 @@ TelemetryRecorder::TelemetryRecorder(const dds::Participant& participant, const 
   waitset_.attach(status_data_, 1);
   waitset_.attach(plates_data_, 2);
   waitset_.attach(stats_data_, 3);
-  status_channel_ = file_.add_channel(file_.add_schema("dem_interfaces/msg/Status", "ros2msg", interfaces::kStatusSchema),
-                                      ros_topic(status_topic_.name()), "cdr");
-  plates_channel_ = file_.add_channel(
-      file_.add_schema("dem_interfaces/msg/PlateForces", "ros2msg", interfaces::kPlateForcesSchema),
-      ros_topic(plates_topic_.name()), "cdr");
-  stats_channel_ = file_.add_channel(
-      file_.add_schema("dem_interfaces/msg/ContactStats", "ros2msg", interfaces::kContactStatsSchema),
-      ros_topic(stats_topic_.name()), "cdr");
+  status_channel_ =
+      file_.add_channel(file_.add_schema("dem_interfaces/msg/Status", "ros2msg", interfaces::kStatusSchema),
+                        ros_topic(status_topic_.name()), "cdr");
+  plates_channel_ =
+      file_.add_channel(file_.add_schema("dem_interfaces/msg/PlateForces", "ros2msg", interfaces::kPlateForcesSchema),
+                        ros_topic(plates_topic_.name()), "cdr");
+  stats_channel_ =
+      file_.add_channel(file_.add_schema("dem_interfaces/msg/ContactStats", "ros2msg", interfaces::kContactStatsSchema),
+                        ros_topic(stats_topic_.name()), "cdr");
 }
 
 std::uint64_t TelemetryRecorder::write_all(dds::SerializedReader& reader, std::uint16_t channel) {

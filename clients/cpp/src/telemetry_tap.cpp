@@ -19,7 +19,8 @@ constexpr auto kRefreshInterval = std::chrono::milliseconds(500);
 
 std::uint64_t now_ns() {
   return static_cast<std::uint64_t>(
-      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch()).count());
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
+          .count());
 }
 
 // The ROS 2 name of a DDS topic: "rt/dem/a/status" -> "/dem/a/status".

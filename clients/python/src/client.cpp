@@ -4,6 +4,8 @@
 // Python) and to call an optional on_wait callback - a live plot's update,
 // say. A run (cycle, run_until) interrupted that way is stopped on the
 // server, as demctl stops it on Ctrl-C.
+#include "dem/client/client.h"
+
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
 
@@ -16,7 +18,6 @@
 
 #include "bindings.h"
 #include "client_handle.h"
-#include "dem/client/client.h"
 
 namespace dem::python {
 
@@ -53,9 +54,9 @@ std::string seconds_text(std::chrono::milliseconds duration) {
 // How one call waits for its reply.
 struct Wait {
   std::chrono::milliseconds timeout;
-  py::object on_wait;              // called every `interval` while waiting, or None
+  py::object on_wait;  // called every `interval` while waiting, or None
   std::chrono::milliseconds interval;
-  bool is_run;                     // a cycle or run_until: stopped when the wait is interrupted
+  bool is_run;  // a cycle or run_until: stopped when the wait is interrupted
 };
 
 // Asks the server to stop the run this client is waiting for, and collects
@@ -93,8 +94,7 @@ Reply await_reply(client::Client& client, std::uint64_t id, const std::string& w
     }
     if (std::chrono::steady_clock::now() >= deadline) {
       throw client::ReplyTimeout("no reply from server \"" + client.server() + "\" to " + what + " within " +
-                                 seconds_text(wait.timeout) +
-                                 (client.server_alive() ? "" : " (the server is gone)"));
+                                 seconds_text(wait.timeout) + (client.server_alive() ? "" : " (the server is gone)"));
     }
   }
 }
@@ -216,8 +216,8 @@ void bind_client(py::module_& m) {
           py::arg("wall"), py::arg("velocity"), py::arg("angular_velocity"), timeout, on_wait, interval)
       .def(
           "set_wall_servo",
-          [](ClientHandle& h, std::string wall, double stress, double gain, double max_speed, Seconds t,
-             py::object w, double i) {
+          [](ClientHandle& h, std::string wall, double stress, double gain, double max_speed, Seconds t, py::object w,
+             double i) {
             protocol::Command c = command(CommandKind::kSetWallServo);
             c.wall_servo.wall = std::move(wall);
             c.wall_servo.target_stress = stress;
@@ -225,8 +225,7 @@ void bind_client(py::module_& m) {
             c.wall_servo.max_speed = max_speed;
             return call(h, std::move(c), command_wait(h, t, std::move(w), i));
           },
-          py::arg("wall"), py::arg("target_stress"), py::arg("gain"), py::arg("max_speed"), timeout, on_wait,
-          interval)
+          py::arg("wall"), py::arg("target_stress"), py::arg("gain"), py::arg("max_speed"), timeout, on_wait, interval)
       .def(
           "cycle",
           [](ClientHandle& h, std::int64_t cycles, Seconds t, py::object w, double i) {
@@ -266,8 +265,7 @@ void bind_client(py::module_& m) {
           py::arg("check_interval"))
       .def(
           "run_programme",
-          [](ClientHandle& h, std::uint32_t first_stage, std::uint32_t stage_count, Seconds t, py::object w,
-             double i) {
+          [](ClientHandle& h, std::uint32_t first_stage, std::uint32_t stage_count, Seconds t, py::object w, double i) {
             protocol::Command c = command(CommandKind::kRunProgramme);
             c.programme = {first_stage, stage_count};
             return call(h, std::move(c), run_wait(t, std::move(w), i));
@@ -328,8 +326,8 @@ void bind_client(py::module_& m) {
             c.query.chunk_size = chunk_size;
             return call(h, std::move(c), command_wait(h, t, py::none(), 0.1));
           },
-          py::arg("wall"), py::arg("box_min"), py::arg("box_max"), py::arg("min_normal_force"),
-          py::arg("chunk_size"), timeout)
+          py::arg("wall"), py::arg("box_min"), py::arg("box_max"), py::arg("min_normal_force"), py::arg("chunk_size"),
+          timeout)
       .def(
           "save_snapshot",
           [](ClientHandle& h, std::string path, bool transfer, Seconds t) {

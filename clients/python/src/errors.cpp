@@ -1,10 +1,11 @@
 // The C++ client's exceptions become the Python exceptions of dem.errors
 // (defined in Python so they carry attributes and docstrings): one place,
 // as rclpy turns rcl's return codes into exceptions.
+#include "dem/client/errors.h"
+
 #include <pybind11/pybind11.h>
 
 #include "bindings.h"
-#include "dem/client/errors.h"
 #include "dem/dds/error.h"
 
 namespace dem::python {
@@ -34,8 +35,7 @@ void bind_errors(py::module_&) {
       const protocol::Reply& reply = error.reply();
       const auto kind = protocol::command_kind(reply.kind);
       raise("ServerError", py::make_tuple(std::string(protocol::to_string(reply.status)), reply.message,
-                                          kind ? std::string(protocol::to_string(*kind)) : "unknown",
-                                          py::cast(reply)));
+                                          kind ? std::string(protocol::to_string(*kind)) : "unknown", py::cast(reply)));
     } catch (const client::NoSuchServer& error) {
       raise("NoSuchServer", py::make_tuple(error.what()));
     } catch (const client::ReplyTimeout& error) {

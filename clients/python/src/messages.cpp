@@ -5,6 +5,8 @@
 // "not_found"), and a few members have a form of their own below: command
 // kinds their names ("cycle"), bytes bytes, and contacts a numpy structured
 // array (contact_array.h).
+#include "dem/protocol/messages.h"
+
 #include <pybind11/stl.h>
 
 #include <set>
@@ -14,7 +16,6 @@
 
 #include "bindings.h"
 #include "contact_array.h"
-#include "dem/protocol/messages.h"
 
 namespace dem::python {
 
@@ -47,10 +48,11 @@ void bind_members(py::class_<Message>& cls, const std::set<std::string_view>& ow
               const char* name = field.name.data();
               const char* doc = field.comment.data();
               if constexpr (std::is_same_v<Member, Vector3>) {
-                cls.def_property_readonly(name, [member](const Message& m) { return tuple_of(m.*member); }, doc);
+                cls.def_property_readonly(
+                    name, [member](const Message& m) { return tuple_of(m.*member); }, doc);
               } else if constexpr (std::is_same_v<Member, Stamp>) {
-                cls.def_property_readonly(name, [member](const Message& m) { return seconds_of(m.*member); },
-                                          "s since the Unix epoch");
+                cls.def_property_readonly(
+                    name, [member](const Message& m) { return seconds_of(m.*member); }, "s since the Unix epoch");
               } else if constexpr (std::is_enum_v<Member>) {
                 cls.def_property_readonly(
                     name, [member](const Message& m) { return std::string(to_string(m.*member)); }, doc);
@@ -108,13 +110,13 @@ void bind_messages(py::module_& m) {
   py::class_<ContactStats> stats(m, "ContactStats", "Contact statistics at one cycle");
   bind_members(stats);
   stats.def("__repr__", [](const ContactStats& s) {
-    return "<ContactStats of " + s.server + " at cycle " + std::to_string(s.cycle) + ": " +
-           std::to_string(s.contacts) + " contacts>";
+    return "<ContactStats of " + s.server + " at cycle " + std::to_string(s.cycle) + ": " + std::to_string(s.contacts) +
+           " contacts>";
   });
 
   py::class_<RegionMeasures> region(m, "RegionMeasures",
-                                   "The state of one measurement region (Randall 1989, 4.6; docs/CASES.md, "
-                                   "regions.csv): stresses in Pa, compression positive; tensors row by row");
+                                    "The state of one measurement region (Randall 1989, 4.6; docs/CASES.md, "
+                                    "regions.csv): stresses in Pa, compression positive; tensors row by row");
   bind_members(region);
   region.def("__repr__", [](const RegionMeasures& r) {
     return "<RegionMeasures " + r.name + ": " + std::to_string(r.particles) + " particles, mean stress " +
@@ -143,11 +145,14 @@ void bind_messages(py::module_& m) {
 
   py::class_<Reply> reply(m, "Reply", "The server's complete reply to one command (chunks joined)");
   bind_members(reply, {"kind", "contacts", "data"});
-  reply.def_property_readonly("kind", [](const Reply& r) { return kind_name(r.kind); }, "the command's kind")
+  reply
+      .def_property_readonly(
+          "kind", [](const Reply& r) { return kind_name(r.kind); }, "the command's kind")
       .def_property_readonly(
           "contacts", [](const Reply& r) { return contact_array(r.contacts); },
           "the contacts as a numpy structured array (dem.CONTACT_DTYPE); a new array on every access")
-      .def_property_readonly("data", [](const Reply& r) { return py::bytes(r.data); }, "snapshot bytes")
+      .def_property_readonly(
+          "data", [](const Reply& r) { return py::bytes(r.data); }, "snapshot bytes")
       .def("__repr__", [](const Reply& r) {
         return "<Reply to " + kind_name(r.kind) + ": " + std::string(to_string(r.status)) + ": " + r.message + ">";
       });

@@ -3,6 +3,8 @@
 // Python, no GIL there); Python takes them out with get() - waiting with the
 // GIL released - or drain(). Iteration and callbacks on a Python thread are
 // built on these in dem/telemetry.py.
+#include "dem/client/telemetry.h"
+
 #include <pybind11/stl.h>
 
 #include <chrono>
@@ -14,7 +16,6 @@
 
 #include "bindings.h"
 #include "client_handle.h"
-#include "dem/client/telemetry.h"
 
 namespace dem::python {
 

@@ -14,11 +14,11 @@ namespace dem {
 struct ContactDriverDef {
   MaterialDef material_a;
   MaterialDef material_b;
-  ContactModelDef model;     // material ids are ignored: the pair is (a, b)
-  double radius_a = 1.0;     // m
-  double radius_b = 1.0;     // m; 0 = b is a flat rigid body (a wall)
-  double mass_a = 1.0;       // kg, for dashpots
-  double mass_b = 1.0;       // kg; ignored for a wall
+  ContactModelDef model;  // material ids are ignored: the pair is (a, b)
+  double radius_a = 1.0;  // m
+  double radius_b = 1.0;  // m; 0 = b is a flat rigid body (a wall)
+  double mass_a = 1.0;    // kg, for dashpots
+  double mass_b = 1.0;    // kg; ignored for a wall
 };
 
 class ContactDriver {
@@ -36,7 +36,7 @@ class ContactDriver {
   double normal_force() const;      // N, elastic part
   double tangential_force() const;  // N, signed along the axis, on the second body
   bool sliding() const;
-  double contact_radius() const;    // m, Hertz laws: (R* overlap)^(1/2); 0 otherwise
+  double contact_radius() const;  // m, Hertz laws: (R* overlap)^(1/2); 0 otherwise
 
  private:
   struct State;

@@ -25,9 +25,9 @@ namespace dem {
 // constants; density only matters for particles.
 struct MaterialDef {
   std::string name;
-  double density = 1000.0;  // kg/m^3 (per unit thickness for 2D discs); > 0 for particle materials
-  double friction = 0.0;    // tan(phi_mu), the interparticle friction coefficient
-  double cohesion = 0.0;    // c, N: shear strength at zero normal force (eq. 19)
+  double density = 1000.0;      // kg/m^3 (per unit thickness for 2D discs); > 0 for particle materials
+  double friction = 0.0;        // tan(phi_mu), the interparticle friction coefficient
+  double cohesion = 0.0;        // c, N: shear strength at zero normal force (eq. 19)
   double youngs_modulus = 0.0;  // E, Pa: Hertz laws only (walls: 0 = rigid)
   double poisson_ratio = 0.0;   // nu: Hertz laws only
 };
@@ -91,8 +91,8 @@ struct ContactModelDef {
   std::optional<double> friction;
   std::optional<double> cohesion;
   ContactLaw law = ContactLaw::kLinear;
-  double restitution = 1.0;  // kLinearRestitution: e in (0, 1] (Miyata eq. 17)
-  HertzDampingDef hertz;     // kHertzMindlin and kHertzLinearTangential
+  double restitution = 1.0;      // kLinearRestitution: e in (0, 1] (Miyata eq. 17)
+  HertzDampingDef hertz;         // kHertzMindlin and kHertzLinearTangential
   RollingResistanceDef rolling;  // any law
 };
 
@@ -104,10 +104,10 @@ struct ContactModelDef {
 // alpha' times its magnitude against the velocity component, so the
 // damping does not depend on the velocity's size and vanishes at rest.
 struct DampingDef {
-  double contact_beta = 0.0;                   // s
-  double global_alpha = 0.0;                   // 1/s, translation (and rotation unless set below)
+  double contact_beta = 0.0;                    // s
+  double global_alpha = 0.0;                    // 1/s, translation (and rotation unless set below)
   std::optional<double> global_alpha_rotation;  // 1/s
-  double local_alpha = 0.0;                    // dimensionless, in [0, 1)
+  double local_alpha = 0.0;                     // dimensionless, in [0, 1)
   std::optional<double> local_alpha_rotation;   // dimensionless, in [0, 1)
 };
 
@@ -144,7 +144,7 @@ struct ParticleDefT {
   Vec<Dim> position = Vec<Dim>::Zero();  // m
   double radius = 1.0;                   // m; a shaped particle's is its bounding radius, set from the shape
   MaterialId material = 0;
-  Vec<Dim> velocity = Vec<Dim>::Zero();  // m/s
+  Vec<Dim> velocity = Vec<Dim>::Zero();                  // m/s
   Spin<Dim> angular_velocity = Space<Dim>::zero_spin();  // rad/s (2D: counter-clockwise positive)
   ShapeDefT<Dim> shape;
 };
@@ -164,7 +164,7 @@ template <int Dim>
 struct WallMotionT {
   Vec<Dim> velocity = Vec<Dim>::Zero();                  // m/s
   Spin<Dim> angular_velocity = Space<Dim>::zero_spin();  // rad/s
-  std::optional<ServoDef> servo;  // when set, replaces velocity/angular_velocity
+  std::optional<ServoDef> servo;                         // when set, replaces velocity/angular_velocity
 };
 
 template <int Dim>
@@ -198,9 +198,9 @@ struct WallDefT<2> {
 template <>
 struct WallDefT<3> {
   std::string name;
-  Vec3 point = Vec3::Zero();        // P, m
-  Vec3 direction = Vec3::UnitX();   // u, unit vector
-  double h1 = 0.0;                  // m, h1 < h2
+  Vec3 point = Vec3::Zero();       // P, m
+  Vec3 direction = Vec3::UnitX();  // u, unit vector
+  double h1 = 0.0;                 // m, h1 < h2
   double h2 = 1.0;
   Vec3 direction2 = Vec3::UnitY();  // v, unit vector perpendicular to u
   double k1 = 0.0;                  // m, k1 < k2
@@ -208,7 +208,7 @@ struct WallDefT<3> {
   MaterialId material = 0;
   WallMotionT<3> motion;
   std::vector<std::array<Vec3, 3>> triangles;  // m, vertices where they stand now
-  bool removed = false;  // taken out of the world: keeps its id, touches nothing
+  bool removed = false;                        // taken out of the world: keeps its id, touches nothing
 };
 
 // Element-test control of a box of walls (a biaxial or triaxial cell): two
@@ -259,9 +259,9 @@ struct BoxControlT {
 // periodic axis has its stress taken over the period along it.
 template <int Dim>
 struct PeriodicDefT {
-  std::array<bool, Dim> axes{};        // which axes repeat
-  Vec<Dim> min = Vec<Dim>::Zero();     // m, the periodic cell along those axes
-  Vec<Dim> max = Vec<Dim>::Zero();     // m
+  std::array<bool, Dim> axes{};     // which axes repeat
+  Vec<Dim> min = Vec<Dim>::Zero();  // m, the periodic cell along those axes
+  Vec<Dim> max = Vec<Dim>::Zero();  // m
   bool any() const {
     for (bool a : axes) {
       if (a) return true;

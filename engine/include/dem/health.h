@@ -94,12 +94,12 @@ class HealthMonitorT {
 
  private:
   HealthLimits limits_;
-  double created_at_start_ = 0.0;  // J: the budget's excess when the monitor began
-  double held_at_start_ = 0.0;     // J: kinetic and strain energy then
-  double most_in_play_ = 0.0;      // J: the largest energy in play at an assessment
-  double round_off_ = 0.0;         // J: the floor below which an excess is round-off
-  bool referenced_ = false;        // created_at_start_ and held_at_start_ are taken
-  double suspect_created_ = 0.0;   // J: the excess when it first passed the limit, 0 while below
+  double created_at_start_ = 0.0;    // J: the budget's excess when the monitor began
+  double held_at_start_ = 0.0;       // J: kinetic and strain energy then
+  double most_in_play_ = 0.0;        // J: the largest energy in play at an assessment
+  double round_off_ = 0.0;           // J: the floor below which an excess is round-off
+  bool referenced_ = false;          // created_at_start_ and held_at_start_ are taken
+  double suspect_created_ = 0.0;     // J: the excess when it first passed the limit, 0 while below
   std::uint64_t suspect_cycle_ = 0;  // and the cycle then
 };
 

@@ -31,10 +31,10 @@ Eccentricity<Dim> zero_eccentricity() {
 template <int Dim>
 struct WallMeasureT {
   WallId wall = kInvalidId;
-  Vec<Dim> force = Vec<Dim>::Zero();  // N (per unit depth for 2D discs): sum of contact forces on the wall
+  Vec<Dim> force = Vec<Dim>::Zero();           // N (per unit depth for 2D discs): sum of contact forces on the wall
   Spin<Dim> moment = Space<Dim>::zero_spin();  // N m, about the wall's reference point P
-  double normal_force = 0.0;          // N, compressive component along the wall's normal
-  int contacts = 0;                   // number of touching particles
+  double normal_force = 0.0;                   // N, compressive component along the wall's normal
+  int contacts = 0;                            // number of touching particles
   // Eccentricity of the normal force over the half length, e / (L/2)
   // (Cundall & Strack Table 1, note 1); 0 without contacts.
   Eccentricity<Dim> eccentricity = zero_eccentricity<Dim>();
@@ -101,10 +101,10 @@ struct ContactRecordT {
   double shear_force = 0.0;
   // The spring's tangential force on the first particle (-F_s t_i in 2D).
   Vec<Dim> tangential_force = Vec<Dim>::Zero();
-  double normal_damping = 0.0;         // D_n, N (eq. 26)
-  double shear_damping = 0.0;          // D_s, N (eq. 27): signed in 2D, the magnitude in 3D
-  bool sliding = false;                // |F_s| reached (F_s)max
-  std::uint64_t formed_cycle = 0;      // the cycle the contact began touching
+  double normal_damping = 0.0;     // D_n, N (eq. 26)
+  double shear_damping = 0.0;      // D_s, N (eq. 27): signed in 2D, the magnitude in 3D
+  bool sliding = false;            // |F_s| reached (F_s)max
+  std::uint64_t formed_cycle = 0;  // the cycle the contact began touching
   // The whole force the pass applied to the first particle (springs and
   // dashpots); the second body received -force. The measures of a region
   // (stress, its normal and tangential parts) read it.
@@ -117,7 +117,8 @@ template <int Dim>
 struct BoxMeasureT {
   Vec<Dim> extent = Vec<Dim>::Zero();  // m, the distance between each axis's two walls
   Vec<Dim> stress = Vec<Dim>::Zero();  // Pa, compression positive: each axis's walls' mean normal force over its face
-  Vec<Dim> target = Vec<Dim>::Zero();  // Pa, the stress each stress-controlled or path axis is held at now (0 for strain-rate axes)
+  Vec<Dim> target =
+      Vec<Dim>::Zero();  // Pa, the stress each stress-controlled or path axis is held at now (0 for strain-rate axes)
   // ln(reference / extent) per axis: compression positive, additive over stages.
   Vec<Dim> strain = Vec<Dim>::Zero();
   double volumetric_strain = 0.0;  // the sum of the axes' strains

@@ -23,8 +23,8 @@ struct LatticeDefT {
   Vec<Dim> origin = Vec<Dim>::Zero();  // centre of the first particle, m
   int columns = 1;
   int rows = 1;
-  int layers = 1;                      // 3D only
-  double spacing = 2.0;                // centre distance along a row, m
+  int layers = 1;        // 3D only
+  double spacing = 2.0;  // centre distance along a row, m
   LatticeArrangement arrangement = LatticeArrangement::kSquare;
 };
 

@@ -77,10 +77,10 @@ struct StageDefT {
   // released by release_box_control; otherwise it stays as it was.
   std::optional<BoxControlT<Dim>> box_control;
   bool release_box_control = false;
-  std::optional<DampingDef> damping;                              // applied when the stage starts
-  std::optional<TimeStepSetting> time_step;                       // from this stage on
-  std::vector<std::pair<MaterialId, double>> frictions;           // materials' friction from this stage on
-  std::uint64_t cycles = 0;  // the stage's length, or its cap when conditions are set
+  std::optional<DampingDef> damping;                     // applied when the stage starts
+  std::optional<TimeStepSetting> time_step;              // from this stage on
+  std::vector<std::pair<MaterialId, double>> frictions;  // materials' friction from this stage on
+  std::uint64_t cycles = 0;                              // the stage's length, or its cap when conditions are set
   StopConditions until;
 };
 

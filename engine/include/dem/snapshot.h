@@ -30,12 +30,12 @@ ShearForce<Dim> zero_shear() {
 // The loading history of a Mindlin-Deresiewicz tangential law (Randall
 // 1989, 4.3: BALL's CDF, T*, T** and DD).
 struct MindlinHistory {
-  double direction = 0.0;   // CDF: +1 or -1 along the axis; 0 before any tangential loading
-  bool unloading = false;   // T* holds the force where unloading began
-  bool reloading = false;   // T** holds the force where reloading began
-  double t_star = 0.0;      // T*
-  double t_star2 = 0.0;     // T**
-  double lag = 0.0;         // DD (4.17-4.18)
+  double direction = 0.0;  // CDF: +1 or -1 along the axis; 0 before any tangential loading
+  bool unloading = false;  // T* holds the force where unloading began
+  bool reloading = false;  // T** holds the force where reloading began
+  double t_star = 0.0;     // T*
+  double t_star2 = 0.0;    // T**
+  double lag = 0.0;        // DD (4.17-4.18)
 };
 
 // One row of the contact table: its history (Cundall & Strack eq. 18) and
@@ -64,9 +64,9 @@ struct ContactSnapshotT {
   Spin<Dim> moment_second = Space<Dim>::zero_spin();
   std::uint64_t formed_cycle = 0;
   bool touching = true;
-  MindlinHistory mindlin;                     // Hertz-Mindlin law only
-  Vec<Dim> mindlin_axis = Vec<Dim>::Zero();   // its loading axis in the tangent plane
-  double mindlin_theta = 1.0;                 // the stiffness factor of the last step (sizes the tangential dashpot)
+  MindlinHistory mindlin;                    // Hertz-Mindlin law only
+  Vec<Dim> mindlin_axis = Vec<Dim>::Zero();  // its loading axis in the tangent plane
+  double mindlin_theta = 1.0;                // the stiffness factor of the last step (sizes the tangential dashpot)
   // The dashpot force and the tangential spring force of the last cycle and
   // the relative velocity they came from: their work is booked in the next
   // cycle (energy budget).
@@ -87,7 +87,7 @@ struct WallSnapshotT {
   Vec<Dim> initial_point = Vec<Dim>::Zero();  // for settlement
   Vec<Dim> last_velocity = Vec<Dim>::Zero();  // the motion over the last cycle
   Spin<Dim> last_angular_velocity = Space<Dim>::zero_spin();
-  Vec<Dim> force = Vec<Dim>::Zero();          // resultants of the last force pass
+  Vec<Dim> force = Vec<Dim>::Zero();  // resultants of the last force pass
   Spin<Dim> moment = Space<Dim>::zero_spin();
   double normal_force = 0.0;
   int contacts = 0;
@@ -101,10 +101,10 @@ struct WorldSnapshotT {
   // direction and commanded motion; particles at their current position,
   // (half-step) velocity and angular velocity.
   WorldDefT<Dim> def;
-  std::vector<Orientation<Dim>> rotation;  // per particle
-  std::vector<Vec<Dim>> force;             // per particle, last force sums
-  std::vector<Spin<Dim>> moment;           // per particle
-  std::vector<WallSnapshotT<Dim>> walls;   // per wall
+  std::vector<Orientation<Dim>> rotation;       // per particle
+  std::vector<Vec<Dim>> force;                  // per particle, last force sums
+  std::vector<Spin<Dim>> moment;                // per particle
+  std::vector<WallSnapshotT<Dim>> walls;        // per wall
   std::vector<ContactSnapshotT<Dim>> contacts;  // every row of the contact table
   // Neighbour-list bookkeeping, so the table is rebuilt on the same cycle
   // as it would have been: positions at the last rebuild (empty: rebuild
@@ -119,8 +119,8 @@ struct WorldSnapshotT {
   // restart needs it.
   std::vector<ParticleId> particle_order;
   std::uint64_t sorted_cycle = 0;
-  EnergyBudget energy;              // the accumulated terms since the world was first built
-  double tangential_work = 0.0;     // J, done on the tangential springs since then
+  EnergyBudget energy;           // the accumulated terms since the world was first built
+  double tangential_work = 0.0;  // J, done on the tangential springs since then
   std::uint64_t cycle = 0;
   double time = 0.0;
   double time_step = 0.0;           // s, as in use (not re-estimated on restore)

@@ -29,7 +29,9 @@ template <typename T>
 class ById {
  public:
   ById(std::span<const T> values, std::span<const std::int32_t> slots) : values_(values), slots_(slots) {}
-  const T& operator[](ParticleId id) const { return values_[static_cast<std::size_t>(slots_[static_cast<std::size_t>(id)])]; }
+  const T& operator[](ParticleId id) const {
+    return values_[static_cast<std::size_t>(slots_[static_cast<std::size_t>(id)])];
+  }
   std::size_t size() const { return slots_.size(); }
   bool empty() const { return slots_.empty(); }
 
@@ -104,8 +106,8 @@ class BasicWorld {
   void cycle(std::uint64_t n = 1);
 
   std::uint64_t cycle_count() const;
-  double time() const;       // s
-  double time_step() const;  // s
+  double time() const;                // s
+  double time_step() const;           // s
   double critical_time_step() const;  // s, the estimate 2 sqrt(m/k)
 
   int particle_count() const;

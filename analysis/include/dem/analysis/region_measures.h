@@ -50,9 +50,9 @@ struct FabricT {
 template <int Dim>
 struct RegionMeasuresT {
   std::string region;
-  double volume = 0.0;    // the region's area (2D) or volume (3D), m^2 or m^3
-  double solid = 0.0;     // the particles' area or volume inside it
-  double porosity = 0.0;  // 1 - solid / volume
+  double volume = 0.0;      // the region's area (2D) or volume (3D), m^2 or m^3
+  double solid = 0.0;       // the particles' area or volume inside it
+  double porosity = 0.0;    // 1 - solid / volume
   double void_ratio = 0.0;  // porosity / (1 - porosity)
   int particles = 0;        // centres inside
   int rattlers = 0;         // of those, rattlers
@@ -76,9 +76,9 @@ struct RegionMeasuresT {
   // the tangential part's difference of normal stresses along the
   // principal directions of the whole stress, over sigma_1 - sigma_Dim.
   double tangential_share = 0.0;
-  FabricT<Dim> fabric;           // Phi_ij = <n_i n_j> (4.47-4.48)
-  FabricT<Dim> weighted_fabric;  // weighted to the normal force: sum N n_i n_j / sum N
-  double fabric_trace = 0.0;     // F_kk = 2 M R / V (4.46): M contacts, R the mean radius, V the volume
+  FabricT<Dim> fabric;             // Phi_ij = <n_i n_j> (4.47-4.48)
+  FabricT<Dim> weighted_fabric;    // weighted to the normal force: sum N n_i n_j / sum N
+  double fabric_trace = 0.0;       // F_kk = 2 M R / V (4.46): M contacts, R the mean radius, V the volume
   double mean_normal_force = 0.0;  // N, over the contacts inside
   double max_normal_force = 0.0;   // N
   double mean_rotation = 0.0;      // rad: 2D signed (counter-clockwise), 3D the mean angle

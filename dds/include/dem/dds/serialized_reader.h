@@ -21,8 +21,8 @@
 namespace dem::dds {
 
 struct SerializedSample {
-  std::string bytes;                   // encapsulation header (CDR_LE: 00 01 00 00) and payload
-  std::int64_t source_timestamp = 0;   // ns since the Unix epoch, by the writer's clock
+  std::string bytes;                  // encapsulation header (CDR_LE: 00 01 00 00) and payload
+  std::int64_t source_timestamp = 0;  // ns since the Unix epoch, by the writer's clock
 };
 
 class SerializedReader {

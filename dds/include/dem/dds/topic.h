@@ -24,9 +24,9 @@ class Topic {
  public:
   Topic(const Participant& participant, std::string name)
       : name_(std::move(name)),
-        entity_(check(dds_create_topic(participant.handle(), TypeSupport<T>::descriptor(), name_.c_str(), nullptr,
-                                       nullptr),
-                      "creating topic " + name_)) {}
+        entity_(
+            check(dds_create_topic(participant.handle(), TypeSupport<T>::descriptor(), name_.c_str(), nullptr, nullptr),
+                  "creating topic " + name_)) {}
 
   dds_entity_t handle() const { return entity_.handle(); }
   const std::string& name() const { return name_; }
@@ -117,9 +117,9 @@ class Reader {
   std::vector<T> take(std::size_t max = 256) {
     std::vector<void*> samples(max, nullptr);  // null: Cyclone lends its own buffers
     std::vector<dds_sample_info_t> infos(max);
-    const auto count = check(dds_take(entity_.handle(), samples.data(), infos.data(), max,
-                                      static_cast<std::uint32_t>(max)),
-                             "taking from " + topic_name_);
+    const auto count =
+        check(dds_take(entity_.handle(), samples.data(), infos.data(), max, static_cast<std::uint32_t>(max)),
+              "taking from " + topic_name_);
     Loan loan(entity_.handle(), samples, count);
     std::vector<T> values;
     values.reserve(static_cast<std::size_t>(count));
@@ -133,9 +133,9 @@ class Reader {
   std::vector<Received<T>> take_with_writers(std::size_t max = 256) {
     std::vector<void*> samples(max, nullptr);
     std::vector<dds_sample_info_t> infos(max);
-    const auto count = check(dds_take(entity_.handle(), samples.data(), infos.data(), max,
-                                      static_cast<std::uint32_t>(max)),
-                             "taking from " + topic_name_);
+    const auto count =
+        check(dds_take(entity_.handle(), samples.data(), infos.data(), max, static_cast<std::uint32_t>(max)),
+              "taking from " + topic_name_);
     Loan loan(entity_.handle(), samples, count);
     std::vector<Received<T>> values;
     values.reserve(static_cast<std::size_t>(count));

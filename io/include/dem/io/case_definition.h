@@ -30,8 +30,8 @@ struct MeasurementRegion {
   std::string name;
   analysis::RegionShape shape = analysis::RegionShape::kWhole;
   Vec3 min = Vec3::Zero(), max = Vec3::Zero();  // m, box
-  Vec3 centre = Vec3::Zero();                  // m, ball
-  double radius = 0.0;                         // m, ball
+  Vec3 centre = Vec3::Zero();                   // m, ball
+  double radius = 0.0;                          // m, ball
 };
 
 template <int Dim>
@@ -51,8 +51,8 @@ struct OutputSettings {
   bool contacts_file = true;     // write contacts.csv at the end
   std::vector<Probe> probes;
   std::optional<CompressionSettings> compression;  // the plate loading analyses, when asked for
-  std::uint64_t vtk_interval = 0;  // cycles between ParaView files; 0 = none
-  std::vector<MeasurementRegion> regions;  // measured at every row (regions.csv)
+  std::uint64_t vtk_interval = 0;                  // cycles between ParaView files; 0 = none
+  std::vector<MeasurementRegion> regions;          // measured at every row (regions.csv)
 };
 
 // Written once over the dimension, like the engine's definitions: the 2D

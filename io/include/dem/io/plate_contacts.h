@@ -48,8 +48,8 @@ PlateReading read_plate(const BasicWorld<Dim>& world, const std::vector<WallMeas
 struct StateLoad {
   LoadingState state = LoadingState::kInitial;
   int contacts = 0;
-  double load = 0.0;                // N
-  std::uint64_t first_formed = 0;   // the earliest and latest cycle its contacts formed in (0 when empty)
+  double load = 0.0;               // N
+  std::uint64_t first_formed = 0;  // the earliest and latest cycle its contacts formed in (0 when empty)
   std::uint64_t last_formed = 0;
 };
 

@@ -23,7 +23,9 @@ namespace dem::dds {
 template <protocol::Message T>
 struct TypeSupport<T> {
   static const dds_topic_descriptor_t* descriptor() { return protocol::detail::descriptor_of<T>(); }
-  static dds_return_t write(dds_entity_t writer, const T& value) { return protocol::detail::write_sample(writer, value); }
+  static dds_return_t write(dds_entity_t writer, const T& value) {
+    return protocol::detail::write_sample(writer, value);
+  }
   static T from_sample(const void* sample) { return protocol::detail::read_sample<T>(sample); }
 };
 

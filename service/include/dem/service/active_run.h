@@ -14,7 +14,7 @@ namespace dem::service {
 // What a cycle or run_until command asks for.
 struct RunGoal {
   std::uint64_t max_cycles = 0;
-  std::optional<WallId> wall;  // the plate for stress and settlement
+  std::optional<WallId> wall;            // the plate for stress and settlement
   std::optional<double> stress;          // Pa: reached from the side it starts on
   std::optional<double> settlement;      // m: likewise
   std::optional<double> kinetic_energy;  // J: stop below

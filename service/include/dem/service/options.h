@@ -28,11 +28,12 @@ struct ServerOptions {
   // files (io/file_access.h: after "..", links and all); empty: the
   // current directory. The initial case's directory is always added.
   std::vector<std::filesystem::path> read_directories;
-  std::optional<int> threads;                                 // engine threads; overrides the case's
+  std::optional<int> threads;  // engine threads; overrides the case's
   // Cycles between the ParaView files of the programmes it runs; when set,
   // replaces the cases' output.vtk_interval (0: none).
   std::optional<std::uint64_t> vtk_interval;
-  bool record_csv = true;  // walls.csv and assembly.csv at the telemetry interval, contacts.csv and particles.csv at the end
+  bool record_csv =
+      true;  // walls.csv and assembly.csv at the telemetry interval, contacts.csv and particles.csv at the end
   // One-shot mode (dem_server --case FILE --run-and-exit): run the initial
   // case's loading programme, write the results and a final snapshot, stop.
   bool run_programme = false;

@@ -46,9 +46,8 @@ class OutputRecorder {
   // it and appended to, and whose analyses carry on (io/checkpoint_store.h).
   template <int Dim>
   void start(const std::string& case_name, const BasicWorld<Dim>& world,
-             std::optional<io::CompressionSettings> compression = std::nullopt,
-             std::uint64_t vtk_interval = 0, const io::ResumePoint* resume = nullptr,
-             const std::vector<io::MeasurementRegion>& regions = {});
+             std::optional<io::CompressionSettings> compression = std::nullopt, std::uint64_t vtk_interval = 0,
+             const io::ResumePoint* resume = nullptr, const std::vector<io::MeasurementRegion>& regions = {});
   // The tables' lengths (rows flushed) and the analyses' state, for a checkpoint.
   void fill(io::ResumePoint& point);
   // A row of the time series, unless this cycle has one already (a load

@@ -45,7 +45,7 @@ class Simulation {
     std::string description;
     std::vector<ContactModelDef> contact_models;
     std::uint64_t output_interval = 100;  // the case's; a snapshot keeps the default
-    std::string digest;  // SHA-256 of the case's bytes (hex); empty for a snapshot: what a checkpoint resumes
+    std::string digest;   // SHA-256 of the case's bytes (hex); empty for a snapshot: what a checkpoint resumes
     std::string message;  // what was loaded, for the reply
   };
   // Prepares worlds for it: a value, so a preparation may run on another

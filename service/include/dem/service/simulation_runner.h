@@ -120,16 +120,16 @@ class SimulationRunner {
   TelemetrySchedule schedule_;
   protocol::ServerState state_ = protocol::ServerState::kIdle;
   std::optional<ActiveRun> active_;
-  std::optional<HealthWatch> active_health_;  // the running cycle or run_until's
+  std::optional<HealthWatch> active_health_;   // the running cycle or run_until's
   std::unique_ptr<BackgroundLoad> abandoned_;  // a load given up on, still running to its end
   ServerCheckpoints checkpoints_;
   std::optional<io::ResumePoint> resumed_;  // the checkpoint --resume started from, until its programme runs
-  std::optional<ProgrammeRun> programme_;  // a one-shot run's programme, or run_programme's
+  std::optional<ProgrammeRun> programme_;   // a one-shot run's programme, or run_programme's
   const ReceivedCommand* programme_command_ = nullptr;  // run_programme's, while it runs
   std::function<bool(std::uint64_t)> writer_alive_ = [](std::uint64_t) { return true; };
   bool owner_left_logged_ = false;
   std::vector<std::string> awaiting_refresh_;  // clients whose commands the StateCache does not show yet
-  io::Pacing refresh_pacing_{40};  // at most 1/40 of the engine thread
+  io::Pacing refresh_pacing_{40};              // at most 1/40 of the engine thread
   // get_state's readout of one state of the world: worked out once however
   // many ask (get_state).
   struct Readout {
@@ -140,9 +140,9 @@ class SimulationRunner {
     std::uint64_t hash = 0;
   };
   mutable std::optional<Readout> readout_;
-  std::uint64_t world_generation_ = 0;  // a new world, or one put back: another readout
+  std::uint64_t world_generation_ = 0;                 // a new world, or one put back: another readout
   std::chrono::steady_clock::time_point last_poll_{};  // of the queue, during a programme
-  std::vector<ReceivedCommand> unanswered_;  // taken from the queue after a shutdown request
+  std::vector<ReceivedCommand> unanswered_;            // taken from the queue after a shutdown request
   std::string message_ = "started";
   std::uint64_t last_telemetry_cycle_ = 0;
   bool telemetry_published_ = false;

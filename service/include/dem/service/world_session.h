@@ -15,8 +15,8 @@
 #include <string_view>
 #include <vector>
 
-#include "dem/io/case_definition.h"
 #include "dem/health.h"
+#include "dem/io/case_definition.h"
 #include "dem/io/checkpoint_store.h"
 #include "dem/io/compression_settings.h"
 #include "dem/io/snapshot_conversion.h"

@@ -37,10 +37,10 @@ using namespace std::chrono_literals;
 struct ConnectOptions {
   std::string server = "dem";
   std::uint32_t domain = 0;
-  std::string dds_config;  // empty: $CYCLONEDDS_URI, else the repository's loopback-only file
-  std::chrono::milliseconds timeout = 5s;       // to find the server
+  std::string dds_config;                         // empty: $CYCLONEDDS_URI, else the repository's loopback-only file
+  std::chrono::milliseconds timeout = 5s;         // to find the server
   std::chrono::milliseconds reply_timeout = 60s;  // default wait for a reply (not for cycle, which waits as asked)
-  std::string client_id;  // empty: "<host>-<pid>-<n>"
+  std::string client_id;                          // empty: "<host>-<pid>-<n>"
 };
 
 class Client {

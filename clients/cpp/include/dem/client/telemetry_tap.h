@@ -24,9 +24,9 @@ namespace dem::client {
 
 struct TapSample {
   std::string server;
-  std::string topic;  // the ROS 2 name: /dem/<server>/plate_forces
-  std::string type;   // the ROS 2 type: dem_interfaces/msg/PlateForces
-  std::string bytes;  // CDR with its encapsulation header, as sent
+  std::string topic;               // the ROS 2 name: /dem/<server>/plate_forces
+  std::string type;                // the ROS 2 type: dem_interfaces/msg/PlateForces
+  std::string bytes;               // CDR with its encapsulation header, as sent
   std::uint64_t log_time = 0;      // ns since the Unix epoch: when it was taken here
   std::uint64_t publish_time = 0;  // ns since the Unix epoch: when the server sent it
 };
