@@ -30,6 +30,7 @@ DOMAINS = {
     "telemetry_gil_released": 171,
     "telemetry_regions": 221,
     "recording_demctl_record": 174,
+    "recording_regions": 223,
     "bridge_page": 180,
     "bridge_foxglove": 181,
 }
@@ -71,3 +72,18 @@ def out(tmp_path):
     path = pathlib.Path(tmp_path) / "out"
     path.mkdir()
     return path
+
+
+def until_samples_flow(client, telemetry, kind=dem.PlateForces):
+    """Runs 10 cycles at a time until a sample of ``kind`` arrives: the
+    server's writer has then matched this reader too (discovery goes both
+    ways, and a reader can match before the writer does). The cycle count
+    reached."""
+    assert telemetry.wait_for_publisher()
+    for _ in range(50):
+        cycle = client.cycle(10).state.cycle
+        for sample in telemetry.samples(timeout=0.2):
+            if isinstance(sample, kind) and sample.cycle == cycle:
+                telemetry.drain()
+                return cycle
+    raise AssertionError("no telemetry arrived in 50 tries")

@@ -143,7 +143,8 @@ def test_a_foxglove_client_from_npm_receives_the_channels_and_messages(bridged):
     assert seen["protocol"] == "foxglove.websocket.v1"
     assert seen["serverInfo"]["name"] == "dem bridge"
     topics = {c["topic"]: c for c in seen["channels"]}
-    assert set(topics) == {f"/dem/{server}/status", f"/dem/{server}/plate_forces", f"/dem/{server}/contact_stats"}
+    assert set(topics) == {f"/dem/{server}/status", f"/dem/{server}/plate_forces", f"/dem/{server}/contact_stats",
+                           f"/dem/{server}/region_measures"}
     for channel in topics.values():
         assert channel["encoding"] == "cdr" and channel["schemaEncoding"] == "ros2msg"
         assert channel["schema"] == _schemas.SCHEMAS[channel["schemaName"]]

@@ -21,7 +21,7 @@ import pytest
 import dem
 from dem.recording import Recording, RecordingError
 
-from conftest import DOMAINS, case_file
+from conftest import DOMAINS, case_file, until_samples_flow
 
 NPM_DIR = pathlib.Path(os.environ.get("DEM_NPM_DIR", ""))
 KEY = "recording_demctl_record"
@@ -34,6 +34,28 @@ def msg_fields(name):
     return [line for line in lines if line]
 
 
+class DemctlRecord:
+    """`demctl record FILE` of the server of ``key``, started once its
+    subscriptions are matched (it says so: nothing published after is missed)."""
+
+    def __init__(self, key, path):
+        self.path = path
+        self.process = subprocess.Popen([str(dem.paths.demctl_program()), "--server", f"py_{key}", "--domain",
+                                         str(DOMAINS[key]), "--timeout", "20", "record", str(path)],
+                                        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        line = self.process.stderr.readline()
+        assert line.startswith("recording server"), line + self.process.stderr.read()
+
+    def stop(self):
+        """Ctrl-C; the summary line demctl printed."""
+        time.sleep(0.5)  # the last telemetry sample follows the reply
+        self.process.send_signal(signal.SIGINT)
+        stdout, stderr = self.process.communicate(timeout=30)
+        assert self.process.returncode == 0, stderr
+        assert "recorded" in stdout and "plate forces" in stdout
+        return stdout
+
+
 @pytest.fixture
 def recorded(serve, tmp_path):
     """A 300-cycle run of the nine-disc test with telemetry every 10 cycles,
@@ -41,21 +63,11 @@ def recorded(serve, tmp_path):
     press = serve(KEY, telemetry_cycles=10)
     press.load_case(case_file("nine_disc_damped"))
     press.set_wall_velocity("top", (0, -0.5))
-    path = tmp_path / "run.mcap"
-    recorder = subprocess.Popen([str(dem.paths.demctl_program()), "--server", f"py_{KEY}", "--domain",
-                                 str(DOMAINS[KEY]), "--timeout", "20", "record", str(path)],
-                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    # It says so once its subscriptions are matched: nothing published after is missed.
-    line = recorder.stderr.readline()
-    assert line.startswith("recording server"), line + recorder.stderr.read()
+    recorder = DemctlRecord(KEY, tmp_path / "run.mcap")
     press.cycle(300)
     state = press.state()
-    time.sleep(0.5)  # the last telemetry sample follows the reply
-    recorder.send_signal(signal.SIGINT)
-    stdout, stderr = recorder.communicate(timeout=30)
-    assert recorder.returncode == 0, stderr
-    assert "recorded" in stdout and "plate forces" in stdout
-    return path, state
+    recorder.stop()
+    return recorder.path, state
 
 
 def test_the_recording_holds_every_sample_of_the_run_as_the_server_reported_it(recorded):
@@ -65,7 +77,9 @@ def test_the_recording_holds_every_sample_of_the_run_as_the_server_reported_it(r
     topic = f"/dem/py_{KEY}"
     assert recording.topics() == {f"{topic}/status": "dem_interfaces/msg/Status",
                                   f"{topic}/plate_forces": "dem_interfaces/msg/PlateForces",
-                                  f"{topic}/contact_stats": "dem_interfaces/msg/ContactStats"}
+                                  f"{topic}/contact_stats": "dem_interfaces/msg/ContactStats",
+                                  f"{topic}/region_measures": "dem_interfaces/msg/RegionTelemetry"}
+    assert list(recording.messages(f"{topic}/region_measures")) == []  # a case without regions
     plates = [m.data for m in recording.messages(f"{topic}/plate_forces")]
     cycles = [p.cycle for p in plates]
     assert cycles[-30:] == list(range(10, 301, 10)), str(cycles)  # every sample of the run, in order
@@ -82,6 +96,36 @@ def test_the_recording_holds_every_sample_of_the_run_as_the_server_reported_it(r
     # Log times are when the samples came, in order; publish times the server's clock.
     times = [m.log_time for m in recording.messages()]
     assert times == sorted(times) and times[0] > 1.6e18
+
+
+def test_a_cases_region_measures_are_recorded_as_the_server_published_them(serve, tmp_path):
+    """The region_measures topic (a case with output.region: biaxial's three
+    regions) goes into the recording beside the plates, each sample decoded
+    from its nested RegionMeasures equal to what a subscriber received."""
+    key = "recording_regions"
+    client = serve(key, telemetry_cycles=10)
+    client.load_case(dem.paths.cases_dir().parent / "tests" / "io" / "data" / "biaxial.case.txtpb")
+    recorder = DemctlRecord(key, tmp_path / "regions.mcap")
+    with client.subscribe(plate_forces=False, contact_stats=False, region_measures=True) as telemetry:
+        start = until_samples_flow(client, telemetry, kind=dem.RegionTelemetry)
+        client.cycle(200)
+        received = {}
+        for sample in telemetry.samples(timeout=2.0):
+            received[sample.cycle] = sample
+            if sample.cycle == start + 200:
+                break
+    summary = recorder.stop()
+    topic = f"/dem/py_{key}/region_measures"
+    recorded = {m.data.cycle: m.data for m in Recording(recorder.path).messages(topic)}
+    cycles = list(range(start + 10, start + 201, 10))
+    assert [c for c in cycles if c in recorded] == cycles, sorted(recorded)
+    assert f"{len(recorded)} region measures" in summary
+    last, live = recorded[start + 200], received[start + 200]
+    assert last.dimension == 2 and [r.name for r in last.regions] == ["all", "core", "circle"]
+    for mine, theirs in zip(last.regions, live.regions):
+        assert (mine.name, mine.particles, mine.porosity, mine.mean_stress) == \
+            (theirs.name, theirs.particles, theirs.porosity, theirs.mean_stress)
+        assert list(mine.stress) == list(theirs.stress) and list(mine.fabric) == list(theirs.fabric)
 
 
 def test_the_schemas_are_the_interface_packages_messages(recorded):

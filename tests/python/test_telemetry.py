@@ -8,22 +8,7 @@ import time
 import pytest
 
 import dem
-from conftest import case_file
-
-
-def until_samples_flow(client, telemetry, kind=dem.PlateForces):
-    """Runs 10 cycles at a time until a sample of ``kind`` arrives: the
-    server's writer has then matched this reader too (discovery goes both
-    ways, and a reader can match before the writer does). The cycle count
-    reached."""
-    assert telemetry.wait_for_publisher()
-    for _ in range(50):
-        cycle = client.cycle(10).state.cycle
-        for sample in telemetry.samples(timeout=0.2):
-            if isinstance(sample, kind) and sample.cycle == cycle:
-                telemetry.drain()
-                return cycle
-    raise AssertionError("no telemetry arrived in 50 tries")
+from conftest import case_file, until_samples_flow
 
 
 def test_iterating_over_the_telemetry_of_a_run(serve):

@@ -31,9 +31,10 @@ int record(const Global& global, const RecordOptions& options) {
     const auto& counts = recorder.counts();
     if (terminal) {
       std::fprintf(
-          stderr, "\r%llu messages: %llu plate forces, %llu contact statistics, %llu status",
+          stderr, "\r%llu messages: %llu plate forces, %llu contact statistics, %llu region measures, %llu status",
           static_cast<unsigned long long>(counts.total()), static_cast<unsigned long long>(counts.plate_forces),
-          static_cast<unsigned long long>(counts.contact_stats), static_cast<unsigned long long>(counts.status));
+          static_cast<unsigned long long>(counts.contact_stats),
+          static_cast<unsigned long long>(counts.region_measures), static_cast<unsigned long long>(counts.status));
     }
     if (interrupted()) break;
     if (options.samples && counts.plate_forces >= *options.samples) {
@@ -56,10 +57,12 @@ int record(const Global& global, const RecordOptions& options) {
   recorder.close();
   const auto& counts = recorder.counts();
   if (terminal) std::fprintf(stderr, "\n");
-  std::printf("recorded %llu messages (%llu plate forces, %llu contact statistics, %llu status) to %s: %s\n",
-              static_cast<unsigned long long>(counts.total()), static_cast<unsigned long long>(counts.plate_forces),
-              static_cast<unsigned long long>(counts.contact_stats), static_cast<unsigned long long>(counts.status),
-              options.file.c_str(), ended.c_str());
+  std::printf(
+      "recorded %llu messages (%llu plate forces, %llu contact statistics, %llu region measures, %llu status) to %s: "
+      "%s\n",
+      static_cast<unsigned long long>(counts.total()), static_cast<unsigned long long>(counts.plate_forces),
+      static_cast<unsigned long long>(counts.contact_stats), static_cast<unsigned long long>(counts.region_measures),
+      static_cast<unsigned long long>(counts.status), options.file.c_str(), ended.c_str());
   return kOk;
 }
 

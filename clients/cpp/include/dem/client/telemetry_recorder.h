@@ -1,6 +1,6 @@
 // A server's telemetry recorded into an MCAP file the way a ROS 2 bag holds
 // it (demctl record): one channel per topic - /dem/<server>/status,
-// /plate_forces and /contact_stats - with the ros2msg schema of its
+// /plate_forces, /contact_stats and /region_measures - with the ros2msg schema of its
 // dem_interfaces message (generated from the IDL, ros2/generate_interfaces.py)
 // and each sample's CDR bytes exactly as they came over DDS (encapsulation
 // header included), stamped with the time it was received (log time) and
@@ -8,25 +8,27 @@
 // (dem.recording); so do Foxglove and `ros2 bag` (profile "ros2").
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 
 #include "dem/client/mcap_writer.h"
 #include "dem/dds/participant.h"
-#include "dem/dds/serialized_reader.h"
 #include "dem/dds/waitset.h"
-#include "dem/protocol/messages.h"
-#include "dem/protocol/type_support.h"
 
 namespace dem::client {
+
+class ServerTelemetry;
 
 struct RecordedCounts {
   std::uint64_t status = 0;
   std::uint64_t plate_forces = 0;
   std::uint64_t contact_stats = 0;
-  std::uint64_t total() const { return status + plate_forces + contact_stats; }
+  std::uint64_t region_measures = 0;
+  std::uint64_t total() const { return status + plate_forces + contact_stats + region_measures; }
 };
 
 class TelemetryRecorder {
@@ -35,6 +37,7 @@ class TelemetryRecorder {
   // and subscribes to the server's telemetry; the durable status arrives
   // at once.
   TelemetryRecorder(const dds::Participant& participant, const std::string& server, const std::filesystem::path& file);
+  ~TelemetryRecorder();
 
   // Waits until the server's status and telemetry writers are matched (so
   // nothing it publishes from now on is missed); false after the timeout.
@@ -48,22 +51,10 @@ class TelemetryRecorder {
   const std::filesystem::path& path() const { return file_.path(); }
 
  private:
-  std::uint64_t write_all(dds::SerializedReader& reader, std::uint16_t channel);
-
   McapWriter file_;
-  dds::Topic<protocol::Status> status_topic_;
-  dds::Topic<protocol::PlateForces> plates_topic_;
-  dds::Topic<protocol::ContactStats> stats_topic_;
-  dds::SerializedReader status_reader_;
-  dds::SerializedReader plates_reader_;
-  dds::SerializedReader stats_reader_;
-  dds::ReadCondition status_data_;
-  dds::ReadCondition plates_data_;
-  dds::ReadCondition stats_data_;
+  std::unique_ptr<ServerTelemetry> telemetry_;
   dds::WaitSet waitset_;
-  std::uint16_t status_channel_;
-  std::uint16_t plates_channel_;
-  std::uint16_t stats_channel_;
+  std::array<std::uint16_t, 4> channels_{};  // by Stream
   RecordedCounts counts_;
   std::chrono::steady_clock::time_point last_flush_;
 };

@@ -1,8 +1,8 @@
 // The telemetry of every server on a DDS domain as the bytes on the wire,
 // for bridges to other protocols (dem.bridge, the Foxglove WebSocket
 // bridge): it watches discovery for servers (a writer of
-// rt/dem/<name>/status), subscribes to each one's status, plate forces and
-// contact statistics as serialized CDR samples, and hands them out in the
+// rt/dem/<name>/status), subscribes to each one's status, plate forces,
+// contact statistics and region measures as serialized CDR samples, and hands them out in the
 // order they came, each with its server, ROS 2 topic and message type.
 // A server leaves the set when its status writer goes away.
 //   TelemetryTap tap(7);
@@ -48,7 +48,7 @@ class TelemetryTap {
   std::vector<TapSample> take(std::chrono::milliseconds timeout);
   // The servers subscribed to now, by name.
   std::vector<std::string> servers() const;
-  // The three topics a server publishes telemetry on, with their types.
+  // The topics a server publishes telemetry on, with their types.
   static std::vector<TapTopic> topics(const std::string& server);
 
  private:
