@@ -11,9 +11,9 @@ if [ -z "$format" ]; then
   echo "format.sh: clang-format is not installed (scripts/install_deps.sh installs it)" >&2
   exit 2
 fi
-# Tracked files when this is a git checkout; otherwise (a source archive) every C++ file.
+# Tracked and new (not ignored) files when this is a git checkout; otherwise (a source archive) every C++ file.
 if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
-  mapfile -t files < <(git ls-files '*.cpp' '*.h' '*.hpp' '*.cc')
+  mapfile -t files < <(git ls-files --cached --others --exclude-standard '*.cpp' '*.h' '*.hpp' '*.cc')
 else
   mapfile -t files < <(find . -path ./build -prune -o \( -name '*.cpp' -o -name '*.h' -o -name '*.hpp' -o -name '*.cc' \) -print)
 fi

@@ -10,17 +10,20 @@ namespace {
 using protocol::TopicKind;
 
 // The ROS 2 name of a DDS topic: "rt/dem/a/status" -> "/dem/a/status", as a bag names its channels.
-std::string ros_topic(const std::string& server, TopicKind kind) { return protocol::topic_name(server, kind).substr(2); }
+std::string ros_topic(const std::string& server, TopicKind kind) {
+  return protocol::topic_name(server, kind).substr(2);
+}
 
 }  // namespace
 
 std::array<TelemetryTopic, kStreamCount> telemetry_topics(const std::string& server) {
-  return {{{ros_topic(server, TopicKind::kPlateForces), "dem_interfaces/msg/PlateForces", interfaces::kPlateForcesSchema},
-           {ros_topic(server, TopicKind::kContactStats), "dem_interfaces/msg/ContactStats",
-            interfaces::kContactStatsSchema},
-           {ros_topic(server, TopicKind::kRegionMeasures), "dem_interfaces/msg/RegionTelemetry",
-            interfaces::kRegionTelemetrySchema},
-           {ros_topic(server, TopicKind::kStatus), "dem_interfaces/msg/Status", interfaces::kStatusSchema}}};
+  return {
+      {{ros_topic(server, TopicKind::kPlateForces), "dem_interfaces/msg/PlateForces", interfaces::kPlateForcesSchema},
+       {ros_topic(server, TopicKind::kContactStats), "dem_interfaces/msg/ContactStats",
+        interfaces::kContactStatsSchema},
+       {ros_topic(server, TopicKind::kRegionMeasures), "dem_interfaces/msg/RegionTelemetry",
+        interfaces::kRegionTelemetrySchema},
+       {ros_topic(server, TopicKind::kStatus), "dem_interfaces/msg/Status", interfaces::kStatusSchema}}};
 }
 
 dds::Qos every_status_qos() {
