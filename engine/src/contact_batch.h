@@ -33,7 +33,10 @@ constexpr bool kBatchableShape = Shape::round;
 // the prefetches are pure overhead (5 % more instructions).
 inline constexpr std::int64_t kPrefetchParticles = 32768;
 
-template <typename Law, int Dim, bool kPrefetch>
+// kHot: the particles are read from the pass's side-by-side copies
+// (HotPlace, HotMotion in contact_blocks.h), filled beforehand by
+// copy_hot_particles; otherwise from the particle arrays.
+template <typename Law, int Dim, bool kPrefetch, bool kHot = kPrefetch>
 void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows,
                         ContactBlocks<Dim>& blocks, int b) {
   constexpr int kBatch = 64;
@@ -70,6 +73,38 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
   const std::int32_t* cross_slot = blocks.cross_slot.data();
   Vec<Dim>* deferred_force = blocks.deferred_force.data();
   Spin<Dim>* deferred_moment = blocks.deferred_moment.data();
+  const HotPlace<Dim>* hot_place = blocks.hot_place.data();
+  const HotMotion<Dim>* hot_motion = blocks.hot_motion.data();
+  auto position_of = [&](Slot i) -> const Vec<Dim>& {
+    if constexpr (kHot)
+      return hot_place[i].position;
+    else
+      return position[i];
+  };
+  auto radius_of = [&](Slot i) {
+    if constexpr (kHot)
+      return hot_place[i].radius;
+    else
+      return radius[i];
+  };
+  auto velocity_of = [&](Slot i) -> const Vec<Dim>& {
+    if constexpr (kHot)
+      return hot_motion[i].velocity;
+    else
+      return velocity[i];
+  };
+  auto angular_velocity_of = [&](Slot i) -> const Spin<Dim>& {
+    if constexpr (kHot)
+      return hot_motion[i].angular_velocity;
+    else
+      return angular_velocity[i];
+  };
+  auto mass_of = [&](Slot i) {
+    if constexpr (kHot)
+      return hot_motion[i].mass;
+    else
+      return mass[i];
+  };
   const Periodic<Dim> periodic = in.periodic;
   const std::uint64_t cycle = in.cycle;
 
@@ -113,13 +148,18 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
       if constexpr (kPrefetch) {
         if (k + kAhead < listed) {
           const Slot ahead = second[sort_out ? begin + k + kAhead : near[k + kAhead]];
-          __builtin_prefetch(&position[ahead]);
-          __builtin_prefetch(&velocity[ahead]);
-          __builtin_prefetch(&angular_velocity[ahead]);
+          if constexpr (kHot) {
+            __builtin_prefetch(&hot_place[ahead]);
+            __builtin_prefetch(&hot_motion[ahead]);
+          } else {
+            __builtin_prefetch(&position[ahead]);
+            __builtin_prefetch(&velocity[ahead]);
+            __builtin_prefetch(&angular_velocity[ahead]);
+          }
         }
       }
-      const Vec<Dim> d = periodic.separation(position[x], position[y]);
-      const double reach = radius[x] + radius[y];
+      const Vec<Dim> d = periodic.separation(position_of(x), position_of(y));
+      const double reach = radius_of(x) + radius_of(y);
       const double d2 = d.squaredNorm();
       for (int c = 0; c < Dim; ++c) dx[c][count] = d[c];
       distance2[count] = d2;
@@ -140,23 +180,23 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
     for (int j = 0; j < count; ++j) {
       const std::int32_t r = row[j];
       const Slot x = first_of[j], y = second_of[j];
-      rx[j] = radius[x];
-      ry[j] = radius[y];
-      mx[j] = mass[x];
-      my[j] = mass[y];
+      rx[j] = radius_of(x);
+      ry[j] = radius_of(y);
+      mx[j] = mass_of(x);
+      my[j] = mass_of(y);
       for (int k = 0; k < Dim; ++k) {
-        v1[k][j] = velocity[x][k];
-        v2[k][j] = velocity[y][k];
+        v1[k][j] = velocity_of(x)[k];
+        v2[k][j] = velocity_of(y)[k];
       }
       if constexpr (Dim == 3) {
         for (int k = 0; k < 3; ++k) {
-          w1[k][j] = angular_velocity[x][k];
-          w2[k][j] = angular_velocity[y][k];
+          w1[k][j] = angular_velocity_of(x)[k];
+          w2[k][j] = angular_velocity_of(y)[k];
           shear[k][j] = row_shear[r][k];
         }
       } else {
-        w1[0][j] = angular_velocity[x];
-        w2[0][j] = angular_velocity[y];
+        w1[0][j] = angular_velocity_of(x);
+        w2[0][j] = angular_velocity_of(y);
         shear[0][j] = row_shear[r];
       }
       if constexpr (Law::kNormalHistory) normal_force[j] = row_normal_force[r];
@@ -256,6 +296,20 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
   }
   flush_pending();
   if (sort_out) blocks.near_count[b] = kept;
+}
+
+// The pass's side-by-side copies of slots [begin, end) (kHot above).
+template <int Dim>
+void copy_hot_particles(const Particles<Dim>& p, ContactBlocks<Dim>& blocks, Slot begin, Slot end) {
+  HotPlace<Dim>* place = blocks.hot_place.data();
+  HotMotion<Dim>* motion = blocks.hot_motion.data();
+  for (Slot i = begin; i < end; ++i) {
+    place[i].position = p.position[i];
+    place[i].radius = p.radius[i];
+    motion[i].velocity = p.velocity[i];
+    motion[i].mass = p.mass[i];
+    motion[i].angular_velocity = p.angular_velocity[i];
+  }
 }
 
 }  // namespace dem

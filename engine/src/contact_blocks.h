@@ -17,6 +17,24 @@
 
 namespace dem {
 
+// One particle's data as the batched pair pass reads it (contact_batch.h),
+// copied side by side from the particle arrays at the start of a pass on
+// large beds: a row's second particle lies anywhere ahead of the first in
+// memory, and from the separate arrays its touch test and gather miss five
+// cache lines (position, radius, velocity, spin, mass); from these two
+// records, one or two. The touch test reads only the first record.
+template <int Dim>
+struct alignas(32) HotPlace {
+  Vec<Dim> position;
+  double radius;
+};
+template <int Dim>
+struct alignas(64) HotMotion {
+  Vec<Dim> velocity;
+  double mass;
+  Spin<Dim> angular_velocity;
+};
+
 template <int Dim>
 struct ContactBlocks {
   std::vector<Slot> particle_begin;      // block b holds slots [particle_begin[b], particle_begin[b + 1])
@@ -43,6 +61,10 @@ struct ContactBlocks {
   std::vector<std::int32_t> near_rows;
   std::vector<std::int32_t> near_count;
   bool near_stale = true;
+  // The pass's copies of the particles it reads (HotPlace), by slot; filled
+  // at the start of each batched pass on large beds, empty otherwise.
+  std::vector<HotPlace<Dim>> hot_place;
+  std::vector<HotMotion<Dim>> hot_motion;
 
   int count() const { return static_cast<int>(particle_begin.size()) - 1; }
   int block_of(Slot s) const;

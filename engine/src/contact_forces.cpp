@@ -153,6 +153,7 @@ ContactEnergy run_pass(WorldState<Dim>& s) {
   if (ellipsoids) s.ellipsoid_frames.resize(s.particles.size());
   const PassInputs<Dim> in = inputs(s, s.ellipsoid_frames);
   PairBlockFn<Dim> pair_fn = nullptr;
+  bool hot = false;  // the batched pass reads the particles' side-by-side copies (contact_batch.h)
   WallBlockFn<Dim> wall_fn = nullptr;
   const bool energy = s.energy_budget && kPass == Pass::kAdvance;
   with_energy(energy, [&]<bool kEnergy>() {
@@ -161,9 +162,8 @@ ContactEnergy run_pass(WorldState<Dim>& s) {
         pair_fn = &pair_block<kPass, kEnergy, Law, Shape, Dim>;
         if constexpr (kPass == Pass::kAdvance && !kEnergy && kBatchableShape<Shape> && Law::kBatchable) {
           if (in.shared_params) {
-            pair_fn = static_cast<std::int64_t>(s.particles.size()) > kPrefetchParticles
-                          ? &batched_pair_rows<Law, Dim, true>
-                          : &batched_pair_rows<Law, Dim, false>;
+            hot = static_cast<std::int64_t>(s.particles.size()) > kPrefetchParticles;
+            pair_fn = hot ? &batched_pair_rows<Law, Dim, true> : &batched_pair_rows<Law, Dim, false>;
           }
         }
       });
@@ -172,6 +172,10 @@ ContactEnergy run_pass(WorldState<Dim>& s) {
   });
   ContactBlocks<Dim>& blocks = s.blocks;
   Particles<Dim>& p = s.particles;
+  if (hot) {
+    blocks.hot_place.resize(p.size());
+    blocks.hot_motion.resize(p.size());
+  }
   const int count = blocks.count();
   const int walls = s.walls.size();
   std::vector<WallSum<Dim>> wall_sums(static_cast<std::size_t>(count) * walls);
@@ -179,6 +183,11 @@ ContactEnergy run_pass(WorldState<Dim>& s) {
   const int threads = count > 1 ? s.threads : 1;
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
+    if (hot) {
+#pragma omp for schedule(static)
+      for (int b = 0; b < count; ++b)
+        copy_hot_particles(p, blocks, blocks.particle_begin[b], blocks.particle_begin[b + 1]);
+    }
     if (ellipsoids) {
 #pragma omp for schedule(static)
       for (int b = 0; b < count; ++b) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "contact_batch.h"
 #include "dem/packing.h"
 #include "dem/world.h"
 #include "model_builders.h"
@@ -24,7 +25,7 @@ WallDef3 floor_wall(double half) {
   return floor;
 }
 
-WorldDef3 spheres_in_a_box(int per_side, int threads) {
+WorldDef3 spheres_in_a_box(int per_side, int threads, int layers = 0) {
   WorldDef3 def;
   def.materials = {MaterialDef{"sphere", 2500.0, 0.5, 0.0}, MaterialDef{"wall", 1.0, 0.3, 0.0}};
   def.contact_models = {testing::linear_model(1.0e5, 0.8e5)};
@@ -33,7 +34,8 @@ WorldDef3 spheres_in_a_box(int per_side, int threads) {
   lattice.radius = 0.0038;
   lattice.spacing = 0.0076;
   lattice.origin = {0.0041, 0.0041, 0.0039};
-  lattice.columns = lattice.rows = lattice.layers = per_side;
+  lattice.columns = lattice.rows = per_side;
+  lattice.layers = layers > 0 ? layers : per_side;
   def.particles = generate_lattice(lattice);
   // Every other sphere slightly smaller, so the stack is not perfectly regular.
   for (std::size_t i = 0; i < def.particles.size(); i += 2) def.particles[i].radius *= 0.98;
@@ -172,6 +174,31 @@ TEST(World3, PlainLoopsGiveTheSameBitsAsTheGeneralStep) {
   std::printf("%d spheres, %zu contacts, largest turn %.3g rad: same bits\n", plain.particle_count(),
               plain.contacts().size(), turned);
   EXPECT_GT(turned, 1e-6) << "the spheres must turn for the orientations to be compared";
+}
+
+// Past kPrefetchParticles (contact_batch.h) the batched pass reads the
+// particles from side-by-side copies that both threads fill before the
+// rows: one and two threads must still give the same state.
+TEST(World3, LargeBedsGiveTheSameStateHashForOneAndTwoThreads) {
+  WorldDef3 serial_def = spheres_in_a_box(9, 1, 405);  // a column
+  // Spheres a little larger than the lattice's spacing: every neighbour
+  // touches from the first cycle.
+  for (ParticleDef3& sphere : serial_def.particles) sphere.radius *= 1.015;
+  // One material and no walls: the batched pass serves only pairs that
+  // share one parameter set (contact_forces.cpp).
+  serial_def.materials.resize(1);
+  serial_def.walls.clear();
+  ASSERT_GT(static_cast<std::int64_t>(serial_def.particles.size()), kPrefetchParticles);
+  WorldDef3 parallel_def = serial_def;
+  parallel_def.threads = 2;
+  World3 serial(serial_def), parallel(parallel_def);
+  serial.cycle(60);
+  parallel.cycle(60);
+  std::printf("%d spheres, %zu contacts, hash %016llx / %016llx\n", serial.particle_count(), serial.contacts().size(),
+              static_cast<unsigned long long>(serial.state_hash()),
+              static_cast<unsigned long long>(parallel.state_hash()));
+  EXPECT_GT(serial.contacts().size(), 30000u) << "the copies must be read by touching rows";
+  EXPECT_EQ(serial.state_hash(), parallel.state_hash());
 }
 
 TEST(World3, RectangleWallsAreValidated) {
