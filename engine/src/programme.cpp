@@ -78,7 +78,7 @@ void trim(BasicWorld<Dim>& world, const TrimDef& t) {
 }
 
 // Sets a wall on the sample: along its normal, `clearance` beyond the
-// particle that reaches furthest towards it (by its bounding radius).
+// particle surface that reaches furthest towards it.
 template <int Dim>
 void place_on_sample(BasicWorld<Dim>& world, const PlaceWallDef& place) {
   const auto& wall = world.wall(place.wall);
@@ -88,10 +88,7 @@ void place_on_sample(BasicWorld<Dim>& world, const PlaceWallDef& place) {
   } else {
     normal = wall.direction.cross(wall.direction2);
   }
-  const auto p = world.particles();
-  double reach = -std::numeric_limits<double>::infinity();
-  for (ParticleId i = 0; i < world.particle_count(); ++i)
-    reach = std::max(reach, -p.position[i].dot(normal) + p.radius[i]);
+  const double reach = world.furthest_reach(Vec<Dim>(-normal));
   const double shift = -wall.point.dot(normal) - (reach + place.clearance);
   world.place_wall(place.wall, Vec<Dim>(wall.point + shift * normal));
 }

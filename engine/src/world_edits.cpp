@@ -5,13 +5,17 @@
 // contacts' histories: between cycles the sums always belong to the
 // contacts as they stand.
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include "box_control.h"
 #include "contact_forces.h"
 #include "dem/error.h"
 #include "dem/world.h"
+#include "ellipsoid.h"
 #include "rolling_resistance.h"
+#include "superquadric.h"
 #include "walls.h"
 #include "world_state.h"
 
@@ -157,6 +161,29 @@ BoxMeasureT<Dim> BasicWorld<Dim>::box_measure() const {
 }
 
 template <int Dim>
+double BasicWorld<Dim>::furthest_reach(const Vec<Dim>& u) const {
+  const WorldState<Dim>& s = *state_;
+  const Particles<Dim>& p = s.particles;
+  double reach = -std::numeric_limits<double>::infinity();
+  for (Slot i = 0; i < static_cast<Slot>(p.size()); ++i) {
+    double extent = p.radius[i];
+    if constexpr (Dim == 3) {
+      // sqrt(u^T M^-1 u): the support of an ellipsoid along u (eq. 54).
+      if (s.shape == ShapeKind::kEllipsoid)
+        extent = std::sqrt(u.dot(ellipsoid_frame(p.shape[i].axes, p.rotation[i]).reach * u));
+    } else {
+      if (s.shape == ShapeKind::kSuperquadric) {
+        const ShapeDefT<2>& shape = p.shape[i];
+        const PlacedSuperquadric body{{shape.a, shape.b, shape.n}, p.position[i], p.rotation[i]};
+        extent = superquadric_line_contact(body, p.position[i], u).overlap;
+      }
+    }
+    reach = std::max(reach, p.position[i].dot(u) + extent);
+  }
+  return reach;
+}
+
+template <int Dim>
 double BasicWorld<Dim>::wall_settlement(WallId id) const {
   const Walls<Dim>& w = state_->walls;
   return (w.def[id].point - w.initial_point[id]).dot(wall_normal(w.def[id]));
@@ -174,6 +201,8 @@ template BoxMeasureT<2> BasicWorld<2>::box_measure() const;
 template BoxMeasureT<3> BasicWorld<3>::box_measure() const;
 template void BasicWorld<2>::place_wall(WallId, const Vec2&);
 template void BasicWorld<3>::place_wall(WallId, const Vec3&);
+template double BasicWorld<2>::furthest_reach(const Vec2&) const;
+template double BasicWorld<3>::furthest_reach(const Vec3&) const;
 template double BasicWorld<2>::wall_settlement(WallId) const;
 template double BasicWorld<3>::wall_settlement(WallId) const;
 

@@ -120,5 +120,23 @@ TEST(EllipsoidWorld, DroppedEllipsoidRestsOnItsFlattestSide) {
   EXPECT_NEAR(world.wall_measures()[0].normal_force, weight, 1e-3 * weight);
 }
 
+// A loading plate is placed on the sample's top (Miyata 3.3): what counts
+// is how far the bodies reach, not their bounding spheres. A flat-lying
+// ellipsoid reaches its smallest semi-axis up; turned a quarter about x, its
+// middle one.
+TEST(EllipsoidWorld, FurthestReachIsTheSurfaceNotTheBoundingSphere) {
+  WorldDef3 def = drop(true, Vec3::Zero());
+  def.particles[0].shape.axes = {0.3, 0.2, 0.1};
+  def.particles[0].position = {0.0, 0.0, 0.5};
+  ParticleDef3 turned = def.particles[0];
+  turned.position = {1.0, 0.0, 0.4};
+  turned.shape.orientation = Quaternion(Eigen::AngleAxisd(std::numbers::pi / 2, Vec3::UnitX()));
+  def.particles.push_back(turned);
+  const World3 world(def);
+  EXPECT_NEAR(world.furthest_reach(Vec3::UnitZ()), 0.6, 1e-12);    // 0.5 + 0.1, not 0.5 + 0.3
+  EXPECT_NEAR(world.furthest_reach(-Vec3::UnitZ()), -0.2, 1e-12);  // the turned one: 0.4 - 0.2 below
+  EXPECT_NEAR(world.furthest_reach(Vec3::UnitX()), 1.3, 1e-12);
+}
+
 }  // namespace
 }  // namespace dem

@@ -92,5 +92,20 @@ TEST(SuperquadricWorld, ElongatedParticleComesToRestOnItsLongSide) {
   EXPECT_LT(world.assembly_measures().kinetic_energy, 1e-6 * weight * 0.0976);
 }
 
+// The plate placed on a sample of superquadrics stands off their surface,
+// not their bounding circles: Table 1's rectangle (n = 4, a = 0.195,
+// b = 0.0976) lying flat reaches b up; its bounding circle reaches past a.
+TEST(SuperquadricWorld, FurthestReachIsTheSurfaceNotTheBoundingCircle) {
+  WorldDef def = nine(true);
+  def.particles.resize(1);
+  def.particles[0].position = {150.0, 150.0};
+  def.particles[0].shape = ShapeDefT<2>{0.195, 0.0976, 4.0, 0.0};
+  const World world(def);
+  EXPECT_NEAR(world.furthest_reach(Vec2::UnitY()), 150.0976, 1e-9);
+  EXPECT_NEAR(world.furthest_reach(Vec2::UnitX()), 150.195, 1e-9);
+  const double diagonal = world.furthest_reach(Vec2(1.0, 1.0).normalized());
+  EXPECT_LT(diagonal - 150.0 * std::sqrt(2.0), world.particles().radius[0]);  // the corner, inside the circle
+}
+
 }  // namespace
 }  // namespace dem

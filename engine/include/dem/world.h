@@ -125,6 +125,11 @@ class BasicWorld {
   // on a sample); its contacts start afresh and its displacement
   // (settlement) counts from here.
   void place_wall(WallId id, const Vec<Dim>& point);
+  // The furthest any particle's surface reaches along the unit vector u:
+  // the largest x.u plus the body's own extent along u (its radius, or the
+  // support of an ellipse or superquadric as it is turned now; a bounding
+  // radius would leave an elongated body's plate a tenth of a metre short).
+  double furthest_reach(const Vec<Dim>& u) const;
   // How far a wall has moved along its normal, towards the particles, since
   // it was built or placed: a loading plate's settlement.
   double wall_settlement(WallId id) const;
