@@ -37,8 +37,10 @@ double wall_stress(const BasicWorld<Dim>& world, WallId wall) {
   return world.wall_measures()[wall].normal_force / world.wall_area(wall);
 }
 
+}  // namespace
+
 template <int Dim>
-bool conditions_hold(const BasicWorld<Dim>& world, const StopConditions& until) {
+bool stop_conditions_hold(const BasicWorld<Dim>& world, const StopConditions& until) {
   const bool needs_assembly = until.kinetic_energy_below || until.out_of_balance_below;
   const AssemblyMeasures a = needs_assembly ? world.assembly_measures() : AssemblyMeasures{};
   if (until.kinetic_energy_below && !(a.kinetic_energy < *until.kinetic_energy_below)) return false;
@@ -58,10 +60,15 @@ bool conditions_hold(const BasicWorld<Dim>& world, const StopConditions& until) 
   return true;
 }
 
-bool has_condition(const StopConditions& until) {
+bool has_stop_condition(const StopConditions& until) {
   return until.kinetic_energy_below || until.out_of_balance_below || until.servo_tolerance || until.wall_stress_above ||
          until.wall_settlement_above || until.deviator_strain_above;
 }
+
+template bool stop_conditions_hold<2>(const BasicWorld<2>&, const StopConditions&);
+template bool stop_conditions_hold<3>(const BasicWorld<3>&, const StopConditions&);
+
+namespace {
 
 // Miyata et al. (2002) 3.1, eq. 60: remove the particles whose centres lie
 // above height + amplitude sin(2 pi x / wavelength).
@@ -93,11 +100,9 @@ void place_on_sample(BasicWorld<Dim>& world, const PlaceWallDef& place) {
   world.place_wall(place.wall, Vec<Dim>(wall.point + shift * normal));
 }
 
-}  // namespace
-
+// A stage's start actions (StageDefT's list).
 template <int Dim>
-StageResult run_stage(BasicWorld<Dim>& world, const StageDefT<Dim>& stage, std::uint64_t interval,
-                      const std::type_identity_t<StageObserverT<Dim>>& observer) {
+void start_stage(BasicWorld<Dim>& world, const StageDefT<Dim>& stage) {
   if (stage.trim) trim(world, *stage.trim);
   if (stage.place_wall) place_on_sample(world, *stage.place_wall);
   if (stage.release_box_control) world.set_box_control(std::nullopt);
@@ -113,25 +118,59 @@ StageResult run_stage(BasicWorld<Dim>& world, const StageDefT<Dim>& stage, std::
     }
   }
   for (const auto& [material, friction] : stage.frictions) world.set_friction(material, friction);
+}
 
-  StageResult result;
-  const bool conditional = has_condition(stage.until);
-  const std::uint64_t check = std::max<std::uint64_t>(stage.until.check_interval, 1);
-  while (result.cycles_run < stage.cycles) {
-    // Advance to the next output row, condition check or the stage's end.
-    std::uint64_t chunk = stage.cycles - result.cycles_run;
-    if (interval > 0) chunk = std::min(chunk, interval - result.cycles_run % interval);
-    if (conditional) chunk = std::min(chunk, check - result.cycles_run % check);
-    world.cycle(chunk);
-    result.cycles_run += chunk;
-    if (observer && interval > 0 && result.cycles_run % interval == 0 && !observer(world)) break;
-    if (conditional && result.cycles_run >= stage.until.min_cycles && result.cycles_run % check == 0 &&
-        conditions_hold(world, stage.until)) {
-      result.condition_met = true;
-      break;
-    }
+}  // namespace
+
+template <int Dim>
+StageRunT<Dim>::StageRunT(BasicWorld<Dim>& world, StageDefT<Dim> stage)
+    : world_(&world),
+      stage_(std::move(stage)),
+      conditional_(has_stop_condition(stage_.until)),
+      check_interval_(std::max<std::uint64_t>(stage_.until.check_interval, 1)) {
+  start_stage(world, stage_);
+  over_ = stage_.cycles == 0;
+}
+
+template <int Dim>
+std::uint64_t StageRunT<Dim>::cycles_to_next_stop() const {
+  if (over_) return 0;
+  const std::uint64_t left = stage_.cycles - result_.cycles_run;
+  if (!conditional_) return left;
+  return std::min(left, check_interval_ - result_.cycles_run % check_interval_);
+}
+
+template <int Dim>
+void StageRunT<Dim>::cycle(std::uint64_t cycles) {
+  world_->cycle(cycles);
+  result_.cycles_run += cycles;
+}
+
+template <int Dim>
+bool StageRunT<Dim>::check() {
+  if (conditional_ && result_.cycles_run >= stage_.until.min_cycles && result_.cycles_run % check_interval_ == 0 &&
+      stop_conditions_hold(*world_, stage_.until)) {
+    result_.condition_met = true;
+    over_ = true;
   }
-  return result;
+  if (result_.cycles_run >= stage_.cycles) over_ = true;
+  return over_;
+}
+
+template <int Dim>
+StageResult run_stage(BasicWorld<Dim>& world, const StageDefT<Dim>& stage, std::uint64_t interval,
+                      const std::type_identity_t<StageObserverT<Dim>>& observer) {
+  StageRunT<Dim> run(world, stage);
+  while (!run.over()) {
+    // Advance to the next output row, condition check or the stage's end;
+    // the row comes before the check at the same cycle.
+    std::uint64_t chunk = run.cycles_to_next_stop();
+    if (interval > 0) chunk = std::min(chunk, interval - run.result().cycles_run % interval);
+    run.cycle(chunk);
+    if (observer && interval > 0 && run.result().cycles_run % interval == 0 && !observer(world)) break;
+    run.check();
+  }
+  return run.result();
 }
 
 template <int Dim>
@@ -152,6 +191,8 @@ StageDefT<Dim> stage_remainder(StageDefT<Dim> stage, std::uint64_t done) {
 
 template StageResult run_stage<2>(BasicWorld<2>&, const StageDefT<2>&, std::uint64_t, const StageObserverT<2>&);
 template StageResult run_stage<3>(BasicWorld<3>&, const StageDefT<3>&, std::uint64_t, const StageObserverT<3>&);
+template class StageRunT<2>;
+template class StageRunT<3>;
 template StageDefT<2> stage_remainder<2>(StageDefT<2>, std::uint64_t);
 template StageDefT<3> stage_remainder<3>(StageDefT<3>, std::uint64_t);
 

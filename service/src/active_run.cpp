@@ -1,53 +1,37 @@
 #include "dem/service/active_run.h"
 
-#include <algorithm>
-
 #include "format_value.h"
 
 namespace dem::service {
 
-ActiveRun::ActiveRun(ReceivedCommand command, RunGoal goal, const WorldSession& world)
-    : command_(std::move(command)), goal_(goal) {
-  goal_.check_interval = std::max<std::uint64_t>(goal_.check_interval, 1);
-  if (goal_.wall) {
-    const protocol::WallForce start = world.read_wall(*goal_.wall);
-    if (goal_.stress) stress_rising_ = start.normal_stress < *goal_.stress;
-    if (goal_.settlement) settlement_rising_ = start.settlement < *goal_.settlement;
-  }
+ActiveRun::ActiveRun(ReceivedCommand command, const RunGoal& goal, WorldSession& world)
+    : command_(std::move(command)),
+      until_(goal.until),
+      total_(goal.max_cycles),
+      stepper_(world.begin_run(goal.max_cycles, goal.until)) {}
+
+bool ActiveRun::step(std::uint64_t cycles, const WorldSession& world) {
+  stepper_->cycle(cycles);
+  const bool over = stepper_->check();
+  if (stepper_->result().condition_met) describe(world);
+  return over;
 }
 
-std::uint64_t ActiveRun::cycles_to_next_stop() const {
-  const std::uint64_t left = goal_.max_cycles - done_;
-  const bool conditions = goal_.stress || goal_.settlement || goal_.kinetic_energy;
-  if (!conditions) return left;
-  return std::min(left, goal_.check_interval - done_ % goal_.check_interval);
-}
-
-bool ActiveRun::advance(std::uint64_t cycles, const WorldSession& world) {
-  done_ += cycles;
-  const bool at_check = done_ % goal_.check_interval == 0;
-  if (at_check && check(world)) return true;
-  return done_ >= goal_.max_cycles;
-}
-
-bool ActiveRun::check(const WorldSession& world) {
-  const auto reached = [](double value, double target, bool rising) {
-    return rising ? value >= target : value <= target;
-  };
-  if (goal_.wall && (goal_.stress || goal_.settlement)) {
-    const protocol::WallForce plate = world.read_wall(*goal_.wall);
-    if (goal_.stress && reached(plate.normal_stress, *goal_.stress, stress_rising_)) {
-      condition_ = "the stress on " + plate.name + " reached " + format_value(plate.normal_stress) + " Pa";
-    } else if (goal_.settlement && reached(plate.settlement, *goal_.settlement, settlement_rising_)) {
-      condition_ = "the settlement of " + plate.name + " reached " + format_value(plate.settlement) + " m";
-    }
+void ActiveRun::describe(const WorldSession& world) {
+  std::vector<std::string> held;
+  if (until_.wall_stress_above) {
+    const protocol::WallForce plate = world.read_wall(until_.wall_stress_above->wall);
+    held.push_back("the stress on " + plate.name + " reached " + format_value(plate.normal_stress) + " Pa");
   }
-  if (condition_.empty() && goal_.kinetic_energy) {
-    const double energy = world.kinetic_energy();
-    if (energy < *goal_.kinetic_energy) condition_ = "the kinetic energy fell to " + format_value(energy) + " J";
+  if (until_.wall_settlement_above) {
+    const protocol::WallForce plate = world.read_wall(until_.wall_settlement_above->wall);
+    held.push_back("the settlement of " + plate.name + " reached " + format_value(plate.settlement) + " m");
   }
-  condition_met_ = !condition_.empty();
-  return condition_met_;
+  if (until_.kinetic_energy_below) {
+    held.push_back("the kinetic energy fell to " + format_value(world.kinetic_energy()) + " J");
+  }
+  condition_.clear();
+  for (const std::string& part : held) condition_ += (condition_.empty() ? "" : " and ") + part;
 }
 
 }  // namespace dem::service

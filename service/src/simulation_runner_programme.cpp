@@ -72,7 +72,7 @@ void SimulationRunner::run_programme(const ReceivedCommand& received) {
 void SimulationRunner::run_stages(std::size_t first, std::size_t count, std::uint64_t first_done) {
   WorldSession& world = simulation_.world();
   programme_.emplace(world, simulation_.output_interval(), first, count);
-  state_ = ServerState::kRunning;
+  lifecycle_.take(Transition::kStartRun);
   message_ = "programme of " + std::to_string(count) + " stages running";
   spdlog::info("running the programme of {}: stages {} to {}, up to {} cycles", simulation_.case_name(), first + 1,
                first + count, programme_->total());
@@ -187,19 +187,19 @@ void SimulationRunner::end_programme() {
   const std::string at = " at cycle " + std::to_string(world.cycle_count());
   switch (programme_->outcome()) {
     case ProgrammeOutcome::kCompleted:
-      state_ = ServerState::kLoaded;
+      lifecycle_.take(Transition::kEndRun);
       message_ = "programme complete" + at + "; final snapshot " + path.string();
       spdlog::info("{}", message_);
       break;
     case ProgrammeOutcome::kStopped:
-      state_ = ServerState::kLoaded;
+      lifecycle_.take(Transition::kEndRun);
       message_ = "programme stopped" + at + " in " + stage_label(programme_->stage()) + " (" + programme_->reason() +
                  "); final snapshot " + path.string();
       spdlog::warn("{}", message_);
       break;
     case ProgrammeOutcome::kFailed:
     case ProgrammeOutcome::kRunning:
-      state_ = ServerState::kError;
+      lifecycle_.take(Transition::kFailRun);
       message_ = "programme failed: " + programme_->reason();
       if (failed) {
         // The world goes back to it: what the server shows and saves from now on is sound.

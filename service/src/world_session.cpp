@@ -1,7 +1,6 @@
 #include "dem/service/world_session.h"
 
 #include "dem/io/snapshot_file.h"
-#include "dem/io/stop_conditions.h"
 #include "dem/service/command_error.h"
 #include "dem/service/output_recorder.h"
 
@@ -40,6 +39,19 @@ class CheckpointT final : public StateCheckpoint {
 };
 
 template <int Dim>
+class StageStepperT final : public StageStepper {
+ public:
+  StageStepperT(BasicWorld<Dim>& world, StageDefT<Dim> stage) : run_(world, std::move(stage)) {}
+  std::uint64_t cycles_to_next_stop() const override { return run_.cycles_to_next_stop(); }
+  void cycle(std::uint64_t cycles) override { run_.cycle(cycles); }
+  bool check() override { return run_.check(); }
+  const StageResult& result() const override { return run_.result(); }
+
+ private:
+  StageRunT<Dim> run_;
+};
+
+template <int Dim>
 class WorldSessionT final : public WorldSession {
  public:
   WorldSessionT(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages,
@@ -63,6 +75,9 @@ class WorldSessionT final : public WorldSession {
   int wall_count() const override { return world_.wall_count(); }
   std::uint64_t state_hash() const override { return world_.state_hash(); }
   double kinetic_energy() const override { return world_.assembly_measures().kinetic_energy; }
+  bool stop_conditions_hold(const StopConditions& until) const override {
+    return dem::stop_conditions_hold(world_, until);
+  }
   bool motion_suspect() const override { return health_.motion_suspect(world_); }
 
   WallId find_wall(std::string_view name) const override { return world_.find_wall(name); }
@@ -131,13 +146,19 @@ class WorldSessionT final : public WorldSession {
     result.cycles_run += done;
     return result;
   }
+  std::unique_ptr<StageStepper> begin_run(std::uint64_t cycles, const StopConditions& until) override {
+    StageDefT<Dim> stage;
+    stage.cycles = cycles;
+    stage.until = until;
+    return std::make_unique<StageStepperT<Dim>>(world_, std::move(stage));
+  }
   bool resumable_at(std::size_t stage, std::uint64_t stage_cycles) const override {
     const StageDefT<Dim>& s = stages_.at(stage);
     if (stage_cycles >= s.cycles || stage_cycles % std::max<std::uint64_t>(s.until.check_interval, 1) != 0) {
       return false;
     }
-    return !(io::has_stop_condition(s.until) && stage_cycles >= s.until.min_cycles &&
-             io::stop_conditions_hold(world_, s.until));
+    return !(has_stop_condition(s.until) && stage_cycles >= s.until.min_cycles &&
+             dem::stop_conditions_hold(world_, s.until));
   }
   void restore_bytes(std::string_view snapshot_bytes, const std::string& source) override {
     const int threads = world_.threads();

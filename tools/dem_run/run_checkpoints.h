@@ -8,7 +8,6 @@
 
 #include "dem/io/checkpoint_store.h"
 #include "dem/io/snapshot_file.h"
-#include "dem/io/stop_conditions.h"
 #include "dem/programme.h"
 #include "run_recorder.h"
 
@@ -29,8 +28,8 @@ class RunCheckpoints {
     if (!periodic_.store()) return false;
     if (stage_cycles % std::max<std::uint64_t>(stage.until.check_interval, 1) != 0) return false;
     if (stage_cycles >= stage.cycles) return false;  // its end: the next stage's start comes first
-    if (io::has_stop_condition(stage.until) && stage_cycles >= stage.until.min_cycles &&
-        io::stop_conditions_hold(world, stage.until)) {
+    if (has_stop_condition(stage.until) && stage_cycles >= stage.until.min_cycles &&
+        stop_conditions_hold(world, stage.until)) {
       return false;
     }
     return periodic_.due(world.cycle_count());

@@ -154,10 +154,11 @@ class Client:
 
     def run_until(self, *, max_cycles, wall="", stress=None, settlement=None, kinetic_energy=None,
                   check_interval=0, timeout=None, on_wait=None, wait_interval=0.1):
-        """Runs until a wall's ``stress`` (Pa) or ``settlement`` (m) reaches a
-        value (from the side it starts on), or the kinetic energy falls below
-        ``kinetic_energy`` (J) - any that are set - or ``max_cycles`` have
-        run. The reply's ``condition_met`` says which ended it."""
+        """Runs until every condition that is set holds at once - a wall's
+        ``stress`` (Pa) or ``settlement`` (m) at or above its value, the
+        kinetic energy below ``kinetic_energy`` (J); the engine's stop rule,
+        a case stage's - or ``max_cycles`` have run. The reply's
+        ``condition_met`` says whether the conditions ended it."""
         return self._native.run_until(wall, _optional(stress), _optional(settlement), _optional(kinetic_energy),
                                       int(max_cycles), int(check_interval), timeout, on_wait, wait_interval)
 

@@ -21,9 +21,14 @@ struct WallThreshold {
   double value = 0.0;
 };
 
-// Conditions that end a stage early: the stage ends when every condition
-// that is set holds at once. They are checked every check_interval cycles,
-// never before min_cycles.
+// Conditions that end a stage early - the one stop rule of the project
+// (dem_run's stages, the service's run_programme and run_until): the stage
+// ends when EVERY condition that is set holds at once (a conjunction). The
+// direction of each is fixed by its name: kinetic energy and out of balance
+// from above ("below"), wall stress, settlement and deviator strain from
+// below ("above"); a target already passed at the first check ends the stage
+// there. They are checked every check_interval cycles, never before
+// min_cycles.
 struct StopConditions {
   std::optional<double> kinetic_energy_below;  // J
   std::optional<double> out_of_balance_below;  // Delta F / F
@@ -38,6 +43,15 @@ struct StopConditions {
   std::uint64_t min_cycles = 0;
   std::uint64_t check_interval = 10;
 };
+
+// Whether any condition is set (a stage without any runs its cycles).
+bool has_stop_condition(const StopConditions& until);
+
+// Whether the conditions that are set all hold now - the rule run_stage
+// applies at its checks. A checkpoint taken at a check must know it: the
+// stage ends there, so a run resumed from it would run past the end.
+template <int Dim>
+bool stop_conditions_hold(const BasicWorld<Dim>& world, const StopConditions& until);
 
 // Trimming a sample's surface (Miyata et al. 2002, 3.1): particles whose
 // centres lie above height + amplitude sin(2 pi x / wavelength) are
@@ -94,6 +108,38 @@ struct StageResult {
 template <int Dim>
 using StageObserverT = std::function<bool(const BasicWorld<Dim>&)>;
 
+// One stage stepped a piece at a time: run_stage's loop turned inside out,
+// for a caller that does other work between the pieces (the service
+// answers commands between chunks of cycles, in its own loop rather than
+// inside the stage's). Made, it has done the stage's start actions; then
+// cycle() and check() in turn, as run_stage does, until over(). The
+// conditions are checked (the stop rule above) every check_interval
+// cycles from the stage's start, from min_cycles on.
+template <int Dim>
+class StageRunT {
+ public:
+  StageRunT(BasicWorld<Dim>& world, StageDefT<Dim> stage);
+
+  // Cycles to the stage's next condition check or its end; 0 once over.
+  std::uint64_t cycles_to_next_stop() const;
+  // Runs `cycles`, at most cycles_to_next_stop().
+  void cycle(std::uint64_t cycles);
+  // At a condition check, whether the conditions hold; at the stage's
+  // length, its end. True when the stage is over.
+  bool check();
+  bool over() const { return over_; }
+  const StageResult& result() const { return result_; }
+  const StageDefT<Dim>& stage() const { return stage_; }
+
+ private:
+  BasicWorld<Dim>* world_;
+  StageDefT<Dim> stage_;
+  bool conditional_;
+  std::uint64_t check_interval_;
+  StageResult result_;
+  bool over_ = false;
+};
+
 // The observer is not used to deduce Dim, so a lambda can be passed as it is.
 template <int Dim>
 StageResult run_stage(BasicWorld<Dim>& world, const StageDefT<Dim>& stage, std::uint64_t interval = 0,
@@ -109,5 +155,7 @@ StageDefT<Dim> stage_remainder(StageDefT<Dim> stage, std::uint64_t done);
 using StageDef = StageDefT<2>;
 using StageDef3 = StageDefT<3>;
 using StageObserver = StageObserverT<2>;
+using StageRun = StageRunT<2>;
+using StageRun3 = StageRunT<3>;
 
 }  // namespace dem

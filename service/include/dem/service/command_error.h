@@ -21,4 +21,9 @@ class CommandError : public std::runtime_error {
   protocol::ReplyStatus status_;
 };
 
+// A bad request unless `condition` holds.
+inline void require_argument(bool condition, const std::string& message) {
+  if (!condition) throw CommandError(protocol::ReplyStatus::kBadRequest, message);
+}
+
 }  // namespace dem::service

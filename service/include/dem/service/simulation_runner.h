@@ -16,6 +16,7 @@
 #include "dem/service/background_load.h"
 #include "dem/service/command_queue.h"
 #include "dem/service/health_watch.h"
+#include "dem/service/lifecycle.h"
 #include "dem/service/options.h"
 #include "dem/service/output_recorder.h"
 #include "dem/service/programme_run.h"
@@ -67,7 +68,8 @@ class SimulationRunner {
   void start_run(ReceivedCommand& received, protocol::CommandKind kind);
   void run_chunk();
   void complete_run();
-  void end_run(protocol::ReplyStatus status, const std::string& message);
+  // `transition`: kEndRun (completed, stopped) or kFailRun.
+  void end_run(protocol::ReplyStatus status, const std::string& message, Transition transition = Transition::kEndRun);
   void fail_run(const std::string& message);
   void fail_unhealthy(const StepHealth& problem);
 
@@ -118,7 +120,7 @@ class SimulationRunner {
   Simulation simulation_;
   OutputRecorder recorder_;
   TelemetrySchedule schedule_;
-  protocol::ServerState state_ = protocol::ServerState::kIdle;
+  Lifecycle lifecycle_;
   std::optional<ActiveRun> active_;
   std::optional<HealthWatch> active_health_;   // the running cycle or run_until's
   std::unique_ptr<BackgroundLoad> abandoned_;  // a load given up on, still running to its end
@@ -130,15 +132,17 @@ class SimulationRunner {
   bool owner_left_logged_ = false;
   std::vector<std::string> awaiting_refresh_;  // clients whose commands the StateCache does not show yet
   io::Pacing refresh_pacing_{40};              // at most 1/40 of the engine thread
-  // get_state's readout of one state of the world: worked out once however
-  // many ask (get_state).
+  // The plates and contact statistics of one state of the world, named
+  // (stamped when sent): get_state's and the telemetry's, worked out once
+  // however many ask; the state hash only when get_state asks.
   struct Readout {
     std::uint64_t generation = 0;
     std::uint64_t cycle = 0;
     protocol::PlateForces plates;
     protocol::ContactStats stats;
-    std::uint64_t hash = 0;
+    std::optional<std::uint64_t> hash;
   };
+  const Readout& readout() const;
   mutable std::optional<Readout> readout_;
   std::uint64_t world_generation_ = 0;                 // a new world, or one put back: another readout
   std::chrono::steady_clock::time_point last_poll_{};  // of the queue, during a programme

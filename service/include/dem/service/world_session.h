@@ -38,6 +38,17 @@ class StateCheckpoint {
   virtual std::string bytes(const io::SnapshotInfo& info) const = 0;  // a serialized dem.proto.Snapshot
 };
 
+// A one-stage programme of the engine's (StageRunT) stepped by the runner
+// between the commands: cycle() and check() in turn until the stage is over.
+class StageStepper {
+ public:
+  virtual ~StageStepper() = default;
+  virtual std::uint64_t cycles_to_next_stop() const = 0;
+  virtual void cycle(std::uint64_t cycles) = 0;
+  virtual bool check() = 0;
+  virtual const StageResult& result() const = 0;
+};
+
 class WorldSession {
  public:
   virtual ~WorldSession() = default;
@@ -51,6 +62,8 @@ class WorldSession {
   virtual int wall_count() const = 0;
   virtual std::uint64_t state_hash() const = 0;
   virtual double kinetic_energy() const = 0;  // J (a pass over the particles and the contacts)
+  // The engine's stop rule (dem/programme.h) applied to the state now.
+  virtual bool stop_conditions_hold(const StopConditions& until) const = 0;
   // A motion not finite or a particle flung out (HealthMonitorT::
   // motion_suspect): a pass over the particles alone, cheap enough after
   // every chunk, for what a blow-up reaches between two paced health
@@ -103,9 +116,13 @@ class WorldSession {
   // there; the result counts them.
   virtual StageResult run_stage(std::size_t stage, const std::function<bool()>& between_cycles,
                                 std::uint64_t done = 0) = 0;
+  // A cycle or run_until command as a one-stage programme: `cycles`, ended
+  // early by `until` (the engine's stop rule), no start actions. The
+  // stepper steps this session's world (valid while this session is).
+  virtual std::unique_ptr<StageStepper> begin_run(std::uint64_t cycles, const StopConditions& until) = 0;
   // Whether a checkpoint `stage_cycles` into the stage can be resumed as if
   // never interrupted: before its end, on one of its condition checks, and
-  // not one where the conditions hold (io/stop_conditions.h) - the stage
+  // not one where the conditions hold (dem/programme.h) - the stage
   // ends there, after the row the checkpoint follows.
   virtual bool resumable_at(std::size_t stage, std::uint64_t stage_cycles) const = 0;
   // Replaces the world by a framed snapshot's (a checkpoint of this case);
