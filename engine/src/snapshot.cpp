@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <string>
 
+#include "contact_fields.h"
 #include "contact_forces.h"
 #include "contact_history.h"
 #include "dem/error.h"
@@ -11,7 +12,8 @@ namespace dem {
 
 namespace {
 
-// A row's history, as the snapshot holds it.
+// A row's history, as the snapshot holds it: the key, the flags and every
+// column the table keeps (contact_fields.h).
 template <int Dim>
 ContactSnapshotT<Dim> save_row(const ContactRows<Dim>& rows, std::size_t r, const Particles<Dim>& p, bool wall) {
   ContactSnapshotT<Dim> c;
@@ -20,38 +22,14 @@ ContactSnapshotT<Dim> save_row(const ContactRows<Dim>& rows, std::size_t r, cons
   c.with_wall = wall;
   c.touching = rows.touching(r);
   c.sliding = rows.sliding(r);
-  c.shear_force = rows.shear[r];
-  if (rows.columns.normal_force) c.normal_force = rows.normal_force[r];
-  if (rows.columns.mindlin) {
-    c.mindlin = rows.mindlin[r].history;
-    c.mindlin_axis = rows.mindlin[r].axis;
-    c.mindlin_theta = rows.mindlin[r].theta;
-  }
-  if (rows.columns.dashpot) {
-    c.dashpot_force = rows.dashpot[r].force;
-    c.tangential_spring = rows.dashpot[r].tangential;
-    c.relative_velocity = rows.dashpot[r].relative_velocity;
-  }
-  if (rows.columns.rolling) c.rolling_torque = rows.rolling[r];
-  if (rows.columns.search) {
-    c.search_first = rows.search[r].first;
-    c.search_second = rows.search[r].second;
-    c.has_search = rows.search[r].valid;
-  }
-  c.formed_cycle = rows.formed_cycle[r];
+  for_each_kept_field<Dim>(rows, r, [&](const ContactFieldInfo&, auto field, const auto& value) { field(c) = value; });
   return c;
 }
 
 template <int Dim>
 void restore_row(const ContactSnapshotT<Dim>& c, ContactRows<Dim>& rows, std::size_t r) {
   rows.flags[r] = static_cast<std::uint8_t>((c.touching ? kTouching : 0) | (c.sliding ? kSliding : 0));
-  rows.shear[r] = c.shear_force;
-  if (rows.columns.normal_force) rows.normal_force[r] = c.normal_force;
-  if (rows.columns.mindlin) rows.mindlin[r] = {c.mindlin, c.mindlin_axis, c.mindlin_theta};
-  if (rows.columns.dashpot) rows.dashpot[r] = {c.dashpot_force, c.tangential_spring, c.relative_velocity};
-  if (rows.columns.search) rows.search[r] = {c.search_first, c.search_second, c.has_search};
-  if (rows.columns.rolling) rows.rolling[r] = c.rolling_torque;
-  rows.formed_cycle[r] = c.formed_cycle;
+  for_each_kept_field<Dim>(rows, r, [&](const ContactFieldInfo&, auto field, auto& value) { value = field(c); });
 }
 
 void check(bool ok, const std::string& message) {
@@ -77,8 +55,14 @@ template <int Dim>
 void restore_contact_table(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) {
   const Particles<Dim>& p = s.particles;
   const auto n = static_cast<ParticleId>(p.size());
+  // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on "(" + std::string once inlined here.
   auto name = [](const ContactSnapshotT<Dim>& c) {
-    return "(" + std::to_string(c.first) + ", " + std::to_string(c.second) + ")";
+    std::string text = "(";
+    text += std::to_string(c.first);
+    text += ", ";
+    text += std::to_string(c.second);
+    text += ")";
+    return text;
   };
   auto key = [&](const ContactSnapshotT<Dim>& c) {
     return ContactKey{p.slot[c.first], c.with_wall ? c.second : p.slot[c.second]};

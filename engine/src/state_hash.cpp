@@ -1,6 +1,7 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "contact_fields.h"
 #include "world_state.h"
 
 namespace dem {
@@ -35,21 +36,18 @@ class Hasher {
   std::uint64_t hash_ = 14695981039346656037ULL;
 };
 
-// Every touching row's key (by particle id) and history.
+// Every touching row's key (by particle id), then its hashed fields in the
+// order of the field list (dem/snapshot.h), each only where the table keeps
+// its column.
 template <int Dim>
 void add_rows(Hasher& h, const ContactRows<Dim>& rows, const Particles<Dim>& p, bool wall) {
   for (std::size_t r = 0; r < rows.size(); ++r) {
     if (!rows.touching(r)) continue;
     h.add(p.id[rows.first[r]]);
     h.add(wall ? rows.second[r] : p.id[rows.second[r]]);
-    h.add(rows.shear[r]);
-    if (rows.columns.normal_force) h.add(rows.normal_force[r]);
-    if (rows.columns.rolling) h.add(rows.rolling[r]);
-    if (rows.columns.mindlin) {
-      h.add(rows.mindlin[r].history.t_star);
-      h.add(rows.mindlin[r].history.t_star2);
-      h.add(rows.mindlin[r].history.lag);
-    }
+    for_each_kept_field<Dim>(rows, r, [&](const ContactFieldInfo& info, auto, const auto& value) {
+      if (info.hashed) h.add(value);
+    });
   }
 }
 

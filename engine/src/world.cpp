@@ -1,25 +1,18 @@
 #include "dem/world.h"
 
-#include <omp.h>
-
 #include <algorithm>
-#include <array>
 #include <cassert>
 #include <chrono>
 #include <cmath>
-#include <numbers>
 #include <string>
 
-#include "box_control.h"
 #include "broad_phase.h"
 #include "contact_forces.h"
-#include "contact_laws.h"
 #include "dem/error.h"
-#include "ellipsoid.h"
 #include "motion.h"
 #include "particle_order.h"
 #include "rolling_resistance.h"
-#include "superquadric.h"
+#include "world_build.h"
 #include "world_state.h"
 #include "world_validation.h"
 
@@ -97,175 +90,6 @@ void step(WorldState<Dim>& s, bool keep, bool check) {
 // contact-table rebuild): they drift apart in memory as the assembly flows.
 constexpr std::uint64_t kResortCycles = 1000;
 
-// 0 means what OpenMP would use: OMP_NUM_THREADS if set, else every core.
-int resolve_threads(int threads) { return threads > 0 ? threads : std::max(1, omp_get_max_threads()); }
-
-// Mass and moment of inertia: discs of unit thickness (Cundall & Strack)
-// or spheres, in the plane (Randall 1989, 4.4) or in space.
-struct MassProperties {
-  double mass, inertia;
-};
-MassProperties mass_properties(double density, double radius, bool disc) {
-  if (disc) {
-    const double m = density * std::numbers::pi * radius * radius;
-    return {m, 0.5 * m * radius * radius};
-  }
-  const double m = density * 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
-  return {m, 0.4 * m * radius * radius};
-}
-
-// The columns a table needs for its law, the particles' shape and the energy budget.
-ContactColumns columns_for(ContactLaw law, ShapeKind shape, bool energy_budget) {
-  return {law == ContactLaw::kLinear || law == ContactLaw::kHertzMindlin, law == ContactLaw::kHertzMindlin,
-          shape != ShapeKind::kRound, energy_budget};
-}
-
-template <int Dim>
-void add_particles(WorldState<Dim>& s, const WorldDefT<Dim>& def) {
-  Particles<Dim>& p = s.particles;
-  const bool discs = Dim == 2 && def.planar_particle == PlanarParticle::kDisc;
-  const std::size_t n = def.particles.size();
-  const bool shaped = [&] {
-    if constexpr (Dim == 2) {
-      return def.particles[0].shape.superquadric();
-    } else {
-      return def.particles[0].shape.ellipsoid();
-    }
-  }();
-  p.position.reserve(n);
-  // A superquadric's bounding radius samples its boundary 4,096 times
-  // (superquadric_bounding_radius); the particles of a packing's size class
-  // share one shape, so the last shape's radius is kept for the next.
-  std::array<double, 3> bounded_shape{0.0, 0.0, 0.0};
-  double bounding_radius = 0.0;
-  for (const ParticleDefT<Dim>& d : def.particles) {
-    const double density = s.materials[d.material].density;
-    MassProperties mp = mass_properties(density, d.radius, discs);
-    double radius = d.radius;
-    Orientation<Dim> rotation = Space<Dim>::identity();
-    if constexpr (Dim == 2) {
-      if (d.shape.superquadric()) {
-        // Unit thickness; the bounding circle serves the broad phase.
-        const SuperquadricMass m = superquadric_mass({d.shape.a, d.shape.b, d.shape.n});
-        mp = {density * m.area, density * m.polar_moment};
-        const std::array<double, 3> shape{d.shape.a, d.shape.b, d.shape.n};
-        if (shape != bounded_shape || bounding_radius == 0.0) {
-          bounded_shape = shape;
-          bounding_radius = superquadric_bounding_radius({d.shape.a, d.shape.b, d.shape.n});
-        }
-        radius = bounding_radius;
-        rotation = d.shape.angle;
-        s.shape = ShapeKind::kSuperquadric;
-      }
-    } else {
-      if (d.shape.ellipsoid()) {
-        // The bounding sphere serves the broad phase; the smallest principal
-        // moment the time-step estimate.
-        const EllipsoidMass m = ellipsoid_mass(d.shape.axes);
-        const Vec3 principal = density * m.principal_moments;
-        mp = {density * m.volume, principal.minCoeff()};
-        radius = d.shape.axes.maxCoeff();
-        rotation = d.shape.orientation.normalized();
-        s.shape = ShapeKind::kEllipsoid;
-        p.principal_inertia.push_back(principal);
-      }
-    }
-    p.position.push_back(d.position);
-    p.velocity.push_back(d.velocity);
-    p.angular_velocity.push_back(d.angular_velocity);
-    p.rotation.push_back(rotation);
-    p.radius.push_back(radius);
-    p.mass.push_back(mp.mass);
-    p.inertia.push_back(mp.inertia);
-    p.material.push_back(d.material);
-    if (shaped) p.shape.push_back(d.shape);
-  }
-  p.force.assign(n, Vec<Dim>::Zero());
-  p.moment.assign(n, Space<Dim>::zero_spin());
-  p.previous_force.assign(n, 0.0);
-  p.reference_position = p.position;
-  p.id.resize(n);
-  for (std::size_t i = 0; i < n; ++i) p.id[i] = static_cast<ParticleId>(i);
-  p.index_ids();
-  for (Vec<Dim>& x : p.position) s.periodic.wrap(x);
-}
-
-template <int Dim>
-void add_walls(WorldState<Dim>& s, const WorldDefT<Dim>& def) {
-  Walls<Dim>& w = s.walls;
-  w.def = def.walls;
-  for (const WallDefT<Dim>& wall : def.walls) w.initial_point.push_back(wall.point);
-  const std::size_t walls = def.walls.size();
-  w.last_velocity.assign(walls, Vec<Dim>::Zero());
-  w.last_angular_velocity.assign(walls, Space<Dim>::zero_spin());
-  w.force.assign(walls, Vec<Dim>::Zero());
-  w.moment.assign(walls, Space<Dim>::zero_spin());
-  w.normal_force.assign(walls, 0.0);
-  w.contacts.assign(walls, 0);
-  w.normal_force_arm.assign(walls, zero_eccentricity<Dim>());
-}
-
-// Builds the state a definition describes, up to (not including) the first
-// contact search and force pass.
-template <int Dim>
-void build(WorldState<Dim>& s, const WorldDefT<Dim>& def) {
-  validate_world(def);
-  s.materials = def.materials;
-  s.contact_models = def.contact_models;
-  s.damping = def.damping;
-  s.gravity = def.gravity;
-  s.planar_particle = def.planar_particle;
-  s.energy_budget = def.energy_budget;
-  s.threads = resolve_threads(def.threads);
-  s.params = ContactParamTable(s.materials, s.contact_models, s.damping);
-  s.periodic_def = def.periodic;
-  s.periodic = Periodic<Dim>::from(def.periodic);
-  add_particles(s, def);
-  add_walls(s, def);
-  const Particles<Dim>& p = s.particles;
-  const auto n = static_cast<double>(p.size());
-  double radius_sum = 0.0;
-  for (double r : p.radius) radius_sum += r;
-  // Stresses on 2D walls: discs have unit thickness; spheres in the plane
-  // are taken as a layer one mean diameter deep (Randall 1989, 4.4).
-  const bool discs = Dim == 2 && def.planar_particle == PlanarParticle::kDisc;
-  s.depth = discs || Dim == 3 ? 1.0 : 2.0 * radius_sum / n;
-  s.walls.depth = s.depth;
-  if (def.box_control) {
-    check_box_control(*def.box_control, def.walls);
-    s.walls.box = def.box_control;
-    if (!(s.walls.box->reference_extent.array() > 0.0).all()) {
-      s.walls.box->reference_extent = box_extent(s.walls, *s.walls.box);
-    }
-  }
-
-  std::vector<MaterialId> wall_materials;
-  for (const WallDefT<Dim>& w : def.walls) wall_materials.push_back(w.material);
-  const WorldLaws laws = resolve_contact_laws(s.materials, s.params, p.material, wall_materials);
-  s.pair_law = laws.pair;
-  s.wall_law = laws.wall;
-  s.contacts.pairs.columns = columns_for(s.pair_law, s.shape, s.energy_budget);
-  s.contacts.walls.columns = columns_for(s.wall_law, s.shape, s.energy_budget);
-  s.rolling = needs_rolling_resistance(s);
-  s.contacts.pairs.columns.rolling = s.contacts.walls.columns.rolling = s.rolling;
-
-  s.contact_tolerance = def.contact_tolerance > 0.0 ? def.contact_tolerance : 0.1 * radius_sum / n;
-  // Nearest images are unique only while a period holds two interaction ranges.
-  const double reach = 2.0 * *std::max_element(p.radius.begin(), p.radius.end()) + s.contact_tolerance;
-  for (int d = 0; d < Dim; ++d) {
-    check(!s.periodic.repeats(d) || s.periodic.length[d] > 2.0 * reach,
-          "periodic: the period along axis " + std::to_string(d) +
-              " must exceed twice the largest diameter plus "
-              "the contact tolerance (" +
-              std::to_string(2.0 * reach) + ")");
-  }
-  s.critical_time_step = estimate_critical_time_step(s);
-  s.time_step_fraction = def.time_step_fraction;
-  s.fixed_time_step = def.fixed_time_step;
-  s.time_step = def.fixed_time_step > 0.0 ? def.fixed_time_step : def.time_step_fraction * s.critical_time_step;
-  check(std::isfinite(s.time_step) && s.time_step > 0.0, "world: cannot determine a time step");
-}
-
 }  // namespace
 
 template <int Dim>
@@ -293,7 +117,7 @@ void find_contacts(WorldState<Dim>& s) {
 template <int Dim>
 BasicWorld<Dim>::BasicWorld(const Def& def) : state_(std::make_unique<WorldState<Dim>>()) {
   WorldState<Dim>& s = *state_;
-  build(s, def);
+  build_world(s, def);
   // The contacts and forces of cycle 0, for the first step's motion.
   find_contacts(s);
   book(s, advance_contacts(s));
@@ -303,7 +127,7 @@ BasicWorld<Dim>::BasicWorld(const Def& def) : state_(std::make_unique<WorldState
 
 template <int Dim>
 BasicWorld<Dim>::BasicWorld(const Snapshot& snapshot) : state_(std::make_unique<WorldState<Dim>>()) {
-  build(*state_, snapshot.def);
+  build_world(*state_, snapshot.def);
   restore_snapshot(*state_, snapshot);
 }
 
@@ -370,10 +194,7 @@ const WallDefT<Dim>& BasicWorld<Dim>::wall(WallId id) const {
 template <int Dim>
 void BasicWorld<Dim>::set_wall_motion(WallId id, const Motion& motion) {
   assert(id >= 0 && id < wall_count());
-  if (motion.servo) {
-    check(motion.servo->gain > 0.0 && motion.servo->max_speed > 0.0,
-          "wall " + std::to_string(id) + ": servo gain and max_speed must be > 0");
-  }
+  check_wall_motion(motion, id);
   state_->walls.def[id].motion = motion;
 }
 
@@ -430,7 +251,7 @@ void BasicWorld<Dim>::set_damping(const DampingDef& damping) {
 
 template <int Dim>
 void BasicWorld<Dim>::set_time_step_fraction(double fraction) {
-  check(fraction > 0.0 && fraction <= 1.0, "time_step_fraction must be in (0, 1]");
+  check_time_step_fraction(fraction);
   state_->time_step_fraction = fraction;
   state_->fixed_time_step = 0.0;
   state_->time_step = fraction * state_->critical_time_step;
@@ -438,16 +259,14 @@ void BasicWorld<Dim>::set_time_step_fraction(double fraction) {
 
 template <int Dim>
 void BasicWorld<Dim>::set_fixed_time_step(double seconds) {
-  check(seconds > 0.0 && std::isfinite(seconds), "fixed time step must be a finite number > 0");
+  check_fixed_time_step(seconds);
   state_->fixed_time_step = seconds;
   state_->time_step = seconds;
 }
 
 template <int Dim>
 void BasicWorld<Dim>::set_friction(MaterialId material, double friction) {
-  check(material >= 0 && material < static_cast<MaterialId>(state_->materials.size()),
-        "unknown material id " + std::to_string(material));
-  check(friction >= 0.0 && std::isfinite(friction), "friction must be >= 0");
+  check_friction(material, state_->materials.size(), friction);
   state_->materials[material].friction = friction;
   state_->params = ContactParamTable(state_->materials, state_->contact_models, state_->damping);
 }

@@ -137,4 +137,42 @@ void validate_world(const WorldDefT<Dim>& def) {
 template void validate_world(const WorldDefT<2>&);
 template void validate_world(const WorldDefT<3>&);
 
+template <int Dim>
+void check_periodic_reach(const Periodic<Dim>& periodic, double max_radius, double contact_tolerance) {
+  const double reach = 2.0 * max_radius + contact_tolerance;
+  for (int d = 0; d < Dim; ++d) {
+    check(!periodic.repeats(d) || periodic.length[d] > 2.0 * reach, "periodic: the period along axis " +
+                                                                        std::to_string(d) +
+                                                                        " must exceed twice the largest diameter plus "
+                                                                        "the contact tolerance (" +
+                                                                        std::to_string(2.0 * reach) + ")");
+  }
+}
+template void check_periodic_reach(const Periodic<2>&, double, double);
+template void check_periodic_reach(const Periodic<3>&, double, double);
+
+template <int Dim>
+void check_wall_motion(const WallMotionT<Dim>& motion, WallId wall) {
+  if (motion.servo) {
+    check(motion.servo->gain > 0.0 && motion.servo->max_speed > 0.0,
+          "wall " + std::to_string(wall) + ": servo gain and max_speed must be > 0");
+  }
+}
+template void check_wall_motion(const WallMotionT<2>&, WallId);
+template void check_wall_motion(const WallMotionT<3>&, WallId);
+
+void check_time_step_fraction(double fraction) {
+  check(fraction > 0.0 && fraction <= 1.0, "time_step_fraction must be in (0, 1]");
+}
+
+void check_fixed_time_step(double seconds) {
+  check(seconds > 0.0 && std::isfinite(seconds), "fixed time step must be a finite number > 0");
+}
+
+void check_friction(MaterialId material, std::size_t materials, double friction) {
+  check(material >= 0 && static_cast<std::size_t>(material) < materials,
+        "unknown material id " + std::to_string(material));
+  check(friction >= 0.0 && std::isfinite(friction), "friction must be >= 0");
+}
+
 }  // namespace dem

@@ -2,9 +2,11 @@
 // problem is a DefinitionError naming the item and what is wrong.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include "dem/definitions.h"
+#include "periodic.h"
 
 namespace dem {
 
@@ -18,5 +20,19 @@ void check_damping(const DampingDef& damping);
 
 template <int Dim>
 void validate_world(const WorldDefT<Dim>& def);
+
+// Nearest images are unique only while a period holds two interaction
+// ranges: every repeating axis longer than twice (the largest diameter plus
+// the contact tolerance).
+template <int Dim>
+void check_periodic_reach(const Periodic<Dim>& periodic, double max_radius, double contact_tolerance);
+
+// The checks of a world's setters: a wall's new motion, the time step and a
+// material's friction.
+template <int Dim>
+void check_wall_motion(const WallMotionT<Dim>& motion, WallId wall);
+void check_time_step_fraction(double fraction);
+void check_fixed_time_step(double seconds);
+void check_friction(MaterialId material, std::size_t materials, double friction);
 
 }  // namespace dem

@@ -193,9 +193,9 @@ int loading_stage(const proto::Case& c) {
   return 0;
 }
 
-CompressionSettings to_compression(const proto::Case& c, const WallIndex& walls) {
+analysis::CompressionSettings to_compression(const proto::Case& c, const WallIndex& walls) {
   const proto::CompressionOutput& compression = c.output().compression();
-  CompressionSettings def;
+  analysis::CompressionSettings def;
   def.loading_plate = walls.at(compression.loading_plate());
   def.bottom_plate = walls.at(compression.bottom_plate());
   def.loading_stage = loading_stage(c);
@@ -205,7 +205,7 @@ CompressionSettings to_compression(const proto::Case& c, const WallIndex& walls)
   def.contacts_at_stress.assign(compression.contacts_at_stress().begin(), compression.contacts_at_stress().end());
   if (compression.has_force_distribution()) {
     const proto::ForceDistributionOutput& d = compression.force_distribution();
-    ForceDistributionSettings f;
+    analysis::ForceDistributionSettings f;
     f.stress_from = d.stress_from();
     f.stress_to = d.stress_to();
     if (d.snapshots() > 0) f.snapshots = static_cast<int>(d.snapshots());

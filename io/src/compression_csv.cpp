@@ -33,7 +33,7 @@ CompressionCsvT<Dim>::CompressionCsvT(const std::filesystem::path& directory, st
 }
 
 template <int Dim>
-void CompressionCsvT<Dim>::write_sample(const CompressionSample& s) {
+void CompressionCsvT<Dim>::write_sample(const dem::analysis::CompressionSample& s) {
   // Miyata Fig. 29: the loading plate's contacts over the bottom plate's.
   const double ratio = s.bottom_contacts > 0 ? static_cast<double>(s.loading_contacts) / s.bottom_contacts : 0.0;
   samples_.write_row(s.stage, s.cycle, s.time, s.settlement, s.stress, s.loading_contacts, s.bottom_stress,
@@ -42,13 +42,14 @@ void CompressionCsvT<Dim>::write_sample(const CompressionSample& s) {
 }
 
 template <int Dim>
-void CompressionCsvT<Dim>::write_plate_rows(const PlateSnapshotT<Dim>& snapshot, const std::string& plate,
-                                            const std::vector<PlateContactT<Dim>>& contacts,
-                                            const StateCycles& cycles) {
+void CompressionCsvT<Dim>::write_plate_rows(const dem::analysis::PlateSnapshotT<Dim>& snapshot,
+                                            const std::string& plate,
+                                            const std::vector<dem::analysis::PlateContactT<Dim>>& contacts,
+                                            const dem::analysis::StateCycles& cycles) {
   const double mean = mean_normal_force(contacts);
-  for (const PlateContactT<Dim>& c : contacts) {
+  for (const dem::analysis::PlateContactT<Dim>& c : contacts) {
     const double f = mean > 0.0 ? c.normal_force / mean : 0.0;
-    const std::string_view formed_in = state_name(state_at(c.formed_cycle, cycles));
+    const std::string_view formed_in = dem::analysis::state_name(dem::analysis::state_at(c.formed_cycle, cycles));
     if constexpr (Dim == 2) {
       contacts_.write_row(snapshot.index, snapshot.target_stress, snapshot.sample.cycle, snapshot.sample.stress, plate,
                           c.particle, c.point.x(), c.point.y(), c.normal_force, c.shear_force, f, c.formed_cycle,
@@ -62,38 +63,39 @@ void CompressionCsvT<Dim>::write_plate_rows(const PlateSnapshotT<Dim>& snapshot,
 }
 
 template <int Dim>
-void CompressionCsvT<Dim>::write_snapshot(const PlateSnapshotT<Dim>& snapshot, const StateCycles& cycles) {
+void CompressionCsvT<Dim>::write_snapshot(const dem::analysis::PlateSnapshotT<Dim>& snapshot,
+                                          const dem::analysis::StateCycles& cycles) {
   write_plate_rows(snapshot, loading_plate_, snapshot.loading, cycles);
   write_plate_rows(snapshot, bottom_plate_, snapshot.bottom, cycles);
   contacts_.flush();
 }
 
 template <int Dim>
-void CompressionCsvT<Dim>::write_results(const CompressionResults& r) {
+void CompressionCsvT<Dim>::write_results(const dem::analysis::CompressionResults& r) {
   {
     CsvFile states(directory_, "compression_states.csv",
                    "state,first_cycle,samples,stress_from,stress_to,settlement_from,settlement_to,secant_stiffness,"
                    "tangent_stiffness,r_squared,loading_contacts_from,loading_contacts_to,contact_rate");
-    for (const StateFit& s : r.states) {
-      states.write_row(state_name(s.state), s.first_cycle, s.samples, s.stress_from, s.stress_to, s.settlement_from,
-                       s.settlement_to, s.secant_stiffness, s.tangent_stiffness, s.r_squared, s.loading_contacts_from,
-                       s.loading_contacts_to, s.contact_rate);
+    for (const dem::analysis::StateFit& s : r.states) {
+      states.write_row(dem::analysis::state_name(s.state), s.first_cycle, s.samples, s.stress_from, s.stress_to,
+                       s.settlement_from, s.settlement_to, s.secant_stiffness, s.tangent_stiffness, s.r_squared,
+                       s.loading_contacts_from, s.loading_contacts_to, s.contact_rate);
     }
     files_.push_back(states.path());
   }
   {
     CsvFile drops(directory_, "stress_drops.csv",
                   "state,peak_cycle,trough_cycle,peak_settlement,peak_stress,trough_stress,relative_drop");
-    for (const StressDrop& d : r.drops) {
-      drops.write_row(state_name(d.state), d.peak_cycle, d.trough_cycle, d.peak_settlement, d.peak_stress,
-                      d.trough_stress, d.relative());
+    for (const dem::analysis::StressDrop& d : r.drops) {
+      drops.write_row(dem::analysis::state_name(d.state), d.peak_cycle, d.trough_cycle, d.peak_settlement,
+                      d.peak_stress, d.trough_stress, d.relative());
     }
     files_.push_back(drops.path());
   }
   // Fig. 30 two ways: by the state each contact formed in, and by the
   // order of formation (the seed's 40/30/30 % groups).
   const auto write_loads = [&](const char* name, const char* group_column,
-                               const std::array<std::array<StateLoad, 3>, 2>& groups) {
+                               const std::array<std::array<dem::analysis::StateLoad, 3>, 2>& groups) {
     CsvFile loads(directory_, name,
                   std::string("plate,") + group_column +
                       ",contacts,contact_share,load,load_share,first_formed_cycle,last_formed_cycle,stress");
@@ -101,12 +103,12 @@ void CompressionCsvT<Dim>::write_results(const CompressionResults& r) {
     for (std::size_t p = 0; p < 2; ++p) {
       int contacts = 0;
       double load = 0.0;
-      for (const StateLoad& s : groups[p]) {
+      for (const dem::analysis::StateLoad& s : groups[p]) {
         contacts += s.contacts;
         load += s.load;
       }
-      for (const StateLoad& s : groups[p]) {
-        loads.write_row(*names[p], state_name(s.state), s.contacts,
+      for (const dem::analysis::StateLoad& s : groups[p]) {
+        loads.write_row(*names[p], dem::analysis::state_name(s.state), s.contacts,
                         contacts > 0 ? static_cast<double>(s.contacts) / contacts : 0.0, s.load,
                         load > 0.0 ? s.load / load : 0.0, s.first_formed, s.last_formed, r.last.stress);
       }
@@ -123,37 +125,42 @@ void CompressionCsvT<Dim>::write_results(const CompressionResults& r) {
                 "q_model_decay_rate,mueth_decay_rate");
   const std::string* names[] = {&loading_plate_, &bottom_plate_};
   for (std::size_t p = 0; p < 2; ++p) {
-    const PlateForceDistribution& d = (*r.force_distribution)[p];
-    for (const ForceClass& c : d.classes) {
+    const dem::analysis::PlateForceDistribution& d = (*r.force_distribution)[p];
+    for (const dem::analysis::ForceClass& c : d.classes) {
       const double width = c.f_high - c.f_low, middle = 0.5 * (c.f_low + c.f_high);
       classes.write_row(*names[p], c.f_low, c.f_high, c.contacts, c.probability_density, c.load_share,
-                        c.load_share / width, q_model_density(middle, kQModelNeighbours), mueth_density(middle));
+                        c.load_share / width, dem::analysis::q_model_density(middle, kQModelNeighbours),
+                        dem::analysis::mueth_density(middle));
     }
     const double from = d.tail.from;
     tails.write_row(*names[p], d.snapshots, d.contacts, d.mean_force, from, d.tail.contacts, d.tail.decay_rate,
                     d.tail.decay_rate_error, d.tail.excess_cv,
-                    tail_decay_rate([](double f) { return q_model_density(f, kQModelNeighbours); }, from),
-                    tail_decay_rate([](double f) { return mueth_density(f); }, from));
+                    dem::analysis::tail_decay_rate(
+                        [](double f) { return dem::analysis::q_model_density(f, kQModelNeighbours); }, from),
+                    dem::analysis::tail_decay_rate([](double f) { return dem::analysis::mueth_density(f); }, from));
   }
   files_.push_back(classes.path());
   files_.push_back(tails.path());
 }
 
 template <int Dim>
-void record_compression(CompressionAnalysisT<Dim>& analysis, CompressionCsvT<Dim>& csv, const BasicWorld<Dim>& world,
-                        int stage) {
+void record_compression(dem::analysis::CompressionAnalysisT<Dim>& analysis, CompressionCsvT<Dim>& csv,
+                        const BasicWorld<Dim>& world, int stage) {
   const std::size_t before = analysis.samples().size();
-  const std::vector<const PlateSnapshotT<Dim>*> taken = analysis.add(world, stage);
+  const std::vector<const dem::analysis::PlateSnapshotT<Dim>*> taken = analysis.add(world, stage);
   if (analysis.samples().size() == before) return;
   csv.write_sample(analysis.samples().back());
-  const CompressionSettings& s = analysis.settings();
-  const StateCycles cycles = state_cycles(analysis.samples(), s.transition_stress, s.final_stress);
-  for (const PlateSnapshotT<Dim>* snapshot : taken) csv.write_snapshot(*snapshot, cycles);
+  const dem::analysis::CompressionSettings& s = analysis.settings();
+  const dem::analysis::StateCycles cycles =
+      dem::analysis::state_cycles(analysis.samples(), s.transition_stress, s.final_stress);
+  for (const dem::analysis::PlateSnapshotT<Dim>* snapshot : taken) csv.write_snapshot(*snapshot, cycles);
 }
 
 template class CompressionCsvT<2>;
 template class CompressionCsvT<3>;
-template void record_compression(CompressionAnalysisT<2>&, CompressionCsvT<2>&, const BasicWorld<2>&, int);
-template void record_compression(CompressionAnalysisT<3>&, CompressionCsvT<3>&, const BasicWorld<3>&, int);
+template void record_compression(dem::analysis::CompressionAnalysisT<2>&, CompressionCsvT<2>&, const BasicWorld<2>&,
+                                 int);
+template void record_compression(dem::analysis::CompressionAnalysisT<3>&, CompressionCsvT<3>&, const BasicWorld<3>&,
+                                 int);
 
 }  // namespace dem::io

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "dem/io/compression_settings.h"
+#include "dem/analysis/compression_settings.h"
 #include "field_path.h"
 #include "format_number.h"
 
@@ -39,7 +39,7 @@ void check_compression_output(const proto::CompressionOutput& c, const NameIndex
   }
   const bool transition_ok = problems.non_negative(path + ".transition_stress", c.transition_stress());
   const bool final_ok = problems.non_negative(path + ".final_stress", c.final_stress());
-  const CompressionSettings defaults;
+  const analysis::CompressionSettings defaults;
   const double transition = c.transition_stress() > 0 ? c.transition_stress() : defaults.transition_stress;
   const double final_stress = c.final_stress() > 0 ? c.final_stress() : defaults.final_stress;
   if (transition_ok && final_ok && !(final_stress > transition)) {

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "dem/io/compression_analysis.h"
+#include "dem/analysis/compression_analysis.h"
 #include "format_number.h"
 
 namespace dem::io {
@@ -40,7 +40,7 @@ void put(std::string& out, double value) { out += format_number(value) + ' '; }
 void put(std::string& out, std::uint64_t value) { out += std::to_string(value) + ' '; }
 void put(std::string& out, int value) { out += std::to_string(value) + ' '; }
 
-void put_sample(std::string& out, const CompressionSample& s) {
+void put_sample(std::string& out, const analysis::CompressionSample& s) {
   put(out, s.stage);
   put(out, s.cycle);
   put(out, s.time);
@@ -52,8 +52,8 @@ void put_sample(std::string& out, const CompressionSample& s) {
   out += '\n';
 }
 
-CompressionSample get_sample(Reader& in) {
-  CompressionSample s;
+analysis::CompressionSample get_sample(Reader& in) {
+  analysis::CompressionSample s;
   s.stage = in.next<int>();
   s.cycle = in.next<std::uint64_t>();
   s.time = in.next<double>();
@@ -66,10 +66,10 @@ CompressionSample get_sample(Reader& in) {
 }
 
 template <int Dim>
-void put_contacts(std::string& out, const std::vector<PlateContactT<Dim>>& contacts) {
+void put_contacts(std::string& out, const std::vector<analysis::PlateContactT<Dim>>& contacts) {
   put(out, static_cast<std::uint64_t>(contacts.size()));
   out += '\n';
-  for (const PlateContactT<Dim>& c : contacts) {
+  for (const analysis::PlateContactT<Dim>& c : contacts) {
     put(out, c.particle);
     for (int d = 0; d < Dim; ++d) put(out, c.point[d]);
     put(out, c.normal_force);
@@ -80,9 +80,9 @@ void put_contacts(std::string& out, const std::vector<PlateContactT<Dim>>& conta
 }
 
 template <int Dim>
-std::vector<PlateContactT<Dim>> get_contacts(Reader& in) {
-  std::vector<PlateContactT<Dim>> contacts(in.next<std::uint64_t>());
-  for (PlateContactT<Dim>& c : contacts) {
+std::vector<analysis::PlateContactT<Dim>> get_contacts(Reader& in) {
+  std::vector<analysis::PlateContactT<Dim>> contacts(in.next<std::uint64_t>());
+  for (analysis::PlateContactT<Dim>& c : contacts) {
     c.particle = in.next<int>();
     for (int d = 0; d < Dim; ++d) c.point[d] = in.next<double>();
     c.normal_force = in.next<double>();
@@ -93,6 +93,18 @@ std::vector<PlateContactT<Dim>> get_contacts(Reader& in) {
 }
 
 }  // namespace
+}  // namespace dem::io
+
+// The accumulator is analysis's (dem/analysis/compression_analysis.h); its
+// state as text is written and read here, beside the other checkpoint I/O.
+namespace dem::analysis {
+
+using io::get_contacts;
+using io::get_sample;
+using io::put;
+using io::put_contacts;
+using io::put_sample;
+using io::Reader;
 
 template <int Dim>
 std::string CompressionAnalysisT<Dim>::state() const {
@@ -142,4 +154,4 @@ template std::string CompressionAnalysisT<3>::state() const;
 template void CompressionAnalysisT<2>::restore(std::string_view);
 template void CompressionAnalysisT<3>::restore(std::string_view);
 
-}  // namespace dem::io
+}  // namespace dem::analysis

@@ -39,7 +39,7 @@ template <int Dim>
 void OutputRecorder::make_compression(const BasicWorld<Dim>& world) {
   const io::TableSizes* tables = resume_ ? &resume_->tables : nullptr;
   compression<Dim>().reset(
-      new Compression<Dim>{io::CompressionAnalysisT<Dim>(*compression_settings_),
+      new Compression<Dim>{dem::analysis::CompressionAnalysisT<Dim>(*compression_settings_),
                            io::CompressionCsvT<Dim>(directory_, world.wall(compression_settings_->loading_plate).name,
                                                     world.wall(compression_settings_->bottom_plate).name, tables)});
   if (resume_ && !resume_->analysis.empty()) compression<Dim>()->analysis.restore(resume_->analysis);
@@ -47,7 +47,7 @@ void OutputRecorder::make_compression(const BasicWorld<Dim>& world) {
 
 template <int Dim>
 void OutputRecorder::start(const std::string& case_name, const BasicWorld<Dim>& world,
-                           std::optional<io::CompressionSettings> compression, std::uint64_t vtk_interval,
+                           std::optional<dem::analysis::CompressionSettings> compression, std::uint64_t vtk_interval,
                            const io::ResumePoint* resume, const std::vector<io::MeasurementRegion>& regions) {
   close();
   directory_ = case_directory_of(output_directory_, case_name);
@@ -257,10 +257,12 @@ void OutputRecorder::close() {
   resume_.reset();
 }
 
-template void OutputRecorder::start(const std::string&, const BasicWorld<2>&, std::optional<io::CompressionSettings>,
-                                    std::uint64_t, const io::ResumePoint*, const std::vector<io::MeasurementRegion>&);
-template void OutputRecorder::start(const std::string&, const BasicWorld<3>&, std::optional<io::CompressionSettings>,
-                                    std::uint64_t, const io::ResumePoint*, const std::vector<io::MeasurementRegion>&);
+template void OutputRecorder::start(const std::string&, const BasicWorld<2>&,
+                                    std::optional<dem::analysis::CompressionSettings>, std::uint64_t,
+                                    const io::ResumePoint*, const std::vector<io::MeasurementRegion>&);
+template void OutputRecorder::start(const std::string&, const BasicWorld<3>&,
+                                    std::optional<dem::analysis::CompressionSettings>, std::uint64_t,
+                                    const io::ResumePoint*, const std::vector<io::MeasurementRegion>&);
 template void OutputRecorder::record(const BasicWorld<2>&, std::optional<std::size_t>);
 template void OutputRecorder::record(const BasicWorld<3>&, std::optional<std::size_t>);
 template void OutputRecorder::finish(const BasicWorld<2>&);

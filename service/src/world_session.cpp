@@ -55,7 +55,7 @@ template <int Dim>
 class WorldSessionT final : public WorldSession {
  public:
   WorldSessionT(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages,
-                std::optional<io::CompressionSettings> compression, std::uint64_t vtk_interval,
+                std::optional<analysis::CompressionSettings> compression, std::uint64_t vtk_interval,
                 std::vector<io::MeasurementRegion> regions)
       : world_(std::move(world)),
         health_(world_),
@@ -181,7 +181,7 @@ class WorldSessionT final : public WorldSession {
   BasicWorld<Dim> world_;
   HealthMonitorT<Dim> health_;
   std::vector<StageDefT<Dim>> stages_;
-  std::optional<io::CompressionSettings> compression_;
+  std::optional<analysis::CompressionSettings> compression_;
   std::uint64_t vtk_interval_;
   std::vector<io::MeasurementRegion> region_settings_;
   std::vector<analysis::RegionT<Dim>> regions_;
@@ -191,17 +191,17 @@ class WorldSessionT final : public WorldSession {
 
 template <int Dim>
 std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages,
-                                           std::optional<io::CompressionSettings> compression,
+                                           std::optional<analysis::CompressionSettings> compression,
                                            std::uint64_t vtk_interval, std::vector<io::MeasurementRegion> regions) {
   return std::make_unique<WorldSessionT<Dim>>(std::move(world), std::move(stages), std::move(compression), vtk_interval,
                                               std::move(regions));
 }
 
 template std::unique_ptr<WorldSession> make_session<2>(BasicWorld<2>, std::vector<StageDefT<2>>,
-                                                       std::optional<io::CompressionSettings>, std::uint64_t,
+                                                       std::optional<analysis::CompressionSettings>, std::uint64_t,
                                                        std::vector<io::MeasurementRegion>);
 template std::unique_ptr<WorldSession> make_session<3>(BasicWorld<3>, std::vector<StageDefT<3>>,
-                                                       std::optional<io::CompressionSettings>, std::uint64_t,
+                                                       std::optional<analysis::CompressionSettings>, std::uint64_t,
                                                        std::vector<io::MeasurementRegion>);
 
 }  // namespace dem::service

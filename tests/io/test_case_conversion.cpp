@@ -642,9 +642,9 @@ TEST_F(SuperquadricConversion, ASmoothTrimKeepsTheDefaultWavelength) {
 }
 
 TEST_F(SuperquadricConversion, CompressionOutputWithItsDefaults) {
-  const std::optional<CompressionSettings> compression = convert_case(case_).output.compression;
+  const std::optional<analysis::CompressionSettings> compression = convert_case(case_).output.compression;
   ASSERT_TRUE(compression);
-  const CompressionSettings defaults;
+  const analysis::CompressionSettings defaults;
   EXPECT_EQ(compression->loading_plate, 1);
   EXPECT_EQ(compression->bottom_plate, 0);
   EXPECT_EQ(compression->loading_stage, 2);  // the stage that places the plate
@@ -666,7 +666,7 @@ TEST_F(SuperquadricConversion, CompressionOutputAsTheCaseSetsIt) {
   out.mutable_force_distribution()->set_stress_to(600e3);
   out.mutable_force_distribution()->set_bin_width(0.2);
   case_.mutable_stage(2)->clear_place_wall();
-  const CompressionSettings compression = *convert_case(case_).output.compression;
+  const analysis::CompressionSettings compression = *convert_case(case_).output.compression;
   EXPECT_EQ(compression.loading_stage, 0);  // no stage places the plate
   EXPECT_EQ(compression.transition_stress, 40e3);
   EXPECT_EQ(compression.final_stress, 300e3);

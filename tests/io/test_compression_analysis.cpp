@@ -9,7 +9,7 @@
 #include <numeric>
 #include <string>
 
-#include "dem/io/compression_analysis.h"
+#include "dem/analysis/compression_analysis.h"
 #include "dem/io/compression_csv.h"
 #include "dem/programme.h"
 #include "io_test_support.h"
@@ -47,15 +47,15 @@ WorldDef row_of_discs() {
   return def;
 }
 
-CompressionSettings settings() {
-  CompressionSettings s;
+dem::analysis::CompressionSettings settings() {
+  dem::analysis::CompressionSettings s;
   s.loading_plate = 1;
   s.bottom_plate = 0;
   s.loading_stage = 1;
   s.transition_stress = 2000;
   s.final_stress = 5000;
   s.contacts_at_stress = {500, 8000};
-  s.force_distribution = ForceDistributionSettings{7000, 8500, 4, 0.25, 1.0};
+  s.force_distribution = dem::analysis::ForceDistributionSettings{7000, 8500, 4, 0.25, 1.0};
   return s;
 }
 
@@ -77,15 +77,15 @@ class CompressionAnalysisTest : public ::testing::Test {
     });
   }
 
-  using PlateSnapshot = PlateSnapshotT<2>;
+  using PlateSnapshot = dem::analysis::PlateSnapshotT<2>;
   World world_{row_of_discs()};
-  CompressionAnalysis analysis_{settings()};
+  dem::analysis::CompressionAnalysis analysis_{settings()};
   std::vector<int> taken_;
 };
 
 TEST_F(CompressionAnalysisTest, SamplesThePlatesFromTheLoadingStageOn) {
   run();
-  const std::vector<CompressionSample>& samples = analysis_.samples();
+  const std::vector<dem::analysis::CompressionSample>& samples = analysis_.samples();
   ASSERT_EQ(samples.size(), 170u);
   EXPECT_EQ(samples.front().stage, 1);
   EXPECT_EQ(samples.front().cycle, 20u);
@@ -100,7 +100,7 @@ TEST_F(CompressionAnalysisTest, SamplesThePlatesFromTheLoadingStageOn) {
 
 TEST_F(CompressionAnalysisTest, ContactsFormInTheirStates) {
   run();
-  const CompressionResults r = analysis_.results(world_);
+  const dem::analysis::CompressionResults r = analysis_.results(world_);
   ASSERT_TRUE(r.state_cycles.transition && r.state_cycles.final);
   const auto& top = r.load_by_state[0];
   EXPECT_EQ(top[0].contacts, 3);
@@ -127,16 +127,16 @@ TEST_F(CompressionAnalysisTest, ContactsFormInTheirStates) {
 // "between 40 and 70 %" and "between 70 and 100 %", whatever order the
 // engine lists them in; ties in the cycle go by particle id.
 TEST(LoadByFormationOrder, GroupsTheFirst40TheNext30AndTheLast30Percent) {
-  std::vector<PlateContactT<2>> contacts;
+  std::vector<dem::analysis::PlateContactT<2>> contacts;
   const std::uint64_t formed[] = {90, 10, 50, 30, 70, 20, 100, 40, 60, 80};
   for (int k = 0; k < 10; ++k) {
-    PlateContactT<2> c;
+    dem::analysis::PlateContactT<2> c;
     c.particle = 9 - k;
     c.normal_force = static_cast<double>(formed[k]);  // load = the cycle, to read off the groups
     c.formed_cycle = formed[k];
     contacts.push_back(c);
   }
-  const auto groups = load_by_formation_order<2>(contacts);
+  const auto groups = dem::analysis::load_by_formation_order<2>(contacts);
   EXPECT_EQ(groups[0].contacts, 4);
   EXPECT_EQ(groups[1].contacts, 3);
   EXPECT_EQ(groups[2].contacts, 3);
@@ -146,14 +146,14 @@ TEST(LoadByFormationOrder, GroupsTheFirst40TheNext30AndTheLast30Percent) {
   EXPECT_EQ(groups[0].first_formed, 10u);
   EXPECT_EQ(groups[2].last_formed, 100u);
   // Three contacts formed in one cycle: the lower particle id ranks first.
-  std::vector<PlateContactT<2>> tied(3);
+  std::vector<dem::analysis::PlateContactT<2>> tied(3);
   for (int k = 0; k < 3; ++k) {
     tied[k].particle = 2 - k;
     tied[k].formed_cycle = 5;
     tied[k].normal_force = 1.0 + k;
   }
   // Of three, ranks 0 and 1 are initial (10k < 12), rank 2 transition (20 < 21).
-  const auto tie_groups = load_by_formation_order<2>(tied);
+  const auto tie_groups = dem::analysis::load_by_formation_order<2>(tied);
   EXPECT_EQ(tie_groups[0].contacts, 2);
   EXPECT_DOUBLE_EQ(tie_groups[0].load, 3.0 + 2.0);  // particles 0 and 1
   EXPECT_EQ(tie_groups[1].contacts, 1);
@@ -181,14 +181,14 @@ TEST_F(CompressionAnalysisTest, SnapshotsAtTheirStresses) {
 
 TEST_F(CompressionAnalysisTest, ForceDistributionPoolsTheSnapshots) {
   run();
-  const CompressionResults r = analysis_.results(world_);
+  const dem::analysis::CompressionResults r = analysis_.results(world_);
   ASSERT_TRUE(r.force_distribution);
-  for (const PlateForceDistribution& d : *r.force_distribution) {
+  for (const dem::analysis::PlateForceDistribution& d : *r.force_distribution) {
     EXPECT_EQ(d.snapshots, 4);
     EXPECT_EQ(d.contacts, 20);
     EXPECT_NEAR(std::accumulate(d.f.begin(), d.f.end(), 0.0) / d.contacts, 1.0, 1e-12);
     int counted = 0;
-    for (const ForceClass& c : d.classes) counted += c.contacts;
+    for (const dem::analysis::ForceClass& c : d.classes) counted += c.contacts;
     EXPECT_EQ(counted, 20);
   }
   // The three tall discs carry more than the mean, the two short ones less.
@@ -200,7 +200,7 @@ TEST_F(CompressionAnalysisTest, WritesTheFilesWithTheirColumns) {
   {
     CompressionCsv csv(directory, "top", "bottom");
     run();
-    for (const CompressionSample& s : analysis_.samples()) csv.write_sample(s);
+    for (const dem::analysis::CompressionSample& s : analysis_.samples()) csv.write_sample(s);
     for (const PlateSnapshot& s : analysis_.snapshots()) csv.write_snapshot(s, {});
     csv.write_results(analysis_.results(world_));
     EXPECT_EQ(csv.files().size(), 8u);
@@ -258,12 +258,12 @@ TEST(CompressionAnalysis3d, EllipsoidsUnderAPlate) {
   def.threads = 1;
   World3 world(def);
 
-  CompressionSettings s;
+  dem::analysis::CompressionSettings s;
   s.loading_plate = 1;
   s.bottom_plate = 0;
   s.loading_stage = 1;
   s.contacts_at_stress = {500};
-  CompressionAnalysis3 analysis(s);
+  dem::analysis::CompressionAnalysis3 analysis(s);
   const std::filesystem::path directory = test::fresh_directory("compression_csv_3d");
   {
     CompressionCsv3 csv(directory, "top", "bottom");
@@ -286,7 +286,8 @@ TEST(CompressionAnalysis3d, EllipsoidsUnderAPlate) {
   EXPECT_EQ(analysis.samples().back().bottom_contacts, 4);
   ASSERT_EQ(analysis.snapshots().size(), 1u);
   const double plate_z = world.wall(1).point.z();
-  for (const PlateContactT<3>& c : analysis.snapshots()[0].loading) EXPECT_NEAR(c.point.z(), plate_z, 1e-3);
+  for (const dem::analysis::PlateContactT<3>& c : analysis.snapshots()[0].loading)
+    EXPECT_NEAR(c.point.z(), plate_z, 1e-3);
   std::ifstream in(directory / "plate_contacts.csv");
   std::string header;
   std::getline(in, header);

@@ -47,7 +47,7 @@ void expect_verdict(const Reduced& r) {
 // The reduced 2D cases ask for ten force distribution snapshots.
 void expect_force_distribution(const Reduced& r) {
   ASSERT_TRUE(r.run.results.force_distribution.has_value());
-  for (const io::PlateForceDistribution& d : *r.run.results.force_distribution) EXPECT_EQ(d.snapshots, 10);
+  for (const analysis::PlateForceDistribution& d : *r.run.results.force_distribution) EXPECT_EQ(d.snapshots, 10);
 }
 
 TEST(MiyataCompression, CirclesSmoothSurface) {

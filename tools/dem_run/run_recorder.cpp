@@ -20,7 +20,7 @@ RunRecorder<Dim>::RunRecorder(const std::filesystem::path& directory, const io::
     files_.push_back(probes_->path());
   }
   if (!output.regions.empty()) {
-    std::vector<analysis::RegionT<Dim>> regions;
+    std::vector<dem::analysis::RegionT<Dim>> regions;
     for (const io::MeasurementRegion& r : output.regions) regions.push_back(io::region_for<Dim>(r));
     regions_.emplace(directory, std::move(regions), tables);
     files_.push_back(regions_->path());

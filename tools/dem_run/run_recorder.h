@@ -11,9 +11,9 @@
 #include <optional>
 #include <vector>
 
+#include "dem/analysis/compression_analysis.h"
 #include "dem/io/case_definition.h"
 #include "dem/io/checkpoint_store.h"
-#include "dem/io/compression_analysis.h"
 #include "dem/io/compression_csv.h"
 #include "dem/io/csv_writers.h"
 #include "dem/io/regions_csv.h"
@@ -57,7 +57,7 @@ class RunRecorder {
   std::optional<io::ProbesCsv> probes_;
   std::optional<io::RegionsCsvT<Dim>> regions_;  // when the case names regions
   std::optional<io::BoxCsvT<Dim>> box_;          // from the first row with a box control
-  std::optional<io::CompressionAnalysisT<Dim>> compression_;
+  std::optional<analysis::CompressionAnalysisT<Dim>> compression_;
   std::optional<io::CompressionCsvT<Dim>> compression_csv_;
   std::optional<io::VtkSeries> vtk_;
   std::optional<std::uint64_t> last_cycle_;

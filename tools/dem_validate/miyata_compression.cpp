@@ -28,7 +28,7 @@ MiyataRun run_definition(const io::CaseDefinitionT<Dim>& def, const std::optiona
     if (stage.until.wall_stress_above) run.target_stress = stage.until.wall_stress_above->value;
   }
   BasicWorld<Dim> world(def.world);
-  io::CompressionAnalysisT<Dim> analysis(run.settings);
+  dem::analysis::CompressionAnalysisT<Dim> analysis(run.settings);
   std::optional<io::CompressionCsvT<Dim>> csv;
   if (out) csv.emplace(*out, world.wall(run.settings.loading_plate).name, world.wall(run.settings.bottom_plate).name);
   const auto record = [&](const BasicWorld<Dim>& w, int stage) {
@@ -73,7 +73,7 @@ MiyataRun run_miyata_compression(const std::filesystem::path& case_file,
 MiyataFigures miyata_figures(const MiyataRun& run) {
   MiyataFigures f;
   const auto& [initial, transition, final_state] = run.results.states;
-  const auto settlement = [](const io::StateFit& s) { return s.settlement_to - s.settlement_from; };
+  const auto settlement = [](const dem::analysis::StateFit& s) { return s.settlement_to - s.settlement_from; };
   // A state begins where the one before it ended.
   f.initial_settlement = settlement(initial);
   f.transition_settlement = transition.settlement_to - initial.settlement_to;
@@ -123,8 +123,8 @@ MiyataFigures miyata_figures(const MiyataRun& run) {
       f.far_tail_share[p] = share(2.0, std::numeric_limits<double>::infinity());
     }
   }
-  for (const io::StressDrop& drop : run.results.drops) {
-    if (drop.state == io::LoadingState::kInitial) continue;
+  for (const dem::analysis::StressDrop& drop : run.results.drops) {
+    if (drop.state == dem::analysis::LoadingState::kInitial) continue;
     f.drops += 1;
     f.largest_drop = std::max(f.largest_drop, drop.relative());
   }
@@ -205,7 +205,7 @@ Verdict judge_miyata(const MiyataRun& run, const MiyataFigures& f) {
   // too few for a tail (its distribution is printed; docs/VALIDATION.md).
   if (run.results.force_distribution && run.dimension == 2) {
     for (std::size_t plate = 0; plate < 2; ++plate) {
-      const io::PlateForceDistribution& d = (*run.results.force_distribution)[plate];
+      const dem::analysis::PlateForceDistribution& d = (*run.results.force_distribution)[plate];
       const std::string name = plate == 0 ? "loading plate" : "bottom plate";
       verdict.above(name + ": contacts in the tail", d.tail.contacts, 0);
       verdict.at_least(name + ": the tail's decay rate", d.tail.decay_rate, 1.0);

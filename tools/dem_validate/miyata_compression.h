@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "dem/io/compression_analysis.h"
+#include "dem/analysis/compression_analysis.h"
 #include "verdict.h"
 
 namespace dem::validation {
@@ -29,9 +29,9 @@ struct MiyataRun {
   int particles = 0;  // after trimming
   std::uint64_t cycles = 0;
   double seconds = 0.0;  // wall clock
-  io::CompressionSettings settings;
-  std::vector<io::CompressionSample> samples;
-  io::CompressionResults results;
+  analysis::CompressionSettings settings;
+  std::vector<analysis::CompressionSample> samples;
+  analysis::CompressionResults results;
 };
 
 // Runs a 2D (3.2) or 3D (3.3) case that asks for output.compression; with

@@ -4,6 +4,7 @@
 // The conversion layer (io/) turns it into a Protocol Buffers message.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <type_traits>
 #include <vector>
@@ -81,6 +82,173 @@ struct ContactSnapshotT {
   double search_second = 0.0;
   bool has_search = false;
 };
+
+// ---------------------------------------------------------------------------
+// The one list of a contact's fields. Save and restore (engine/src/snapshot.cpp),
+// the state hash (engine/src/state_hash.cpp) and the Protocol Buffers
+// conversion (io/src/snapshot_contacts.cpp) all walk it; adding a field is a
+// member above, a line below and a field of dem.proto.SnapshotContacts of the
+// same name (idl/dem/snapshot.proto).
+
+// What a field is to the engine.
+enum class ContactFieldRole {
+  kKey,      // names the row (first, second, with_wall); saved and checked by snapshot.cpp itself
+  kFlag,     // a bit of the row's flags (touching, sliding)
+  kHistory,  // a column of the contact table, restored as saved
+  kReport,   // what the last force pass made of the row, for readers; not read back
+};
+
+// The table column that holds a history field: a world keeps only the
+// columns its law, shapes and energy budget need (ContactColumns in
+// engine/src/contact_table.h); a field of a column the world lacks is saved
+// at its default and not restored.
+enum class ContactColumn { kNone, kAlways, kNormalForce, kMindlin, kSearch, kDashpot, kRolling };
+
+struct ContactFieldInfo {
+  const char* name;  // the field of dem.proto.SnapshotContacts
+  ContactFieldRole role;
+  ContactColumn column = ContactColumn::kNone;
+  // Part of the state hash (a touching row's key by particle id, then these
+  // in list order: the order is part of the hash, so hashed fields come first).
+  bool hashed = false;
+  // Added after snapshot version 1 was first written: older snapshots have
+  // none of it, and a reader takes the default.
+  bool may_be_empty = false;
+};
+
+// A field that no table column holds.
+struct NoRow {};
+
+// Calls visit(info, field, row) for every field of ContactSnapshotT<Dim>, in
+// list order: field(c) is the field of a contact snapshot c (const or not),
+// row(rows, r) the same quantity in row r of the engine's contact table
+// (history fields only; NoRow otherwise). Both are generic lambdas, so the
+// table's layout is named here but only compiled where the engine uses it.
+template <int Dim, typename Visit>
+constexpr void for_each_contact_field(Visit&& visit) {
+  using enum ContactFieldRole;
+  using enum ContactColumn;
+  visit(
+      ContactFieldInfo{"first", kKey}, [](auto& c) -> auto& { return c.first; }, NoRow{});
+  visit(
+      ContactFieldInfo{"second", kKey}, [](auto& c) -> auto& { return c.second; }, NoRow{});
+  visit(
+      ContactFieldInfo{"with_wall", kKey}, [](auto& c) -> auto& { return c.with_wall; }, NoRow{});
+  // Hashed, in the hash's order.
+  visit(
+      ContactFieldInfo{"shear_force", kHistory, kAlways, true}, [](auto& c) -> auto& { return c.shear_force; },
+      [](auto& rows, std::size_t r) -> auto& { return rows.shear[r]; });
+  visit(
+      ContactFieldInfo{"normal_force", kHistory, kNormalForce, true}, [](auto& c) -> auto& { return c.normal_force; },
+      [](auto& rows, std::size_t r) -> auto& { return rows.normal_force[r]; });
+  visit(
+      ContactFieldInfo{"rolling_torque", kHistory, kRolling, true, true},
+      [](auto& c) -> auto& { return c.rolling_torque; },
+      [](auto& rows, std::size_t r) -> auto& { return rows.rolling[r]; });
+  visit(
+      ContactFieldInfo{"mindlin_t_star", kHistory, kMindlin, true}, [](auto& c) -> auto& { return c.mindlin.t_star; },
+      [](auto& rows, std::size_t r) -> auto& { return rows.mindlin[r].history.t_star; });
+  visit(
+      ContactFieldInfo{"mindlin_t_star2", kHistory, kMindlin, true}, [](auto& c) -> auto& { return c.mindlin.t_star2; },
+      [](auto& rows, std::size_t r) -> auto& { return rows.mindlin[r].history.t_star2; });
+  visit(
+      ContactFieldInfo{"mindlin_lag", kHistory, kMindlin, true}, [](auto& c) -> auto& { return c.mindlin.lag; },
+      [](auto& rows, std::size_t r) -> auto& { return rows.mindlin[r].history.lag; });
+  // Restored, not hashed.
+  visit(
+      ContactFieldInfo{"mindlin_direction", kHistory, kMindlin}, [](auto& c) -> auto& { return c.mindlin.direction; },
+      [](auto& rows, std::size_t r) -> auto& { return rows.mindlin[r].history.direction; });
+  visit(
+      ContactFieldInfo{"mindlin_unloading", kHistory, kMindlin}, [](auto& c) -> auto& { return c.mindlin.unloading; },
+      [](auto& rows, std::size_t r) -> auto& { return rows.mindlin[r].history.unloading; });
+  visit(
+      ContactFieldInfo{"mindlin_reloading", kHistory, kMindlin}, [](auto& c) -> auto& { return c.mindlin.reloading; },
+      [](auto& rows, std::size_t r) -> auto& { return rows.mindlin[r].history.reloading; });
+  visit(
+      ContactFieldInfo{"mindlin_axis", kHistory, kMindlin}, [](auto& c) -> auto& { return c.mindlin_axis; },
+      [](auto& rows, std::size_t r) -> auto& { return rows.mindlin[r].axis; });
+  visit(
+      ContactFieldInfo{"mindlin_theta", kHistory, kMindlin, false, true},
+      [](auto& c) -> auto& { return c.mindlin_theta; },
+      [](auto& rows, std::size_t r) -> auto& { return rows.mindlin[r].theta; });
+  visit(
+      ContactFieldInfo{"dashpot_force", kHistory, kDashpot}, [](auto& c) -> auto& { return c.dashpot_force; },
+      [](auto& rows, std::size_t r) -> auto& { return rows.dashpot[r].force; });
+  visit(
+      ContactFieldInfo{"tangential_spring", kHistory, kDashpot, false, true},
+      [](auto& c) -> auto& { return c.tangential_spring; },
+      [](auto& rows, std::size_t r) -> auto& { return rows.dashpot[r].tangential; });
+  visit(
+      ContactFieldInfo{"relative_velocity", kHistory, kDashpot}, [](auto& c) -> auto& { return c.relative_velocity; },
+      [](auto& rows, std::size_t r) -> auto& { return rows.dashpot[r].relative_velocity; });
+  visit(
+      ContactFieldInfo{"search_first", kHistory, kSearch}, [](auto& c) -> auto& { return c.search_first; },
+      [](auto& rows, std::size_t r) -> auto& { return rows.search[r].first; });
+  visit(
+      ContactFieldInfo{"search_second", kHistory, kSearch}, [](auto& c) -> auto& { return c.search_second; },
+      [](auto& rows, std::size_t r) -> auto& { return rows.search[r].second; });
+  visit(
+      ContactFieldInfo{"has_search", kHistory, kSearch}, [](auto& c) -> auto& { return c.has_search; },
+      [](auto& rows, std::size_t r) -> auto& { return rows.search[r].valid; });
+  visit(
+      ContactFieldInfo{"formed_cycle", kHistory, kAlways}, [](auto& c) -> auto& { return c.formed_cycle; },
+      [](auto& rows, std::size_t r) -> auto& { return rows.formed_cycle[r]; });
+  visit(
+      ContactFieldInfo{"touching", kFlag}, [](auto& c) -> auto& { return c.touching; }, NoRow{});
+  visit(
+      ContactFieldInfo{"sliding", kFlag}, [](auto& c) -> auto& { return c.sliding; }, NoRow{});
+  visit(
+      ContactFieldInfo{"overlap", kReport}, [](auto& c) -> auto& { return c.overlap; }, NoRow{});
+  visit(
+      ContactFieldInfo{"normal_damping", kReport}, [](auto& c) -> auto& { return c.normal_damping; }, NoRow{});
+  visit(
+      ContactFieldInfo{"shear_damping", kReport}, [](auto& c) -> auto& { return c.shear_damping; }, NoRow{});
+  visit(
+      ContactFieldInfo{"normal", kReport}, [](auto& c) -> auto& { return c.normal; }, NoRow{});
+  visit(
+      ContactFieldInfo{"point", kReport}, [](auto& c) -> auto& { return c.point; }, NoRow{});
+  visit(
+      ContactFieldInfo{"force", kReport}, [](auto& c) -> auto& { return c.force; }, NoRow{});
+  visit(
+      ContactFieldInfo{"moment_first", kReport}, [](auto& c) -> auto& { return c.moment_first; }, NoRow{});
+  visit(
+      ContactFieldInfo{"moment_second", kReport}, [](auto& c) -> auto& { return c.moment_second; }, NoRow{});
+}
+
+namespace detail {
+// Converts to any member type: counts an aggregate's members by the
+// longest brace list that initializes it.
+struct AnyMember {
+  template <typename T>
+  operator T() const;  // NOLINT(google-explicit-constructor): only named in unevaluated contexts
+};
+template <typename T, typename... Members>
+constexpr std::size_t member_count() {
+  if constexpr (requires { T{Members{}..., AnyMember{}}; }) {
+    return member_count<T, Members..., AnyMember>();
+  } else {
+    return sizeof...(Members);
+  }
+}
+}  // namespace detail
+
+template <int Dim>
+constexpr std::size_t contact_field_count() {
+  std::size_t n = 0;
+  for_each_contact_field<Dim>([&](const ContactFieldInfo&, auto, auto) { ++n; });
+  return n;
+}
+
+// Every member is in the list (MindlinHistory's six as six fields): a new
+// member - a bool that fits in padding too - fails the build here until it
+// has its line above.
+static_assert(detail::member_count<ContactSnapshotT<2>>() - 1 + detail::member_count<MindlinHistory>() ==
+                  contact_field_count<2>(),
+              "ContactSnapshotT changed: give the new member its line in for_each_contact_field");
+static_assert(detail::member_count<ContactSnapshotT<3>>() - 1 + detail::member_count<MindlinHistory>() ==
+                  contact_field_count<3>(),
+              "ContactSnapshotT changed: give the new member its line in for_each_contact_field");
+// ---------------------------------------------------------------------------
 
 template <int Dim>
 struct WallSnapshotT {

@@ -8,10 +8,10 @@
 #include <variant>
 #include <vector>
 
+#include "dem/analysis/compression_settings.h"
 #include "dem/analysis/region.h"
 #include "dem/definitions.h"
 #include "dem/ids.h"
-#include "dem/io/compression_settings.h"
 #include "dem/programme.h"
 
 namespace dem::io {
@@ -50,9 +50,9 @@ struct OutputSettings {
   std::uint64_t interval = 100;  // cycles between rows of the time series
   bool contacts_file = true;     // write contacts.csv at the end
   std::vector<Probe> probes;
-  std::optional<CompressionSettings> compression;  // the plate loading analyses, when asked for
-  std::uint64_t vtk_interval = 0;                  // cycles between ParaView files; 0 = none
-  std::vector<MeasurementRegion> regions;          // measured at every row (regions.csv)
+  std::optional<analysis::CompressionSettings> compression;  // the plate loading analyses, when asked for
+  std::uint64_t vtk_interval = 0;                            // cycles between ParaView files; 0 = none
+  std::vector<MeasurementRegion> regions;                    // measured at every row (regions.csv)
 };
 
 // Written once over the dimension, like the engine's definitions: the 2D

@@ -44,7 +44,7 @@
 #include <string>
 #include <vector>
 
-#include "dem/io/compression_analysis.h"
+#include "dem/analysis/compression_analysis.h"
 #include "dem/io/csv_file.h"
 
 namespace dem::io {
@@ -60,12 +60,12 @@ class CompressionCsvT {
   CompressionCsvT(const std::filesystem::path& directory, std::string loading_plate, std::string bottom_plate,
                   const TableSizes* resume = nullptr);
 
-  void write_sample(const CompressionSample& sample);
+  void write_sample(const dem::analysis::CompressionSample& sample);
   // `cycles` as known when the snapshot was taken: enough for the contacts
   // formed by then.
-  void write_snapshot(const PlateSnapshotT<Dim>& snapshot, const StateCycles& cycles);
+  void write_snapshot(const dem::analysis::PlateSnapshotT<Dim>& snapshot, const dem::analysis::StateCycles& cycles);
   // The summaries at the end of the run.
-  void write_results(const CompressionResults& results);
+  void write_results(const dem::analysis::CompressionResults& results);
 
   // Every file written so far.
   const std::vector<std::filesystem::path>& files() const { return files_; }
@@ -74,8 +74,9 @@ class CompressionCsvT {
   CsvFile& contacts_file() { return contacts_; }
 
  private:
-  void write_plate_rows(const PlateSnapshotT<Dim>& snapshot, const std::string& plate,
-                        const std::vector<PlateContactT<Dim>>& contacts, const StateCycles& cycles);
+  void write_plate_rows(const dem::analysis::PlateSnapshotT<Dim>& snapshot, const std::string& plate,
+                        const std::vector<dem::analysis::PlateContactT<Dim>>& contacts,
+                        const dem::analysis::StateCycles& cycles);
 
   std::filesystem::path directory_;
   std::string loading_plate_;
@@ -88,15 +89,17 @@ class CompressionCsvT {
 // Samples the plates into the analysis and writes what it took now: the
 // row of compression.csv and any snapshots.
 template <int Dim>
-void record_compression(CompressionAnalysisT<Dim>& analysis, CompressionCsvT<Dim>& csv, const BasicWorld<Dim>& world,
-                        int stage);
+void record_compression(dem::analysis::CompressionAnalysisT<Dim>& analysis, CompressionCsvT<Dim>& csv,
+                        const BasicWorld<Dim>& world, int stage);
 
 using CompressionCsv = CompressionCsvT<2>;
 using CompressionCsv3 = CompressionCsvT<3>;
 
 extern template class CompressionCsvT<2>;
 extern template class CompressionCsvT<3>;
-extern template void record_compression(CompressionAnalysisT<2>&, CompressionCsvT<2>&, const BasicWorld<2>&, int);
-extern template void record_compression(CompressionAnalysisT<3>&, CompressionCsvT<3>&, const BasicWorld<3>&, int);
+extern template void record_compression(dem::analysis::CompressionAnalysisT<2>&, CompressionCsvT<2>&,
+                                        const BasicWorld<2>&, int);
+extern template void record_compression(dem::analysis::CompressionAnalysisT<3>&, CompressionCsvT<3>&,
+                                        const BasicWorld<3>&, int);
 
 }  // namespace dem::io

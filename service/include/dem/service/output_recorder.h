@@ -23,10 +23,10 @@
 #include <string>
 #include <string_view>
 
+#include "dem/analysis/compression_analysis.h"
+#include "dem/analysis/compression_settings.h"
 #include "dem/io/checkpoint_store.h"
-#include "dem/io/compression_analysis.h"
 #include "dem/io/compression_csv.h"
-#include "dem/io/compression_settings.h"
 #include "dem/io/csv_file.h"
 #include "dem/io/csv_writers.h"
 #include "dem/io/regions_csv.h"
@@ -46,8 +46,9 @@ class OutputRecorder {
   // it and appended to, and whose analyses carry on (io/checkpoint_store.h).
   template <int Dim>
   void start(const std::string& case_name, const BasicWorld<Dim>& world,
-             std::optional<io::CompressionSettings> compression = std::nullopt, std::uint64_t vtk_interval = 0,
-             const io::ResumePoint* resume = nullptr, const std::vector<io::MeasurementRegion>& regions = {});
+             std::optional<dem::analysis::CompressionSettings> compression = std::nullopt,
+             std::uint64_t vtk_interval = 0, const io::ResumePoint* resume = nullptr,
+             const std::vector<io::MeasurementRegion>& regions = {});
   // The tables' lengths (rows flushed) and the analyses' state, for a checkpoint.
   void fill(io::ResumePoint& point);
   // A row of the time series, unless this cycle has one already (a load
@@ -79,7 +80,7 @@ class OutputRecorder {
   // The plate loading analyses and their files, made at the first sample.
   template <int Dim>
   struct Compression {
-    io::CompressionAnalysisT<Dim> analysis;
+    dem::analysis::CompressionAnalysisT<Dim> analysis;
     io::CompressionCsvT<Dim> csv;
   };
   template <int Dim>
@@ -103,7 +104,7 @@ class OutputRecorder {
   std::unique_ptr<io::WallsCsvT<3>> walls3_;
   std::unique_ptr<io::AssemblyCsv> assembly_;
   std::unique_ptr<io::CsvFile> stages_;
-  std::optional<io::CompressionSettings> compression_settings_;
+  std::optional<dem::analysis::CompressionSettings> compression_settings_;
   std::optional<std::uint64_t> vtk_override_;
   std::uint64_t vtk_interval_ = 0;
   std::unique_ptr<io::VtkSeries> vtk_;  // made at a programme's first row

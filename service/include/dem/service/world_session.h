@@ -15,10 +15,10 @@
 #include <string_view>
 #include <vector>
 
+#include "dem/analysis/compression_settings.h"
 #include "dem/health.h"
 #include "dem/io/case_definition.h"
 #include "dem/io/checkpoint_store.h"
-#include "dem/io/compression_settings.h"
 #include "dem/io/snapshot_conversion.h"
 #include "dem/programme.h"
 #include "dem/protocol/messages.h"
@@ -144,7 +144,7 @@ class WorldSession {
 // measurement regions (output.region), published and written each row.
 template <int Dim>
 std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages = {},
-                                           std::optional<io::CompressionSettings> compression = std::nullopt,
+                                           std::optional<analysis::CompressionSettings> compression = std::nullopt,
                                            std::uint64_t vtk_interval = 0,
                                            std::vector<io::MeasurementRegion> regions = {});
 

@@ -4,10 +4,10 @@
 
 #include <vector>
 
-#include "dem/io/loading_states.h"
-#include "dem/io/stress_drops.h"
+#include "dem/analysis/loading_states.h"
+#include "dem/analysis/stress_drops.h"
 
-namespace dem::io {
+namespace dem::analysis {
 namespace {
 
 CompressionSample sample(std::uint64_t cycle, double settlement, double stress, int contacts) {
@@ -129,4 +129,4 @@ TEST(StressDrops, AFallAtTheEndCountsAndDropsCarryTheirState) {
 }
 
 }  // namespace
-}  // namespace dem::io
+}  // namespace dem::analysis

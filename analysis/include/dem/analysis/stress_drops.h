@@ -8,9 +8,9 @@
 #include <span>
 #include <vector>
 
-#include "dem/io/loading_states.h"
+#include "dem/analysis/loading_states.h"
 
-namespace dem::io {
+namespace dem::analysis {
 
 struct StressDrop {
   std::uint64_t peak_cycle = 0;
@@ -34,4 +34,4 @@ struct StressDrop {
 std::vector<StressDrop> find_stress_drops(std::span<const CompressionSample> samples, double fraction,
                                           const StateCycles& cycles);
 
-}  // namespace dem::io
+}  // namespace dem::analysis

@@ -1,6 +1,6 @@
-#include "dem/io/stress_drops.h"
+#include "dem/analysis/stress_drops.h"
 
-namespace dem::io {
+namespace dem::analysis {
 
 std::vector<StressDrop> find_stress_drops(std::span<const CompressionSample> samples, double fraction,
                                           const StateCycles& cycles) {
@@ -33,4 +33,4 @@ std::vector<StressDrop> find_stress_drops(std::span<const CompressionSample> sam
   return drops;
 }
 
-}  // namespace dem::io
+}  // namespace dem::analysis

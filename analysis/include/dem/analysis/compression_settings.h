@@ -8,7 +8,7 @@
 
 #include "dem/ids.h"
 
-namespace dem::io {
+namespace dem::analysis {
 
 // The distribution of the normalised contact force f = F/<F> on each plate
 // (Figs. 35 and 37), pooled from `snapshots` contact snapshots at stresses
@@ -38,4 +38,4 @@ struct CompressionSettings {
   double stress_drop_fraction = 0.02;
 };
 
-}  // namespace dem::io
+}  // namespace dem::analysis

@@ -13,14 +13,14 @@
 #include <string_view>
 #include <vector>
 
-#include "dem/io/compression_settings.h"
-#include "dem/io/force_distribution.h"
-#include "dem/io/loading_states.h"
-#include "dem/io/plate_contacts.h"
-#include "dem/io/stress_drops.h"
+#include "dem/analysis/compression_settings.h"
+#include "dem/analysis/force_distribution.h"
+#include "dem/analysis/loading_states.h"
+#include "dem/analysis/plate_contacts.h"
+#include "dem/analysis/stress_drops.h"
 #include "dem/world.h"
 
-namespace dem::io {
+namespace dem::analysis {
 
 // The contacts on both plates when the loading plate's stress first reached
 // a target (Fig. 34; the force distribution's snapshots too).
@@ -105,4 +105,4 @@ using CompressionAnalysis3 = CompressionAnalysisT<3>;
 extern template class CompressionAnalysisT<2>;
 extern template class CompressionAnalysisT<3>;
 
-}  // namespace dem::io
+}  // namespace dem::analysis

@@ -13,7 +13,7 @@
 #include <span>
 #include <string_view>
 
-namespace dem::io {
+namespace dem::analysis {
 
 enum class LoadingState { kInitial, kTransition, kFinal };
 inline constexpr std::array<LoadingState, 3> kLoadingStates = {LoadingState::kInitial, LoadingState::kTransition,
@@ -71,4 +71,4 @@ struct StateFit {
 
 std::array<StateFit, 3> fit_states(std::span<const CompressionSample> samples, const StateCycles& cycles);
 
-}  // namespace dem::io
+}  // namespace dem::analysis

@@ -6,9 +6,9 @@
 #include <numeric>
 #include <vector>
 
-#include "dem/io/force_distribution.h"
+#include "dem/analysis/force_distribution.h"
 
-namespace dem::io {
+namespace dem::analysis {
 namespace {
 
 // Midpoint rule over [0, 60]: the densities have decayed by then.
@@ -101,4 +101,4 @@ TEST(ForceDistribution, TheSameEstimatorOnTheSeedsDensities) {
 }
 
 }  // namespace
-}  // namespace dem::io
+}  // namespace dem::analysis

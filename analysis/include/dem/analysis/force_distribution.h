@@ -9,7 +9,7 @@
 #include <span>
 #include <vector>
 
-namespace dem::io {
+namespace dem::analysis {
 
 // Miyata eq. 62, the q-model (Liu et al. 1995, Coppersmith et al. 1996):
 // P(f) = N^N / (N-1)! f^(N-1) exp(-N f), N the number of neighbours below
@@ -63,4 +63,4 @@ TailFit fit_exponential_tail(std::span<const double> f, double from);
 // compared with.
 double tail_decay_rate(const std::function<double(double)>& density, double from);
 
-}  // namespace dem::io
+}  // namespace dem::analysis

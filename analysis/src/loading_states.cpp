@@ -1,9 +1,9 @@
-#include "dem/io/loading_states.h"
+#include "dem/analysis/loading_states.h"
 
 #include <algorithm>
 #include <vector>
 
-namespace dem::io {
+namespace dem::analysis {
 namespace {
 
 // Least-squares line y = c + m x: the slope m and R^2.
@@ -98,4 +98,4 @@ std::array<StateFit, 3> fit_states(std::span<const CompressionSample> samples, c
   return fits;
 }
 
-}  // namespace dem::io
+}  // namespace dem::analysis

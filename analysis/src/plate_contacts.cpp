@@ -1,8 +1,8 @@
-#include "dem/io/plate_contacts.h"
+#include "dem/analysis/plate_contacts.h"
 
 #include <algorithm>
 
-namespace dem::io {
+namespace dem::analysis {
 
 template <int Dim>
 std::vector<PlateContactT<Dim>> plate_contacts(std::span<const ContactRecordT<Dim>> contacts, WallId plate) {
@@ -78,4 +78,4 @@ template std::array<StateLoad, 3> load_by_state(std::span<const PlateContactT<3>
 template std::array<StateLoad, 3> load_by_formation_order(std::span<const PlateContactT<2>>);
 template std::array<StateLoad, 3> load_by_formation_order(std::span<const PlateContactT<3>>);
 
-}  // namespace dem::io
+}  // namespace dem::analysis

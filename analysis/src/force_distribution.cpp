@@ -1,10 +1,10 @@
-#include "dem/io/force_distribution.h"
+#include "dem/analysis/force_distribution.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 
-namespace dem::io {
+namespace dem::analysis {
 
 double q_model_density(double f, int neighbours) {
   if (f < 0.0) return 0.0;
@@ -92,4 +92,4 @@ double tail_decay_rate(const std::function<double(double)>& density, double from
   return moment > 0.0 ? mass / moment : 0.0;
 }
 
-}  // namespace dem::io
+}  // namespace dem::analysis

@@ -1,10 +1,10 @@
-#include "dem/io/compression_analysis.h"
+#include "dem/analysis/compression_analysis.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 
-namespace dem::io {
+namespace dem::analysis {
 
 template <int Dim>
 CompressionAnalysisT<Dim>::CompressionAnalysisT(const CompressionSettings& settings) : settings_(settings) {
@@ -111,4 +111,4 @@ CompressionResults CompressionAnalysisT<Dim>::results(const BasicWorld<Dim>& wor
 template class CompressionAnalysisT<2>;
 template class CompressionAnalysisT<3>;
 
-}  // namespace dem::io
+}  // namespace dem::analysis

@@ -10,11 +10,11 @@
 #include <span>
 #include <vector>
 
-#include "dem/io/loading_states.h"
+#include "dem/analysis/loading_states.h"
 #include "dem/measures.h"
 #include "dem/world.h"
 
-namespace dem::io {
+namespace dem::analysis {
 
 template <int Dim>
 struct PlateContactT {
@@ -67,4 +67,4 @@ std::array<StateLoad, 3> load_by_state(std::span<const PlateContactT<Dim>> conta
 template <int Dim>
 std::array<StateLoad, 3> load_by_formation_order(std::span<const PlateContactT<Dim>> contacts);
 
-}  // namespace dem::io
+}  // namespace dem::analysis
