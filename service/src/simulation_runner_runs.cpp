@@ -86,14 +86,16 @@ void SimulationRunner::start_run(ReceivedCommand& received, CommandKind kind) {
   const protocol::Command& command = received.command;
   RunGoal goal;
   if (kind == CommandKind::kCycle) {
-    require_argument(command.cycle.cycles > 0, "the cycle count must be > 0, got " + std::to_string(command.cycle.cycles));
+    require_argument(command.cycle.cycles > 0,
+                     "the cycle count must be > 0, got " + std::to_string(command.cycle.cycles));
     goal.max_cycles = static_cast<std::uint64_t>(command.cycle.cycles);
   } else {
     const protocol::RunUntilArgs& until = command.run_until;
-    require_argument(until.max_cycles > 0, "run_until needs a maximum cycle count > 0, got " + std::to_string(until.max_cycles));
+    require_argument(until.max_cycles > 0,
+                     "run_until needs a maximum cycle count > 0, got " + std::to_string(until.max_cycles));
     require_argument(until.check_interval >= 0, "the check interval must be >= 0");
     require_argument(until.stress || until.settlement || until.kinetic_energy,
-            "run_until needs a condition: a plate's stress or settlement, or the kinetic energy");
+                     "run_until needs a condition: a plate's stress or settlement, or the kinetic energy");
     for (const auto& value : {until.stress, until.settlement, until.kinetic_energy}) {
       require_argument(!value || std::isfinite(*value), "run_until's thresholds must be finite");
     }
