@@ -75,9 +75,6 @@ class WorldSessionT final : public WorldSession {
   int wall_count() const override { return world_.wall_count(); }
   std::uint64_t state_hash() const override { return world_.state_hash(); }
   double kinetic_energy() const override { return world_.assembly_measures().kinetic_energy; }
-  bool stop_conditions_hold(const StopConditions& until) const override {
-    return dem::stop_conditions_hold(world_, until);
-  }
   bool motion_suspect() const override { return health_.motion_suspect(world_); }
 
   WallId find_wall(std::string_view name) const override { return world_.find_wall(name); }

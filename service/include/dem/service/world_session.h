@@ -62,8 +62,6 @@ class WorldSession {
   virtual int wall_count() const = 0;
   virtual std::uint64_t state_hash() const = 0;
   virtual double kinetic_energy() const = 0;  // J (a pass over the particles and the contacts)
-  // The engine's stop rule (dem/programme.h) applied to the state now.
-  virtual bool stop_conditions_hold(const StopConditions& until) const = 0;
   // A motion not finite or a particle flung out (HealthMonitorT::
   // motion_suspect): a pass over the particles alone, cheap enough after
   // every chunk, for what a blow-up reaches between two paced health
