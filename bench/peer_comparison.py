@@ -8,7 +8,10 @@ For each size and each thread / rank count the two codes take turns
 slows down during the run affects both alike; each keeps its best of the
 repeats. Printed for every row: particle-steps/s of both and their ratio,
 contacts per particle and plate force of both, and peak RSS of both
-(for two ranks, the sum over the ranks).
+(for two ranks, the sum over the ranks). Before and after the runs it
+measures the round trip of a cache line between the two cores
+(bench/core_round_trip): on shared virtual machines it changes by 4x over
+hours, and two threads' speed-up with it (docs/PERFORMANCE.md).
 
   bench/peer_comparison.py [--sizes 10k,100k] [--threads 1,2] [--repeats 2]
                            [--million] [--markdown FILE]
@@ -164,6 +167,7 @@ def main():
     install_packages()
     args.work.mkdir(parents=True, exist_ok=True)
     ours, peer = Ours(args.build), Liggghts(args.work)
+    round_trips = [core_round_trip(args.build)]
     rows = []
     for size in sizes:
         peer.prepare(size)
@@ -185,8 +189,10 @@ def main():
             million.append((t, best(runs)))
             print(f"  1M {t} thread(s): ours {million[-1][1]['rate'] / 1e6:.2f} M/s", flush=True)
 
+    round_trips.append(core_round_trip(args.build))
     lines = [f"Measured {datetime.date.today().isoformat()} on {os.cpu_count()} cores "
-             f"({platform_name()}), best of {args.repeats}, interleaved.", "",
+             f"({platform_name()}), best of {args.repeats}, interleaved; a cache line's round trip between "
+             f"the cores {round_trips[0]} before the runs, {round_trips[1]} after.", "",
              "| N | threads / ranks | ours (particle-steps/s) | LIGGGHTS | ratio | contacts/particle ours / LIGGGHTS "
              "| plate Fz (N) ours / LIGGGHTS | peak RSS ours / LIGGGHTS |",
              "|---|---|---|---|---|---|---|---|"]
@@ -212,6 +218,16 @@ def main():
     print(table)
     if args.markdown:
         args.markdown.write_text(table + "\n")
+
+
+def core_round_trip(build):
+    """The round trip between cores 0 and 1 as text ("97 ns"), or why there is none."""
+    program = build / "bench" / "core_round_trip"
+    if (os.cpu_count() or 1) < 2 or not program.exists():
+        return "not measured"
+    out = subprocess.run([str(program)], capture_output=True, text=True).stdout
+    found = re.search(r": ([0-9]+ ns)", out)
+    return found.group(1) if found else "not measured"
 
 
 def platform_name():

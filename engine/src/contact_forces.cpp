@@ -181,6 +181,7 @@ ContactEnergy run_pass(WorldState<Dim>& s) {
   std::vector<WallSum<Dim>> wall_sums(static_cast<std::size_t>(count) * walls);
   std::vector<ContactEnergy> energies(static_cast<std::size_t>(count));
   const int threads = count > 1 ? s.threads : 1;
+  const bool shaped = s.shape != ShapeKind::kRound;
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
     if (hot) {
@@ -194,14 +195,27 @@ ContactEnergy run_pass(WorldState<Dim>& s) {
         frame_ellipsoids(p, s.ellipsoid_frames, blocks.particle_begin[b], blocks.particle_begin[b + 1]);
       }
     }
-#pragma omp for schedule(dynamic, 1)
-    for (int b = 0; b < count; ++b) {
+    const auto force_block = [&](int b) {
       for (Slot i = blocks.particle_begin[b]; i < blocks.particle_begin[b + 1]; ++i) {
         p.force[i] = Vec<Dim>::Zero();
         p.moment[i] = Space<Dim>::zero_spin();
       }
       pair_fn(in, p, s.contacts.pairs, blocks, b, energies[b]);
       wall_fn(in, p, s.contacts.walls, blocks, b, energies[b], wall_sums.data() + static_cast<std::size_t>(b) * walls);
+    };
+    // Round particles: each thread keeps the same run of blocks every step,
+    // about the particles it moves (motion.cpp's static blocks), so their
+    // positions and force sums stay in its core's cache. Handed out
+    // dynamically, blocks changed cores from step to step and their data
+    // crossed between cores every step, which costs as much as the rows
+    // where a cache line's round trip between cores is slow (docs/PERFORMANCE.md).
+    // Shaped particles' rows cost microseconds each: there balance counts more.
+    if (shaped) {
+#pragma omp for schedule(dynamic, 1)
+      for (int b = 0; b < count; ++b) force_block(b);
+    } else {
+#pragma omp for schedule(static)
+      for (int b = 0; b < count; ++b) force_block(b);
     }
 #pragma omp for schedule(static)
     for (int b = 0; b < count; ++b) {
