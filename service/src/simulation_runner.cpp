@@ -94,18 +94,16 @@ void SimulationRunner::serve(bool until_programme_ends) {
     }
   };
   while (programme_going() || (!until_programme_ends && !queue_.shutdown_requested())) {
-    if (active_ || programme_going()) {
+    if (run_going()) {
       // Between two chunks: everything that arrived meanwhile, in order.
       take_waiting();
-      const bool going = active_ || programme_going();
-      if (!going && !awaiting_refresh_.empty()) refresh_cache(true);  // the run ended among them
+      if (!run_going() && !awaiting_refresh_.empty()) refresh_cache(true);  // the run ended among them
       if (active_ && !queue_.shutdown_requested()) {
         run_chunk();
       } else if (programme_going()) {
         step_programme();  // a shutdown request stops and ends it
       }
-      if ((active_ || programme_going()) &&
-          std::chrono::steady_clock::now() - last_status_ >= options_.progress_interval) {
+      if (run_going() && std::chrono::steady_clock::now() - last_status_ >= options_.progress_interval) {
         note_owner_left();
         publish_status();
       }

@@ -71,6 +71,7 @@ class SimulationRunner {
   // programme going when the shutdown comes is stopped and ended first.
   void serve(bool until_programme_ends);
   bool programme_going() const { return programme_ && !programme_->over(); }
+  bool run_going() const { return active_ || programme_going(); }  // a cycle, run_until or programme
   void execute(ReceivedCommand received);
   void start_run(ReceivedCommand& received, protocol::CommandKind kind);
   void run_chunk();
