@@ -4,19 +4,33 @@
 
 namespace dem::service {
 
-ProgrammeRun::ProgrammeRun(const WorldSession& world, std::uint64_t output_interval, std::size_t first,
-                           std::size_t count)
-    : stage_count_(world.stage_count()),
+ProgrammeRun::ProgrammeRun(const CaseProgramme& programme, const WorldSession& world, std::uint64_t output_interval,
+                           std::size_t first, std::size_t count, std::uint64_t first_done)
+    : stage_count_(programme.stage_count()),
       output_interval_(std::max<std::uint64_t>(output_interval, 1)),
       start_cycle_(world.cycle_count()),
+      first_(first),
+      next_(first),
+      end_(first + count),
+      first_done_(first_done),
+      stage_(first),
       stage_start_(world.cycle_count()),
       health_(world) {
-  for (std::size_t i = first; i < first + count; ++i) total_ += world.stage_cycles(i);
+  for (std::size_t i = first; i < end_; ++i) total_ += programme.stage_cycles(i);
 }
 
-void ProgrammeRun::start_stage(std::size_t stage, const WorldSession& world, std::uint64_t done) {
-  stage_ = stage;
-  stage_start_ = world.cycle_count() - done;
+std::uint64_t ProgrammeRun::next_stage(const WorldSession& world) {
+  stage_ = next_++;
+  stage_done_ = stage_ == first_ ? first_done_ : 0;
+  stage_start_ = world.cycle_count() - stage_done_;
+  return stage_done_;
+}
+
+StageResult ProgrammeRun::end_stage() {
+  StageResult result = stepper_->result();
+  result.cycles_run += stage_done_;
+  stepper_.reset();
+  return result;
 }
 
 void ProgrammeRun::stop(std::string reason) {

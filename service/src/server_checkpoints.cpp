@@ -2,6 +2,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "dem/service/world_snapshots.h"
+
 namespace dem::service {
 
 void ServerCheckpoints::begin(const std::filesystem::path& case_directory, std::string case_digest,
@@ -15,7 +17,7 @@ void ServerCheckpoints::write(const WorldSession& world, const io::SnapshotInfo&
                               std::size_t stage, std::uint64_t stage_cycles) {
   io::ResumePoint point{.cycle = world.cycle_count(), .stage = stage, .stage_cycles = stage_cycles};
   recorder.fill(point);
-  periodic_.write(world.snapshot_bytes(info), std::move(point));
+  periodic_.write(snapshot_bytes(world, info), std::move(point));
   spdlog::debug("checkpoint at cycle {} in {}", world.cycle_count(), periodic_.store()->directory().string());
 }
 

@@ -11,6 +11,7 @@
 #include "dem/io/snapshot_file.h"
 #include "dem/io/world_checks.h"
 #include "dem/service/command_error.h"
+#include "dem/service/world_snapshots.h"
 #include "format_value.h"
 
 namespace dem::service {
@@ -38,9 +39,9 @@ Simulation::Prepared prepared_case(const io::CaseDefinitionT<Dim>& definition, c
   Simulation::Prepared prepared;
   BasicWorld<Dim> built(definition.world);
   io::check_built_world(built, definition.stages, case_source);
-  prepared.world = make_session(std::move(built), definition.stages, definition.output.compression,
-                                definition.output.vtk_interval, definition.output.regions);
-  prepared.output_interval = definition.output.interval;
+  prepared.world = make_session(std::move(built), definition.output.regions);
+  prepared.programme = CaseProgramme(definition.stages);
+  prepared.output = definition.output;
   prepared.case_name = definition.name.empty() ? std::string("unnamed") : definition.name;
   prepared.description = definition.description;
   prepared.contact_models = definition.world.contact_models;
@@ -68,7 +69,8 @@ std::string Simulation::install(Prepared prepared) {
   case_name_ = std::move(prepared.case_name);
   description_ = std::move(prepared.description);
   contact_models_ = std::move(prepared.contact_models);
-  output_interval_ = prepared.output_interval;
+  programme_ = std::move(prepared.programme);
+  output_ = std::move(prepared.output);
   digest_ = prepared.digest;
   return prepared.message;
 }
@@ -145,7 +147,7 @@ Simulation::Prepared Simulation::Preparer::prepare_snapshot(std::string_view byt
   }
 }
 
-std::string Simulation::snapshot_bytes() const { return world().snapshot_bytes(snapshot_info()); }
+std::string Simulation::snapshot_bytes() const { return service::snapshot_bytes(world(), snapshot_info()); }
 
 WallId Simulation::find_wall(const std::string& name, std::int32_t id) const {
   const WorldSession& w = world();

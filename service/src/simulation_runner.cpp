@@ -5,6 +5,7 @@
 #include "dem/io/file_access.h"
 #include "dem/service/command_error.h"
 #include "dem/service/command_limits.h"
+#include "dem/service/world_snapshots.h"
 
 namespace dem::service {
 
@@ -44,7 +45,7 @@ void SimulationRunner::load_initial_case(const std::filesystem::path& path, bool
   protocol::LoadCaseArgs args;
   args.path = path.string();
   Simulation::Prepared prepared = simulation_.prepare_case(args);
-  if (options_.run_programme && prepared.world->stage_count() == 0) {
+  if (options_.run_programme && prepared.programme.stage_count() == 0) {
     throw CommandError(ReplyStatus::kInvalidCase,
                        path.string() + ": the case defines no stages, so --run-and-exit has nothing to run");
   }
@@ -63,7 +64,7 @@ void SimulationRunner::load_initial_case(const std::filesystem::path& path, bool
                          "--resume: " + latest->path.string() + " belongs to another case (or this one changed since)");
     }
     try {
-      prepared.world->restore_bytes(latest->snapshot_bytes, latest->path.string());
+      restore_bytes(*prepared.world, latest->snapshot_bytes, latest->path.string());
     } catch (const std::exception& error) {
       throw CommandError(ReplyStatus::kInvalidSnapshot, error.what());
     }
@@ -79,31 +80,36 @@ void SimulationRunner::load_initial_case(const std::filesystem::path& path, bool
 void SimulationRunner::run() {
   publish_status();
   refresh_cache(true);
-  while (!queue_.shutdown_requested()) {
-    if (active_) {
-      // Between two chunks: everything that arrived meanwhile, in order.
-      for (ReceivedCommand& received : queue_.take_all()) {
-        if (queue_.shutdown_requested()) {
-          unanswered_.push_back(std::move(received));
-        } else {
-          execute(std::move(received));
-        }
+  serve(false);
+}
+
+void SimulationRunner::serve(bool until_programme_ends) {
+  const auto take_waiting = [this] {
+    for (ReceivedCommand& received : queue_.take_all()) {
+      if (queue_.shutdown_requested()) {
+        unanswered_.push_back(std::move(received));
+      } else {
+        execute(std::move(received));
       }
-      if (!active_ && !awaiting_refresh_.empty()) refresh_cache(true);  // the run ended among them
-      if (active_ && !queue_.shutdown_requested()) run_chunk();
-      if (active_ && std::chrono::steady_clock::now() - last_status_ >= options_.progress_interval) {
+    }
+  };
+  while (programme_going() || (!until_programme_ends && !queue_.shutdown_requested())) {
+    if (run_going()) {
+      // Between two chunks: everything that arrived meanwhile, in order.
+      take_waiting();
+      if (!run_going() && !awaiting_refresh_.empty()) refresh_cache(true);  // the run ended among them
+      if (active_ && !queue_.shutdown_requested()) {
+        run_chunk();
+      } else if (programme_going()) {
+        step_programme();  // a shutdown request stops and ends it
+      }
+      if (run_going() && std::chrono::steady_clock::now() - last_status_ >= options_.progress_interval) {
         note_owner_left();
         publish_status();
       }
     } else if (std::optional<ReceivedCommand> received = queue_.pop(kIdleWait)) {
       execute(std::move(*received));
-      for (ReceivedCommand& next : queue_.take_all()) {
-        if (queue_.shutdown_requested()) {
-          unanswered_.push_back(std::move(next));
-        } else {
-          execute(std::move(next));
-        }
-      }
+      take_waiting();
       refresh_cache();
     } else if (!awaiting_refresh_.empty()) {
       refresh_cache(true);  // a quiet moment: catch up
@@ -128,7 +134,7 @@ void SimulationRunner::finish() {
   unanswered_.clear();
   if (simulation_.loaded()) {
     if (simulation_.world().cycle_count() != last_telemetry_cycle_ || !telemetry_published_) publish_telemetry();
-    simulation_.world().finish_tables(recorder_);
+    recorder_.finish(simulation_.world().view());
   }
   lifecycle_.take(Transition::kShutDown);
   // A one-shot server's last word keeps how its programme ended.

@@ -16,14 +16,14 @@ using protocol::CommandKind;
 using protocol::ReplyStatus;
 
 std::string SimulationRunner::install(Simulation::Prepared prepared, const io::ResumePoint* resume) {
-  if (simulation_.loaded()) simulation_.world().finish_tables(recorder_);
+  if (simulation_.loaded()) recorder_.finish(simulation_.world().view());
   std::string message = simulation_.install(std::move(prepared));
   ++world_generation_;
   lifecycle_.take(Transition::kInstall);
   message_ = message;
   const WorldSession& world = simulation_.world();
   schedule_.published(world.cycle_count(), world.time());
-  world.start_tables(recorder_, simulation_.case_name(), resume);
+  recorder_.start(simulation_.case_name(), world.view(), simulation_.output(), resume);
   if (const auto& problem = recorder_.directory_problem()) spdlog::error("no tables or checkpoints: {}", *problem);
   checkpoints_.begin(recorder_.directory_problem() ? std::filesystem::path() : recorder_.case_directory(),
                      simulation_.case_digest(), world.cycle_count());

@@ -1,9 +1,10 @@
 // The engine thread running a case's stages: in one-shot mode (dem_server
 // --case FILE --run-and-exit) and for the run_programme command -
 // SimulationRunner::run_programme and what it calls. The stages are the
-// case's as io converted them, each run by the engine's run_stage (through
-// WorldSession); between cycles the runner does what it does between the
-// chunks of a cycle command. The command loop is in simulation_runner.cpp.
+// case's as io converted them (CaseProgramme), each a stage of the
+// engine's (StageRunT) that the command loop (serve(), in
+// simulation_runner.cpp) steps chunk by chunk as it steps a cycle command,
+// answering the commands that arrive between chunks.
 #include <spdlog/spdlog.h>
 
 #include <cmath>
@@ -18,18 +19,20 @@ using protocol::ReplyStatus;
 using protocol::ServerState;
 
 void SimulationRunner::run_programme() {
-  const std::size_t stages = simulation_.world().stage_count();  // the initial case: Server requires one
+  const std::size_t stages = simulation_.programme().stage_count();  // the initial case: Server requires one
   if (resumed_) {
     const io::ResumePoint point = *std::exchange(resumed_, std::nullopt);
-    if (point.stage < stages) run_stages(point.stage, stages - point.stage, point.stage_cycles);
-    return;
+    if (point.stage >= stages) return;
+    start_programme(point.stage, stages - point.stage, point.stage_cycles);
+  } else {
+    start_programme(0, stages);
   }
-  run_stages(0, stages);
+  serve(true);
 }
 
-void SimulationRunner::run_programme(const ReceivedCommand& received) {
+void SimulationRunner::run_programme(ReceivedCommand& received) {
   const protocol::ProgrammeArgs& args = received.command.programme;
-  const std::size_t stages = simulation_.world().stage_count();
+  const std::size_t stages = simulation_.programme().stage_count();
   if (stages == 0) {
     throw CommandError(ReplyStatus::kRefused, "run_programme refused: " + simulation_.case_name() +
                                                   " has no stages (a snapshot keeps none; load the case)");
@@ -44,101 +47,75 @@ void SimulationRunner::run_programme(const ReceivedCommand& received) {
                                                      std::to_string(first + 1) + " go past the " +
                                                      std::to_string(stages) + " of " + simulation_.case_name());
   }
-  const std::uint64_t start = simulation_.world().cycle_count();
-  programme_command_ = &received;
+  start_programme(first, args.stage_count == 0 ? stages - first : args.stage_count);
+  programme_command_ = std::move(received);  // its one reply comes when the programme ends
   owner_left_logged_ = false;
-  run_stages(first, args.stage_count == 0 ? stages - first : args.stage_count);
-  programme_command_ = nullptr;
-  protocol::Reply reply;
-  reply.cycles_run = simulation_.world().cycle_count() - start;
-  reply.message = message_;
-  switch (programme_->outcome()) {
-    case ProgrammeOutcome::kCompleted:
-      reply.status = ReplyStatus::kOk;
-      break;
-    case ProgrammeOutcome::kStopped:
-      reply.status = ReplyStatus::kCancelled;
-      break;
-    default:
-      reply.status = ReplyStatus::kFailed;
-      break;
-  }
-  programme_.reset();  // cycle and run_until record the tables at the telemetry interval again
-  announce();          // before the reply: who reads it sees the programme ended
-  send(received, std::move(reply));
 }
 
-// Stages first .. first + count - 1 (from 0), each by the engine's run_stage.
-void SimulationRunner::run_stages(std::size_t first, std::size_t count, std::uint64_t first_done) {
-  WorldSession& world = simulation_.world();
-  programme_.emplace(world, simulation_.output_interval(), first, count);
+void SimulationRunner::start_programme(std::size_t first, std::size_t count, std::uint64_t first_done) {
+  programme_.emplace(simulation_.programme(), simulation_.world(), simulation_.output_interval(), first, count,
+                     first_done);
   lifecycle_.take(Transition::kStartRun);
   message_ = "programme of " + std::to_string(count) + " stages running";
   spdlog::info("running the programme of {}: stages {} to {}, up to {} cycles", simulation_.case_name(), first + 1,
                first + count, programme_->total());
-  last_poll_ = std::chrono::steady_clock::now();
-  for (std::size_t i = first; i < first + count && !programme_->ending(); ++i) {
-    if (queue_.shutdown_requested()) {
-      programme_->stop("the server is shutting down");
-      break;
-    }
-    const std::uint64_t done = i == first ? first_done : 0;
-    programme_->start_stage(i, world, done);
-    message_ = stage_label(i) + " running";
-    announce();
-    StageResult result;
-    try {
-      result = world.run_stage(
-          i, [this] { return between_programme_cycles(); }, done);
-    } catch (const std::exception& error) {
-      programme_->fail("the engine failed at cycle " + std::to_string(world.cycle_count()) + " in " + stage_label(i) +
-                       ": " + error.what());
-      break;
-    }
-    if (programme_->outcome() == ProgrammeOutcome::kFailed || programme_unhealthy(true)) break;
-    end_stage(i, result);
-  }
-  if (!programme_->ending()) programme_->complete();
-  end_programme();
 }
 
-// After every cycle of a stage: a row of the time series at the case's
-// interval, telemetry on schedule, and every chunk_duration the commands
-// that came in, as run_chunk does between its chunks. The health check
-// comes first at both, so nothing is recorded or kept of a broken state.
-bool SimulationRunner::between_programme_cycles() {
-  const WorldSession& world = simulation_.world();
-  const auto now = std::chrono::steady_clock::now();
-  const bool row = programme_->row_due(world.cycle_count());
-  const bool poll = now - last_poll_ >= options_.chunk_duration;
-  if ((row || poll) && programme_unhealthy(false)) return false;
-  if (row) {
+// Between the commands: a chunk of the stage running, or the next stage
+// begun, or the programme ended. Whatever the engine throws fails it.
+void SimulationRunner::step_programme() {
+  ProgrammeRun& programme = *programme_;
+  if (queue_.shutdown_requested()) programme.stop("the server is shutting down");
+  try {
+    if (!programme.ending()) {
+      programme_chunk();
+    } else if (programme.outcome() == ProgrammeOutcome::kStopped && programme.stage_running() &&
+               !programme_unhealthy(true)) {
+      end_stage();  // stopped: the stage ends where it is, when that is a good state
+    }
+  } catch (const std::exception& error) {
+    programme.fail("the engine failed at cycle " + std::to_string(simulation_.world().cycle_count()) + " in " +
+                   stage_label(programme.stage()) + ": " + error.what());
+  }
+  if (programme.outcome() != ProgrammeOutcome::kRunning) end_programme();
+}
+
+// A row of the time series at the case's interval, telemetry on schedule,
+// and the stage's condition check, as the engine's run_stage orders them
+// (the row before the check at the same cycle). The health check comes
+// first, so nothing is recorded or kept of a broken state.
+void SimulationRunner::programme_chunk() {
+  ProgrammeRun& programme = *programme_;
+  WorldSession& world = simulation_.world();
+  if (!programme.stage_running()) {
+    const std::uint64_t done = programme.next_stage(world);
+    message_ = stage_label(programme.stage()) + " running";
+    announce();
+    programme.run(simulation_.programme().begin_stage(programme.stage(), world, done));
+  }
+  StageStepper& stage = programme.stepper();
+  const std::uint64_t cycles =
+      chunk_cycles(std::min(stage.cycles_to_next_stop(), programme.cycles_to_row(world.cycle_count())));
+  timed(cycles, [&] { stage.cycle(cycles); });
+  if (programme_unhealthy(false)) return;
+  if (programme.row_due(world.cycle_count())) {
     record_programme_row();
-    const std::size_t stage = programme_->stage();
-    const std::uint64_t stage_cycles = programme_->stage_cycles(world.cycle_count());
-    if (checkpoints_.due(world.cycle_count()) && world.resumable_at(stage, stage_cycles)) {
-      if (programme_unhealthy(true)) return false;  // only a healthy state is kept
-      write_checkpoint(stage, stage_cycles);
+    if (programme.ending()) return;
+    const std::uint64_t stage_cycles = programme.stage_cycles(world.cycle_count());
+    if (checkpoints_.due(world.cycle_count()) &&
+        simulation_.programme().resumable_at(programme.stage(), stage_cycles, world)) {
+      if (programme_unhealthy(true)) return;  // only a healthy state is kept
+      write_checkpoint(programme.stage(), stage_cycles);
     }
   }
   if (schedule_.due(world.cycle_count(), world.time())) publish_telemetry();
-  if (poll) {
-    last_poll_ = now;
-    for (ReceivedCommand& received : queue_.take_all()) {
-      if (queue_.shutdown_requested()) {
-        unanswered_.push_back(std::move(received));
-      } else {
-        execute(std::move(received));
-      }
-    }
-    if (queue_.shutdown_requested()) programme_->stop("the server is shutting down");
-    if (now - last_status_ >= options_.progress_interval) {
-      note_owner_left();
-      publish_status();
-    }
+  if (!stage.check()) {
     refresh_cache();
+    return;
   }
-  return !programme_->ending();
+  if (programme_unhealthy(true)) return;
+  end_stage();
+  if (!programme.ending() && !programme.stages_left()) programme.complete();
 }
 
 bool SimulationRunner::programme_unhealthy(bool always) {
@@ -153,39 +130,43 @@ bool SimulationRunner::programme_unhealthy(bool always) {
 }
 
 void SimulationRunner::record_programme_row() {
-  simulation_.world().record_tables(recorder_, programme_->stage());
+  recorder_.record(simulation_.world().view(), programme_->stage());
   if (recorder_.failed()) programme_->fail("an output file could not be written (see the error above)");
 }
 
-void SimulationRunner::end_stage(std::size_t stage, const StageResult& result) {
+void SimulationRunner::end_stage() {
   const WorldSession& world = simulation_.world();
+  const std::size_t stage = programme_->stage();
+  const StageResult result = programme_->end_stage();
   record_programme_row();
-  recorder_.record_stage(stage, world.stage_name(stage), result, world.cycle_count(), world.time());
+  recorder_.record_stage(stage, simulation_.programme().stage_name(stage), result, world.cycle_count(), world.time());
   if (recorder_.failed()) programme_->fail("an output file could not be written (see the error above)");
   spdlog::info("{}: {} cycles{}, to cycle {}", stage_label(stage), result.cycles_run,
                result.condition_met ? ", its stop condition met" : "", world.cycle_count());
 }
 
 // The final snapshot beside the tables: the state reached, or after a
-// failure the last state known to be good (the one at the failure is not).
+// failure the last state known to be good (the one at the failure is not);
+// then the run_programme command's reply.
 void SimulationRunner::end_programme() {
-  const WorldSession& world = simulation_.world();
-  const bool failed = programme_->outcome() == ProgrammeOutcome::kFailed;
+  WorldSession& world = simulation_.world();
+  ProgrammeRun& programme = *programme_;
+  programme.mark_over();
+  const bool failed = programme.outcome() == ProgrammeOutcome::kFailed;
   const std::string name = failed ? "last_good.snapshot" : "final.snapshot";
   const std::filesystem::path path = recorder_.case_directory() / name;
-  const std::uint64_t snapshot_cycle = failed ? programme_->last_good().cycle() : world.cycle_count();
+  const std::uint64_t snapshot_cycle = failed ? programme.last_good().cycle() : world.cycle_count();
   bool written = true;
   try {
-    io::write_snapshot_bytes(recorder_.own_file(name), failed
-                                                           ? programme_->last_good().bytes(simulation_.snapshot_info())
-                                                           : simulation_.snapshot_bytes());
+    io::write_snapshot_bytes(recorder_.own_file(name), failed ? programme.last_good().bytes(simulation_.snapshot_info())
+                                                              : simulation_.snapshot_bytes());
   } catch (const std::exception& error) {
     written = false;
     spdlog::error("the snapshot cannot be written: {}", error.what());
-    programme_->fail("the snapshot cannot be written: " + std::string(error.what()));
+    programme.fail("the snapshot cannot be written: " + std::string(error.what()));
   }
   const std::string at = " at cycle " + std::to_string(world.cycle_count());
-  switch (programme_->outcome()) {
+  switch (programme.outcome()) {
     case ProgrammeOutcome::kCompleted:
       lifecycle_.take(Transition::kEndRun);
       message_ = "programme complete" + at + "; final snapshot " + path.string();
@@ -193,17 +174,17 @@ void SimulationRunner::end_programme() {
       break;
     case ProgrammeOutcome::kStopped:
       lifecycle_.take(Transition::kEndRun);
-      message_ = "programme stopped" + at + " in " + stage_label(programme_->stage()) + " (" + programme_->reason() +
+      message_ = "programme stopped" + at + " in " + stage_label(programme.stage()) + " (" + programme.reason() +
                  "); final snapshot " + path.string();
       spdlog::warn("{}", message_);
       break;
     case ProgrammeOutcome::kFailed:
     case ProgrammeOutcome::kRunning:
       lifecycle_.take(Transition::kFailRun);
-      message_ = "programme failed: " + programme_->reason();
+      message_ = "programme failed: " + programme.reason();
       if (failed) {
         // The world goes back to it: what the server shows and saves from now on is sound.
-        simulation_.world().restore(programme_->last_good());
+        programme.last_good().restore(world);
         ++world_generation_;
         message_ += "; the world is back at the last good state, cycle " + std::to_string(snapshot_cycle);
         if (written) message_ += ", which is in " + path.string();
@@ -211,12 +192,25 @@ void SimulationRunner::end_programme() {
       spdlog::error("{}", message_);
       break;
   }
-  publish_status();
+  if (!programme_command_) {
+    publish_status();  // the one-shot mode: the server ends with it
+    return;
+  }
+  protocol::Reply reply;
+  reply.cycles_run = programme.done(world);
+  reply.message = message_;
+  reply.status = programme.outcome() == ProgrammeOutcome::kCompleted ? ReplyStatus::kOk
+                 : programme.outcome() == ProgrammeOutcome::kStopped ? ReplyStatus::kCancelled
+                                                                     : ReplyStatus::kFailed;
+  const ReceivedCommand received = *std::exchange(programme_command_, std::nullopt);
+  programme_.reset();  // cycle and run_until record the tables at the telemetry interval again
+  announce();          // before the reply: who reads it sees the programme ended
+  send(received, std::move(reply));
 }
 
 std::string SimulationRunner::stage_label(std::size_t stage) const {
   if (stage >= programme_->stage_count()) return "the end of the programme";
-  const std::string& name = simulation_.world().stage_name(stage);
+  const std::string& name = simulation_.programme().stage_name(stage);
   return "stage " + std::to_string(stage + 1) + "/" + std::to_string(programme_->stage_count()) +
          (name.empty() ? std::string() : " " + name);
 }

@@ -146,7 +146,7 @@ void SimulationRunner::publish_telemetry() {
     telemetry_.publish(*regions);
   }
   // A one-shot run writes its rows at the case's output interval instead.
-  if (!programme_) world.record_tables(recorder_);
+  if (!programme_) recorder_.record(world.view());
   schedule_.published(world.cycle_count(), world.time());
   last_telemetry_cycle_ = world.cycle_count();
   telemetry_published_ = true;

@@ -41,7 +41,7 @@ std::string SimulationRunner::stop() {
 
 const ReceivedCommand* SimulationRunner::run_owner() const {
   if (active_) return &active_->command();
-  return programme_command_;  // a one-shot programme has none: the server's own
+  return programme_command_ ? &*programme_command_ : nullptr;  // a one-shot programme has none: the server's own
 }
 
 // A run belongs to the client (the DDS writer) that started it. Another
@@ -119,26 +119,35 @@ void SimulationRunner::start_run(ReceivedCommand& received, CommandKind kind) {
   announce();
 }
 
-void SimulationRunner::run_chunk() {
-  WorldSession& world = simulation_.world();
+std::uint64_t SimulationRunner::chunk_cycles(std::uint64_t limit) const {
+  const WorldSession& world = simulation_.world();
   const auto target = std::chrono::duration<double>(options_.chunk_duration).count();
   const auto by_rate = cycles_per_second_ > 0.0 ? static_cast<std::uint64_t>(cycles_per_second_ * target) : 1;
-  const std::uint64_t cycles = std::clamp<std::uint64_t>(
-      std::min({by_rate, active_->cycles_to_next_stop(),
-                schedule_.cycles_until_due(world.cycle_count(), world.time(), world.time_step())}),
-      1, kMaxChunk);
+  return std::clamp<std::uint64_t>(
+      std::min({by_rate, limit, schedule_.cycles_until_due(world.cycle_count(), world.time(), world.time_step())}), 1,
+      kMaxChunk);
+}
+
+void SimulationRunner::timed(std::uint64_t cycles, const std::function<void()>& run) {
   const auto start = std::chrono::steady_clock::now();
-  bool finished = false;
-  try {
-    finished = active_->step(cycles, world);  // the engine's stage runner: the cycles, then its check
-  } catch (const std::exception& error) {
-    fail_run("the engine failed at cycle " + std::to_string(world.cycle_count()) + ": " + error.what());
-    return;
-  }
+  run();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (seconds > 0.0) {
     const double rate = static_cast<double>(cycles) / seconds;
     cycles_per_second_ = cycles_per_second_ > 0.0 ? 0.5 * (cycles_per_second_ + rate) : rate;
+  }
+}
+
+void SimulationRunner::run_chunk() {
+  WorldSession& world = simulation_.world();
+  const std::uint64_t cycles = chunk_cycles(active_->cycles_to_next_stop());
+  bool finished = false;
+  try {
+    timed(cycles,
+          [&] { finished = active_->step(cycles, world); });  // the engine's stage runner: the cycles, then its check
+  } catch (const std::exception& error) {
+    fail_run("the engine failed at cycle " + std::to_string(world.cycle_count()) + ": " + error.what());
+    return;
   }
   // A blow-up's motion (not finite, a particle flung out) is looked for
   // after every chunk: it is what a blow-up reaches between two paced
@@ -177,7 +186,7 @@ void SimulationRunner::fail_unhealthy(const StepHealth& problem) {
   } catch (const std::exception& error) {
     kept += " (it could not be written: " + std::string(error.what()) + ")";
   }
-  world.restore(good);
+  good.restore(world);
   ++world_generation_;
   fail_run("the run is unhealthy " + problem.message + kept);
 }

@@ -36,6 +36,12 @@ dem::service::CommandLimits command_limits() {
   return limits;
 }
 
+// A few cycles as the server runs them: a one-stage programme of the engine's.
+void cycle(dem::service::WorldSession& world, std::uint64_t cycles) {
+  const auto run = world.begin_run(cycles, {});
+  run->cycle(run->cycles_to_next_stop());
+}
+
 void apply(dem::service::Simulation& simulation, const dem::protocol::Command& c) {
   switch (*dem::protocol::command_kind(c.kind)) {
     case CommandKind::kLoadCase:
@@ -48,11 +54,11 @@ void apply(dem::service::Simulation& simulation, const dem::protocol::Command& c
       simulation.set_wall_servo(c.wall_servo);
       break;
     case CommandKind::kCycle:
-      simulation.world().cycle(std::min<std::uint64_t>(static_cast<std::uint64_t>(c.cycle.cycles), 3));
+      cycle(simulation.world(), std::min<std::uint64_t>(static_cast<std::uint64_t>(c.cycle.cycles), 3));
       break;
     case CommandKind::kRunUntil:
       if (c.run_until.stress || c.run_until.settlement) simulation.find_wall(c.run_until.wall, c.run_until.wall_id);
-      simulation.world().cycle(1);
+      cycle(simulation.world(), 1);
       break;
     case CommandKind::kQueryContacts:
       (void)simulation.query_contacts(c.query);
@@ -86,7 +92,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     dem::service::Simulation simulation(1, dem::fuzz::limits(), command_limits().max_query_contacts,
                                         dem::fuzz::files());
     dem::service::Simulation::Prepared prepared;
-    prepared.world = dem::service::make_session(dem::World(nine_discs().world), nine_discs().stages);
+    prepared.world = dem::service::make_session(dem::World(nine_discs().world));
+    prepared.programme = dem::service::CaseProgramme(nine_discs().stages);
     prepared.case_name = "nine_discs";
     prepared.contact_models = nine_discs().world.contact_models;
     simulation.install(std::move(prepared));

@@ -325,8 +325,12 @@ TEST(Simulation, ChecksArgumentsAndChangesNothingWhenTheyAreWrong) {
   EXPECT_EQ(status_of([&] { simulation.set_parameter({"global_damping", "", 3.0, {}}); }), ReplyStatus::kOk);
   EXPECT_EQ(world.damping().global_alpha, 3.0);
   EXPECT_EQ(status_of([&] { simulation.set_wall_servo({"top", -1, 1e6, 0.0, 0.0}); }), ReplyStatus::kOk);
-  // The servo holds the top wall at 1e6 Pa over its 400 length: it moves in until it does.
-  world.cycle(2000);
+  // The servo holds the top wall at 1e6 Pa over its 400 length: it moves in
+  // until it does (2000 cycles, a one-stage programme as a cycle command runs).
+  const auto run = world.begin_run(2000, {});
+  run->cycle(run->cycles_to_next_stop());
+  EXPECT_TRUE(run->check());
+  EXPECT_EQ(world.cycle_count(), 2000u);
   EXPECT_GT(world.read_wall(world.find_wall("top")).normal_stress, 0.5e6);
 }
 

@@ -6,12 +6,12 @@
 // kept (docs/RELIABILITY.md).
 #pragma once
 
-#include <memory>
 #include <optional>
 
 #include "dem/health.h"
 #include "dem/io/pacing.h"
 #include "dem/service/world_session.h"
+#include "dem/service/world_snapshots.h"
 
 namespace dem::service {
 
@@ -23,10 +23,10 @@ class HealthWatch {
   // The problem, if the world is unhealthy; assessed when due or `always`.
   std::optional<StepHealth> check(WorldSession& world, bool always = false);
 
-  const StateCheckpoint& last_good() const { return *last_good_; }
+  const StateCheckpoint& last_good() const { return last_good_; }
 
  private:
-  std::unique_ptr<StateCheckpoint> last_good_;
+  StateCheckpoint last_good_;
   io::Pacing pacing_{100};  // about 1/100 of the run, beside the StateCache refresh's 1/40
 };
 

@@ -25,6 +25,7 @@
 
 #include "dem/analysis/compression_analysis.h"
 #include "dem/analysis/compression_settings.h"
+#include "dem/io/case_definition.h"
 #include "dem/io/checkpoint_store.h"
 #include "dem/io/compression_csv.h"
 #include "dem/io/csv_file.h"
@@ -32,6 +33,7 @@
 #include "dem/io/regions_csv.h"
 #include "dem/io/vtk_series.h"
 #include "dem/programme.h"
+#include "dem/service/world_session.h"
 #include "dem/world.h"
 
 namespace dem::service {
@@ -62,6 +64,23 @@ class OutputRecorder {
                     double time);
   template <int Dim>
   void finish(const BasicWorld<Dim>& world);  // before a new load and at shutdown
+
+  // The same for a session's world, whatever its dimension (its read view,
+  // WorldSession::view); `output`: the case's output settings, of which
+  // the tables take the plate loading analyses, the ParaView interval and
+  // the regions.
+  void start(const std::string& case_name, WorldView world, const io::OutputSettings& output,
+             const io::ResumePoint* resume = nullptr) {
+    std::visit(
+        [&](const auto* w) { start(case_name, *w, output.compression, output.vtk_interval, resume, output.regions); },
+        world);
+  }
+  void record(WorldView world, std::optional<std::size_t> stage = std::nullopt) {
+    std::visit([&](const auto* w) { record(*w, stage); }, world);
+  }
+  void finish(WorldView world) {
+    std::visit([&](const auto* w) { finish(*w); }, world);
+  }
 
   // <output>/<case>/ of the case loaded last: its tables and a one-shot
   // run's final snapshot (also when the tables are off).

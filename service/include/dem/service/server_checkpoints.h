@@ -9,6 +9,7 @@
 #include <string>
 
 #include "dem/io/checkpoint_store.h"
+#include "dem/io/snapshot_conversion.h"
 #include "dem/service/output_recorder.h"
 #include "dem/service/world_session.h"
 

@@ -1,6 +1,7 @@
 // The simulation a server owns: the world (2D or 3D, behind WorldSession)
 // and what the service knows about it beyond the engine (the case's name
-// and description, its contact models). Every operation a command asks for
+// and description, its contact models, its loading programme and its
+// output settings). Every operation a command asks for
 // checks its arguments first and throws CommandError (a reply status and a
 // message) without changing anything; a new world replaces the old one only
 // once it is complete. Used by the engine thread only.
@@ -13,9 +14,12 @@
 #include <string_view>
 #include <vector>
 
+#include "dem/io/case_definition.h"
 #include "dem/io/file_access.h"
 #include "dem/io/resource_limits.h"
+#include "dem/io/snapshot_conversion.h"
 #include "dem/protocol/messages.h"
+#include "dem/service/case_programme.h"
 #include "dem/service/command_limits.h"
 #include "dem/service/world_session.h"
 
@@ -35,8 +39,12 @@ class Simulation {
   const std::string& case_name() const { return case_name_; }
   std::uint8_t dimension() const { return loaded() ? world_->dimension() : 0; }
   const std::string& case_digest() const { return digest_; }
+  // The case's stages (none for a snapshot).
+  const CaseProgramme& programme() const { return programme_; }
+  // The case's output settings (a snapshot's are the defaults).
+  const io::OutputSettings& output() const { return output_; }
   // Cycles between rows of the case's time series (its output.interval).
-  std::uint64_t output_interval() const { return output_interval_; }
+  std::uint64_t output_interval() const { return output_.interval; }
 
   // A world built and ready to replace the current one.
   struct Prepared {
@@ -44,9 +52,10 @@ class Simulation {
     std::string case_name;
     std::string description;
     std::vector<ContactModelDef> contact_models;
-    std::uint64_t output_interval = 100;  // the case's; a snapshot keeps the default
-    std::string digest;   // SHA-256 of the case's bytes (hex); empty for a snapshot: what a checkpoint resumes
-    std::string message;  // what was loaded, for the reply
+    CaseProgramme programme;    // the case's stages; a snapshot keeps none
+    io::OutputSettings output;  // the case's; a snapshot keeps the defaults
+    std::string digest;         // SHA-256 of the case's bytes (hex); empty for a snapshot: what a checkpoint resumes
+    std::string message;        // what was loaded, for the reply
   };
   // Prepares worlds for it: a value, so a preparation may run on another
   // thread and even outlive the simulation (an abandoned load).
@@ -104,7 +113,8 @@ class Simulation {
   std::string case_name_;
   std::string description_;
   std::vector<ContactModelDef> contact_models_;
-  std::uint64_t output_interval_ = 100;
+  CaseProgramme programme_;
+  io::OutputSettings output_;
   std::string digest_;
 };
 

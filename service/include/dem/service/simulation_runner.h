@@ -46,11 +46,12 @@ class SimulationRunner {
   // between two chunks of cycles.
   void run();
   // The one-shot mode (ServerOptions::run_programme), instead of run(): runs
-  // the loaded case's loading programme stage by stage with the engine's
-  // run_stage, answering commands and publishing telemetry between cycles,
-  // writes its time series at the case's output interval, then the final
-  // snapshot, or after a failure the last good state. Returns when the
-  // programme is over: completed, stopped (stop, shutdown, a signal) or failed.
+  // the loaded case's loading programme stage by stage, each a stage of
+  // the engine's stepped chunk by chunk by the command loop, which answers
+  // commands and publishes telemetry between chunks; writes its time
+  // series at the case's output interval, then the final snapshot, or
+  // after a failure the last good state. Returns when the programme is
+  // over: completed, stopped (stop, shutdown, a signal) or failed.
   void run_programme();
   // How the server learns whether the client that started a run is still
   // on the domain (CommandReceiver::writer_alive).
@@ -64,26 +65,41 @@ class SimulationRunner {
   void finish();
 
  private:
+  // The command loop: commands as they arrive, and between them a chunk
+  // of the run going (a cycle, run_until or programme). run() serves until
+  // a shutdown request, the one-shot mode until its programme is over; a
+  // programme going when the shutdown comes is stopped and ended first.
+  void serve(bool until_programme_ends);
+  bool programme_going() const { return programme_ && !programme_->over(); }
+  bool run_going() const { return active_ || programme_going(); }  // a cycle, run_until or programme
   void execute(ReceivedCommand received);
   void start_run(ReceivedCommand& received, protocol::CommandKind kind);
   void run_chunk();
+  // Cycles for the next chunk: about options_.chunk_duration at the
+  // measured rate, no further than `limit` (the run's next stop) or the
+  // next telemetry.
+  std::uint64_t chunk_cycles(std::uint64_t limit) const;
+  // Runs `run`, a chunk of `cycles`, and measures the rate.
+  void timed(std::uint64_t cycles, const std::function<void()>& run);
   void complete_run();
   // `transition`: kEndRun (completed, stopped) or kFailRun.
   void end_run(protocol::ReplyStatus status, const std::string& message, Transition transition = Transition::kEndRun);
   void fail_run(const std::string& message);
   void fail_unhealthy(const StepHealth& problem);
 
-  // The one-shot mode and run_programme (simulation_runner_programme.cpp).
-  // The run_programme command runs the same stages from the command loop;
-  // its one reply comes when they end (completed, stopped or failed), and
-  // the server then takes commands again.
-  void run_programme(const ReceivedCommand& received);
-  // `first_done`: cycles of the first stage run already (a resumed checkpoint's).
-  void run_stages(std::size_t first, std::size_t count, std::uint64_t first_done = 0);
-  bool between_programme_cycles();
+  // The one-shot mode and run_programme (simulation_runner_programme.cpp):
+  // the stages are stepped by the command loop as a cycle is, and the
+  // run_programme command's one reply comes when they end (completed,
+  // stopped or failed).
+  void run_programme(ReceivedCommand& received);
+  // Stages first .. first + count - 1; `first_done`: cycles of the first
+  // run already (a resumed checkpoint's).
+  void start_programme(std::size_t first, std::size_t count, std::uint64_t first_done = 0);
+  void step_programme();                  // a chunk of the programme, or its end
+  void programme_chunk();                 // the next stage begun if none runs, a chunk of it, a row, its end
   bool programme_unhealthy(bool always);  // fails the programme when the world's health says so
   void record_programme_row();
-  void end_stage(std::size_t stage, const StageResult& result);
+  void end_stage();
   void end_programme();
   std::string stage_label(std::size_t stage) const;
 
@@ -125,9 +141,9 @@ class SimulationRunner {
   std::optional<HealthWatch> active_health_;   // the running cycle or run_until's
   std::unique_ptr<BackgroundLoad> abandoned_;  // a load given up on, still running to its end
   ServerCheckpoints checkpoints_;
-  std::optional<io::ResumePoint> resumed_;  // the checkpoint --resume started from, until its programme runs
-  std::optional<ProgrammeRun> programme_;   // a one-shot run's programme, or run_programme's
-  const ReceivedCommand* programme_command_ = nullptr;  // run_programme's, while it runs
+  std::optional<io::ResumePoint> resumed_;            // the checkpoint --resume started from, until its programme runs
+  std::optional<ProgrammeRun> programme_;             // a one-shot run's programme, or run_programme's
+  std::optional<ReceivedCommand> programme_command_;  // run_programme's, while it runs
   std::function<bool(std::uint64_t)> writer_alive_ = [](std::uint64_t) { return true; };
   bool owner_left_logged_ = false;
   std::vector<std::string> awaiting_refresh_;  // clients whose commands the StateCache does not show yet
@@ -144,9 +160,8 @@ class SimulationRunner {
   };
   const Readout& readout() const;
   mutable std::optional<Readout> readout_;
-  std::uint64_t world_generation_ = 0;                 // a new world, or one put back: another readout
-  std::chrono::steady_clock::time_point last_poll_{};  // of the queue, during a programme
-  std::vector<ReceivedCommand> unanswered_;            // taken from the queue after a shutdown request
+  std::uint64_t world_generation_ = 0;       // a new world, or one put back: another readout
+  std::vector<ReceivedCommand> unanswered_;  // taken from the queue after a shutdown request
   std::string message_ = "started";
   std::uint64_t last_telemetry_cycle_ = 0;
   bool telemetry_published_ = false;

@@ -1,45 +1,41 @@
 // The engine behind the service, whatever its dimension: the one interface
 // the runner and the commands use to step, steer and read a 2D World or a
-// 3D World3, and to run the case's loading programme. WorldSessionT<Dim>
-// implements it over the engine and the readout functions
-// (engine_readout.h); a call per command or per chunk of cycles, never per
-// particle (run_stage's callback excepted: it is how a one-shot run stays
-// responsive inside a stage).
+// 3D World3. WorldSessionT<Dim> implements it over the engine and the
+// readout functions (engine_readout.h); a call per command or per chunk of
+// cycles, never per particle. What else the service does with a world
+// works on its read view (view()) in helpers of its own: the case's tables
+// (OutputRecorder), snapshots and checkpoints (world_snapshots.h) and the
+// case's loading programme (case_programme.h).
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
-#include "dem/analysis/compression_settings.h"
 #include "dem/health.h"
 #include "dem/io/case_definition.h"
-#include "dem/io/checkpoint_store.h"
-#include "dem/io/snapshot_conversion.h"
 #include "dem/programme.h"
 #include "dem/protocol/messages.h"
 #include "dem/service/engine_readout.h"
+#include "dem/snapshot.h"
 #include "dem/world.h"
 
 namespace dem::service {
 
-class OutputRecorder;
+// A read view of a session's world in its dimension, valid while the
+// session is and until its world is replaced (WorldSession::restore).
+using WorldView = std::variant<const BasicWorld<2>*, const BasicWorld<3>*>;
+// A whole state of either dimension, as the engine copies it.
+using AnyWorldSnapshot = std::variant<WorldSnapshotT<2>, WorldSnapshotT<3>>;
+// A stage of the engine's of either dimension.
+using AnyStageDef = std::variant<StageDefT<2>, StageDefT<3>>;
 
-// The whole state at one cycle, copied in memory (the engine's snapshot) so
-// it can be written later: a one-shot run that fails writes its last good one.
-class StateCheckpoint {
- public:
-  virtual ~StateCheckpoint() = default;
-  virtual std::uint64_t cycle() const = 0;
-  virtual std::string bytes(const io::SnapshotInfo& info) const = 0;  // a serialized dem.proto.Snapshot
-};
-
-// A one-stage programme of the engine's (StageRunT) stepped by the runner
-// between the commands: cycle() and check() in turn until the stage is over.
+// A stage of the engine's (StageRunT) stepped by the runner between the
+// commands: cycle() and check() in turn until the stage is over.
 class StageStepper {
  public:
   virtual ~StageStepper() = default;
@@ -53,8 +49,9 @@ class WorldSession {
  public:
   virtual ~WorldSession() = default;
 
+  // Reading.
   virtual std::uint8_t dimension() const = 0;
-  virtual void cycle(std::uint64_t cycles) = 0;
+  virtual WorldView view() const = 0;
   virtual std::uint64_t cycle_count() const = 0;
   virtual double time() const = 0;       // s
   virtual double time_step() const = 0;  // s
@@ -67,6 +64,9 @@ class WorldSession {
   // every chunk, for what a blow-up reaches between two paced health
   // assessments.
   virtual bool motion_suspect() const = 0;
+  // The engine's health status of the state now (a pass over the particles
+  // and contacts: HealthWatch paces it).
+  virtual StepHealth assess_health() = 0;
 
   virtual WallId find_wall(std::string_view name) const = 0;  // kInvalidId when unknown
   virtual std::string wall_name(WallId wall) const = 0;
@@ -79,71 +79,37 @@ class WorldSession {
   virtual std::vector<protocol::ContactEntry> query_contacts(const ContactFilter& filter) const = 0;
   virtual std::optional<ServoLimits> default_servo_limits(WallId wall,
                                                           const std::vector<ContactModelDef>& models) const = 0;
+  virtual DampingDef damping() const = 0;
+  virtual const std::vector<MaterialDef>& materials() const = 0;
 
   // Steering. A 2D world refuses out-of-plane vectors (CommandError); the
   // engine's own checks throw DefinitionError.
   virtual void set_wall_velocity(WallId wall, const protocol::Vector3& velocity,
                                  const protocol::Vector3& angular_velocity) = 0;
   virtual void set_wall_servo(WallId wall, const ServoDef& servo) = 0;
-  virtual DampingDef damping() const = 0;
   virtual void set_damping(const DampingDef& damping) = 0;
   virtual void set_time_step_fraction(double fraction) = 0;
-  virtual const std::vector<MaterialDef>& materials() const = 0;
   virtual void set_friction(MaterialId material, double friction) = 0;
   virtual void set_gravity(const protocol::Vector3& gravity) = 0;
   virtual void set_threads(int threads) = 0;
+  // Replaces the world by a state of its dimension (std::bad_variant_access
+  // for the other); its threads stay and the health monitor starts afresh
+  // from it.
+  virtual void restore(const AnyWorldSnapshot& state) = 0;
 
-  virtual std::string snapshot_bytes(const io::SnapshotInfo& info) const = 0;
-  virtual std::unique_ptr<StateCheckpoint> checkpoint() const = 0;
-  // Puts the world back to a checkpoint this session took (its stages and
-  // threads stay); the health monitor starts afresh from it.
-  virtual void restore(const StateCheckpoint& checkpoint) = 0;
-  // The engine's health status of the state now (a pass over the particles
-  // and contacts: HealthWatch paces it).
-  virtual StepHealth assess_health() = 0;
-
-  // The case's loading programme: its stages as io converted them (none for
-  // a world restored from a snapshot), run by the engine's run_stage.
-  virtual std::size_t stage_count() const = 0;
-  virtual const std::string& stage_name(std::size_t stage) const = 0;
-  virtual std::uint64_t stage_cycles(std::size_t stage) const = 0;  // its length, or its cap when it has conditions
-  // Runs one stage; `between_cycles` is called after every cycle and ends
-  // the stage early by returning false. Throws what the engine throws.
-  // `done`: the stage's cycles run already (a resumed checkpoint's): its
-  // start actions are in the state, its length and minimum count from
-  // there; the result counts them.
-  virtual StageResult run_stage(std::size_t stage, const std::function<bool()>& between_cycles,
-                                std::uint64_t done = 0) = 0;
+  // Stepping: a stage of the engine's on this session's world, its start
+  // actions done (std::bad_variant_access for a stage of the other
+  // dimension). The stepper steps this session's world (valid while this
+  // session is).
+  virtual std::unique_ptr<StageStepper> begin_stage(AnyStageDef stage) = 0;
   // A cycle or run_until command as a one-stage programme: `cycles`, ended
-  // early by `until` (the engine's stop rule), no start actions. The
-  // stepper steps this session's world (valid while this session is).
+  // early by `until` (the engine's stop rule), no start actions.
   virtual std::unique_ptr<StageStepper> begin_run(std::uint64_t cycles, const StopConditions& until) = 0;
-  // Whether a checkpoint `stage_cycles` into the stage can be resumed as if
-  // never interrupted: before its end, on one of its condition checks, and
-  // not one where the conditions hold (dem/programme.h) - the stage
-  // ends there, after the row the checkpoint follows.
-  virtual bool resumable_at(std::size_t stage, std::uint64_t stage_cycles) const = 0;
-  // Replaces the world by a framed snapshot's (a checkpoint of this case);
-  // the stages stay. Throws SnapshotError or DefinitionError.
-  virtual void restore_bytes(std::string_view snapshot_bytes, const std::string& source) = 0;
-
-  // The per-case tables (the recorder writes them for this world's
-  // dimension); `stage`, the stage running, when a programme runs (the
-  // plate loading analyses follow programmes only).
-  virtual void start_tables(OutputRecorder& recorder, const std::string& case_name,
-                            const io::ResumePoint* resume = nullptr) const = 0;
-  virtual void record_tables(OutputRecorder& recorder, std::optional<std::size_t> stage = std::nullopt) const = 0;
-  virtual void finish_tables(OutputRecorder& recorder) const = 0;
 };
 
-// `compression`: the case's plate loading analyses (output.compression), if
-// any; `vtk_interval`: the case's cycles between ParaView files of a
-// programme (output.vtk_interval; 0 = none); `regions`: the case's
-// measurement regions (output.region), published and written each row.
+// `regions`: the case's measurement regions (output.region), read for the
+// telemetry (read_regions).
 template <int Dim>
-std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world, std::vector<StageDefT<Dim>> stages = {},
-                                           std::optional<analysis::CompressionSettings> compression = std::nullopt,
-                                           std::uint64_t vtk_interval = 0,
-                                           std::vector<io::MeasurementRegion> regions = {});
+std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world, std::vector<io::MeasurementRegion> regions = {});
 
 }  // namespace dem::service

@@ -1,0 +1,47 @@
+// A case's loading programme as the service runs it: its stages as io
+// converted them (none for a world restored from a snapshot), each begun
+// on a session's world as a stage of the engine's (StageRunT) that the
+// runner steps chunk by chunk between the commands, as it steps a cycle or
+// run_until command (docs/SERVICE.md, "Programmes").
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "dem/programme.h"
+#include "dem/service/world_session.h"
+
+namespace dem::service {
+
+class CaseProgramme {
+ public:
+  CaseProgramme() = default;  // no stages
+  template <int Dim>
+  explicit CaseProgramme(std::vector<StageDefT<Dim>> stages) : stages_(std::move(stages)) {}
+
+  std::size_t stage_count() const;
+  const std::string& stage_name(std::size_t stage) const;
+  std::uint64_t stage_cycles(std::size_t stage) const;  // its length, or its cap when it has conditions
+
+  // Begins `stage` on `world` (a session of the programme's dimension):
+  // its start actions, then its cycles. `done`: the stage's cycles run
+  // already (a resumed checkpoint's): its start actions are in the state,
+  // its length and minimum count from there (stage_remainder), and the
+  // stepper counts only the rest. Throws what the engine throws.
+  std::unique_ptr<StageStepper> begin_stage(std::size_t stage, WorldSession& world, std::uint64_t done = 0) const;
+
+  // Whether a checkpoint `stage_cycles` into `stage`, with `world` as it is
+  // now, can be resumed as if never interrupted: before the stage's end, on
+  // one of its condition checks, and not one where the conditions hold
+  // (dem/programme.h) - the stage ends there, after the row the checkpoint
+  // follows.
+  bool resumable_at(std::size_t stage, std::uint64_t stage_cycles, const WorldSession& world) const;
+
+ private:
+  std::variant<std::vector<StageDefT<2>>, std::vector<StageDefT<3>>> stages_;
+};
+
+}  // namespace dem::service
