@@ -24,6 +24,12 @@ address_a=10.216.0.1 address_b=10.216.0.2
 pids=()
 cleanup() {
   for pid in "${pids[@]}"; do kill -9 "$pid" 2>/dev/null || true; done
+  # $! is the subshell of on_a/on_b, not what `ip netns exec` started in it:
+  # everything still running inside the namespaces goes too, or a server
+  # left behind keeps the test's file descriptors open (a caller's lock).
+  for ns in "$ns_a" "$ns_b"; do
+    for pid in $(ip netns pids "$ns" 2>/dev/null); do kill -9 "$pid" 2>/dev/null || true; done
+  done
   ip netns del "$ns_a" 2>/dev/null || true  # takes the veth pair with it
   ip netns del "$ns_b" 2>/dev/null || true
 }
