@@ -26,13 +26,6 @@ inline Symmetric cofactors(const Symmetric& a) {
           a.xx * a.zz - a.xz * a.xz, a.xy * a.xz - a.xx * a.yz, a.xx * a.yy - a.xy * a.xy};
 }
 
-// R diag(w) R^T entry by entry: sum_k R_ak w_k R_bk.
-inline Symmetric turned_diagonal(const Mat3& r, const Vec3& w) {
-  const Vec3 r0 = r.row(0).transpose(), r1 = r.row(1).transpose(), r2 = r.row(2).transpose();
-  const Vec3 w0 = r0.cwiseProduct(w), w1 = r1.cwiseProduct(w);
-  return {w0.dot(r0), w0.dot(r1), w0.dot(r2), w1.dot(r1), w1.dot(r2), r2.cwiseProduct(w).dot(r2)};
-}
-
 // Below this |g| one step of Halley's method from the last evaluation,
 // with the point carried along to second order, ends the search: what it
 // leaves is of order g^3 (1e-12 of the potential, about 1e-13 m on
@@ -98,15 +91,6 @@ inline double finish(const Symmetric& mi, Evaluation& e, double mu) {
   return mu + step;
 }
 
-// Whether an evaluation at mu ends the search with finish(): close enough,
-// and Newton's step stays inside the bracket its sign gives (mu up to
-// infinity or zero up to mu).
-inline bool ends(const Evaluation& e, double mu) {
-  if (!(std::abs(e.g) < kSecondOrder) || !(e.slope < 0.0)) return false;
-  const double next = mu - e.g / e.slope;
-  return e.g > 0.0 ? next > mu : next > 0.0 && next < mu;
-}
-
 // The two warm-started searches side by side, one in each lane of a pair
 // of doubles (lane 0 body i's, lane 1 body j's): they run the same
 // operations on different matrices, so each product serves both. Lane by
@@ -120,8 +104,19 @@ struct PairMatrix {
   Pair xx, xy, xz, yy, yz, zz;
 };
 
+inline Pair swapped(Pair a) { return Pair{a[1], a[0]}; }
+inline Pair magnitude(Pair a) { return a < 0.0 ? -a : a; }
+inline Pair root(Pair a) { return Pair{std::sqrt(a[0]), std::sqrt(a[1])}; }
+inline bool both(decltype(Pair{} < Pair{}) condition) { return condition[0] && condition[1]; }
 inline PairMatrix pair_of(const Symmetric& a, const Symmetric& b) {
   return {Pair{a.xx, b.xx}, Pair{a.xy, b.xy}, Pair{a.xz, b.xz}, Pair{a.yy, b.yy}, Pair{a.yz, b.yz}, Pair{a.zz, b.zz}};
+}
+inline PairMatrix swapped(const PairMatrix& m) {
+  return {swapped(m.xx), swapped(m.xy), swapped(m.xz), swapped(m.yy), swapped(m.yz), swapped(m.zz)};
+}
+inline PairMatrix cofactors(const PairMatrix& a) {
+  return {a.yy * a.zz - a.yz * a.yz, a.xz * a.yz - a.xy * a.zz, a.xy * a.yz - a.xz * a.yy,
+          a.xx * a.zz - a.xz * a.xz, a.xy * a.xz - a.xx * a.yz, a.xx * a.yy - a.xy * a.xy};
 }
 inline PairVector pair_of(const Vec3& a, const Vec3& b) {
   return {Pair{a.x(), b.x()}, Pair{a.y(), b.y()}, Pair{a.z(), b.z()}};
@@ -133,46 +128,67 @@ inline PairVector operator*(const PairMatrix& m, const PairVector& v) {
 }
 inline PairVector operator*(Pair s, const PairVector& v) { return {s * v.x, s * v.y, s * v.z}; }
 inline PairVector operator+(const PairVector& a, const PairVector& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline PairVector operator-(const PairVector& a, const PairVector& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 inline Pair dot(const PairVector& a, const PairVector& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
-// Both searches' first evaluation (evaluate) and, where both end there,
-// their last step (finish): Newton's to first order when both |g| are
-// below kFirstOrder, else Halley's for both. Returns false when either
-// does not end there (the caller then searches one body at a time).
-inline bool deepest_pair(const Symmetric& mi, const Symmetric& mj, const Vec3& mj_d0, const Vec3& mi_d0, double mu_i,
-                         double mu_j, Deepest& di, Deepest& dj) {
-  const PairMatrix own = pair_of(mi, mj), other = pair_of(mj, mi);
-  const PairVector rhs = pair_of(mj_d0, Vec3(-mi_d0));
-  const Pair mu{mu_i, mu_j};
+// Both warm searches' first evaluation and, where both end there, their
+// last step (as evaluate and finish would take them): Newton's to first
+// order when both |g| are below kFirstOrder, else Halley's for both.
+// own holds (M_i, M_j), rhs (M_j d0, -M_i d0); the points come back as
+// arms d from their centres, with the half-gradients M_own d there. Returns false when either search does not end
+// there (the caller then searches one body at a time).
+//
+// Unnormalised, so that one division serves: with A = M_other + mu M_own,
+// D = det A and adj(A) = D A^-1, the vectors u = adj(A) rhs = D d,
+// w = M_own u = D M_own d and z = adj(A) w = -D^2 d' give
+//   g = E / D^2 with E = u.w - D^2,   g' = -2 (w.z) / D^3,
+// Newton's step -g / g' = E D / Q with Q = 2 w.z, and Halley's
+// -(g / g') / (1 - g g'' / (2 g'^2)) = 2 E D (w.z) / Q with
+// Q = 4 (w.z)^2 - 3 E z^T M_own z (g'' = 6 z^T M_own z / D^4). The point
+// d + s d' + s^2 d'' / 2, with d'' = 2 adj(A) M_own z / D^3 and t = s / D, is
+// (u - t z + t^2 adj(A) M_own z) / D. 1 / (D Q) gives both 1 / D and
+// 1 / Q; the search's own checks (|g| small, g' < 0, the new mu inside the
+// bracket) need no division. The powers of D grow as a body's size to the
+// -40th: for bodies too small or too large for that in double precision
+// (below about 1e-7 m), D Q leaves its range and the search goes the
+// scalar way, whose quantities are normalised.
+inline bool deepest_pair(const PairMatrix& own, const PairVector& rhs, Pair mu, PairVector& d, PairVector& gradient,
+                         Pair& ends) {
+  const PairMatrix other = swapped(own);
   const PairMatrix a{other.xx + mu * own.xx, other.xy + mu * own.xy, other.xz + mu * own.xz,
                      other.yy + mu * own.yy, other.yz + mu * own.yz, other.zz + mu * own.zz};
-  const PairMatrix adj{a.yy * a.zz - a.yz * a.yz, a.xz * a.yz - a.xy * a.zz, a.xy * a.yz - a.xz * a.yy,
-                       a.xx * a.zz - a.xz * a.xz, a.xy * a.xz - a.xx * a.yz, a.xx * a.yy - a.xy * a.xy};
-  const Pair inverse_determinant = 1.0 / (a.xx * adj.xx + a.xy * adj.xy + a.xz * adj.xz);
-  PairVector d = inverse_determinant * (adj * rhs);
-  const PairVector own_d = own * d;
-  const Pair g = dot(d, own_d) - 1.0;
-  const PairVector slope_d = -inverse_determinant * (adj * own_d);
-  const Pair slope = 2.0 * dot(own_d, slope_d);
-  for (int k = 0; k < 2; ++k) {
-    if (!(std::abs(g[k]) < kSecondOrder) || !(slope[k] < 0.0)) return false;
-    const double next = mu[k] - g[k] / slope[k];
-    if (!(g[k] > 0.0 ? next > mu[k] : next > 0.0 && next < mu[k])) return false;
-  }
-  const Pair newton = -g / slope;
-  Pair step = newton;
-  if (std::abs(g[0]) < kFirstOrder && std::abs(g[1]) < kFirstOrder) {
-    d = d + newton * slope_d;
+  const PairMatrix adj = cofactors(a);
+  const Pair det = a.xx * adj.xx + a.xy * adj.xy + a.xz * adj.xz;
+  const PairVector u = adj * rhs;
+  const PairVector w = own * u;
+  const PairVector z = adj * w;
+  const Pair wz = dot(w, z);
+  const Pair det2 = det * det;
+  const Pair e = dot(u, w) - det2;  // g D^2
+  const Pair size = magnitude(e);
+  // |g| < kSecondOrder, g' < 0 and, for g < 0, mu + E D / (2 w.z) > 0.
+  if (!both((size < kSecondOrder * det2) & (wz > 0.0) & (det > 0.0) & (2.0 * mu * wz + e * det > 0.0))) return false;
+  // M_own z serves Halley's step and the half-gradient at the new point,
+  // M_own d = (w - t M_own z + t^2 M_own adj(A) M_own z) / D, which thus
+  // waits on the division for one product only.
+  const PairVector own_z = own * z;
+  const bool first_order = both(size < kFirstOrder * det2);
+  const Pair q = first_order ? 2.0 * wz : 4.0 * wz * wz - 3.0 * e * dot(z, own_z);
+  const Pair t_over_r = first_order ? e * det : 2.0 * e * wz * det;  // t D Q
+  const Pair dq = det * q;
+  if (!both((dq > 1e-300) & (dq < 1e300))) return false;
+  const Pair r = 1.0 / dq;
+  const Pair t = t_over_r * r, inverse_det = q * r;
+  ends = mu + t * det;
+  if (first_order) {
+    d = inverse_det * (u - t * z);
+    gradient = inverse_det * (w - t * own_z);
   } else {
-    const PairVector own_slope_d = own * slope_d;
-    const Pair curvature = 6.0 * dot(slope_d, own_slope_d);  // g''
-    step = newton / (1.0 - g * curvature / (2.0 * slope * slope));
-    const PairVector second = (-2.0 * inverse_determinant) * (adj * own_slope_d);  // d''
-    d = d + (step * slope_d + (0.5 * step * step) * second);
+    const PairVector second = adj * own_z;
+    const Pair tt = t * t;
+    d = inverse_det * (u - t * z + tt * second);
+    gradient = inverse_det * (w - t * own_z + tt * (own * second));
   }
-  const Pair ends = mu + step;
-  di = {lane(d, 0), ends[0]};
-  dj = {lane(d, 1), ends[1]};
   return true;
 }
 
@@ -254,11 +270,30 @@ inline double equivalent_radius(const Symmetric& k, const Vec3& u) {
 }  // namespace
 
 EllipsoidFrame ellipsoid_frame(const Vec3& axes, const Quaternion& orientation) {
-  const Mat3 r = orientation.toRotationMatrix();
+  // R diag(w) R^T = w2 I + (w1 - w2) c1 c1^T + (w3 - w2) c3 c3^T for the
+  // columns c1, c2, c3 of a rotation (c1 c1^T + c2 c2^T + c3 c3^T = I):
+  // two columns of R and their two outer products serve both matrices,
+  // M with w = a^-2 (eqs. 43-44) and M^-1 with w = a^2.
+  const double x = orientation.x(), y = orientation.y(), z = orientation.z(), w = orientation.w();
+  const Vec3 c1(1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y + w * z), 2.0 * (x * z - w * y));
+  const Vec3 c3(2.0 * (x * z + w * y), 2.0 * (y * z - w * x), 1.0 - 2.0 * (x * x + y * y));
+  const Symmetric o1{c1.x() * c1.x(), c1.x() * c1.y(), c1.x() * c1.z(),
+                     c1.y() * c1.y(), c1.y() * c1.z(), c1.z() * c1.z()};
+  const Symmetric o3{c3.x() * c3.x(), c3.x() * c3.y(), c3.x() * c3.z(),
+                     c3.y() * c3.y(), c3.y() * c3.z(), c3.z() * c3.z()};
+  const auto turned = [&](double w1, double w2, double w3) {
+    Symmetric m = o1.scaled(w1 - w2).plus(w3 - w2, o3);
+    m.xx += w2;
+    m.yy += w2;
+    m.zz += w2;
+    return m;
+  };
   const Vec3 squares = axes.cwiseAbs2();
-  // M = (R A^2 R^T)^-1 by its cofactors, whose determinant is (a1 a2 a3)^2.
-  const Symmetric reach = turned_diagonal(r, squares);
-  return {cofactors(reach).scaled(1.0 / (squares.x() * squares.y() * squares.z())), reach};
+  // a_k^-2 from one division: 1 / (a1 a2 a3)^2 times the other two squares.
+  const double inverse_product = 1.0 / (squares.x() * squares.y() * squares.z());
+  return {turned(squares.y() * squares.z() * inverse_product, squares.x() * squares.z() * inverse_product,
+                 squares.x() * squares.y() * inverse_product),
+          turned(squares.x(), squares.y(), squares.z())};
 }
 
 EllipsoidContact ellipsoid_contact(const EllipsoidFrame& i, const Vec3& centre_i, const EllipsoidFrame& j,
@@ -266,38 +301,54 @@ EllipsoidContact ellipsoid_contact(const EllipsoidFrame& i, const Vec3& centre_i
   const Symmetric& mi = i.potential;
   const Symmetric& mj = j.potential;
   const Vec3 d0 = centre_j - centre_i;
-  const Vec3 mi_d0 = mi * d0, mj_d0 = mj * d0;
-  const double f0_i = d0.dot(mi_d0), f0_j = d0.dot(mj_d0);
-  Deepest di, dj;
-  if (f0_i > 1.0 && f0_j > 1.0 && mu_i > 0.0 && mu_j > 0.0) {
-    // Warm-started, both searches usually end after their first
-    // evaluation: the two at once.
-    if (!deepest_pair(mi, mj, mj_d0, mi_d0, mu_i, mu_j, di, dj)) {
-      di = deepest_point(mi, mj, d0, mj_d0, f0_i, mu_i);
-      dj = deepest_point(mj, mi, -d0, -mi_d0, f0_j, mu_j);
-    }
-  } else {
-    di = deepest_point(mi, mj, d0, mj_d0, f0_i, mu_i);    // on i, deepest in j's potential
-    dj = deepest_point(mj, mi, -d0, -mi_d0, f0_j, mu_j);  // on j, deepest in i's
+  const PairMatrix own = pair_of(mi, mj);
+  const PairVector both_d0 = pair_of(d0, d0);
+  const PairVector own_d0 = own * both_d0;  // (M_i d0, M_j d0)
+  const Pair f0 = dot(both_d0, own_d0);     // (f_i(c_j), f_j(c_i)) + 1
+  PairVector d, g;                          // the arms P_i - c_i, P_j - c_j, and half the potentials' gradients there
+  Pair mu;
+  // Warm-started, both searches usually end after their first evaluation:
+  // the two at once.
+  const Pair sign{1.0, -1.0};
+  if (!(f0[0] > 1.0 && f0[1] > 1.0 && mu_i > 0.0 && mu_j > 0.0 &&
+        deepest_pair(own, {sign * swapped(own_d0.x), sign * swapped(own_d0.y), sign * swapped(own_d0.z)},
+                     Pair{mu_i, mu_j}, d, g, mu))) {
+    const Vec3 mi_d0 = lane(own_d0, 0), mj_d0 = lane(own_d0, 1);
+    const Deepest di = deepest_point(mi, mj, d0, mj_d0, f0[0], mu_i);    // on i, deepest in j's potential
+    const Deepest dj = deepest_point(mj, mi, -d0, -mi_d0, f0[1], mu_j);  // on j, deepest in i's
+    d = pair_of(di.arm, dj.arm);
+    g = own * d;
+    mu = Pair{di.multiplier, dj.multiplier};
   }
-  // The outward normals there are opposite (Lagrange); average them.
-  const Vec3 gi = mi * di.arm, gj = mj * dj.arm;  // half the potentials' gradients
-  // 1/|g_i| and 1/|g_j| from one division, the normal scaled by a
-  // reciprocal (Eigen's normalized() divides each entry).
-  const double norm_gi = gi.norm(), norm_gj = gj.norm();
-  const double inverse_product = 1.0 / (norm_gi * norm_gj);
-  const double inverse_gi = norm_gj * inverse_product, inverse_gj = norm_gi * inverse_product;
-  const Vec3 sum = inverse_gi * gi - inverse_gj * gj;
+  // The outward normals there are opposite (Lagrange) when the bodies
+  // just touch; the contact normal is along the average of the two unit
+  // normals, g_i / |g_i| - g_j / |g_j|, here times |g_i| |g_j|:
+  // s = |g_j| g_i - |g_i| g_j, from one root for both lengths.
+  const Pair squares = dot(g, g);  // |g_i|^2, |g_j|^2
+  const Pair lengths = root(squares);
+  const PairVector weighted = swapped(lengths) * g;
+  const Vec3 sum = lane(weighted, 0) - lane(weighted, 1);
+  const Vec3 di = lane(d, 0), dj = lane(d, 1);
+  // Equivalent radius (see equivalent_radius): the curvature tensors sum to
+  // K = M_i / |g_i| + M_j / |g_j| = K' / (|g_i| |g_j|) with
+  // K' = |g_j| M_i + |g_i| M_j, so k1 k2 = s^T adj(K) s / |s|^2 =
+  // s^T adj(K') s / (|g_i| |g_j|)^2 |s|^2; from the unnormalised normal, so
+  // that it need not wait for the root.
+  const double squared_length = sum.squaredNorm();
+  const double product = sum.dot(cofactors(mi.scaled(lengths[1]).plus(lengths[0], mj)) * sum);
+  const double scale = squares[0] * squares[1] * squared_length;  // R_e^2 k1 k2 |s|^2 (|g_i| |g_j|)^2
+  // 1 / |s| and R_e = (k1 k2)^(-1/2), one division and one root for both.
+  const Pair roots = root(Pair{1.0, scale} / Pair{squared_length, std::max(product, 1e-300 * scale)});
+  const Vec3 gap = di - dj - d0;  // P_i - P_j
   EllipsoidContact c;
-  c.normal = (1.0 / std::sqrt(sum.squaredNorm())) * sum;
-  c.overlap = (di.arm - dj.arm - d0).dot(c.normal);  // (P_i - P_j) . n
-  c.first_point = centre_i + di.arm;
-  c.second_point = centre_j + dj.arm;
+  c.normal = roots[0] * sum;
+  c.overlap = roots[0] * gap.dot(sum);  // (P_i - P_j) . n
+  c.first_point = centre_i + di;
+  c.second_point = centre_j + dj;
   c.point = 0.5 * (c.first_point + c.second_point);
-  // From the unnormalised normal, so that it need not wait for the root.
-  c.effective_radius = equivalent_radius(mi.scaled(inverse_gi).plus(inverse_gj, mj), sum);
-  c.multiplier_i = di.multiplier;
-  c.multiplier_j = dj.multiplier;
+  c.effective_radius = roots[1];
+  c.multiplier_i = mu[0];
+  c.multiplier_j = mu[1];
   return c;
 }
 
