@@ -20,6 +20,13 @@ Mat3 full(const Symmetric& m) {
   return out;
 }
 
+// u^T A u from u's products, which wait on u only: A's entries then need
+// one product and a sum each, where A u and a dot product take two sums.
+inline double quadratic_form(const Symmetric& a, const Vec3& u) {
+  const double x = u.x(), y = u.y(), z = u.z();
+  return (a.xx * (x * x) + a.yy * (y * y) + a.zz * (z * z)) + 2.0 * (a.xy * (x * y) + a.xz * (x * z) + a.yz * (y * z));
+}
+
 // The matrix of cofactors (for a symmetric matrix, its adjugate).
 inline Symmetric cofactors(const Symmetric& a) {
   return {a.yy * a.zz - a.yz * a.yz, a.xz * a.yz - a.xy * a.zz, a.xy * a.yz - a.xz * a.yy,
@@ -146,12 +153,13 @@ inline Pair dot(const PairVector& a, const PairVector& b) { return a.x * b.x + a
 // -(g / g') / (1 - g g'' / (2 g'^2)) = 2 E D (w.z) / Q with
 // Q = 4 (w.z)^2 - 3 E z^T M_own z (g'' = 6 z^T M_own z / D^4). The point
 // d + s d' + s^2 d'' / 2, with d'' = 2 adj(A) M_own z / D^3 and t = s / D, is
-// (u - t z + t^2 adj(A) M_own z) / D. 1 / (D Q) gives both 1 / D and
-// 1 / Q; the search's own checks (|g| small, g' < 0, the new mu inside the
-// bracket) need no division. The powers of D grow as a body's size to the
-// -40th: for bodies too small or too large for that in double precision
-// (below about 1e-7 m), D Q leaves its range and the search goes the
-// scalar way, whose quantities are normalised.
+// (u - t z + t^2 adj(A) M_own z) / D. So the products wait for one
+// division only, t = E / Q or 2 E (w.z) / Q (1 / D is worked out beside
+// them), and the search's own checks (|g| small, g' < 0, the new mu inside
+// the bracket) need none. Q grows as a body's size to the -36th power: for
+// bodies too small or too large for that in double precision (below about
+// 1e-8 m), it leaves its range and the search goes the scalar way, whose
+// quantities are normalised.
 inline bool deepest_pair(const PairMatrix& own, const PairVector& rhs, Pair mu, PairVector& d, PairVector& gradient,
                          Pair& ends) {
   const PairMatrix other = swapped(own);
@@ -167,18 +175,16 @@ inline bool deepest_pair(const PairMatrix& own, const PairVector& rhs, Pair mu, 
   const Pair e = dot(u, w) - det2;  // g D^2
   const Pair size = magnitude(e);
   // |g| < kSecondOrder, g' < 0 and, for g < 0, mu + E D / (2 w.z) > 0.
-  if (!both((size < kSecondOrder * det2) & (wz > 0.0) & (det > 0.0) & (2.0 * mu * wz + e * det > 0.0))) return false;
+  if (!both((size < kSecondOrder * det2) & (wz > 0.0) & (det > 1e-300) & (2.0 * mu * wz + e * det > 0.0))) return false;
   // M_own z serves Halley's step and the half-gradient at the new point,
   // M_own d = (w - t M_own z + t^2 M_own adj(A) M_own z) / D, which thus
   // waits on the division for one product only.
   const PairVector own_z = own * z;
   const bool first_order = both(size < kFirstOrder * det2);
   const Pair q = first_order ? 2.0 * wz : 4.0 * wz * wz - 3.0 * e * dot(z, own_z);
-  const Pair t_over_r = first_order ? e * det : 2.0 * e * wz * det;  // t D Q
-  const Pair dq = det * q;
-  if (!both((dq > 1e-300) & (dq < 1e300))) return false;
-  const Pair r = 1.0 / dq;
-  const Pair t = t_over_r * r, inverse_det = q * r;
+  const Pair step = first_order ? e : 2.0 * e * wz;  // t Q
+  if (!both((q > 1e-300) & (q < 1e300) & (det < 1e300))) return false;
+  const Pair t = step / q, inverse_det = 1.0 / det;
   ends = mu + t * det;
   if (first_order) {
     d = inverse_det * (u - t * z);
@@ -269,20 +275,39 @@ inline double equivalent_radius(const Symmetric& k, const Vec3& u) {
 
 }  // namespace
 
+namespace {
+
+// The two searches one body at a time (deepest_point), from scratch or
+// where the paired step does not end them; out of line, so that the
+// common path keeps its registers for itself.
+[[gnu::noinline]] void deepest_apart(const Symmetric& mi, const Symmetric& mj, const Vec3& d0, const PairVector& own_d0,
+                                     Pair f0, Pair start, PairVector& d, PairVector& g, Pair& mu) {
+  const Vec3 mi_d0 = lane(own_d0, 0), mj_d0 = lane(own_d0, 1);
+  const Deepest di = deepest_point(mi, mj, d0, mj_d0, f0[0], start[0]);    // on i, deepest in j's potential
+  const Deepest dj = deepest_point(mj, mi, -d0, -mi_d0, f0[1], start[1]);  // on j, deepest in i's
+  d = pair_of(di.arm, dj.arm);
+  g = pair_of(mi, mj) * d;
+  mu = Pair{di.multiplier, dj.multiplier};
+}
+
+}  // namespace
+
 EllipsoidFrame ellipsoid_frame(const Vec3& axes, const Quaternion& orientation) {
   // R diag(w) R^T = w2 I + (w1 - w2) c1 c1^T + (w3 - w2) c3 c3^T for the
   // columns c1, c2, c3 of a rotation (c1 c1^T + c2 c2^T + c3 c3^T = I):
   // two columns of R and their two outer products serve both matrices,
   // M with w = a^-2 (eqs. 43-44) and M^-1 with w = a^2.
+  // Half the columns (the weights take the factor 4, which changes no bit):
+  // one product fewer between the quaternion and the matrices.
   const double x = orientation.x(), y = orientation.y(), z = orientation.z(), w = orientation.w();
-  const Vec3 c1(1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y + w * z), 2.0 * (x * z - w * y));
-  const Vec3 c3(2.0 * (x * z + w * y), 2.0 * (y * z - w * x), 1.0 - 2.0 * (x * x + y * y));
+  const Vec3 c1(0.5 - (y * y + z * z), x * y + w * z, x * z - w * y);
+  const Vec3 c3(x * z + w * y, y * z - w * x, 0.5 - (x * x + y * y));
   const Symmetric o1{c1.x() * c1.x(), c1.x() * c1.y(), c1.x() * c1.z(),
                      c1.y() * c1.y(), c1.y() * c1.z(), c1.z() * c1.z()};
   const Symmetric o3{c3.x() * c3.x(), c3.x() * c3.y(), c3.x() * c3.z(),
                      c3.y() * c3.y(), c3.y() * c3.z(), c3.z() * c3.z()};
   const auto turned = [&](double w1, double w2, double w3) {
-    Symmetric m = o1.scaled(w1 - w2).plus(w3 - w2, o3);
+    Symmetric m = o1.scaled(4.0 * (w1 - w2)).plus(4.0 * (w3 - w2), o3);
     m.xx += w2;
     m.yy += w2;
     m.zz += w2;
@@ -312,13 +337,8 @@ EllipsoidContact ellipsoid_contact(const EllipsoidFrame& i, const Vec3& centre_i
   const Pair sign{1.0, -1.0};
   if (!(f0[0] > 1.0 && f0[1] > 1.0 && mu_i > 0.0 && mu_j > 0.0 &&
         deepest_pair(own, {sign * swapped(own_d0.x), sign * swapped(own_d0.y), sign * swapped(own_d0.z)},
-                     Pair{mu_i, mu_j}, d, g, mu))) {
-    const Vec3 mi_d0 = lane(own_d0, 0), mj_d0 = lane(own_d0, 1);
-    const Deepest di = deepest_point(mi, mj, d0, mj_d0, f0[0], mu_i);    // on i, deepest in j's potential
-    const Deepest dj = deepest_point(mj, mi, -d0, -mi_d0, f0[1], mu_j);  // on j, deepest in i's
-    d = pair_of(di.arm, dj.arm);
-    g = own * d;
-    mu = Pair{di.multiplier, dj.multiplier};
+                     Pair{mu_i, mu_j}, d, g, mu))) [[unlikely]] {
+    deepest_apart(mi, mj, d0, own_d0, f0, Pair{mu_i, mu_j}, d, g, mu);
   }
   // The outward normals there are opposite (Lagrange) when the bodies
   // just touch; the contact normal is along the average of the two unit
@@ -326,7 +346,7 @@ EllipsoidContact ellipsoid_contact(const EllipsoidFrame& i, const Vec3& centre_i
   // s = |g_j| g_i - |g_i| g_j, from one root for both lengths.
   const Pair squares = dot(g, g);  // |g_i|^2, |g_j|^2
   const Pair lengths = root(squares);
-  const PairVector weighted = swapped(lengths) * g;
+  const PairVector weighted = swapped(lengths) * g;  // (|g_j| g_i, |g_i| g_j)
   const Vec3 sum = lane(weighted, 0) - lane(weighted, 1);
   const Vec3 di = lane(d, 0), dj = lane(d, 1);
   // Equivalent radius (see equivalent_radius): the curvature tensors sum to
@@ -335,10 +355,13 @@ EllipsoidContact ellipsoid_contact(const EllipsoidFrame& i, const Vec3& centre_i
   // s^T adj(K') s / (|g_i| |g_j|)^2 |s|^2; from the unnormalised normal, so
   // that it need not wait for the root.
   const double squared_length = sum.squaredNorm();
-  const double product = sum.dot(cofactors(mi.scaled(lengths[1]).plus(lengths[0], mj)) * sum);
+  const double product = quadratic_form(cofactors(mi.scaled(lengths[1]).plus(lengths[0], mj)), sum);
   const double scale = squares[0] * squares[1] * squared_length;  // R_e^2 k1 k2 |s|^2 (|g_i| |g_j|)^2
-  // 1 / |s| and R_e = (k1 k2)^(-1/2), one division and one root for both.
-  const Pair roots = root(Pair{1.0, scale} / Pair{squared_length, std::max(product, 1e-300 * scale)});
+  // 1 / |s| = sqrt(|s|^2) / |s|^2 and R_e = (k1 k2)^(-1/2) =
+  // sqrt(scale product) / product: one division and one root for both,
+  // side by side rather than one after the other.
+  const Pair denominator{squared_length, std::max(product, 1e-300 * scale)};
+  const Pair roots = root(Pair{1.0, scale} * denominator) * (1.0 / denominator);
   const Vec3 gap = di - dj - d0;  // P_i - P_j
   EllipsoidContact c;
   c.normal = roots[0] * sum;
