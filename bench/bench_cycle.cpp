@@ -37,9 +37,9 @@ dem::WorldDef dense_assembly(int discs, int threads) {
   lattice.arrangement = LatticeArrangement::kHexagonal;
   def.particles = generate_lattice(lattice);
   const double width = columns * 0.02 + 0.011, height = rows * 0.02;
-  def.walls = {WallDef{"bottom", {0, 0}, {1, 0}, 0, width, 1, {}},
-               WallDef{"right", {width, 0}, {0, 1}, 0, 2 * height, 1, {}},
-               WallDef{"left", {0, 2 * height}, {0, -1}, 0, 2 * height, 1, {}}};
+  def.walls = {WallDef{"bottom", {0, 0}, {1, 0}, 0, width, MaterialId{1}, {}},
+               WallDef{"right", {width, 0}, {0, 1}, 0, 2 * height, MaterialId{1}, {}},
+               WallDef{"left", {0, 2 * height}, {0, -1}, 0, 2 * height, MaterialId{1}, {}}};
   def.gravity = {0.0, -9.81};
   def.damping = {1e-4, 10.0};
   def.time_step_fraction = 0.2;

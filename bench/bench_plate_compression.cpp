@@ -58,10 +58,10 @@ Metrics run(dem::WorldDef3 world_def, const std::vector<dem::StageDef3>& stages,
   const dem::AssemblyMeasures assembly = world.assembly_measures();
   m.contacts_per_particle = 2.0 * assembly.particle_contacts / world.particle_count();
   const dem::WallId plate = world.find_wall("plate");
-  m.plate_force = world.wall_measures()[plate].force.z();  // on the plate, positive upward
+  m.plate_force = world.wall_measures()[plate.index()].force.z();  // on the plate, positive upward
   const double plate_z = world.wall(plate).point.z();
   const auto p = world.particles();
-  for (int i = 0; i < world.particle_count(); ++i) m.plate_contacts += p.position[i].z() + p.radius[i] > plate_z;
+  for (const dem::ParticleId i : world.particle_ids()) m.plate_contacts += p.position[i].z() + p.radius[i] > plate_z;
   m.kinetic_energy = assembly.kinetic_energy;
   return m;
 }

@@ -45,7 +45,7 @@ WorldDef superquadric_bed(int count, bool shaped, int threads) {
   if (shaped) size.shape = ShapeDefT<2>{0.195, 0.0976, 4.0, 0.0};
   packing.sizes = {size};
   def.particles = generate_random_packing(packing);
-  def.walls = {WallDef{"bottom", {0.0, 0.0}, {1, 0}, -1.0, width + 1.0, 0, {}}};
+  def.walls = {WallDef{"bottom", {0.0, 0.0}, {1, 0}, -1.0, width + 1.0, MaterialId{0}, {}}};
   def.periodic.axes = {true, false};
   def.periodic.max = {width, 0.0};
   def.gravity = {0.0, -9.81};

@@ -13,7 +13,7 @@ AssemblySampleT<Dim> sample(const BasicWorld<Dim>& world) {
   s.position.reserve(n);
   s.radius.reserve(n);
   s.rotation.reserve(n);
-  for (ParticleId i = 0; i < world.particle_count(); ++i) {
+  for (const ParticleId i : world.particle_ids()) {
     s.position.push_back(p.position[i]);
     s.radius.push_back(p.radius[i]);
     if constexpr (Dim == 2) {

@@ -80,11 +80,11 @@ std::vector<bool> find_rattlers(const AssemblySampleT<Dim>& s) {
   std::vector<int> count(n, 0);
   std::vector<std::vector<ParticleId>> neighbours(n);
   for (const ContactRecordT<Dim>& c : s.contacts) {
-    ++count[static_cast<std::size_t>(c.first)];
+    ++count[c.first.index()];
     if (c.second_particle != kInvalidId) {
-      ++count[static_cast<std::size_t>(c.second_particle)];
-      neighbours[static_cast<std::size_t>(c.first)].push_back(c.second_particle);
-      neighbours[static_cast<std::size_t>(c.second_particle)].push_back(c.first);
+      ++count[c.second_particle.index()];
+      neighbours[c.first.index()].push_back(c.second_particle);
+      neighbours[c.second_particle.index()].push_back(c.first);
     }
   }
   // Fewer than two contacts cannot hold a particle in equilibrium (without
@@ -101,7 +101,7 @@ std::vector<bool> find_rattlers(const AssemblySampleT<Dim>& s) {
     const std::size_t i = queue.front();
     queue.pop_front();
     for (const ParticleId j : neighbours[i]) {
-      const auto k = static_cast<std::size_t>(j);
+      const std::size_t k = j.index();
       if (rattler[k]) continue;
       if (--count[k] < 2) {
         rattler[k] = true;
@@ -171,9 +171,9 @@ RegionMeasuresT<Dim> measure_region(const AssemblySampleT<Dim>& s, const RegionT
   Tensor<Dim> fabric_sum = Tensor<Dim>::Zero(), weighted_sum = Tensor<Dim>::Zero();
   double weight_sum = 0.0, normal_force_sum = 0.0;
   for (const ContactRecordT<Dim>& c : s.contacts) {
-    const auto a = static_cast<std::size_t>(c.first);
+    const auto a = c.first.index();
     const bool pair = c.second_particle != kInvalidId;
-    const auto b = pair ? static_cast<std::size_t>(c.second_particle) : a;
+    const auto b = pair ? c.second_particle.index() : a;
     if (inside[a]) {
       add_particle_share(a, c.point, c.force, c.normal);
       ++contact_ends;

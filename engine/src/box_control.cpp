@@ -28,7 +28,8 @@ Vec<Dim> box_stress(const Walls<Dim>& walls, const BoxControlT<Dim>& box, const 
       if (j != i) face *= extent[j];
     }
     const BoxAxisDef& a = box.axes[static_cast<std::size_t>(i)];
-    if (face > 0.0) stress[i] = 0.5 * (walls.normal_force[a.lower] + walls.normal_force[a.upper]) / face;
+    if (face > 0.0)
+      stress[i] = 0.5 * (walls.normal_force[a.lower.index()] + walls.normal_force[a.upper.index()]) / face;
   }
   return stress;
 }
@@ -69,7 +70,7 @@ Vec<Dim> box_extent(const Walls<Dim>& walls, const BoxControlT<Dim>& box) {
   Vec<Dim> extent;
   for (int i = 0; i < Dim; ++i) {
     const BoxAxisDef& a = box.axes[static_cast<std::size_t>(i)];
-    extent[i] = (walls.def[a.upper].point - walls.def[a.lower].point).dot(unit<Dim>(i));
+    extent[i] = (walls.def[a.upper.index()].point - walls.def[a.lower.index()].point).dot(unit<Dim>(i));
   }
   return extent;
 }
@@ -101,14 +102,13 @@ void set_box_velocities(const Walls<Dim>& walls, const BoxControlT<Dim>& box, st
     const double inwards = a.control == AxisControl::kStrainRate
                                ? 0.5 * a.strain_rate * extent[i]
                                : std::clamp(box.gain * (target[i] - stress[i]), -box.max_speed, box.max_speed);
-    velocity[a.lower] = inwards * unit<Dim>(i);
-    velocity[a.upper] = -inwards * unit<Dim>(i);
+    velocity[a.lower.index()] = inwards * unit<Dim>(i);
+    velocity[a.upper.index()] = -inwards * unit<Dim>(i);
   }
 }
 
 template <int Dim>
 void check_box_control(const BoxControlT<Dim>& box, const std::vector<WallDefT<Dim>>& walls) {
-  const auto wall_count = static_cast<WallId>(walls.size());
   std::vector<bool> used(walls.size(), false);
   bool servo = false;
   int path_axes = 0;
@@ -116,11 +116,11 @@ void check_box_control(const BoxControlT<Dim>& box, const std::vector<WallDefT<D
     const BoxAxisDef& a = box.axes[static_cast<std::size_t>(i)];
     const std::string axis = std::string("box control: axes[") + std::to_string(i) + "] (" + kAxisNames[i] + ")";
     for (const auto& [field, id, sign] : {std::tuple{".lower", a.lower, 1.0}, std::tuple{".upper", a.upper, -1.0}}) {
-      check(id >= 0 && id < wall_count, axis + field + ": no wall " + std::to_string(id));
-      const WallDefT<Dim>& wall = walls[static_cast<std::size_t>(id)];
-      const std::string named = axis + field + ": wall " + std::to_string(id) + " (\"" + wall.name + "\")";
-      check(!used[static_cast<std::size_t>(id)], named + " already bounds the box");
-      used[static_cast<std::size_t>(id)] = true;
+      check(id.valid() && id.index() < walls.size(), axis + field + ": no wall " + to_string(id));
+      const WallDefT<Dim>& wall = walls[id.index()];
+      const std::string named = axis + field + ": wall " + to_string(id) + " (\"" + wall.name + "\")";
+      check(!used[id.index()], named + " already bounds the box");
+      used[id.index()] = true;
       check(!wall.removed, named + " has been removed");
       check((wall_normal(wall) - sign * unit<Dim>(i)).norm() < 1e-6,
             named + " must face " + (sign > 0 ? "+" : "-") + kAxisNames[i] + " (the particles' side)");

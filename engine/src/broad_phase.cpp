@@ -89,7 +89,7 @@ std::vector<ContactKey> find_wall_keys(const Particles<Dim>& particles, const Wa
   std::vector<ContactKey> keys;
   const auto n = static_cast<std::int32_t>(particles.size());
   for (Slot i = 0; i < n; ++i) {
-    for (WallId w = 0; w < walls.size(); ++w) {
+    for (std::int32_t w = 0; w < walls.size(); ++w) {
       if (walls.def[w].removed) continue;
       const auto q = closest_point(walls.def[w], particles.position[i]);
       if ((particles.position[i] - q.point).norm() - particles.radius[i] < tolerance) keys.push_back({i, w});

@@ -24,8 +24,8 @@ ContactDriver::ContactDriver(const ContactDriverDef& def) : state_(std::make_uni
     throw DefinitionError("contact driver: radii and mass must be > 0");
   }
   ContactModelDef model = def.model;
-  model.material_a = 0;
-  model.material_b = 1;
+  model.material_a = MaterialId{0};
+  model.material_b = MaterialId{1};
   const ContactParamTable table({def.material_a, def.material_b}, {model}, DampingDef{});
   state_->params = table(0, 1);
   const bool wall = def.radius_b == 0.0;

@@ -68,7 +68,7 @@ void wall_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& 
     const Slot x = rows.first[r];
     p.force[x] += c.force;
     p.moment[x] += c.moment_first;
-    const WallId w = rows.second[r];
+    const std::int32_t w = rows.second[r];
     const WallDefT<Dim>& wall = in.walls.def[w];
     WallSum<Dim>& sum = walls[w];
     const Vec<Dim> on_wall = -c.force;
@@ -295,7 +295,7 @@ void visit_rows(const WorldState<Dim>& s, std::optional<std::size_t> only_pair_r
                        c.moment_first,
                        c.moment_second};
     if (wall) {
-      out.record.second_wall = rows.second[r];
+      out.record.second_wall = WallId{rows.second[r]};
     } else {
       out.record.second_particle = p.id[rows.second[r]];
     }
@@ -317,7 +317,7 @@ void visit_rows(const WorldState<Dim>& s, std::optional<std::size_t> only_pair_r
     with_law(s.wall_law, [&]<typename Law>() {
       const ContactRows<Dim>& rows = s.contacts.walls;
       for (std::size_t r = 0; r < rows.size(); ++r) {
-        if (!rows.touching(r) || (only_wall && rows.second[r] != *only_wall)) continue;
+        if (!rows.touching(r) || (only_wall && rows.second[r] != only_wall->value())) continue;
         const RowResult<Dim> c = wall_row<Pass::kEvaluate, false, Law, Shape, Dim>(in, rows, r, unused);
         if (c.touching) report(true, r, c, rows);
       }
@@ -370,10 +370,10 @@ std::vector<ContactRecordT<Dim>> report_wall_contacts(const WorldState<Dim>& sta
 template <int Dim>
 std::optional<ContactRecordT<Dim>> report_pair_contact(const WorldState<Dim>& state, ParticleId a, ParticleId b) {
   const Particles<Dim>& p = state.particles;
-  const auto n = static_cast<ParticleId>(p.size());
-  if (a < 0 || b < 0 || a >= n || b >= n || a == b) return std::nullopt;
+  const std::size_t n = p.slot.size();
+  if (!a.valid() || !b.valid() || a.index() >= n || b.index() >= n || a == b) return std::nullopt;
   // Rows are oriented from the lower id and sorted by slot.
-  const ContactKey key{p.slot[std::min(a, b)], p.slot[std::max(a, b)]};
+  const ContactKey key{p.slot_of(std::min(a, b)), p.slot_of(std::max(a, b))};
   const ContactRows<Dim>& rows = state.contacts.pairs;
   const auto begin = std::lower_bound(rows.first.begin(), rows.first.end(), key.first) - rows.first.begin();
   for (auto r = static_cast<std::size_t>(begin); r < rows.size() && rows.first[r] == key.first; ++r) {

@@ -27,19 +27,19 @@ const char* law_name(ContactLaw law) {
 bool is_hertz(ContactLaw law) { return law == ContactLaw::kHertzMindlin || law == ContactLaw::kHertzLinearTangential; }
 
 WorldLaws resolve_contact_laws(const std::vector<MaterialDef>& materials, const ContactParamTable& params,
-                               const std::vector<MaterialId>& particle_materials,
-                               const std::vector<MaterialId>& wall_materials) {
-  const auto count = static_cast<MaterialId>(materials.size());
+                               const std::vector<std::int32_t>& particle_materials,
+                               const std::vector<std::int32_t>& wall_materials) {
+  const auto count = static_cast<std::int32_t>(materials.size());
   std::vector<bool> particle_material(count, false), wall_material(count, false);
-  for (MaterialId m : particle_materials) particle_material[m] = true;
-  for (MaterialId m : wall_materials) wall_material[m] = true;
+  for (std::int32_t m : particle_materials) particle_material[m] = true;
+  for (std::int32_t m : wall_materials) wall_material[m] = true;
   struct Seen {
     bool any = false;
     ContactLaw law = ContactLaw::kLinear;
-    MaterialId a = 0, b = 0;
+    std::int32_t a = 0, b = 0;
   };
   Seen pairs, walls;
-  auto note = [&](Seen& seen, MaterialId a, MaterialId b, const char* kind) {
+  auto note = [&](Seen& seen, std::int32_t a, std::int32_t b, const char* kind) {
     const ContactParams& p = params(a, b);
     check(p.defined, "no contact model for materials " + quoted(materials[a]) + " and " + quoted(materials[b]));
     if (!seen.any) {
@@ -51,9 +51,9 @@ WorldLaws resolve_contact_laws(const std::vector<MaterialDef>& materials, const 
                                  law_name(seen.law) + ", " + quoted(materials[a]) + " and " + quoted(materials[b]) +
                                  " use " + law_name(p.law));
   };
-  for (MaterialId a = 0; a < count; ++a) {
+  for (std::int32_t a = 0; a < count; ++a) {
     if (!particle_material[a]) continue;
-    for (MaterialId b = 0; b < count; ++b) {
+    for (std::int32_t b = 0; b < count; ++b) {
       if (particle_material[b]) note(pairs, a, b, "particle-particle");
       if (wall_material[b]) note(walls, a, b, "particle-wall");
     }
@@ -61,7 +61,7 @@ WorldLaws resolve_contact_laws(const std::vector<MaterialDef>& materials, const 
   const WorldLaws laws{pairs.law, walls.law};
   const bool hertz = (pairs.any && is_hertz(pairs.law)) || (walls.any && is_hertz(walls.law));
   if (!hertz) return laws;
-  for (MaterialId m = 0; m < count; ++m) {
+  for (std::int32_t m = 0; m < count; ++m) {
     if (!particle_material[m]) continue;
     const MaterialDef& mat = materials[m];
     check(mat.youngs_modulus > 0.0, "material " + quoted(mat) + ": a Hertz law needs youngs_modulus > 0");

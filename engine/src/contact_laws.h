@@ -20,8 +20,8 @@ struct WorldLaws {
 // Hertz laws need the elastic constants of the particles' materials.
 // Throws DefinitionError naming the materials otherwise.
 WorldLaws resolve_contact_laws(const std::vector<MaterialDef>& materials, const ContactParamTable& params,
-                               const std::vector<MaterialId>& particle_materials,
-                               const std::vector<MaterialId>& wall_materials);
+                               const std::vector<std::int32_t>& particle_materials,
+                               const std::vector<std::int32_t>& wall_materials);
 
 bool is_hertz(ContactLaw law);
 

@@ -29,7 +29,7 @@ double damping_ratio_from_restitution(double restitution) {
 ContactParamTable::ContactParamTable(const std::vector<MaterialDef>& materials,
                                      const std::vector<ContactModelDef>& models, const DampingDef& damping)
     : count_(static_cast<int>(materials.size())), params_(materials.size() * materials.size()) {
-  auto resolve = [&](MaterialId a, MaterialId b, const ContactModelDef& model) {
+  auto resolve = [&](std::int32_t a, std::int32_t b, const ContactModelDef& model) {
     ContactParams p;
     p.defined = true;
     p.law = model.law;
@@ -62,12 +62,12 @@ ContactParamTable::ContactParamTable(const std::vector<MaterialDef>& materials,
   // The default model first, then the named pairs override it.
   for (const ContactModelDef& model : models) {
     if (model.material_a != kInvalidId) continue;
-    for (MaterialId a = 0; a < count_; ++a)
-      for (MaterialId b = a; b < count_; ++b) resolve(a, b, model);
+    for (std::int32_t a = 0; a < count_; ++a)
+      for (std::int32_t b = a; b < count_; ++b) resolve(a, b, model);
   }
   for (const ContactModelDef& model : models) {
     if (model.material_a == kInvalidId) continue;
-    resolve(model.material_a, model.material_b, model);
+    resolve(model.material_a.value(), model.material_b.value(), model);
   }
 }
 

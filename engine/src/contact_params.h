@@ -32,13 +32,15 @@ struct ContactParams {
   double rolling_damping_ratio = 0.0;
 };
 
-// A square table indexed by (material_a, material_b), symmetric.
+// A square table indexed by (material_a, material_b), symmetric. Indexed
+// by the materials' plain values: the force pass looks it up per contact
+// from Particles::material.
 class ContactParamTable {
  public:
   ContactParamTable() = default;
   ContactParamTable(const std::vector<MaterialDef>& materials, const std::vector<ContactModelDef>& models,
                     const DampingDef& damping);
-  const ContactParams& operator()(MaterialId a, MaterialId b) const { return params_[a * count_ + b]; }
+  const ContactParams& operator()(std::int32_t a, std::int32_t b) const { return params_[a * count_ + b]; }
 
  private:
   int count_ = 0;

@@ -150,7 +150,7 @@ template <Pass kPass, bool kEnergy, typename Law, typename Shape, int Dim>
 RowResult<Dim> wall_row(const PassInputs<Dim>& in, RowsOf<kPass, Dim> rows, std::size_t r, ContactEnergy& energy) {
   const Particles<Dim>& p = in.particles;
   const Slot x = rows.first[r];
-  const WallId w = rows.second[r];
+  const std::int32_t w = rows.second[r];
   const WallDefT<Dim>& wall = in.walls.def[w];
   RowResult<Dim> out;
   const ContactGeometry<Dim> g = Shape::wall(in, wall, x);
@@ -176,7 +176,7 @@ RowResult<Dim> wall_row(const PassInputs<Dim>& in, RowsOf<kPass, Dim> rows, std:
   }
   const PairProperties pair{g.effective_radius, p.mass[x]};
   const ContactKinematics<Dim> k = kinematics(g.overlap, relative, g.normal);
-  const ContactParams& params = in.params(p.material[x], wall.material);
+  const ContactParams& params = in.params(p.material[x], wall.material.value());
   if constexpr (kPass == Pass::kAdvance) Law::advance(h, k, pair, params, in.dt);
   const ContactForces<Dim> f = Law::forces(h, k, pair, params);
   if constexpr (kPass == Pass::kAdvance) {

@@ -46,20 +46,20 @@ AssemblyMeasures measure_assembly(const WorldState<Dim>& s) {
     if (c.second_particle != kInvalidId) ++m.particle_contacts;
     if (c.sliding) ++m.sliding_contacts;
     m.max_contact_force = std::max(m.max_contact_force, std::hypot(c.normal_force, c.tangential_force.norm()));
-    const Slot x = p.slot[c.first];
+    const Slot x = p.slot_of(c.first);
     const double smaller =
-        c.second_particle != kInvalidId ? std::min(p.radius[x], p.radius[p.slot[c.second_particle]]) : p.radius[x];
+        c.second_particle != kInvalidId ? std::min(p.radius[x], p.radius[p.slot_of(c.second_particle)]) : p.radius[x];
     m.deepest_overlap = std::max(m.deepest_overlap, c.overlap / smaller);
     if (!s.energy_budget) return;
     double effective_radius = p.radius[x];
     Strain held;
     if (c.second_particle != kInvalidId) {
-      const Slot y = p.slot[c.second_particle];
+      const Slot y = p.slot_of(c.second_particle);
       effective_radius = p.radius[x] * p.radius[y] / (p.radius[x] + p.radius[y]);
       held = strain_energy(s.pair_law, c, s.params(p.material[x], p.material[y]), effective_radius);
     } else {
-      held =
-          strain_energy(s.wall_law, c, s.params(p.material[x], s.walls.def[c.second_wall].material), effective_radius);
+      held = strain_energy(s.wall_law, c, s.params(p.material[x], s.walls.def[c.second_wall.index()].material.value()),
+                           effective_radius);
     }
     strain.normal += held.normal;
     strain.tangential += held.tangential;

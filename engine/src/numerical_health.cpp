@@ -18,13 +18,13 @@ ParticleScan scan_particles(const BasicWorld<Dim>& world) {
   const ParticleViewT<Dim> p = world.particles();
   ParticleScan scan;
   const double dt = world.time_step();
-  for (ParticleId i = 0; i < world.particle_count(); ++i) {
+  for (const ParticleId i : world.particle_ids()) {
     if (!p.position[i].allFinite()) {
-      scan.non_finite = "particle " + std::to_string(i) + "'s position is not finite";
+      scan.non_finite = "particle " + to_string(i) + "'s position is not finite";
       return scan;
     }
     if (!p.velocity[i].allFinite()) {
-      scan.non_finite = "particle " + std::to_string(i) + "'s velocity is not finite";
+      scan.non_finite = "particle " + to_string(i) + "'s velocity is not finite";
       return scan;
     }
     const double travel = p.velocity[i].norm() * dt / p.radius[i];
@@ -54,10 +54,9 @@ std::optional<std::string> deepest_overlap(const BasicWorld<Dim>& world, double 
     }
   }
   if (deepest == nullptr || !(worst > limit)) return std::nullopt;
-  const std::string other = deepest->second_particle != kInvalidId
-                                ? "particle " + std::to_string(deepest->second_particle)
-                                : "wall " + world.wall(deepest->second_wall).name;
-  return "the contact of particle " + std::to_string(deepest->first) + " and " + other + " overlaps " + number(worst) +
+  const std::string other = deepest->second_particle != kInvalidId ? "particle " + to_string(deepest->second_particle)
+                                                                   : "wall " + world.wall(deepest->second_wall).name;
+  return "the contact of particle " + to_string(deepest->first) + " and " + other + " overlaps " + number(worst) +
          " of the smaller radius (the limit is " + number(limit) + ")";
 }
 
@@ -78,7 +77,7 @@ HealthMonitorT<Dim>::HealthMonitorT(const BasicWorld<Dim>& world, HealthLimits l
   }
   const ParticleViewT<Dim> p = world.particles();
   double mass = 0.0, radius = 0.0;
-  for (ParticleId i = 0; i < world.particle_count(); ++i) {
+  for (const ParticleId i : world.particle_ids()) {
     mass += p.mass[i];
     radius += p.radius[i];
   }
@@ -141,9 +140,8 @@ StepHealth HealthMonitorT<Dim>::assess(const BasicWorld<Dim>& world) {
   }
   if (particles.travel > limits_.max_step_travel) {
     health.problem = HealthProblem::kRunaway;
-    health.message = at + "particle " + std::to_string(particles.fastest) + " moves " +
-                     health::number(particles.travel) + " of its radius in a step (the limit is " +
-                     health::number(limits_.max_step_travel) +
+    health.message = at + "particle " + to_string(particles.fastest) + " moves " + health::number(particles.travel) +
+                     " of its radius in a step (the limit is " + health::number(limits_.max_step_travel) +
                      "): the simulation blew up, or flung it out; reduce the time step (time_step.fraction) or check "
                      "the stiffnesses and masses";
     return health;

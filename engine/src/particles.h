@@ -31,7 +31,9 @@ struct Particles {
   std::vector<Spin<Dim>> angular_velocity;  // at N - 1/2 (eq. 23)
   std::vector<double> radius;               // bounding radius for shaped particles
   std::vector<double> mass;
-  std::vector<MaterialId> material;
+  // MaterialId values as plain indices: the force pass indexes the pair
+  // table with them for every contact (ids.h: the types guard the API).
+  std::vector<std::int32_t> material;
   // Written by the force pass (eqs. 20-21): the sums of the contact forces and moments.
   std::vector<Vec<Dim>> force;
   std::vector<Spin<Dim>> moment;
@@ -47,6 +49,8 @@ struct Particles {
 
   // The slot of each particle id (indexed by id, not by slot).
   std::vector<Slot> slot;
+  // The particles' ids in ascending order: what the API iterates.
+  std::vector<ParticleId> ids;
 
   std::size_t size() const { return position.size(); }
 
@@ -71,11 +75,16 @@ struct Particles {
     visit(id);
   }
 
-  // Rebuilds `slot` from `id`.
+  // Rebuilds `slot` and `ids` from `id`.
   void index_ids() {
     slot.assign(id.size(), 0);
-    for (std::size_t k = 0; k < id.size(); ++k) slot[static_cast<std::size_t>(id[k])] = static_cast<Slot>(k);
+    for (std::size_t k = 0; k < id.size(); ++k) slot[id[k].index()] = static_cast<Slot>(k);
+    ids.resize(id.size());
+    for (std::size_t k = 0; k < ids.size(); ++k) ids[k] = ParticleId::from_index(k);
   }
+
+  // The slot of a particle id.
+  Slot slot_of(ParticleId particle) const { return slot[particle.index()]; }
 
   // omega^T I omega: with the scalar inertia for discs, spheres and
   // superquadrics, with the inertia tensor for ellipsoids.

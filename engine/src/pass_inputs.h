@@ -27,7 +27,7 @@ struct PassInputs {
   // Ellipsoid worlds: each body's matrices for this pass, by slot.
   const EllipsoidFrame* ellipsoid_frames = nullptr;
 
-  const ContactParams& pair_params(MaterialId a, MaterialId b) const {
+  const ContactParams& pair_params(std::int32_t a, std::int32_t b) const {
     return shared_params ? *shared_params : params(a, b);
   }
 };

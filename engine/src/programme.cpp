@@ -17,7 +17,7 @@ bool servos_settled(const BasicWorld<Dim>& world, double tolerance) {
     const BoxMeasureT<Dim> m = world.box_measure();
     for (int i = 0; i < Dim; ++i) {
       const BoxAxisDef& a = box->axes[static_cast<std::size_t>(i)];
-      boxed[static_cast<std::size_t>(a.lower)] = boxed[static_cast<std::size_t>(a.upper)] = true;
+      boxed[a.lower.index()] = boxed[a.upper.index()] = true;
       if (a.control == AxisControl::kStrainRate) continue;
       any = true;
       if (std::abs(m.stress[i] - m.target[i]) > tolerance * std::abs(m.target[i])) return false;
@@ -25,7 +25,7 @@ bool servos_settled(const BasicWorld<Dim>& world, double tolerance) {
   }
   for (const WallMeasureT<Dim>& m : world.wall_measures()) {
     const auto& servo = world.wall(m.wall).motion.servo;
-    if (!servo || boxed[static_cast<std::size_t>(m.wall)] || world.wall(m.wall).removed) continue;
+    if (!servo || boxed[m.wall.index()] || world.wall(m.wall).removed) continue;
     any = true;
     if (std::abs(m.normal_force - servo->target_force) > tolerance * std::abs(servo->target_force)) return false;
   }
@@ -34,7 +34,7 @@ bool servos_settled(const BasicWorld<Dim>& world, double tolerance) {
 
 template <int Dim>
 double wall_stress(const BasicWorld<Dim>& world, WallId wall) {
-  return world.wall_measures()[wall].normal_force / world.wall_area(wall);
+  return world.wall_measures()[wall.index()].normal_force / world.wall_area(wall);
 }
 
 }  // namespace
@@ -76,7 +76,7 @@ template <int Dim>
 void trim(BasicWorld<Dim>& world, const TrimDef& t) {
   const auto p = world.particles();
   std::vector<ParticleId> above;
-  for (ParticleId i = 0; i < world.particle_count(); ++i) {
+  for (const ParticleId i : world.particle_ids()) {
     const Vec<Dim>& x = p.position[i];
     const double surface = t.height + t.amplitude * std::sin(2.0 * std::numbers::pi * x[0] / t.wavelength);
     if (x[Dim - 1] > surface) above.push_back(i);

@@ -15,8 +15,8 @@ namespace {
 struct RollingRow {
   bool wall;
   std::size_t row;
-  ParticleId first, second;  // second: a particle id, or the wall's id
-  Vec3 normal;               // e_i (z = 0 in 2D)
+  std::int32_t first, second;  // ids' values: second a particle's, or the wall's
+  Vec3 normal;                 // e_i (z = 0 in 2D)
   double overlap, normal_force;
 };
 
@@ -26,8 +26,9 @@ std::vector<RollingRow> touching_rows(const WorldState<Dim>& s) {
   visit_touching_rows<Dim>(s, [&](const RowReport<Dim>& r) {
     Vec3 normal = Vec3::Zero();
     normal.head<Dim>() = r.record.normal;
-    rows.push_back({r.wall, r.row, r.record.first, r.wall ? r.record.second_wall : r.record.second_particle, normal,
-                    r.record.overlap, r.record.normal_force});
+    rows.push_back({r.wall, r.row, r.record.first.value(),
+                    r.wall ? r.record.second_wall.value() : r.record.second_particle.value(), normal, r.record.overlap,
+                    r.record.normal_force});
   });
   return rows;
 }
@@ -66,7 +67,7 @@ void apply_rolling_resistance(WorldState<Dim>& s) {
     Spin<Dim>& torque = rows.rolling[c.row];
     const Slot x = p.slot[static_cast<std::size_t>(c.first)];
     const Slot y = c.wall ? -1 : p.slot[static_cast<std::size_t>(c.second)];
-    const MaterialId other = c.wall ? s.walls.def[c.second].material : p.material[y];
+    const std::int32_t other = c.wall ? s.walls.def[c.second].material.value() : p.material[y];
     const ContactParams& params = s.params(p.material[x], other);
     const ContactLaw law = c.wall ? s.wall_law : s.pair_law;
     if (params.rolling_friction <= 0.0) {

@@ -17,8 +17,8 @@ namespace {
 template <int Dim>
 ContactSnapshotT<Dim> save_row(const ContactRows<Dim>& rows, std::size_t r, const Particles<Dim>& p, bool wall) {
   ContactSnapshotT<Dim> c;
-  c.first = p.id[rows.first[r]];
-  c.second = wall ? rows.second[r] : p.id[rows.second[r]];
+  c.first = p.id[rows.first[r]].value();
+  c.second = wall ? rows.second[r] : p.id[rows.second[r]].value();
   c.with_wall = wall;
   c.touching = rows.touching(r);
   c.sliding = rows.sliding(r);
@@ -54,7 +54,7 @@ std::size_t find_row(const ContactRows<Dim>& rows, const ContactKey& key, const 
 template <int Dim>
 void restore_contact_table(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) {
   const Particles<Dim>& p = s.particles;
-  const auto n = static_cast<ParticleId>(p.size());
+  const auto n = static_cast<std::int32_t>(p.size());
   // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on "(" + std::string once inlined here.
   auto name = [](const ContactSnapshotT<Dim>& c) {
     std::string text = "(";
@@ -89,7 +89,7 @@ void restore_contact_table(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) 
     }
     merge_rows(t.pairs, pairs);
     merge_rows(t.walls, walls);
-    for (ParticleId id = 0; id < n; ++id) s.particles.reference_position[p.slot[id]] = snap.reference_positions[id];
+    for (std::int32_t id = 0; id < n; ++id) s.particles.reference_position[p.slot[id]] = snap.reference_positions[id];
     s.particle_travel = snap.particle_travel;
     s.wall_travel = snap.wall_travel;
     s.contacts_stale = snap.contacts_stale;
@@ -111,12 +111,15 @@ void restore_order(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) {
   const std::size_t n = s.particles.size();
   check(snap.particle_order.size() == n, "particle order does not match the " + std::to_string(n) + " particles");
   std::vector<bool> seen(n, false);
+  std::vector<Slot> order;
+  order.reserve(n);
   for (ParticleId id : snap.particle_order) {
-    check(id >= 0 && static_cast<std::size_t>(id) < n && !seen[id], "particle order is not a permutation of the ids");
-    seen[id] = true;
+    check(id.valid() && id.index() < n && !seen[id.index()], "particle order is not a permutation of the ids");
+    seen[id.index()] = true;
+    order.push_back(id.value());
   }
-  // The state was just built in id order: slot k takes particle order[k].
-  reorder_particles(s.particles, s.contacts, snap.particle_order);
+  // The state was just built in id order (slot = id): slot k takes particle order[k].
+  reorder_particles(s.particles, s.contacts, order);
   s.sorted_cycle = snap.sorted_cycle;
 }
 
@@ -146,7 +149,7 @@ WorldSnapshotT<Dim> save_snapshot(const WorldState<Dim>& s) {
   snap.reference_positions.reserve(n);
   for (std::size_t id = 0; id < n; ++id) {
     const auto i = static_cast<std::size_t>(p.slot[id]);
-    def.particles.push_back(ParticleDefT<Dim>{p.position[i], p.radius[i], p.material[i], p.velocity[i],
+    def.particles.push_back(ParticleDefT<Dim>{p.position[i], p.radius[i], MaterialId{p.material[i]}, p.velocity[i],
                                               p.angular_velocity[i], p.shape.empty() ? ShapeDefT<Dim>{} : p.shape[i]});
     snap.rotation.push_back(p.rotation[i]);
     snap.force.push_back(p.force[i]);

@@ -43,8 +43,8 @@ template <int Dim>
 void add_rows(Hasher& h, const ContactRows<Dim>& rows, const Particles<Dim>& p, bool wall) {
   for (std::size_t r = 0; r < rows.size(); ++r) {
     if (!rows.touching(r)) continue;
-    h.add(p.id[rows.first[r]]);
-    h.add(wall ? rows.second[r] : p.id[rows.second[r]]);
+    h.add(p.id[rows.first[r]].value());
+    h.add(wall ? rows.second[r] : p.id[rows.second[r]].value());
     for_each_kept_field<Dim>(rows, r, [&](const ContactFieldInfo& info, auto, const auto& value) {
       if (info.hashed) h.add(value);
     });

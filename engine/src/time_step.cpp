@@ -26,11 +26,11 @@ double rayleigh_time_step(const MaterialDef& m, double radius) {
 template <int Dim>
 double estimate_critical_time_step(const WorldState<Dim>& state) {
   const Particles<Dim>& p = state.particles;
-  const auto materials = static_cast<MaterialId>(state.materials.size());
+  const auto materials = static_cast<std::int32_t>(state.materials.size());
   double critical = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < p.size(); ++i) {
     double kn = 0.0, ks = 0.0;
-    for (MaterialId other = 0; other < materials; ++other) {
+    for (std::int32_t other = 0; other < materials; ++other) {
       const ContactParams& c = state.params(p.material[i], other);
       if (!c.defined) continue;
       if (c.law == ContactLaw::kHertzMindlin || c.law == ContactLaw::kHertzLinearTangential) {

@@ -158,7 +158,7 @@ void move_walls(Walls<Dim>& walls, double dt) {
     box_velocity.assign(static_cast<std::size_t>(walls.size()), Vec<Dim>::Zero());
     in_box.assign(static_cast<std::size_t>(walls.size()), false);
     set_box_velocities(walls, *walls.box, box_velocity);
-    for (const BoxAxisDef& a : walls.box->axes) in_box[a.lower] = in_box[a.upper] = true;
+    for (const BoxAxisDef& a : walls.box->axes) in_box[a.lower.index()] = in_box[a.upper.index()] = true;
   }
   for (int w = 0; w < walls.size(); ++w) {
     WallDefT<Dim>& wall = walls.def[w];
@@ -192,10 +192,11 @@ double max_wall_step(const Walls<Dim>& walls, double dt) {
 }
 
 template <int Dim>
-WallMeasureT<Dim> measure_wall(const Walls<Dim>& walls, WallId id) {
+WallMeasureT<Dim> measure_wall(const Walls<Dim>& walls, WallId wall_id) {
+  const std::size_t id = wall_id.index();
   const WallDefT<Dim>& wall = walls.def[id];
   WallMeasureT<Dim> m;
-  m.wall = id;
+  m.wall = wall_id;
   m.force = walls.force[id];
   m.moment = walls.moment[id];
   m.normal_force = walls.normal_force[id];

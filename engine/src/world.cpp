@@ -167,47 +167,52 @@ template <int Dim>
 int BasicWorld<Dim>::wall_count() const {
   return state_->walls.size();
 }
+template <int Dim>
+std::span<const ParticleId> BasicWorld<Dim>::particle_ids() const {
+  return state_->particles.ids;
+}
 
 template <int Dim>
 ParticleViewT<Dim> BasicWorld<Dim>::particles() const {
   const Particles<Dim>& p = state_->particles;
   const std::span<const Slot> slots = p.slot;
-  return {{p.position, slots}, {p.velocity, slots}, {p.angular_velocity, slots},
-          {p.rotation, slots}, {p.radius, slots},   {p.mass, slots}};
+  const std::span<const ParticleId> ids = p.ids;
+  return {{p.position, slots, ids}, {p.velocity, slots, ids}, {p.angular_velocity, slots, ids},
+          {p.rotation, slots, ids}, {p.radius, slots, ids},   {p.mass, slots, ids}};
 }
 
 template <int Dim>
 WallId BasicWorld<Dim>::find_wall(std::string_view name) const {
   const auto& walls = state_->walls.def;
-  for (WallId w = 0; w < static_cast<WallId>(walls.size()); ++w) {
-    if (walls[w].name == name) return w;
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    if (walls[w].name == name) return WallId::from_index(w);
   }
   return kInvalidId;
 }
 
 template <int Dim>
 const WallDefT<Dim>& BasicWorld<Dim>::wall(WallId id) const {
-  assert(id >= 0 && id < wall_count());
-  return state_->walls.def[id];
+  assert(id.valid() && id.value() < wall_count());
+  return state_->walls.def[id.index()];
 }
 
 template <int Dim>
 void BasicWorld<Dim>::set_wall_motion(WallId id, const Motion& motion) {
-  assert(id >= 0 && id < wall_count());
+  assert(id.valid() && id.value() < wall_count());
   check_wall_motion(motion, id);
-  state_->walls.def[id].motion = motion;
+  state_->walls.def[id.index()].motion = motion;
 }
 
 template <int Dim>
 double BasicWorld<Dim>::wall_area(WallId id) const {
-  assert(id >= 0 && id < wall_count());
-  return wall_extent(state_->walls.def[id], state_->periodic) * (Dim == 2 ? state_->depth : 1.0);
+  assert(id.valid() && id.value() < wall_count());
+  return wall_extent(state_->walls.def[id.index()], state_->periodic) * (Dim == 2 ? state_->depth : 1.0);
 }
 
 template <int Dim>
 std::vector<WallMeasureT<Dim>> BasicWorld<Dim>::wall_measures() const {
   std::vector<WallMeasureT<Dim>> measures;
-  for (WallId w = 0; w < wall_count(); ++w) measures.push_back(measure_wall(state_->walls, w));
+  for (int w = 0; w < wall_count(); ++w) measures.push_back(measure_wall(state_->walls, WallId{w}));
   return measures;
 }
 
@@ -267,7 +272,7 @@ void BasicWorld<Dim>::set_fixed_time_step(double seconds) {
 template <int Dim>
 void BasicWorld<Dim>::set_friction(MaterialId material, double friction) {
   check_friction(material, state_->materials.size(), friction);
-  state_->materials[material].friction = friction;
+  state_->materials[material.index()].friction = friction;
   state_->params = ContactParamTable(state_->materials, state_->contact_models, state_->damping);
 }
 

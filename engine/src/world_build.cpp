@@ -56,7 +56,7 @@ void add_particles(WorldState<Dim>& s, const WorldDefT<Dim>& def) {
   std::array<double, 3> bounded_shape{0.0, 0.0, 0.0};
   double bounding_radius = 0.0;
   for (const ParticleDefT<Dim>& d : def.particles) {
-    const double density = s.materials[d.material].density;
+    const double density = s.materials[d.material.index()].density;
     MassProperties mp = mass_properties(density, d.radius, discs);
     double radius = d.radius;
     Orientation<Dim> rotation = Space<Dim>::identity();
@@ -94,7 +94,7 @@ void add_particles(WorldState<Dim>& s, const WorldDefT<Dim>& def) {
     p.radius.push_back(radius);
     p.mass.push_back(mp.mass);
     p.inertia.push_back(mp.inertia);
-    p.material.push_back(d.material);
+    p.material.push_back(d.material.value());
     if (shaped) p.shape.push_back(d.shape);
   }
   p.force.assign(n, Vec<Dim>::Zero());
@@ -102,7 +102,7 @@ void add_particles(WorldState<Dim>& s, const WorldDefT<Dim>& def) {
   p.previous_force.assign(n, 0.0);
   p.reference_position = p.position;
   p.id.resize(n);
-  for (std::size_t i = 0; i < n; ++i) p.id[i] = static_cast<ParticleId>(i);
+  for (std::size_t i = 0; i < n; ++i) p.id[i] = ParticleId::from_index(i);
   p.index_ids();
   for (Vec<Dim>& x : p.position) s.periodic.wrap(x);
 }

@@ -47,7 +47,7 @@ void keep_rows(ContactRows<Dim>& rows, Keep keep) {
 template <int Dim>
 void drop_wall_contacts(WorldState<Dim>& s, WallId id) {
   ContactRows<Dim>& rows = s.contacts.walls;
-  keep_rows(rows, [&](std::size_t r) { return rows.second[r] != id; });
+  keep_rows(rows, [&](std::size_t r) { return rows.second[r] != id.value(); });
   plan_blocks(s.blocks, s.contacts, s.particles.size(), block_size(s));
   evaluate_contacts(s);
   if (s.rolling) add_rolling_moments(s);
@@ -59,11 +59,11 @@ template <int Dim>
 void BasicWorld<Dim>::remove_particles(std::span<const ParticleId> ids) {
   WorldState<Dim>& s = *state_;
   Particles<Dim>& p = s.particles;
-  const auto n = static_cast<ParticleId>(p.size());
-  std::vector<bool> keep_id(static_cast<std::size_t>(n), true);
+  const std::size_t n = p.size();
+  std::vector<bool> keep_id(n, true);
   for (ParticleId id : ids) {
-    if (id < 0 || id >= n) throw DefinitionError("remove particles: no particle " + std::to_string(id));
-    keep_id[id] = false;
+    if (!id.valid() || id.index() >= n) throw DefinitionError("remove particles: no particle " + to_string(id));
+    keep_id[id.index()] = false;
   }
   if (std::all_of(keep_id.begin(), keep_id.end(), [](bool k) { return k; })) return;
   if (std::none_of(keep_id.begin(), keep_id.end(), [](bool k) { return k; })) {
@@ -73,19 +73,19 @@ void BasicWorld<Dim>::remove_particles(std::span<const ParticleId> ids) {
 
   // The kept particles get new dense ids in the old id order, and keep
   // their storage order.
-  std::vector<ParticleId> new_id(static_cast<std::size_t>(n), kInvalidId);
-  ParticleId next = 0;
-  for (ParticleId id = 0; id < n; ++id) {
-    if (keep_id[id]) new_id[id] = next++;
+  std::vector<ParticleId> new_id(n, kInvalidId);
+  std::size_t next = 0;
+  for (std::size_t id = 0; id < n; ++id) {
+    if (keep_id[id]) new_id[id] = ParticleId::from_index(next++);
   }
-  std::vector<Slot> kept_slots, renamed(static_cast<std::size_t>(n), -1);
-  for (Slot i = 0; i < n; ++i) {
-    if (!keep_id[p.id[i]]) continue;
+  std::vector<Slot> kept_slots, renamed(n, -1);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!keep_id[p.id[i].index()]) continue;
     renamed[i] = static_cast<Slot>(kept_slots.size());
-    kept_slots.push_back(i);
+    kept_slots.push_back(static_cast<Slot>(i));
   }
   p.for_each_slot_array([&](auto& values) { gather(values, kept_slots); });
-  for (ParticleId& id : p.id) id = new_id[id];
+  for (ParticleId& id : p.id) id = new_id[id.index()];
   p.index_ids();
 
   // Contacts between kept particles keep their history; a pair row's first
@@ -101,13 +101,14 @@ void BasicWorld<Dim>::remove_particles(std::span<const ParticleId> ids) {
 
 template <int Dim>
 void BasicWorld<Dim>::place_wall(WallId id, const Vec<Dim>& point) {
-  if (id < 0 || id >= wall_count()) throw DefinitionError("place wall: no wall " + std::to_string(id));
+  if (!id.valid() || id.value() >= wall_count()) throw DefinitionError("place wall: no wall " + to_string(id));
   if (!point.allFinite()) throw DefinitionError("place wall: the point must be finite");
   WorldState<Dim>& s = *state_;
-  translate(s.walls.def[id], point - s.walls.def[id].point);  // faces and all
-  s.walls.initial_point[id] = point;
-  s.walls.last_velocity[id] = Vec<Dim>::Zero();
-  s.walls.last_angular_velocity[id] = Space<Dim>::zero_spin();
+  const std::size_t w = id.index();
+  translate(s.walls.def[w], point - s.walls.def[w].point);  // faces and all
+  s.walls.initial_point[w] = point;
+  s.walls.last_velocity[w] = Vec<Dim>::Zero();
+  s.walls.last_angular_velocity[w] = Space<Dim>::zero_spin();
   // Its contacts start afresh where it now stands.
   drop_wall_contacts(s, id);
   s.contacts_stale = true;
@@ -115,21 +116,22 @@ void BasicWorld<Dim>::place_wall(WallId id, const Vec<Dim>& point) {
 
 template <int Dim>
 void BasicWorld<Dim>::remove_wall(WallId id) {
-  if (id < 0 || id >= wall_count()) throw DefinitionError("remove wall: no wall " + std::to_string(id));
+  if (!id.valid() || id.value() >= wall_count()) throw DefinitionError("remove wall: no wall " + to_string(id));
   WorldState<Dim>& s = *state_;
+  const std::size_t w = id.index();
   if (s.walls.box) {
     for (const BoxAxisDef& a : s.walls.box->axes) {
       if (a.lower == id || a.upper == id) {
-        throw DefinitionError("remove wall: wall " + std::to_string(id) + " (\"" + s.walls.def[id].name +
+        throw DefinitionError("remove wall: wall " + to_string(id) + " (\"" + s.walls.def[w].name +
                               "\") bounds the controlled box; release the box control first");
       }
     }
   }
-  if (s.walls.def[id].removed) return;
+  if (s.walls.def[w].removed) return;
   const double held_before = s.energy_budget ? held_energy(s) : 0.0;
-  s.walls.def[id].removed = true;
-  s.walls.last_velocity[id] = Vec<Dim>::Zero();
-  s.walls.last_angular_velocity[id] = Space<Dim>::zero_spin();
+  s.walls.def[w].removed = true;
+  s.walls.last_velocity[w] = Vec<Dim>::Zero();
+  s.walls.last_angular_velocity[w] = Space<Dim>::zero_spin();
   drop_wall_contacts(s, id);
   // The strain energy its contacts held is gone with them.
   if (s.energy_budget) s.energy.removed += held_before - held_energy(s);
@@ -186,7 +188,7 @@ double BasicWorld<Dim>::furthest_reach(const Vec<Dim>& u) const {
 template <int Dim>
 double BasicWorld<Dim>::wall_settlement(WallId id) const {
   const Walls<Dim>& w = state_->walls;
-  return (w.def[id].point - w.initial_point[id]).dot(wall_normal(w.def[id]));
+  return (w.def[id.index()].point - w.initial_point[id.index()]).dot(wall_normal(w.def[id.index()]));
 }
 
 template void BasicWorld<2>::remove_particles(std::span<const ParticleId>);

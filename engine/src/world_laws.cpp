@@ -19,8 +19,8 @@ ContactColumns columns_for(ContactLaw law, ShapeKind shape, bool energy_budget) 
 
 template <int Dim>
 void resolve_laws(WorldState<Dim>& s, const WorldDefT<Dim>& def) {
-  std::vector<MaterialId> wall_materials;
-  for (const WallDefT<Dim>& w : def.walls) wall_materials.push_back(w.material);
+  std::vector<std::int32_t> wall_materials;
+  for (const WallDefT<Dim>& w : def.walls) wall_materials.push_back(w.material.value());
   const WorldLaws laws = resolve_contact_laws(s.materials, s.params, s.particles.material, wall_materials);
   s.pair_law = laws.pair;
   s.wall_law = laws.wall;

@@ -48,9 +48,9 @@ void check_damping(const DampingDef& d) {
 
 template <int Dim>
 void validate_world(const WorldDefT<Dim>& def) {
-  const auto materials = static_cast<MaterialId>(def.materials.size());
+  const std::size_t materials = def.materials.size();
   check(materials > 0, "world: no materials defined");
-  for (MaterialId m = 0; m < materials; ++m) {
+  for (std::size_t m = 0; m < materials; ++m) {
     const MaterialDef& mat = def.materials[m];
     const std::string where = "material " + std::to_string(m) + " (" + quoted(mat) + ")";
     check(mat.friction >= 0.0, where + ": friction must be >= 0");
@@ -60,8 +60,8 @@ void validate_world(const WorldDefT<Dim>& def) {
     const ContactModelDef& model = def.contact_models[k];
     const std::string where = "contact model " + std::to_string(k);
     const bool both_default = model.material_a == kInvalidId && model.material_b == kInvalidId;
-    const bool both_valid =
-        model.material_a >= 0 && model.material_a < materials && model.material_b >= 0 && model.material_b < materials;
+    const bool both_valid = model.material_a.valid() && model.material_a.index() < materials &&
+                            model.material_b.valid() && model.material_b.index() < materials;
     check(both_default || both_valid, where + ": unknown material id");
     const bool linear = model.law == ContactLaw::kLinear || model.law == ContactLaw::kLinearRestitution;
     if (linear) {
@@ -109,16 +109,16 @@ void validate_world(const WorldDefT<Dim>& def) {
       }
     }
     check(p.radius > 0.0 && std::isfinite(p.radius), where + ": radius must be > 0");
-    check(p.material >= 0 && p.material < materials, where + ": unknown material id");
-    const MaterialDef& mat = def.materials[p.material];
-    check(mat.density > 0.0, "material " + std::to_string(p.material) + " (" + quoted(mat) + "): density must be > 0");
+    check(p.material.valid() && p.material.index() < materials, where + ": unknown material id");
+    const MaterialDef& mat = def.materials[p.material.index()];
+    check(mat.density > 0.0, "material " + to_string(p.material) + " (" + quoted(mat) + "): density must be > 0");
     check(p.position.allFinite() && p.velocity.allFinite(), where + ": position and velocity must be finite");
   }
   for (std::size_t w = 0; w < def.walls.size(); ++w) {
     const WallDefT<Dim>& wall = def.walls[w];
     const std::string where = "wall " + std::to_string(w) + " (\"" + wall.name + "\")";
     validate_wall(wall, where);
-    check(wall.material >= 0 && wall.material < materials, where + ": unknown material id");
+    check(wall.material.valid() && wall.material.index() < materials, where + ": unknown material id");
     if (wall.motion.servo) {
       check(wall.motion.servo->gain > 0.0, where + ": servo gain must be > 0");
       check(wall.motion.servo->max_speed > 0.0, where + ": servo max_speed must be > 0");
@@ -155,7 +155,7 @@ template <int Dim>
 void check_wall_motion(const WallMotionT<Dim>& motion, WallId wall) {
   if (motion.servo) {
     check(motion.servo->gain > 0.0 && motion.servo->max_speed > 0.0,
-          "wall " + std::to_string(wall) + ": servo gain and max_speed must be > 0");
+          "wall " + to_string(wall) + ": servo gain and max_speed must be > 0");
   }
 }
 template void check_wall_motion(const WallMotionT<2>&, WallId);
@@ -170,8 +170,7 @@ void check_fixed_time_step(double seconds) {
 }
 
 void check_friction(MaterialId material, std::size_t materials, double friction) {
-  check(material >= 0 && static_cast<std::size_t>(material) < materials,
-        "unknown material id " + std::to_string(material));
+  check(material.valid() && material.index() < materials, "unknown material id " + to_string(material));
   check(friction >= 0.0 && std::isfinite(friction), "friction must be >= 0");
 }
 

@@ -540,8 +540,9 @@ class Converter {
               describe_problem(source_, indexed("output.probe", i) + field, no_particle_with_id(id, particle_count)));
         }
       }
-      output.probes.push_back(
-          {probe.name(), static_cast<ParticleId>(probe.first()), static_cast<ParticleId>(probe.second())});
+      // Both ids were checked against the particle count above.
+      output.probes.push_back({probe.name(), ParticleId{static_cast<std::int32_t>(probe.first())},
+                               ParticleId{static_cast<std::int32_t>(probe.second())}});
     }
     if (!problems.empty()) throw CaseError(std::move(problems));
   }

@@ -70,7 +70,7 @@ void put_contacts(std::string& out, const std::vector<analysis::PlateContactT<Di
   put(out, static_cast<std::uint64_t>(contacts.size()));
   out += '\n';
   for (const analysis::PlateContactT<Dim>& c : contacts) {
-    put(out, c.particle);
+    put(out, c.particle.value());
     for (int d = 0; d < Dim; ++d) put(out, c.point[d]);
     put(out, c.normal_force);
     put(out, c.shear_force);
@@ -83,7 +83,7 @@ template <int Dim>
 std::vector<analysis::PlateContactT<Dim>> get_contacts(Reader& in) {
   std::vector<analysis::PlateContactT<Dim>> contacts(in.next<std::uint64_t>());
   for (analysis::PlateContactT<Dim>& c : contacts) {
-    c.particle = in.next<int>();
+    c.particle = ParticleId{in.next<int>()};
     for (int d = 0; d < Dim; ++d) c.point[d] = in.next<double>();
     c.normal_force = in.next<double>();
     c.shear_force = in.next<double>();

@@ -96,10 +96,10 @@ void write_contacts_csv(const std::filesystem::path& directory, const BasicWorld
     const auto fields = [&](const auto& second) {
       const char* kind = wall ? "wall" : "particle";
       if constexpr (Dim == 2) {
-        file.write_row(c.first, kind, second, c.point.x(), c.point.y(), c.normal.x(), c.normal.y(), c.overlap,
+        file.write_row(c.first.value(), kind, second, c.point.x(), c.point.y(), c.normal.x(), c.normal.y(), c.overlap,
                        c.normal_force, c.shear_force, c.normal_damping, c.shear_damping, c.sliding);
       } else {
-        file.write_row(c.first, kind, second, c.point.x(), c.point.y(), c.point.z(), c.normal.x(), c.normal.y(),
+        file.write_row(c.first.value(), kind, second, c.point.x(), c.point.y(), c.point.z(), c.normal.x(), c.normal.y(),
                        c.normal.z(), c.overlap, c.normal_force, c.shear_force, c.tangential_force.x(),
                        c.tangential_force.y(), c.tangential_force.z(), c.normal_damping, c.shear_damping, c.sliding);
       }
@@ -107,7 +107,7 @@ void write_contacts_csv(const std::filesystem::path& directory, const BasicWorld
     if (wall) {
       fields(world.wall(c.second_wall).name);
     } else {
-      fields(c.second_particle);
+      fields(c.second_particle.value());
     }
   }
   file.flush();
@@ -120,21 +120,21 @@ void write_particles_csv(const std::filesystem::path& directory, const BasicWorl
   // The particles' materials and shapes are in the snapshot only (the
   // particle view has the dynamic state); a particles.csv is written once.
   const WorldSnapshotT<Dim> snapshot = world.snapshot();
-  for (ParticleId id = 0; id < world.particle_count(); ++id) {
-    const ParticleDefT<Dim>& def = snapshot.def.particles[id];
-    const std::string& material = snapshot.def.materials[def.material].name;
+  for (const ParticleId id : world.particle_ids()) {
+    const ParticleDefT<Dim>& def = snapshot.def.particles[id.index()];
+    const std::string& material = snapshot.def.materials[def.material.index()].name;
     const double r = p.radius[id];
     if constexpr (Dim == 2) {
       // A superquadric's semi-axes and exponent (Miyata eq. 34; its angle is the rotation); a disc's R, R, 2.
       const bool shaped = def.shape.superquadric();
-      file.write_row(id, p.position[id].x(), p.position[id].y(), r, p.velocity[id].x(), p.velocity[id].y(),
+      file.write_row(id.value(), p.position[id].x(), p.position[id].y(), r, p.velocity[id].x(), p.velocity[id].y(),
                      p.angular_velocity[id], p.rotation[id], material, shaped ? def.shape.a : r,
                      shaped ? def.shape.b : r, shaped ? def.shape.n : 2.0);
     } else {
       // An ellipsoid's semi-axes along its body axes (eq. 43; turned by the rotation); a sphere's R, R, R.
       const Quaternion& q = p.rotation[id];
       const Vec3 axes = def.shape.ellipsoid() ? def.shape.axes : Vec3(r, r, r);
-      file.write_row(id, p.position[id].x(), p.position[id].y(), p.position[id].z(), r, p.velocity[id].x(),
+      file.write_row(id.value(), p.position[id].x(), p.position[id].y(), p.position[id].z(), r, p.velocity[id].x(),
                      p.velocity[id].y(), p.velocity[id].z(), p.angular_velocity[id].x(), p.angular_velocity[id].y(),
                      p.angular_velocity[id].z(), q.w(), q.x(), q.y(), q.z(), material, axes.x(), axes.y(), axes.z());
     }

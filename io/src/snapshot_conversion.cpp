@@ -57,8 +57,8 @@ void put_settings(const WorldDefT<Dim>& def, proto::SnapshotSettings& settings) 
   }
   for (const ContactModelDef& c : def.contact_models) {
     proto::SnapshotContactModel& out = *settings.add_contact_model();
-    out.set_material_a(c.material_a);
-    out.set_material_b(c.material_b);
+    out.set_material_a(c.material_a.value());
+    out.set_material_b(c.material_b.value());
     out.set_law(to_proto(c.law));
     out.set_normal_stiffness(c.linear.normal_stiffness);
     out.set_shear_stiffness(c.linear.shear_stiffness);
@@ -117,7 +117,7 @@ void put_particles(const WorldSnapshotT<Dim>& s, proto::SnapshotParticles& out) 
     put(out.mutable_angular_velocity(), p.angular_velocity);
     put(out.mutable_rotation(), s.rotation[i]);
     out.add_radius(p.radius);
-    out.add_material(p.material);
+    out.add_material(p.material.value());
     put(out.mutable_force(), s.force[i]);
     put(out.mutable_moment(), s.moment[i]);
     put_shape(out, p.shape);
@@ -139,7 +139,7 @@ void put_wall(const WallDefT<Dim>& def, const WallSnapshotT<Dim>& state, proto::
       for (const Vec3& corner : face) put(out.mutable_triangles(), corner);
     }
   }
-  out.set_material(def.material);
+  out.set_material(def.material.value());
   put(out.mutable_velocity(), def.motion.velocity);
   put(out.mutable_angular_velocity(), def.motion.angular_velocity);
   if (def.motion.servo) {
@@ -162,8 +162,8 @@ template <int Dim>
 void put_box_control(const BoxControlT<Dim>& box, proto::SnapshotBoxControl& out) {
   for (const BoxAxisDef& a : box.axes) {
     proto::SnapshotBoxAxis& axis = *out.add_axis();
-    axis.set_lower(a.lower);
-    axis.set_upper(a.upper);
+    axis.set_lower(a.lower.value());
+    axis.set_upper(a.upper.value());
     axis.set_control(static_cast<int>(a.control));
     axis.set_strain_rate(a.strain_rate);
     axis.set_stress(a.stress);
@@ -180,8 +180,8 @@ BoxControlT<Dim> get_box_control(const proto::SnapshotBoxControl& in) {
   BoxControlT<Dim> box;
   for (int i = 0; i < Dim && i < in.axis_size(); ++i) {
     const proto::SnapshotBoxAxis& a = in.axis(i);
-    box.axes[static_cast<std::size_t>(i)] = {a.lower(), a.upper(), static_cast<AxisControl>(a.control()),
-                                             a.strain_rate(), a.stress()};
+    box.axes[static_cast<std::size_t>(i)] = {WallId{a.lower()}, WallId{a.upper()},
+                                             static_cast<AxisControl>(a.control()), a.strain_rate(), a.stress()};
   }
   box.path = static_cast<StressPath>(in.path());
   box.path_value = in.path_value();
@@ -201,8 +201,8 @@ void get_settings(const proto::SnapshotSettings& settings, WorldDefT<Dim>& def) 
   }
   for (const auto& model : settings.contact_model()) {
     ContactModelDef c;
-    c.material_a = model.material_a();
-    c.material_b = model.material_b();
+    c.material_a = MaterialId{model.material_a()};
+    c.material_b = MaterialId{model.material_b()};
     c.law = from_proto(model.law());
     c.linear = LinearLawDef{model.normal_stiffness(), model.shear_stiffness()};
     if (model.has_friction()) c.friction = model.friction();
@@ -241,7 +241,7 @@ void get_particles(const proto::SnapshotParticles& p, WorldSnapshotT<Dim>& s) {
     ParticleDefT<Dim> particle;
     particle.position = get<Vec<Dim>>(p.position(), i);
     particle.radius = p.radius(i);
-    particle.material = p.material(i);
+    particle.material = MaterialId{p.material(i)};
     particle.velocity = get<Vec<Dim>>(p.velocity(), i);
     particle.angular_velocity = get<Spin<Dim>>(p.angular_velocity(), i);
     particle.shape = get_shape(p, i, std::integral_constant<int, Dim>{});
@@ -269,7 +269,7 @@ void get_wall(const proto::SnapshotWall& w, WorldSnapshotT<Dim>& s) {
                                 get<Vec3>(w.triangles(), 3 * face + 2)});
     }
   }
-  wall.material = w.material();
+  wall.material = MaterialId{w.material()};
   wall.motion.velocity = get<Vec<Dim>>(w.velocity(), 0);
   wall.motion.angular_velocity = get<Spin<Dim>>(w.angular_velocity(), 0);
   if (w.has_servo()) wall.motion.servo = ServoDef{w.servo().target_force(), w.servo().gain(), w.servo().max_speed()};
@@ -319,7 +319,7 @@ proto::Snapshot snapshot_to_proto(const WorldSnapshotT<Dim>& s, const SnapshotIn
   m.set_particle_travel(s.particle_travel);
   m.set_wall_travel(s.wall_travel);
   m.set_contacts_stale(s.contacts_stale);
-  for (ParticleId id : s.particle_order) m.add_particle_order(id);
+  for (ParticleId id : s.particle_order) m.add_particle_order(id.value());
   m.set_sorted_cycle(s.sorted_cycle);
   m.set_cycle(s.cycle);
   m.set_time(s.time);
@@ -352,7 +352,7 @@ WorldSnapshotT<Dim> snapshot_from_proto(const proto::Snapshot& m, SnapshotInfo* 
   s.particle_travel = m.particle_travel();
   s.wall_travel = m.wall_travel();
   s.contacts_stale = m.contacts_stale();
-  s.particle_order.assign(m.particle_order().begin(), m.particle_order().end());
+  for (const std::int32_t id : m.particle_order()) s.particle_order.push_back(ParticleId{id});
   s.sorted_cycle = m.sorted_cycle();
   s.cycle = m.cycle();
   s.time = m.time();

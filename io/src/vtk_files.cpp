@@ -111,7 +111,7 @@ void write_particles_vtp(const std::filesystem::path& file, const WorldSnapshotT
     data.points.push_back(point3<Dim>(p.position));
     data.verts.add({static_cast<std::int64_t>(i)});
     id.add(static_cast<std::int64_t>(i));
-    material.add(static_cast<std::int64_t>(p.material));
+    material.add(static_cast<std::int64_t>(p.material.value()));
     radius.add(p.radius);
     velocity.add(point3<Dim>(p.velocity));
     angular_velocity.add(spin3<Dim>(p.angular_velocity));

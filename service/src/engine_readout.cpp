@@ -24,7 +24,7 @@ protocol::WallForce to_wall_force(const BasicWorld<Dim>& world, const WallMeasur
   const WallDefT<Dim>& def = world.wall(m.wall);
   protocol::WallForce w;
   w.name = def.name;
-  w.id = m.wall;
+  w.id = m.wall.value();
   w.force = vector3(m.force);
   w.moment = spin3(m.moment);
   w.normal_force = m.normal_force;
@@ -54,9 +54,9 @@ bool inside(const ContactRecordT<Dim>& c, const ContactFilter& filter) {
 template <int Dim>
 protocol::ContactEntry to_entry(const ContactRecordT<Dim>& c) {
   protocol::ContactEntry e;
-  e.first = c.first;
-  e.second_particle = c.second_particle;
-  e.second_wall = c.second_wall;
+  e.first = c.first.value();
+  e.second_particle = c.second_particle.value();
+  e.second_wall = c.second_wall.value();
   e.point = vector3(c.point);
   e.normal = vector3(c.normal);
   e.overlap = c.overlap;
@@ -73,7 +73,7 @@ protocol::ContactEntry to_entry(const ContactRecordT<Dim>& c) {
 template <int Dim>
 protocol::WallForce read_wall(const BasicWorld<Dim>& world, WallId wall) {
   // wall_measures() measures every wall; they are few.
-  return to_wall_force(world, world.wall_measures().at(static_cast<std::size_t>(wall)));
+  return to_wall_force(world, world.wall_measures().at(wall.index()));
 }
 
 template <int Dim>

@@ -152,7 +152,7 @@ std::string Simulation::snapshot_bytes() const { return service::snapshot_bytes(
 WallId Simulation::find_wall(const std::string& name, std::int32_t id) const {
   const WorldSession& w = world();
   std::string known;
-  for (WallId i = 0; i < w.wall_count(); ++i) known += (i == 0 ? "" : ", ") + w.wall_name(i);
+  for (int i = 0; i < w.wall_count(); ++i) known += (i == 0 ? "" : ", ") + w.wall_name(WallId{i});
   if (!name.empty()) {
     const WallId found = w.find_wall(name);
     if (found == kInvalidId) {
@@ -165,7 +165,7 @@ WallId Simulation::find_wall(const std::string& name, std::int32_t id) const {
                                                       : "no wall with id " + std::to_string(id) + " (there are " +
                                                             std::to_string(w.wall_count()) + " walls: " + known + ")");
   }
-  return id;
+  return WallId{id};
 }
 
 std::string Simulation::set_wall_velocity(const protocol::WallVelocityArgs& args) {
@@ -239,7 +239,7 @@ std::string Simulation::set_parameter(const protocol::ParameterArgs& args) {
       std::string known;
       for (std::size_t i = 0; i < materials.size(); ++i) {
         if (materials[i].name == args.material) {
-          w.set_friction(static_cast<MaterialId>(i), args.value);
+          w.set_friction(MaterialId::from_index(i), args.value);
           return "friction of " + args.material + " set to " + format_value(args.value);
         }
         known += (i == 0 ? "" : ", ") + materials[i].name;

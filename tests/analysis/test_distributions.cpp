@@ -24,8 +24,8 @@ AssemblySample star(const std::vector<double>& angles, const std::vector<double>
     s.position.push_back(2.0 * e);
     s.radius.push_back(1.0);
     ContactRecord c;
-    c.first = 0;
-    c.second_particle = static_cast<ParticleId>(k + 1);
+    c.first = ParticleId{0};
+    c.second_particle = ParticleId::from_index(k + 1);
     c.normal = e;
     c.point = e;
     c.normal_force = normal[k];

@@ -32,11 +32,11 @@ template <int Dim>
 void add_contact(AssemblySampleT<Dim>& s, int a, int b, const std::type_identity_t<Vec<Dim>>& e,
                  const std::type_identity_t<Vec<Dim>>& force_on_a, double radius, int wall) {
   ContactRecordT<Dim> c;
-  c.first = a;
+  c.first = ParticleId{a};
   if (b >= 0) {
-    c.second_particle = b;
+    c.second_particle = ParticleId{b};
   } else {
-    c.second_wall = wall;
+    c.second_wall = WallId{wall};
   }
   c.normal = e;
   c.point = s.position[static_cast<std::size_t>(a)] + radius * e;
@@ -281,10 +281,10 @@ TEST(RegionMeasures, WorldPressedByWallsCarriesTheirStress) {
   }
   const double low = 1.0 - (1.0 - delta), high = 1.0 + 2.0 * spacing + (1.0 - delta);
   const double middle = 0.5 * (low + high);
-  def.walls.push_back(WallDef{"bottom", {middle, low}, {1.0, 0.0}, -5.0, 5.0, 0, {}});
-  def.walls.push_back(WallDef{"right", {high, middle}, {0.0, 1.0}, -5.0, 5.0, 0, {}});
-  def.walls.push_back(WallDef{"top", {middle, high}, {-1.0, 0.0}, -5.0, 5.0, 0, {}});
-  def.walls.push_back(WallDef{"left", {low, middle}, {0.0, -1.0}, -5.0, 5.0, 0, {}});
+  def.walls.push_back(WallDef{"bottom", {middle, low}, {1.0, 0.0}, -5.0, 5.0, MaterialId{0}, {}});
+  def.walls.push_back(WallDef{"right", {high, middle}, {0.0, 1.0}, -5.0, 5.0, MaterialId{0}, {}});
+  def.walls.push_back(WallDef{"top", {middle, high}, {-1.0, 0.0}, -5.0, 5.0, MaterialId{0}, {}});
+  def.walls.push_back(WallDef{"left", {low, middle}, {0.0, -1.0}, -5.0, 5.0, MaterialId{0}, {}});
   def.fixed_time_step = 1e-5;
   def.threads = 1;
   const World world(def);

@@ -21,9 +21,10 @@ inline WorldDef settling_box() {
   packing.sizes = {{0.012, 40}, {0.008, 60}};
   packing.seed = 11;
   def.particles = generate_random_packing(packing);
-  def.walls = {
-      WallDef{"bottom", {0.15, 0.0}, {1, 0}, -0.2, 0.2, 1, {}}, WallDef{"right", {0.3, 0.15}, {0, 1}, -0.2, 0.2, 1, {}},
-      WallDef{"top", {0.15, 0.3}, {-1, 0}, -0.2, 0.2, 1, {}}, WallDef{"left", {0.0, 0.15}, {0, -1}, -0.2, 0.2, 1, {}}};
+  def.walls = {WallDef{"bottom", {0.15, 0.0}, {1, 0}, -0.2, 0.2, MaterialId{1}, {}},
+               WallDef{"right", {0.3, 0.15}, {0, 1}, -0.2, 0.2, MaterialId{1}, {}},
+               WallDef{"top", {0.15, 0.3}, {-1, 0}, -0.2, 0.2, MaterialId{1}, {}},
+               WallDef{"left", {0.0, 0.15}, {0, -1}, -0.2, 0.2, MaterialId{1}, {}}};
   def.walls[2].motion.servo = ServoDef{200.0, 1e-3, 0.05};
   def.walls[3].motion.velocity = {0.001, 0.0};
   def.gravity = {0.0, -9.81};
@@ -63,7 +64,7 @@ inline WorldDef3 sphere_stack(ContactLaw law) {
   floor.direction2 = Vec3::UnitY();
   floor.h1 = floor.k1 = -0.05;
   floor.h2 = floor.k2 = 0.05;
-  floor.material = 1;
+  floor.material = MaterialId{1};
   floor.motion.velocity = {0.0, 0.0, 0.001};
   def.walls = {floor};
   def.gravity = {0.0, 0.0, -9.81};

@@ -23,10 +23,11 @@ constexpr double kTimeStep = 1.0e-4;
 WorldDef two_discs_between_walls() {
   WorldDef def;
   def.materials = {MaterialDef{"disc", kDensity, 0.0, 0.0}};
-  def.contact_models = {testing::linear_model(kStiffness, kStiffness, 0, 0)};
-  def.particles = {ParticleDef{{kRadius, 0.0}, kRadius, 0}, ParticleDef{{3.0 * kRadius, 0.0}, kRadius, 0}};
-  WallDef left{"left", {0.0, 0.0}, {0.0, -1.0}, -2.0, 2.0, 0, {}};  // normal points to +1
-  WallDef right{"right", {4.0 * kRadius, 0.0}, {0.0, 1.0}, -2.0, 2.0, 0, {}};
+  def.contact_models = {testing::linear_model(kStiffness, kStiffness, MaterialId{0}, MaterialId{0})};
+  def.particles = {ParticleDef{{kRadius, 0.0}, kRadius, MaterialId{0}},
+                   ParticleDef{{3.0 * kRadius, 0.0}, kRadius, MaterialId{0}}};
+  WallDef left{"left", {0.0, 0.0}, {0.0, -1.0}, -2.0, 2.0, MaterialId{0}, {}};  // normal points to +1
+  WallDef right{"right", {4.0 * kRadius, 0.0}, {0.0, 1.0}, -2.0, 2.0, MaterialId{0}, {}};
   left.motion.velocity = {kWallSpeed, 0.0};
   right.motion.velocity = {-kWallSpeed, 0.0};
   def.walls = {left, right};
@@ -55,9 +56,9 @@ TEST(ContactLaw, Fig1HandCalculationOfTheFirstCycles) {
     force_c += k * (v + velocity_y) * dt;           // eq. 7
     double engine_a = 0.0, engine_b = 0.0, engine_c = 0.0;
     for (const ContactRecord& c : world.contacts()) {
-      if (c.second_wall == 0) engine_a = c.normal_force;
-      if (c.second_wall == 1) engine_c = c.normal_force;
-      if (c.second_particle == 1) engine_b = c.normal_force;
+      if (c.second_wall == WallId{0}) engine_a = c.normal_force;
+      if (c.second_wall == WallId{1}) engine_c = c.normal_force;
+      if (c.second_particle == ParticleId{1}) engine_b = c.normal_force;
     }
     // Round-off: overlaps come from R_x + R_y - D with D about 2 R, so each
     // carries an absolute error of a few ulps of 4 R.
@@ -67,8 +68,10 @@ TEST(ContactLaw, Fig1HandCalculationOfTheFirstCycles) {
     EXPECT_NEAR(engine_b, force_b, tol) << "contact B, cycle " << cycle;
     EXPECT_NEAR(engine_c, force_c, tol) << "contact C, cycle " << cycle;
     // The velocities over the step just taken came from the last cycle's force sums.
-    EXPECT_NEAR(world.particles().velocity[0].x(), velocity_x, 2.0 * tol / m * dt * cycle) << "cycle " << cycle;
-    EXPECT_NEAR(world.particles().velocity[1].x(), velocity_y, 2.0 * tol / m * dt * cycle) << "cycle " << cycle;
+    EXPECT_NEAR(world.particles().velocity[ParticleId{0}].x(), velocity_x, 2.0 * tol / m * dt * cycle)
+        << "cycle " << cycle;
+    EXPECT_NEAR(world.particles().velocity[ParticleId{1}].x(), velocity_y, 2.0 * tol / m * dt * cycle)
+        << "cycle " << cycle;
     std::printf("cycle %d: F_A=%.6e F_B=%.6e F_C=%.6e (hand: %.6e %.6e %.6e)\n", cycle, engine_a, engine_b, engine_c,
                 force_a, force_b, force_c);
     velocity_x += (force_a - force_b) / m * dt;  // eqs. 2-4: force sums, then Newton's second law
@@ -84,9 +87,9 @@ WorldDef disc_dragged_into_corner(double disc_friction, double wall_friction, do
   def.materials = {MaterialDef{"disc", 1000.0, disc_friction, cohesion},
                    MaterialDef{"floor", 1.0, wall_friction, 2.0 * cohesion}};
   def.contact_models = {testing::linear_model(1.0e7, 0.8e7)};
-  def.particles = {ParticleDef{{0.0, 0.1}, 0.1, 0}};
-  WallDef floor{"floor", {0.0, 0.0}, {1.0, 0.0}, -100.0, 100.0, 1, {}};
-  WallDef side{"side", {0.1, 0.0}, {0.0, 1.0}, 0.0, 100.0, 1, {}};
+  def.particles = {ParticleDef{{0.0, 0.1}, 0.1, MaterialId{0}}};
+  WallDef floor{"floor", {0.0, 0.0}, {1.0, 0.0}, -100.0, 100.0, MaterialId{1}, {}};
+  WallDef side{"side", {0.1, 0.0}, {0.0, 1.0}, 0.0, 100.0, MaterialId{1}, {}};
   floor.motion.velocity = {0.5, 0.0};
   def.walls = {floor, side};
   def.gravity = {5.0, -9.81};  // tilted: the disc leans on the side wall

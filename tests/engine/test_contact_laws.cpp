@@ -82,21 +82,22 @@ WorldDef two_materials(ContactLaw pair_law, ContactLaw wall_law) {
   WorldDef def;
   def.materials = {steel(), steel()};
   def.materials[1].name = "steel2";
-  ContactModelDef pp = testing::linear_model(1e6, 1e6, 0, 0), pq = testing::linear_model(1e6, 1e6, 0, 1),
-                  qq = testing::linear_model(1e6, 1e6, 1, 1);
+  ContactModelDef pp = testing::linear_model(1e6, 1e6, MaterialId{0}, MaterialId{0}),
+                  pq = testing::linear_model(1e6, 1e6, MaterialId{0}, MaterialId{1}),
+                  qq = testing::linear_model(1e6, 1e6, MaterialId{1}, MaterialId{1});
   pp.law = pair_law;
   qq.law = pair_law;
   pq.law = wall_law;
   def.contact_models = {pp, pq, qq};
-  def.particles = {ParticleDef{{0.0, 0.0}, 0.01, 0}, ParticleDef{{0.1, 0.0}, 0.01, 0}};
-  def.walls = {WallDef{"floor", {0.0, -0.01}, {1.0, 0.0}, -1.0, 1.0, 1, {}}};
+  def.particles = {ParticleDef{{0.0, 0.0}, 0.01, MaterialId{0}}, ParticleDef{{0.1, 0.0}, 0.01, MaterialId{0}}};
+  def.walls = {WallDef{"floor", {0.0, -0.01}, {1.0, 0.0}, -1.0, 1.0, MaterialId{1}, {}}};
   return def;
 }
 
 TEST(ContactLaws, ParticlePairsAndWallsMayUseDifferentLaws) {
   EXPECT_NO_THROW(World(two_materials(ContactLaw::kHertzMindlin, ContactLaw::kLinear)));
   WorldDef mixed = two_materials(ContactLaw::kLinear, ContactLaw::kLinear);
-  mixed.particles[1].material = 1;  // particle-particle pairs now meet two laws
+  mixed.particles[1].material = MaterialId{1};  // particle-particle pairs now meet two laws
   mixed.contact_models[2].law = ContactLaw::kHertzMindlin;
   try {
     World world(mixed);

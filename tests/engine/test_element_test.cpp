@@ -33,9 +33,10 @@ WorldDef box_of_discs() {
   packing.sizes = {{0.006, 80}, {0.0045, 120}};
   packing.seed = 3;
   def.particles = generate_random_packing(packing);
-  def.walls = {
-      WallDef{"bottom", {0.1, 0.0}, {1, 0}, -0.2, 0.2, 0, {}}, WallDef{"right", {0.2, 0.1}, {0, 1}, -0.2, 0.2, 0, {}},
-      WallDef{"top", {0.1, 0.2}, {-1, 0}, -0.2, 0.2, 0, {}}, WallDef{"left", {0.0, 0.1}, {0, -1}, -0.2, 0.2, 0, {}}};
+  def.walls = {WallDef{"bottom", {0.1, 0.0}, {1, 0}, -0.2, 0.2, MaterialId{0}, {}},
+               WallDef{"right", {0.2, 0.1}, {0, 1}, -0.2, 0.2, MaterialId{0}, {}},
+               WallDef{"top", {0.1, 0.2}, {-1, 0}, -0.2, 0.2, MaterialId{0}, {}},
+               WallDef{"left", {0.0, 0.1}, {0, -1}, -0.2, 0.2, MaterialId{0}, {}}};
   def.damping.local_alpha = 0.5;
   def.threads = 1;
   return def;
@@ -43,8 +44,8 @@ WorldDef box_of_discs() {
 
 BoxControl box(AxisControl x, double x_value, AxisControl y, double y_value) {
   BoxControl control;
-  control.axes[0] = BoxAxisDef{3, 1, x, x_value, x_value};
-  control.axes[1] = BoxAxisDef{0, 2, y, y_value, y_value};
+  control.axes[0] = BoxAxisDef{WallId{3}, WallId{1}, x, x_value, x_value};
+  control.axes[1] = BoxAxisDef{WallId{0}, WallId{2}, y, y_value, y_value};
   // A wall moves 5e-6 m/s per Pa of error: about 20 wall contacts of 1e7
   // N/m stiffen the box by some 1e9 Pa/m, so the servo's loop gain per step
   // is 5e-6 x 1e9 x 1.8e-5 s, about 0.1: stable, and quick to compress.
@@ -162,7 +163,7 @@ TEST(BoxControl, BadControlsNameTheField) {
   std::swap(swapped.axes[1].lower, swapped.axes[1].upper);
   EXPECT_EQ(error_of(swapped), "box control: axes[1] (y).lower: wall 2 (\"top\") must face +y (the particles' side)");
   BoxControl twice = box(AxisControl::kStrainRate, 0.0, AxisControl::kStrainRate, 0.0);
-  twice.axes[1].lower = 3;
+  twice.axes[1].lower = WallId{3};
   EXPECT_EQ(error_of(twice), "box control: axes[1] (y).lower: wall 3 (\"left\") already bounds the box");
   BoxControl no_gain = box(AxisControl::kStress, 1.0, AxisControl::kStrainRate, 0.0);
   no_gain.gain = 0.0;
@@ -182,14 +183,14 @@ TEST(BoxControl, BadControlsNameTheField) {
 TEST(RemoveWall, DiscsFallThroughTheOpenedOrifice) {
   WorldDef def = box_of_discs();
   def.gravity = {0.0, -9.81};
-  def.walls.push_back(WallDef{"floor", {0.1, 0.0}, {1, 0}, -0.05, 0.05, 0, {}});
+  def.walls.push_back(WallDef{"floor", {0.1, 0.0}, {1, 0}, -0.05, 0.05, MaterialId{0}, {}});
   def.walls[0].h1 = -0.2;
   def.walls[0].h2 = -0.05;  // the bottom wall leaves a gap of 0.1 m in the middle, closed by the floor
   World world(def);
   world.cycle(20000);
   ASSERT_GT(world.wall_measures()[4].contacts, 0);
-  world.remove_wall(4);
-  EXPECT_TRUE(world.wall(4).removed);
+  world.remove_wall(WallId{4});
+  EXPECT_TRUE(world.wall(WallId{4}).removed);
   EXPECT_EQ(world.wall_measures()[4].contacts, 0);
   EXPECT_EQ(world.wall_measures()[4].normal_force, 0.0);
   world.cycle(20000);
@@ -201,7 +202,7 @@ TEST(RemoveWall, DiscsFallThroughTheOpenedOrifice) {
   // A wall bounding a controlled box cannot be taken out.
   World boxed(box_of_discs());
   boxed.set_box_control(box(AxisControl::kStrainRate, 0.0, AxisControl::kStrainRate, 0.0));
-  EXPECT_THROW(boxed.remove_wall(0), DefinitionError);
+  EXPECT_THROW(boxed.remove_wall(WallId{0}), DefinitionError);
 }
 
 // 3D: a cube of six walls round 4 x 4 x 4 spheres of radius 12.5 mm that
@@ -245,9 +246,9 @@ WorldDef3 cube_of_spheres() {
 TEST(BoxControl, ACubeOfSixWallsInThreeDimensions) {
   World3 world(cube_of_spheres());
   BoxControl3 control;
-  control.axes = {BoxAxisDef{0, 1, AxisControl::kStrainRate, -1.0, 0.0},
-                  BoxAxisDef{2, 3, AxisControl::kStrainRate, 1.0, 0.0},
-                  BoxAxisDef{4, 5, AxisControl::kStrainRate, 0.0, 0.0}};
+  control.axes = {BoxAxisDef{WallId{0}, WallId{1}, AxisControl::kStrainRate, -1.0, 0.0},
+                  BoxAxisDef{WallId{2}, WallId{3}, AxisControl::kStrainRate, 1.0, 0.0},
+                  BoxAxisDef{WallId{4}, WallId{5}, AxisControl::kStrainRate, 0.0, 0.0}};
   world.set_box_control(control);
   const double dt = world.time_step();
   const int cycles = 100;
@@ -296,7 +297,7 @@ TEST(Stage, ChangesFrictionDampingAndTimeStepReleasesTheBoxAndRemovesAWall) {
   def.particles.resize(150);
   def.materials[0].friction = 0.0;
   def.box_control = box(AxisControl::kStress, 1e4, AxisControl::kStress, 1e4);
-  def.walls.push_back(WallDef{"spare", {0.1, 0.1}, {1, 0}, -0.01, 0.01, 0, {}});
+  def.walls.push_back(WallDef{"spare", {0.1, 0.1}, {1, 0}, -0.01, 0.01, MaterialId{0}, {}});
   World world(def);
   const double step = world.time_step();
   StageDef compress;
@@ -304,10 +305,10 @@ TEST(Stage, ChangesFrictionDampingAndTimeStepReleasesTheBoxAndRemovesAWall) {
   run_stage(world, compress);
   StageDef next;
   next.release_box_control = true;
-  next.remove_walls = {4};
+  next.remove_walls = {WallId{4}};
   next.damping = DampingDef{0.0, 0.0, std::nullopt, 0.7, std::nullopt};
   next.time_step = TimeStepSetting{0.05, 0.0};
-  next.frictions = {{0, 0.3}};
+  next.frictions = {{MaterialId{0}, 0.3}};
   next.cycles = 10;
   run_stage(world, next);
   EXPECT_EQ(world.materials()[0].friction, 0.3);
@@ -315,7 +316,7 @@ TEST(Stage, ChangesFrictionDampingAndTimeStepReleasesTheBoxAndRemovesAWall) {
   EXPECT_NEAR(world.time_step(), 0.05 * world.critical_time_step(), 1e-15);
   EXPECT_LT(world.time_step(), step);
   EXPECT_FALSE(world.box_control().has_value());
-  EXPECT_TRUE(world.wall(4).removed);
+  EXPECT_TRUE(world.wall(WallId{4}).removed);
   EXPECT_EQ(world.wall_measures()[4].contacts, 0);
   StageDef fixed;
   fixed.time_step = TimeStepSetting{0.0, 2e-6};
@@ -333,19 +334,19 @@ TEST(BoxControl, RestartIsExactAndThreadsAgree) {
   control.path = StressPath::kConstantMeanStress;
   control.path_value = 1e4;
   def.box_control = control;
-  def.walls.push_back(WallDef{"spare", {0.1, 0.1}, {1, 0}, -0.01, 0.01, 0, {}});
+  def.walls.push_back(WallDef{"spare", {0.1, 0.1}, {1, 0}, -0.01, 0.01, MaterialId{0}, {}});
   World original(def);
-  original.remove_wall(4);
+  original.remove_wall(WallId{4});
   def.threads = 2;
   World parallel(def);
-  parallel.remove_wall(4);
+  parallel.remove_wall(WallId{4});
   original.cycle(3000);
   parallel.cycle(3000);
   World restored(original.snapshot());
   EXPECT_EQ(restored.state_hash(), original.state_hash());
   ASSERT_TRUE(restored.box_control().has_value());
   EXPECT_EQ(restored.box_control()->reference_extent, original.box_control()->reference_extent);
-  EXPECT_TRUE(restored.wall(4).removed);
+  EXPECT_TRUE(restored.wall(WallId{4}).removed);
   original.cycle(3000);
   restored.cycle(3000);
   parallel.cycle(3000);
@@ -361,10 +362,10 @@ TEST(BoxControl, RestartIsExactAndThreadsAgree) {
 TEST(BoxControl, AStageResumedPartWayEndsAsTheWholeStage) {
   WorldDef def = box_of_discs();
   def.particles.resize(150);
-  def.walls.push_back(WallDef{"spare", {0.1, 0.1}, {1, 0}, -0.01, 0.01, 0, {}});
+  def.walls.push_back(WallDef{"spare", {0.1, 0.1}, {1, 0}, -0.01, 0.01, MaterialId{0}, {}});
   StageDef shear;
   shear.box_control = box(AxisControl::kStrainRate, -0.01, AxisControl::kStrainRate, 0.01);
-  shear.remove_walls = {4};
+  shear.remove_walls = {WallId{4}};
   shear.time_step = TimeStepSetting{0.5, 0.0};
   shear.cycles = 20000;
   shear.until.deviator_strain_above = 0.004;

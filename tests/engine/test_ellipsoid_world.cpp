@@ -45,7 +45,8 @@ WorldDef3 drop(bool as_ellipsoid, const Vec3& velocity) {
 
 TEST(EllipsoidWorld, EqualAxesReproduceTheSphere) {
   World3 sphere(drop(false, {0.3, 0.0, -0.5})), ellipsoid(drop(true, {0.3, 0.0, -0.5}));
-  EXPECT_NEAR(ellipsoid.particles().mass[0], sphere.particles().mass[0], 1e-15 * sphere.particles().mass[0]);
+  EXPECT_NEAR(ellipsoid.particles().mass[ParticleId{0}], sphere.particles().mass[ParticleId{0}],
+              1e-15 * sphere.particles().mass[ParticleId{0}]);
   double peak_sphere = 0.0, peak_ellipsoid = 0.0;
   for (int k = 0; k < 4000; ++k) {
     sphere.cycle();
@@ -56,12 +57,13 @@ TEST(EllipsoidWorld, EqualAxesReproduceTheSphere) {
   const auto s = sphere.particles(), e = ellipsoid.particles();
   std::printf(
       "peak force sphere %.9e, ellipsoid %.9e; rebound velocity (%.9f %.9f) vs (%.9f %.9f), spin %.6f vs %.6f\n",
-      peak_sphere, peak_ellipsoid, s.velocity[0].x(), s.velocity[0].z(), e.velocity[0].x(), e.velocity[0].z(),
-      s.angular_velocity[0].y(), e.angular_velocity[0].y());
+      peak_sphere, peak_ellipsoid, s.velocity[ParticleId{0}].x(), s.velocity[ParticleId{0}].z(),
+      e.velocity[ParticleId{0}].x(), e.velocity[ParticleId{0}].z(), s.angular_velocity[ParticleId{0}].y(),
+      e.angular_velocity[ParticleId{0}].y());
   EXPECT_GT(peak_sphere, 0.0);
   EXPECT_NEAR(peak_ellipsoid / peak_sphere, 1.0, 1e-9);
-  EXPECT_NEAR((e.velocity[0] - s.velocity[0]).norm(), 0.0, 1e-9);
-  EXPECT_NEAR((e.angular_velocity[0] - s.angular_velocity[0]).norm(), 0.0, 1e-7);
+  EXPECT_NEAR((e.velocity[ParticleId{0}] - s.velocity[ParticleId{0}]).norm(), 0.0, 1e-9);
+  EXPECT_NEAR((e.angular_velocity[ParticleId{0}] - s.angular_velocity[ParticleId{0}]).norm(), 0.0, 1e-7);
 }
 
 TEST(EllipsoidWorld, TumblingFreeEllipsoidKeepsEnergyAndAngularMomentum) {
@@ -76,8 +78,8 @@ TEST(EllipsoidWorld, TumblingFreeEllipsoidKeepsEnergyAndAngularMomentum) {
   World3 world(def);
   auto momentum = [&] {
     const auto v = world.particles();
-    const Quaternion q = v.rotation[0];
-    const Vec3 body = q.conjugate() * v.angular_velocity[0];
+    const Quaternion q = v.rotation[ParticleId{0}];
+    const Vec3 body = q.conjugate() * v.angular_velocity[ParticleId{0}];
     const Vec3 principal =
         2650.0 * (4.0 / 3.0 * std::numbers::pi * 0.371 * 0.260 * 0.182) / 5.0 *
         Vec3(0.260 * 0.260 + 0.182 * 0.182, 0.371 * 0.371 + 0.182 * 0.182, 0.371 * 0.371 + 0.260 * 0.260);
@@ -110,13 +112,13 @@ TEST(EllipsoidWorld, DroppedEllipsoidRestsOnItsFlattestSide) {
   World3 world(def);
   world.cycle(200000);
   const auto v = world.particles();
-  const Vec3 up_in_body = v.rotation[0].conjugate() * Vec3::UnitZ();
-  const double weight = 9.81 * v.mass[0];
+  const Vec3 up_in_body = v.rotation[ParticleId{0}].conjugate() * Vec3::UnitZ();
+  const double weight = 9.81 * v.mass[ParticleId{0}];
   std::printf("at rest: centre at %.5f m (a3 = 0.182), |a3 axis . z| = %.6f, floor %.6e of weight %.6e N, KE %.2e J\n",
-              v.position[0].z(), std::abs(up_in_body.z()), world.wall_measures()[0].normal_force, weight,
+              v.position[ParticleId{0}].z(), std::abs(up_in_body.z()), world.wall_measures()[0].normal_force, weight,
               world.assembly_measures().kinetic_energy);
   EXPECT_NEAR(std::abs(up_in_body.z()), 1.0, 1e-3);  // the shortest axis stands vertical
-  EXPECT_NEAR(v.position[0].z(), 0.182, 1e-3);
+  EXPECT_NEAR(v.position[ParticleId{0}].z(), 0.182, 1e-3);
   EXPECT_NEAR(world.wall_measures()[0].normal_force, weight, 1e-3 * weight);
 }
 

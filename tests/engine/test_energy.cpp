@@ -29,10 +29,11 @@ WorldDef discs_on_a_line(double time_step_fraction) {
   const double gap = 2.0e-4;
   double x = gap;
   for (int i = 0; i < 2; ++i) {
-    def.particles.push_back(ParticleDef{{x + radius[i], 0.05}, radius[i], 0, {speed[i], 0.0}, 0.0});
+    def.particles.push_back(ParticleDef{{x + radius[i], 0.05}, radius[i], MaterialId{0}, {speed[i], 0.0}, 0.0});
     x += 2.0 * radius[i] + gap;
   }
-  def.walls = {WallDef{"left", {0.0, 0.05}, {0, -1}, -1, 1, 0, {}}, WallDef{"right", {x, 0.05}, {0, 1}, -1, 1, 0, {}}};
+  def.walls = {WallDef{"left", {0.0, 0.05}, {0, -1}, -1, 1, MaterialId{0}, {}},
+               WallDef{"right", {x, 0.05}, {0, 1}, -1, 1, MaterialId{0}, {}}};
   def.time_step_fraction = time_step_fraction;
   return def;
 }

@@ -26,8 +26,10 @@ WorldDef box() {
   lattice.rows = 2;
   lattice.spacing = 1.0;
   def.particles = generate_lattice(lattice);
-  def.walls = {WallDef{"bottom", {1.5, 0}, {1, 0}, -5, 5, 0, {}}, WallDef{"right", {3, 1}, {0, 1}, -5, 5, 0, {}},
-               WallDef{"top", {1.5, 2}, {-1, 0}, -5, 5, 0, {}}, WallDef{"left", {0, 1}, {0, -1}, -5, 5, 0, {}}};
+  def.walls = {WallDef{"bottom", {1.5, 0}, {1, 0}, -5, 5, MaterialId{0}, {}},
+               WallDef{"right", {3, 1}, {0, 1}, -5, 5, MaterialId{0}, {}},
+               WallDef{"top", {1.5, 2}, {-1, 0}, -5, 5, MaterialId{0}, {}},
+               WallDef{"left", {0, 1}, {0, -1}, -5, 5, MaterialId{0}, {}}};
   def.gravity = {0.0, -9.81};
   def.time_step_fraction = 0.1;
   def.threads = 1;

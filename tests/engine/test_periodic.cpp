@@ -18,8 +18,8 @@ TEST(Periodic, DiscsCollideThroughTheBoundary) {
   def.materials = {MaterialDef{"disc", 1000.0, 0.0, 0.0}};
   def.contact_models = {testing::linear_model(1e6, 1e6)};
   // Each disc heads out of the cell; through the boundary they meet head on.
-  def.particles = {ParticleDef{{0.012, 0.5}, 0.01, 0, {-1.0, 0.0}, 0.0},
-                   ParticleDef{{0.988, 0.5}, 0.01, 0, {1.0, 0.0}, 0.0}};
+  def.particles = {ParticleDef{{0.012, 0.5}, 0.01, MaterialId{0}, {-1.0, 0.0}, 0.0},
+                   ParticleDef{{0.988, 0.5}, 0.01, MaterialId{0}, {1.0, 0.0}, 0.0}};
   def.periodic.axes = {true, false};
   def.periodic.min = {0.0, 0.0};
   def.periodic.max = {1.0, 0.0};
@@ -31,12 +31,12 @@ TEST(Periodic, DiscsCollideThroughTheBoundary) {
     touching += !world.contacts().empty();
   }
   const auto p = world.particles();
-  std::printf("velocities after the collision: %.6f %.6f, %d cycles in contact\n", p.velocity[0].x(), p.velocity[1].x(),
-              touching);
+  std::printf("velocities after the collision: %.6f %.6f, %d cycles in contact\n", p.velocity[ParticleId{0}].x(),
+              p.velocity[ParticleId{1}].x(), touching);
   EXPECT_GT(touching, 10);
   // Equal discs, elastic and frictionless: they exchange velocities.
-  EXPECT_NEAR(p.velocity[0].x(), 1.0, 1e-3);
-  EXPECT_NEAR(p.velocity[1].x(), -1.0, 1e-3);
+  EXPECT_NEAR(p.velocity[ParticleId{0}].x(), 1.0, 1e-3);
+  EXPECT_NEAR(p.velocity[ParticleId{1}].x(), -1.0, 1e-3);
   for (const Vec2& x : p.position) {
     EXPECT_GE(x.x(), 0.0);
     EXPECT_LT(x.x(), 1.0);
@@ -52,7 +52,7 @@ void expect_brute_force_pairs(int per_side, double period) {
   lattice.columns = lattice.rows = per_side;
   lattice.origin = {0.001, 0.002};
   for (const ParticleDef& d : generate_lattice(lattice)) {
-    p.id.push_back(static_cast<ParticleId>(p.position.size()));
+    p.id.push_back(ParticleId::from_index(p.position.size()));
     p.position.push_back(d.position);
     p.radius.push_back(d.radius * (1.0 + 0.3 * std::sin(37.0 * d.position.x())));
   }
@@ -86,7 +86,7 @@ TEST(Periodic, TooSmallAPeriodIsRefused) {
   WorldDef def;
   def.materials = {MaterialDef{"disc", 1000.0, 0.0, 0.0}};
   def.contact_models = {testing::linear_model(1e6, 1e6)};
-  def.particles = {ParticleDef{{0.01, 0.0}, 0.01, 0}};
+  def.particles = {ParticleDef{{0.01, 0.0}, 0.01, MaterialId{0}}};
   def.periodic.axes = {true, false};
   def.periodic.max = {0.03, 0.0};  // under twice (2 R + TOL) = 0.042
   EXPECT_THROW(World{def}, DefinitionError);
@@ -118,18 +118,22 @@ void expect_same_collision(WorldDefT<Dim> through, const Vec<Dim>& shift, int cy
   for (int i = 0; i < 2; ++i) {
     double spin_gap = 0.0;
     if constexpr (Dim == 2) {
-      spin_gap = std::abs(pa.angular_velocity[i] - pb.angular_velocity[i]);
+      spin_gap =
+          std::abs(pa.angular_velocity[ParticleId::from_index(i)] - pb.angular_velocity[ParticleId::from_index(i)]);
     } else {
-      spin_gap = (pa.angular_velocity[i] - pb.angular_velocity[i]).norm();
+      spin_gap =
+          (pa.angular_velocity[ParticleId::from_index(i)] - pb.angular_velocity[ParticleId::from_index(i)]).norm();
     }
-    gap = std::max({gap, (pa.velocity[i] - pb.velocity[i]).norm(), spin_gap});
+    gap = std::max(
+        {gap, (pa.velocity[ParticleId::from_index(i)] - pb.velocity[ParticleId::from_index(i)]).norm(), spin_gap});
   }
   std::printf("%s: %d cycles in contact, velocities after (%.6f, %.6f), largest difference %.2e\n", what, touching,
-              pa.velocity[0].x(), pa.velocity[1].x(), gap);
+              pa.velocity[ParticleId{0}].x(), pa.velocity[ParticleId{1}].x(), gap);
   EXPECT_GT(touching, 10);
   EXPECT_TRUE(a.contacts().empty());  // the collision is over
   // They did collide: the first body's velocity changed by a good part of itself.
-  EXPECT_GT((pa.velocity[0] - through.particles[0].velocity).norm(), 0.5 * through.particles[0].velocity.norm());
+  EXPECT_GT((pa.velocity[ParticleId{0}] - through.particles[0].velocity).norm(),
+            0.5 * through.particles[0].velocity.norm());
   // m/s and rad/s: the positions differ in their last bits, and the
   // iterative contact searches of shaped particles converge to their own
   // tolerance from there.
@@ -141,8 +145,9 @@ TEST(Periodic, SuperquadricsCollideThroughTheBoundaryAsInside) {
   def.materials = {MaterialDef{"rock", 1650.0, 0.5, 0.0}};
   def.contact_models = {testing::linear_model(1e7, 1e7)};
   const ShapeDefT<2> rock{0.195, 0.0976, 4.0, 0.4};  // Miyata's Table 1 particle
-  def.particles = {ParticleDef{{0.25, 1.0}, 0.195, 0, {-1.0, 0.05}, 0.0, rock},
-                   ParticleDef{{4.78, 1.1}, 0.195, 0, {1.0, 0.0}, 0.0, ShapeDefT<2>{0.195, 0.0976, 4.0, -0.3}}};
+  def.particles = {
+      ParticleDef{{0.25, 1.0}, 0.195, MaterialId{0}, {-1.0, 0.05}, 0.0, rock},
+      ParticleDef{{4.78, 1.1}, 0.195, MaterialId{0}, {1.0, 0.0}, 0.0, ShapeDefT<2>{0.195, 0.0976, 4.0, -0.3}}};
   def.periodic.axes = {true, false};
   def.periodic.max = {5.0, 0.0};
   def.fixed_time_step = 1.7078e-4;  // Table 2
@@ -206,7 +211,7 @@ TEST(Periodic, BedSettlesDeterministicallyAndPlateStressUsesTheCell) {
   restored.cycle(200);
   EXPECT_EQ(serial.state_hash(), restored.state_hash());
   // The floor spans 2 m x 2 m but the periodic cell is 20 mm x 20 mm.
-  EXPECT_NEAR(serial.wall_area(0), 0.02 * 0.02, 1e-15);
+  EXPECT_NEAR(serial.wall_area(WallId{0}), 0.02 * 0.02, 1e-15);
   int across = 0;
   const auto p = serial.particles();
   for (const ContactRecord3& c : serial.contacts()) {

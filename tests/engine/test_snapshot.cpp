@@ -162,10 +162,10 @@ TEST(Snapshot, ParametersCanChangeBetweenCycles) {
   world.set_time_step_fraction(0.05);
   EXPECT_DOUBLE_EQ(world.time_step(), 0.05 * world.critical_time_step());
   EXPECT_THROW(world.set_time_step_fraction(1.5), DefinitionError);
-  world.set_friction(0, 0.9);
+  world.set_friction(MaterialId{0}, 0.9);
   EXPECT_EQ(world.materials()[0].friction, 0.9);
-  EXPECT_THROW(world.set_friction(7, 0.1), DefinitionError);
-  EXPECT_THROW(world.set_friction(0, -1.0), DefinitionError);
+  EXPECT_THROW(world.set_friction(MaterialId{7}, 0.1), DefinitionError);
+  EXPECT_THROW(world.set_friction(MaterialId{0}, -1.0), DefinitionError);
   // A restored world keeps the settings it was saved with.
   World restored(world.snapshot());
   EXPECT_EQ(restored.time_step(), world.time_step());

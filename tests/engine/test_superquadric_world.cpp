@@ -26,9 +26,10 @@ WorldDef nine(bool superquadric) {
   for (ParticleDef& p : def.particles) {
     if (superquadric) p.shape = ShapeDefT<2>{50.0, 50.0, 2.0, 0.0};
   }
-  def.walls = {
-      WallDef{"bottom", {150, 0}, {1, 0}, -200, 200, 0, {}}, WallDef{"right", {300, 150}, {0, 1}, -200, 200, 0, {}},
-      WallDef{"top", {150, 300}, {-1, 0}, -200, 200, 0, {}}, WallDef{"left", {0, 150}, {0, -1}, -200, 200, 0, {}}};
+  def.walls = {WallDef{"bottom", {150, 0}, {1, 0}, -200, 200, MaterialId{0}, {}},
+               WallDef{"right", {300, 150}, {0, 1}, -200, 200, MaterialId{0}, {}},
+               WallDef{"top", {150, 300}, {-1, 0}, -200, 200, MaterialId{0}, {}},
+               WallDef{"left", {0, 150}, {0, -1}, -200, 200, MaterialId{0}, {}}};
   def.walls[0].motion.velocity = {0.0, 12.0};
   def.walls[1].motion.velocity = {-12.0, 0.0};
   def.walls[2].motion.velocity = {0.0, -12.0};
@@ -39,14 +40,15 @@ WorldDef nine(bool superquadric) {
 
 TEST(SuperquadricWorld, ExponentTwoWithEqualAxesReproducesDiscs) {
   World discs(nine(false)), superquadrics(nine(true));
-  EXPECT_DOUBLE_EQ(superquadrics.particles().mass[4], discs.particles().mass[4]);
+  EXPECT_DOUBLE_EQ(superquadrics.particles().mass[ParticleId{4}], discs.particles().mass[ParticleId{4}]);
   EXPECT_NEAR(superquadrics.critical_time_step(), discs.critical_time_step(), 1e-12);
   discs.cycle(40);
   superquadrics.cycle(40);
   double worst = 0.0;
-  for (ParticleId a = 0; a < 9; ++a) {
-    for (ParticleId b = a + 1; b < 9; ++b) {
-      const auto c = discs.contact_between(a, b), s = superquadrics.contact_between(a, b);
+  for (std::int32_t a = 0; a < 9; ++a) {
+    for (std::int32_t b = a + 1; b < 9; ++b) {
+      const auto c = discs.contact_between(ParticleId{a}, ParticleId{b});
+      const auto s = superquadrics.contact_between(ParticleId{a}, ParticleId{b});
       ASSERT_EQ(c.has_value(), s.has_value()) << a << "-" << b;
       if (c) worst = std::max(worst, std::abs(s->normal_force - c->normal_force) / c->normal_force);
     }
@@ -70,21 +72,21 @@ TEST(SuperquadricWorld, ElongatedParticleComesToRestOnItsLongSide) {
   rock.position = {0.0, 0.35};
   rock.shape = ShapeDefT<2>{0.195, 0.0976, 4.0, std::numbers::pi / 6.0};
   def.particles = {rock};
-  def.walls = {WallDef{"floor", {0.0, 0.0}, {1.0, 0.0}, -5.0, 5.0, 0, {}}};
+  def.walls = {WallDef{"floor", {0.0, 0.0}, {1.0, 0.0}, -5.0, 5.0, MaterialId{0}, {}}};
   def.gravity = {0.0, -9.81};
   def.damping.local_alpha = 0.2;
   def.time_step_fraction = 0.1;
   World world(def);
   world.cycle(60000);
   const auto p = world.particles();
-  const double weight = 9.81 * p.mass[0];
+  const double weight = 9.81 * p.mass[ParticleId{0}];
   const WallMeasure floor = world.wall_measures()[0];
   // Resting on a long side: the centre is b above the floor (less the
   // spring's compression) and the angle a multiple of pi.
-  const double turns = p.rotation[0] / std::numbers::pi;
+  const double turns = p.rotation[ParticleId{0}] / std::numbers::pi;
   std::printf("at rest: centre height %.5f m (b = 0.0976), angle %.4f pi, floor %.6f N of weight %.6f N, %d contacts\n",
-              p.position[0].y(), turns, floor.normal_force, weight, floor.contacts);
-  EXPECT_NEAR(p.position[0].y(), 0.0976, 2e-3);
+              p.position[ParticleId{0}].y(), turns, floor.normal_force, weight, floor.contacts);
+  EXPECT_NEAR(p.position[ParticleId{0}].y(), 0.0976, 2e-3);
   EXPECT_NEAR(turns, std::round(turns), 1e-3);
   // A single contact at the support point: the last rocking dies slowly.
   EXPECT_NEAR(floor.normal_force, weight, 1e-4 * weight);
@@ -104,7 +106,8 @@ TEST(SuperquadricWorld, FurthestReachIsTheSurfaceNotTheBoundingCircle) {
   EXPECT_NEAR(world.furthest_reach(Vec2::UnitY()), 150.0976, 1e-9);
   EXPECT_NEAR(world.furthest_reach(Vec2::UnitX()), 150.195, 1e-9);
   const double diagonal = world.furthest_reach(Vec2(1.0, 1.0).normalized());
-  EXPECT_LT(diagonal - 150.0 * std::sqrt(2.0), world.particles().radius[0]);  // the corner, inside the circle
+  EXPECT_LT(diagonal - 150.0 * std::sqrt(2.0),
+            world.particles().radius[ParticleId{0}]);  // the corner, inside the circle
 }
 
 }  // namespace

@@ -107,11 +107,11 @@ void expect_same_history(WorldDef3 rectangle_def, WorldDef3 faces_def, int cycle
   }
   const auto r = rectangle.particles(), f = faces.particles();
   std::printf("%s: peak plate force %.6e N, largest difference faces vs rectangle %.2e N, final position gap %.2e m\n",
-              what, peak, gap, (r.position[0] - f.position[0]).norm());
+              what, peak, gap, (r.position[ParticleId{0}] - f.position[ParticleId{0}]).norm());
   EXPECT_GT(peak, 0.0);
   EXPECT_LT(gap, 1e-9 * peak);
-  EXPECT_LT((r.position[0] - f.position[0]).norm(), 1e-12);
-  EXPECT_LT((r.angular_velocity[0] - f.angular_velocity[0]).norm(), 1e-9);
+  EXPECT_LT((r.position[ParticleId{0}] - f.position[ParticleId{0}]).norm(), 1e-12);
+  EXPECT_LT((r.angular_velocity[ParticleId{0}] - f.angular_velocity[ParticleId{0}]).norm(), 1e-9);
 }
 
 TEST(TriangleWalls, SphereBouncingOnTheDiagonalSeesOnePlate) {
@@ -170,22 +170,22 @@ TEST(TriangleWalls, FacesMoveAndTurnWithTheWall) {
   WorldDef3 def;
   def.materials = {rock()};
   def.contact_models = {hertz()};
-  def.particles = {ParticleDef3{{5.0, 5.0, 5.0}, 0.1, 0}};  // far off, a world needs one
+  def.particles = {ParticleDef3{{5.0, 5.0, 5.0}, 0.1, MaterialId{0}}};  // far off, a world needs one
   def.walls = {w};
   def.fixed_time_step = 1e-3;
   World3 world(def);
   world.cycle(1000);
-  const WallDef3& now = world.wall(0);
+  const WallDef3& now = world.wall(WallId{0});
   // One second: down 0.1 m and turned 0.2 rad about z, corners still on a square.
   EXPECT_NEAR(now.point.z(), 0.9, 1e-12);
   const Vec3 corner = now.triangles[0][1];  // started at (0.5, -0.5)
   EXPECT_NEAR(corner.z(), 0.9, 1e-12);
   EXPECT_NEAR(std::atan2(corner.y(), corner.x()), -std::numbers::pi / 4 + 0.2, 1e-9);
   EXPECT_NEAR(corner.head<2>().norm(), 0.5 * std::sqrt(2.0), 1e-12);
-  EXPECT_NEAR(world.wall_area(0), 1.0, 1e-12);
+  EXPECT_NEAR(world.wall_area(WallId{0}), 1.0, 1e-12);
   // Placing the plate carries its faces along.
-  world.place_wall(0, {0.0, 0.0, 2.0});
-  for (const auto& t : world.wall(0).triangles) {
+  world.place_wall(WallId{0}, {0.0, 0.0, 2.0});
+  for (const auto& t : world.wall(WallId{0}).triangles) {
     for (const Vec3& c : t) EXPECT_NEAR(c.z(), 2.0, 1e-12);
   }
 }
@@ -196,7 +196,7 @@ TEST(TriangleWalls, DegenerateFacesAreRejected) {
   WorldDef3 def;
   def.materials = {rock()};
   def.contact_models = {hertz()};
-  def.particles = {ParticleDef3{{0.0, 0.0, 0.5}, 0.1, 0}};
+  def.particles = {ParticleDef3{{0.0, 0.0, 0.5}, 0.1, MaterialId{0}}};
   def.walls = {w};
   try {
     World3 world(def);

@@ -28,9 +28,9 @@ WorldDef dense_box(int columns, int rows) {
   // Slightly varied radii, so the packing is not perfectly regular.
   for (std::size_t i = 0; i < def.particles.size(); ++i) def.particles[i].radius *= 1.0 - 0.05 * double(i % 7) / 7.0;
   const double width = columns * 0.0205 + 0.012, height = rows * 0.0205 + 0.012;
-  def.walls = {WallDef{"bottom", {0, 0}, {1, 0}, 0, width, 1, {}},
-               WallDef{"right", {width, 0}, {0, 1}, 0, 2 * height, 1, {}},
-               WallDef{"left", {0, 2 * height}, {0, -1}, 0, 2 * height, 1, {}}};
+  def.walls = {WallDef{"bottom", {0, 0}, {1, 0}, 0, width, MaterialId{1}, {}},
+               WallDef{"right", {width, 0}, {0, 1}, 0, 2 * height, MaterialId{1}, {}},
+               WallDef{"left", {0, 2 * height}, {0, -1}, 0, 2 * height, MaterialId{1}, {}}};
   def.gravity = {0.0, -9.81};
   def.damping = {1e-5, 1.0};
   def.time_step_fraction = 0.2;
@@ -80,8 +80,8 @@ TEST(World, RejectsBadDefinitionsNamingTheItem) {
   def.walls[1].h2 = def.walls[1].h1;
   expect_error(def, "wall 1 (\"right\"): h2");
   def = dense_box(3, 3);
-  def.contact_models[0].material_a = 0;
-  def.contact_models[0].material_b = 0;  // disc-wall pair has no law now
+  def.contact_models[0].material_a = MaterialId{0};
+  def.contact_models[0].material_b = MaterialId{0};  // disc-wall pair has no law now
   expect_error(def, "no contact model for materials \"disc\" and \"wall\"");
   def = dense_box(3, 3);
   def.materials[0].density = 0.0;
@@ -126,7 +126,8 @@ TEST(World, WallContactsAreTheWallsOwnOfAllContacts) {
   World world(dense_box(10, 6));
   world.cycle(200);
   const std::vector<ContactRecord> all = world.contacts();
-  for (WallId wall = 0; wall < world.wall_count(); ++wall) {
+  for (int w = 0; w < world.wall_count(); ++w) {
+    const WallId wall{w};
     std::vector<ContactRecord> expected;
     for (const ContactRecord& c : all) {
       if (c.second_wall == wall) expected.push_back(c);
@@ -139,19 +140,19 @@ TEST(World, WallContactsAreTheWallsOwnOfAllContacts) {
       EXPECT_EQ(found[k].point, expected[k].point);
     }
   }
-  EXPECT_FALSE(world.wall_contacts(0).empty());  // the floor carries the discs
+  EXPECT_FALSE(world.wall_contacts(WallId{0}).empty());  // the floor carries the discs
 }
 
 TEST(World, WallMotionMovesWallAndReportsSettlement) {
   World world(dense_box(3, 3));
   const WallId left = world.find_wall("left");
-  ASSERT_EQ(left, 2);
+  ASSERT_EQ(left, WallId{2});
   EXPECT_EQ(world.find_wall("nope"), kInvalidId);
   WallMotion motion;
   motion.velocity = {0.01, 0.0};
   world.set_wall_motion(left, motion);
   world.cycle(100);
-  const WallMeasure m = world.wall_measures()[left];
+  const WallMeasure m = world.wall_measures()[left.index()];
   EXPECT_NEAR(m.displacement.x(), 0.01 * 100 * world.time_step(), 1e-15);
   EXPECT_DOUBLE_EQ(m.displacement.y(), 0.0);
 }
@@ -162,8 +163,8 @@ TEST(World, EccentricityOfASingleOffCentreContact) {
   WorldDef def;
   def.materials = {MaterialDef{"disc", 1000.0, 0.5, 0.0}};
   def.contact_models = {ContactModelDef{}};
-  def.particles = {ParticleDef{{0.5, 0.1 - 1e-5}, 0.1, 0}};
-  def.walls = {WallDef{"floor", {0.0, 0.0}, {1.0, 0.0}, -1.0, 1.0, 0, {}}};
+  def.particles = {ParticleDef{{0.5, 0.1 - 1e-5}, 0.1, MaterialId{0}}};
+  def.walls = {WallDef{"floor", {0.0, 0.0}, {1.0, 0.0}, -1.0, 1.0, MaterialId{0}, {}}};
   World world(def);
   world.cycle();
   const WallMeasure m = world.wall_measures()[0];

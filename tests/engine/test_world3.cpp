@@ -21,7 +21,7 @@ WallDef3 floor_wall(double half) {
   floor.direction2 = Vec3::UnitY();  // normal u x v = +z
   floor.h1 = floor.k1 = -half;
   floor.h2 = floor.k2 = half;
-  floor.material = 1;
+  floor.material = MaterialId{1};
   return floor;
 }
 
@@ -73,7 +73,7 @@ TEST(World3, SphereRestsOnARectangularFloorUnderItsWeight) {
   WorldDef3 def;
   def.materials = {MaterialDef{"sphere", 2500.0, 0.5, 0.0}, MaterialDef{"wall", 1.0, 0.5, 0.0}};
   def.contact_models = {testing::linear_model(1.0e5, 1.0e5)};
-  def.particles = {ParticleDef3{{0.2, -0.1, 0.011}, 0.01, 0}};
+  def.particles = {ParticleDef3{{0.2, -0.1, 0.011}, 0.01, MaterialId{0}}};
   def.walls = {floor_wall(0.5)};
   def.gravity = {0.0, 0.0, -9.81};
   def.damping = {1e-3, 5.0};
@@ -87,22 +87,22 @@ TEST(World3, SphereRestsOnARectangularFloorUnderItsWeight) {
   // Eccentricity per direction of the rectangle: (0.2, -0.1) over half sizes 0.5.
   EXPECT_NEAR(floor.eccentricity.x(), 0.4, 1e-9);
   EXPECT_NEAR(floor.eccentricity.y(), -0.2, 1e-9);
-  EXPECT_NEAR(world.particles().position[0].z(), 0.01 - mass * 9.81 / 1.0e5, 1e-9);
-  EXPECT_DOUBLE_EQ(world.wall_area(0), 1.0);
+  EXPECT_NEAR(world.particles().position[ParticleId{0}].z(), 0.01 - mass * 9.81 / 1.0e5, 1e-9);
+  EXPECT_DOUBLE_EQ(world.wall_area(WallId{0}), 1.0);
 }
 
 TEST(World3, ObliqueFrictionalCollisionConservesMomentum) {
   WorldDef3 def;
   def.materials = {MaterialDef{"sphere", 2500.0, 0.3, 0.0}};
   def.contact_models = {testing::linear_model(1.0e5, 0.8e5)};
-  def.particles = {ParticleDef3{{0.0, 0.0, 0.0}, 0.01, 0, {1.0, 0.2, -0.1}, {0.0, 5.0, 0.0}},
-                   ParticleDef3{{0.025, 0.006, 0.004}, 0.012, 0, {-0.5, 0.0, 0.3}, {1.0, 0.0, -2.0}}};
+  def.particles = {ParticleDef3{{0.0, 0.0, 0.0}, 0.01, MaterialId{0}, {1.0, 0.2, -0.1}, {0.0, 5.0, 0.0}},
+                   ParticleDef3{{0.025, 0.006, 0.004}, 0.012, MaterialId{0}, {-0.5, 0.0, 0.3}, {1.0, 0.0, -2.0}}};
   def.damping = {1e-4, 0.0};
   def.time_step_fraction = 0.05;
   World3 world(def);
   auto linear_momentum = [&] {
     const auto p = world.particles();
-    return Vec3(p.mass[0] * p.velocity[0] + p.mass[1] * p.velocity[1]);
+    return Vec3(p.mass[ParticleId{0}] * p.velocity[ParticleId{0}] + p.mass[ParticleId{1}] * p.velocity[ParticleId{1}]);
   };
   // Angular momentum about the origin in the form central differences
   // carry: r_N x m v_(N+1/2) + I omega_(N+1/2), with r_N = r_(N+1) - v dt.
@@ -110,9 +110,11 @@ TEST(World3, ObliqueFrictionalCollisionConservesMomentum) {
     const auto p = world.particles();
     Vec3 l = Vec3::Zero();
     for (int i = 0; i < 2; ++i) {
-      const double inertia = 0.4 * p.mass[i] * p.radius[i] * p.radius[i];
-      const Vec3 r = p.position[i] - world.time_step() * p.velocity[i];
-      l += r.cross(p.mass[i] * p.velocity[i]) + inertia * p.angular_velocity[i];
+      const double inertia = 0.4 * p.mass[ParticleId::from_index(i)] * p.radius[ParticleId::from_index(i)] *
+                             p.radius[ParticleId::from_index(i)];
+      const Vec3 r = p.position[ParticleId::from_index(i)] - world.time_step() * p.velocity[ParticleId::from_index(i)];
+      l += r.cross(p.mass[ParticleId::from_index(i)] * p.velocity[ParticleId::from_index(i)]) +
+           inertia * p.angular_velocity[ParticleId::from_index(i)];
     }
     return l;
   };
@@ -131,7 +133,7 @@ TEST(World3, ObliqueFrictionalCollisionConservesMomentum) {
   std::printf("angular momentum drift %.3g over the collision\n", drift);
   EXPECT_LT(drift, 1e-2);
   // Friction made the spheres spin differently and the orientations moved.
-  EXPECT_GT(world.particles().rotation[0].angularDistance(Quaternion::Identity()), 1e-3);
+  EXPECT_GT(world.particles().rotation[ParticleId{0}].angularDistance(Quaternion::Identity()), 1e-3);
 }
 
 TEST(World3, SameStateHashForOneAndTwoThreadsAndAfterRestore) {
@@ -164,7 +166,7 @@ TEST(World3, PlainLoopsGiveTheSameBitsAsTheGeneralStep) {
   const auto& b = budget.particles();
   ASSERT_EQ(plain.particle_count(), budget.particle_count());
   double turned = 0.0;
-  for (ParticleId i = 0; i < plain.particle_count(); ++i) {
+  for (const ParticleId i : plain.particle_ids()) {
     ASSERT_EQ(a.position[i], b.position[i]) << "particle " << i;
     ASSERT_EQ(a.velocity[i], b.velocity[i]) << "particle " << i;
     ASSERT_EQ(a.angular_velocity[i], b.angular_velocity[i]) << "particle " << i;

@@ -28,9 +28,10 @@ World settled_box() {
   packing.sizes = {{0.03, 150}, {0.02, 150}};
   packing.seed = 5;
   def.particles = generate_random_packing(packing);
-  def.walls = {
-      WallDef{"bottom", {0.5, 0.0}, {1, 0}, -0.5, 0.5, 0, {}}, WallDef{"right", {1.0, 0.0}, {0, 1}, 0.0, 3.0, 0, {}},
-      WallDef{"left", {0.0, 3.0}, {0, -1}, 0.0, 3.0, 0, {}}, WallDef{"plate", {0.5, 2.5}, {-1, 0}, -0.5, 0.5, 0, {}}};
+  def.walls = {WallDef{"bottom", {0.5, 0.0}, {1, 0}, -0.5, 0.5, MaterialId{0}, {}},
+               WallDef{"right", {1.0, 0.0}, {0, 1}, 0.0, 3.0, MaterialId{0}, {}},
+               WallDef{"left", {0.0, 3.0}, {0, -1}, 0.0, 3.0, MaterialId{0}, {}},
+               WallDef{"plate", {0.5, 2.5}, {-1, 0}, -0.5, 0.5, MaterialId{0}, {}}};
   def.gravity = {0.0, -9.81};
   def.energy_budget = true;
   def.damping.local_alpha = 0.3;
@@ -66,7 +67,8 @@ TEST(WorldEdits, TrimmingRemovesTheTopAndKeepsTheRest) {
   run_stage(world, trim);
   const auto p = world.particles();
   for (int i = 0; i < world.particle_count(); ++i) {
-    EXPECT_LE(p.position[i].y(), 0.4 + 0.05 * std::sin(2.0 * std::numbers::pi * p.position[i].x() / 0.5) + 1e-15);
+    EXPECT_LE(p.position[ParticleId::from_index(i)].y(),
+              0.4 + 0.05 * std::sin(2.0 * std::numbers::pi * p.position[ParticleId::from_index(i)].x() / 0.5) + 1e-15);
   }
   std::printf("trimmed %d of %d particles\n", before - world.particle_count(), before);
   EXPECT_LT(world.particle_count(), before);
@@ -100,7 +102,8 @@ TEST(WorldEdits, PlateIsPlacedOnTheSampleAndLoadedToAStress) {
   run_stage(world, place);
   double top = 0.0;
   const auto p = world.particles();
-  for (int i = 0; i < world.particle_count(); ++i) top = std::max(top, p.position[i].y() + p.radius[i]);
+  for (int i = 0; i < world.particle_count(); ++i)
+    top = std::max(top, p.position[ParticleId::from_index(i)].y() + p.radius[ParticleId::from_index(i)]);
   EXPECT_NEAR(world.wall(plate).point.y(), top + 0.001, 1e-12);
   EXPECT_EQ(world.wall_settlement(plate), 0.0);
 
@@ -112,7 +115,7 @@ TEST(WorldEdits, PlateIsPlacedOnTheSampleAndLoadedToAStress) {
   load.until.wall_stress_above = WallThreshold{plate, 20e3};  // 20 kPa over the plate's 1 m (unit depth)
   load.until.check_interval = 10;
   const StageResult result = run_stage(world, load);
-  const double stress = world.wall_measures()[plate].normal_force / world.wall_area(plate);
+  const double stress = world.wall_measures()[plate.index()].normal_force / world.wall_area(plate);
   std::printf("20 kPa reached after %llu cycles: stress %.1f Pa, settlement %.5f m\n",
               static_cast<unsigned long long>(result.cycles_run), stress, world.wall_settlement(plate));
   EXPECT_TRUE(result.condition_met);
@@ -129,9 +132,9 @@ TEST(WorldEdits, PlateIsPlacedOnTheSampleAndLoadedToAStress) {
 
 TEST(WorldEdits, BadIdsAreRefused) {
   World world = settled_box();
-  const std::vector<ParticleId> bad{world.particle_count()};
+  const std::vector<ParticleId> bad{ParticleId{world.particle_count()}};
   EXPECT_THROW(world.remove_particles(bad), DefinitionError);
-  EXPECT_THROW(world.place_wall(9, Vec2::Zero()), DefinitionError);
+  EXPECT_THROW(world.place_wall(WallId{9}, Vec2::Zero()), DefinitionError);
 }
 
 }  // namespace

@@ -46,15 +46,15 @@ TEST_F(CaseConversion, ContactModelsNameTheirMaterials) {
   const WorldDef world = convert_case(case_).world;
   ASSERT_EQ(world.contact_models.size(), 3u);
   const ContactModelDef& same = world.contact_models[0];
-  EXPECT_EQ(same.material_a, 0);
-  EXPECT_EQ(same.material_b, 0);
+  EXPECT_EQ(same.material_a, MaterialId{0});
+  EXPECT_EQ(same.material_b, MaterialId{0});
   EXPECT_EQ(same.linear.normal_stiffness, 1e6);
   EXPECT_EQ(same.linear.shear_stiffness, 5e5);
   EXPECT_FALSE(same.friction);
   EXPECT_FALSE(same.cohesion);
   const ContactModelDef& mixed = world.contact_models[1];
-  EXPECT_EQ(mixed.material_a, 0);
-  EXPECT_EQ(mixed.material_b, 1);
+  EXPECT_EQ(mixed.material_a, MaterialId{0});
+  EXPECT_EQ(mixed.material_b, MaterialId{1});
   EXPECT_EQ(mixed.friction, 0.25);
   const ContactModelDef& fallback = world.contact_models[2];
   EXPECT_EQ(fallback.material_a, kInvalidId);
@@ -68,10 +68,10 @@ TEST_F(CaseConversion, ParticleSourcesExpandInOrder) {
   EXPECT_EQ(particles[0].position, Vec2(0.01, 0.01));
   EXPECT_NEAR(particles[1].position.x(), 0.03, 1e-15);
   EXPECT_NEAR(particles[3].position.y(), 0.03, 1e-15);
-  EXPECT_EQ(particles[8].material, 0);
+  EXPECT_EQ(particles[8].material, MaterialId{0});
   // The single particle.
   EXPECT_EQ(particles[9].position, Vec2(0.09, 0.01));
-  EXPECT_EQ(particles[9].material, 2);
+  EXPECT_EQ(particles[9].material, MaterialId{2});
   EXPECT_EQ(particles[9].velocity, Vec2(-0.1, 0));
   // The random packing, inside its box.
   for (std::size_t i = 10; i < 14; ++i) {
@@ -164,7 +164,7 @@ TEST_F(CaseConversion, WallsGetUnitDirections) {
   EXPECT_NEAR(walls[3].direction.y(), -1, 1e-15);  // angle_deg: 270
   EXPECT_EQ(walls[2].point, Vec2(0.1, 0.2));
   EXPECT_EQ(walls[1].h2, 0.2);
-  EXPECT_EQ(walls[1].material, 1);
+  EXPECT_EQ(walls[1].material, MaterialId{1});
   EXPECT_FALSE(walls[1].motion.servo);
 }
 
@@ -248,7 +248,7 @@ TEST_F(CaseConversion, Stages) {
   EXPECT_EQ(stages[0].until.check_interval, 10u);  // the default
 
   ASSERT_EQ(stages[1].wall_motions.size(), 1u);
-  EXPECT_EQ(stages[1].wall_motions[0].first, 2);  // "top"
+  EXPECT_EQ(stages[1].wall_motions[0].first, WallId{2});  // "top"
   ASSERT_TRUE(stages[1].wall_motions[0].second.servo);
   EXPECT_EQ(stages[1].wall_motions[0].second.servo->target_force, 10);
   ASSERT_TRUE(stages[1].damping);
@@ -300,8 +300,8 @@ TEST_F(CaseConversion, Output) {
   EXPECT_TRUE(output.contacts_file);
   ASSERT_EQ(output.probes.size(), 2u);
   EXPECT_EQ(output.probes[1].name, "middle");
-  EXPECT_EQ(output.probes[1].first, 4);
-  EXPECT_EQ(output.probes[1].second, 7);
+  EXPECT_EQ(output.probes[1].first, ParticleId{4});
+  EXPECT_EQ(output.probes[1].second, ParticleId{7});
 
   case_.mutable_output()->set_no_contacts_file(true);
   EXPECT_FALSE(convert_case(case_).output.contacts_file);
@@ -313,8 +313,8 @@ TEST(CaseConversion2d, ABiaxialBoxItsStagesAndItsRegions) {
   const CaseDefinition def = convert_case(loaded.message, loaded.source);
   ASSERT_TRUE(def.world.box_control.has_value());
   const BoxControl& box = *def.world.box_control;
-  EXPECT_EQ(box.axes[0].lower, 3);  // left
-  EXPECT_EQ(box.axes[0].upper, 1);  // right
+  EXPECT_EQ(box.axes[0].lower, WallId{3});  // left
+  EXPECT_EQ(box.axes[0].upper, WallId{1});  // right
   EXPECT_EQ(box.axes[1].control, AxisControl::kStress);
   EXPECT_EQ(box.axes[1].stress, 1e4);
   EXPECT_EQ(box.gain, 5e-6);
@@ -339,7 +339,7 @@ TEST_F(CaseConversion, AStageRemovesAWallAndReleasesTheBox) {
   case_.mutable_stage(2)->add_remove_wall("top");
   case_.mutable_stage(2)->set_release_box_control(true);
   const CaseDefinition def = convert_case(case_);
-  EXPECT_EQ(def.stages[2].remove_walls, (std::vector<WallId>{2}));
+  EXPECT_EQ(def.stages[2].remove_walls, (std::vector<WallId>{WallId{2}}));
   EXPECT_TRUE(def.stages[2].release_box_control);
   EXPECT_FALSE(def.stages[2].box_control.has_value());
 }
@@ -362,7 +362,7 @@ TEST_F(CaseConversion, TheEngineAcceptsTheResult) {
   const World world(def.world);
   EXPECT_EQ(world.particle_count(), 14);
   EXPECT_EQ(world.wall_count(), 4);
-  EXPECT_EQ(world.find_wall("top"), 2);
+  EXPECT_EQ(world.find_wall("top"), WallId{2});
 }
 
 TEST_F(CaseConversion, A2dCaseIsTwoDimensionalAndOfDiscs) {
@@ -404,7 +404,7 @@ TEST(CaseConversion2d, HertzLawsSpheresInThePlaneAndAParticleFile) {
   ASSERT_EQ(def.world.particles.size(), 3u);
   EXPECT_EQ(def.world.particles[1].position, Vec2(0.08, 0.05));
   EXPECT_EQ(def.world.particles[1].radius, 0.01);
-  EXPECT_EQ(def.world.particles[1].material, 0);
+  EXPECT_EQ(def.world.particles[1].material, MaterialId{0});
   EXPECT_EQ(def.world.particles[2].angular_velocity, 2);
   const World world(def.world);
   EXPECT_EQ(world.particle_count(), 3);
@@ -452,8 +452,8 @@ TEST_F(CaseConversion3d, HertzMindlinLawsAndTheirDamping) {
   EXPECT_EQ(fallback.hertz.restitution, 0.8);
   EXPECT_TRUE(fallback.hertz.tangential);
   const ContactModelDef& steel_wall = world.contact_models[1];
-  EXPECT_EQ(steel_wall.material_a, 0);
-  EXPECT_EQ(steel_wall.material_b, 2);
+  EXPECT_EQ(steel_wall.material_a, MaterialId{0});
+  EXPECT_EQ(steel_wall.material_b, MaterialId{2});
   EXPECT_EQ(steel_wall.law, ContactLaw::kHertzMindlin);
   EXPECT_EQ(steel_wall.hertz.damping_ratio, 0.05);
   EXPECT_FALSE(steel_wall.hertz.restitution);
@@ -468,7 +468,7 @@ TEST_F(CaseConversion3d, ParticleSourcesExpandInOrder) {
   EXPECT_EQ(particles[0].position, Vec3(0.005, 0.005, 0.004));
   EXPECT_EQ(particles[0].velocity, Vec3(0, 0, -0.1));
   EXPECT_EQ(particles[0].angular_velocity, Vec3(1, 2, 3));
-  EXPECT_EQ(particles[0].material, 1);
+  EXPECT_EQ(particles[0].material, MaterialId{1});
   // The lattice: 3 columns x 2 rows x 2 layers, the second layer above the first.
   EXPECT_EQ(particles[1].position, Vec3(0.001, 0.001, 0.001));
   EXPECT_NEAR(particles[7].position.z(), 0.003, 1e-15);
@@ -484,7 +484,7 @@ TEST_F(CaseConversion3d, ParticleSourcesExpandInOrder) {
   EXPECT_EQ(particles[18].position, Vec3(0.008, 0.002, 0.001));
   EXPECT_EQ(particles[19].position, Vec3(0.008, 0.006, 0.001));
   EXPECT_EQ(particles[20].radius, 0.0009);
-  EXPECT_EQ(particles[20].material, 0);
+  EXPECT_EQ(particles[20].material, MaterialId{0});
 }
 
 TEST_F(CaseConversion3d, WallsAreRectanglesFacingTheParticles) {
@@ -497,7 +497,7 @@ TEST_F(CaseConversion3d, WallsAreRectanglesFacingTheParticles) {
   EXPECT_EQ(walls[0].h2, 0.01);
   EXPECT_EQ(walls[1].k2, 0.012);
   EXPECT_EQ(walls[4].direction, Vec3(1, 0, 0));  // direction { x: 2 }, normalised
-  EXPECT_EQ(walls[2].material, 2);
+  EXPECT_EQ(walls[2].material, MaterialId{2});
   // Each normal u x v points into the box.
   const Vec3 inward[] = {{0, 0, 1}, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, -1}};
   for (std::size_t i = 0; i < walls.size(); ++i) {
@@ -521,18 +521,18 @@ TEST_F(CaseConversion3d, GravityStagesAndMotion) {
   ASSERT_EQ(def.stages.size(), 2u);
   EXPECT_EQ(def.stages[0].until.kinetic_energy_below, 1e-15);
   ASSERT_EQ(def.stages[1].wall_motions.size(), 1u);
-  EXPECT_EQ(def.stages[1].wall_motions[0].first, 5);  // "lid"
+  EXPECT_EQ(def.stages[1].wall_motions[0].first, WallId{5});  // "lid"
   EXPECT_EQ(def.stages[1].wall_motions[0].second.velocity, Vec3(0, 0, -0.05));
   EXPECT_EQ(def.stages[1].wall_motions[0].second.angular_velocity, Vec3(0, 0, 0.1));
   ASSERT_EQ(def.output.probes.size(), 1u);
-  EXPECT_EQ(def.output.probes[0].second, 2);
+  EXPECT_EQ(def.output.probes[0].second, ParticleId{2});
 }
 
 TEST_F(CaseConversion3d, TheEngineAcceptsTheResult) {
   const World3 world(convert().world);
   EXPECT_EQ(world.particle_count(), 21);
   EXPECT_EQ(world.wall_count(), 6);
-  EXPECT_EQ(world.find_wall("lid"), 5);
+  EXPECT_EQ(world.find_wall("lid"), WallId{5});
 }
 
 TEST_F(CaseConversion3d, AMissingParticleFileIsNamed) {
@@ -623,10 +623,10 @@ TEST_F(SuperquadricConversion, StagesTrimPlaceAndStopOnThePlate) {
   EXPECT_EQ(stages[1].trim->amplitude, 0.05);
   EXPECT_EQ(stages[1].trim->wavelength, 0.5);
   ASSERT_TRUE(stages[2].place_wall);
-  EXPECT_EQ(stages[2].place_wall->wall, 1);
+  EXPECT_EQ(stages[2].place_wall->wall, WallId{1});
   EXPECT_EQ(stages[2].place_wall->clearance, 0.002);
   ASSERT_TRUE(stages[2].until.wall_settlement_above);
-  EXPECT_EQ(stages[2].until.wall_settlement_above->wall, 1);
+  EXPECT_EQ(stages[2].until.wall_settlement_above->wall, WallId{1});
   EXPECT_EQ(stages[2].until.wall_settlement_above->value, 0.005);
   ASSERT_TRUE(stages[2].until.wall_stress_above);
   EXPECT_EQ(stages[2].until.wall_stress_above->value, 1e5);
@@ -645,8 +645,8 @@ TEST_F(SuperquadricConversion, CompressionOutputWithItsDefaults) {
   const std::optional<analysis::CompressionSettings> compression = convert_case(case_).output.compression;
   ASSERT_TRUE(compression);
   const analysis::CompressionSettings defaults;
-  EXPECT_EQ(compression->loading_plate, 1);
-  EXPECT_EQ(compression->bottom_plate, 0);
+  EXPECT_EQ(compression->loading_plate, WallId{1});
+  EXPECT_EQ(compression->bottom_plate, WallId{0});
   EXPECT_EQ(compression->loading_stage, 2);  // the stage that places the plate
   EXPECT_EQ(compression->transition_stress, defaults.transition_stress);
   EXPECT_EQ(compression->final_stress, defaults.final_stress);
@@ -722,7 +722,7 @@ TEST_F(EllipsoidConversion, AWallOfFacesTakesTheirExtentAndArea) {
   EXPECT_EQ(floor.k2, 2.0);
   EXPECT_TRUE(world.walls[1].triangles.empty());
   const World3 built(world);
-  EXPECT_DOUBLE_EQ(built.wall_area(0), 9.0);
+  EXPECT_DOUBLE_EQ(built.wall_area(WallId{0}), 9.0);
 }
 
 // The particles fall onto the faces and rest on them: the floor carries

@@ -36,8 +36,8 @@ WorldDef row_of_discs() {
     disc.radius = radii[i];
     def.particles.push_back(disc);
   }
-  def.walls.push_back(WallDef{"bottom", {0.5, 0.0}, {1.0, 0.0}, -0.6, 0.6, 0, {}});
-  def.walls.push_back(WallDef{"top", {0.5, 1.0}, {-1.0, 0.0}, -0.6, 0.6, 0, {}});
+  def.walls.push_back(WallDef{"bottom", {0.5, 0.0}, {1.0, 0.0}, -0.6, 0.6, MaterialId{0}, {}});
+  def.walls.push_back(WallDef{"top", {0.5, 1.0}, {-1.0, 0.0}, -0.6, 0.6, MaterialId{0}, {}});
   def.gravity = {0.0, -9.81};
   // Local damping stills the discs without touching the contact forces,
   // so the plate's force is the sum of its springs'.
@@ -49,8 +49,8 @@ WorldDef row_of_discs() {
 
 dem::analysis::CompressionSettings settings() {
   dem::analysis::CompressionSettings s;
-  s.loading_plate = 1;
-  s.bottom_plate = 0;
+  s.loading_plate = WallId{1};
+  s.bottom_plate = WallId{0};
   s.loading_stage = 1;
   s.transition_stress = 2000;
   s.final_stress = 5000;
@@ -68,8 +68,8 @@ class CompressionAnalysisTest : public ::testing::Test {
     rest.cycles = 10;
     run_stage(world_, rest, 5, [&](const World& w) { return analysis_.add(w, 0), true; });
     StageDef load;
-    load.place_wall = PlaceWallDef{1, 0.01};
-    load.wall_motions = {{1, WallMotion{{0.0, -0.1}, 0.0, {}}}};
+    load.place_wall = PlaceWallDef{WallId{1}, 0.01};
+    load.wall_motions = {{WallId{1}, WallMotion{{0.0, -0.1}, 0.0, {}}}};
     load.cycles = 1700;
     run_stage(world_, load, 10, [&](const World& w) {
       for (const PlateSnapshot* snapshot : analysis_.add(w, 1)) taken_.push_back(snapshot->index);
@@ -131,7 +131,7 @@ TEST(LoadByFormationOrder, GroupsTheFirst40TheNext30AndTheLast30Percent) {
   const std::uint64_t formed[] = {90, 10, 50, 30, 70, 20, 100, 40, 60, 80};
   for (int k = 0; k < 10; ++k) {
     dem::analysis::PlateContactT<2> c;
-    c.particle = 9 - k;
+    c.particle = ParticleId{9 - k};
     c.normal_force = static_cast<double>(formed[k]);  // load = the cycle, to read off the groups
     c.formed_cycle = formed[k];
     contacts.push_back(c);
@@ -148,7 +148,7 @@ TEST(LoadByFormationOrder, GroupsTheFirst40TheNext30AndTheLast30Percent) {
   // Three contacts formed in one cycle: the lower particle id ranks first.
   std::vector<dem::analysis::PlateContactT<2>> tied(3);
   for (int k = 0; k < 3; ++k) {
-    tied[k].particle = 2 - k;
+    tied[k].particle = ParticleId{2 - k};
     tied[k].formed_cycle = 5;
     tied[k].normal_force = 1.0 + k;
   }
@@ -259,8 +259,8 @@ TEST(CompressionAnalysis3d, EllipsoidsUnderAPlate) {
   World3 world(def);
 
   dem::analysis::CompressionSettings s;
-  s.loading_plate = 1;
-  s.bottom_plate = 0;
+  s.loading_plate = WallId{1};
+  s.bottom_plate = WallId{0};
   s.loading_stage = 1;
   s.contacts_at_stress = {500};
   dem::analysis::CompressionAnalysis3 analysis(s);
@@ -271,10 +271,10 @@ TEST(CompressionAnalysis3d, EllipsoidsUnderAPlate) {
     rest.cycles = 2000;
     run_stage(world, rest, 100, [&](const World3& w) { return record_compression(analysis, csv, w, 0), true; });
     StageDef3 load;
-    load.place_wall = PlaceWallDef{1, 0.005};
-    load.wall_motions = {{1, WallMotion3{{0.0, 0.0, -0.05}, Vec3::Zero(), {}}}};
+    load.place_wall = PlaceWallDef{WallId{1}, 0.005};
+    load.wall_motions = {{WallId{1}, WallMotion3{{0.0, 0.0, -0.05}, Vec3::Zero(), {}}}};
     load.cycles = 200000;
-    load.until.wall_stress_above = WallThreshold{1, 1000};
+    load.until.wall_stress_above = WallThreshold{WallId{1}, 1000};
     run_stage(world, load, 10, [&](const World3& w) { return record_compression(analysis, csv, w, 1), true; });
     record_compression(analysis, csv, world, 1);
     csv.write_results(analysis.results(world));
@@ -285,7 +285,7 @@ TEST(CompressionAnalysis3d, EllipsoidsUnderAPlate) {
   EXPECT_EQ(analysis.samples().back().loading_contacts, 4);
   EXPECT_EQ(analysis.samples().back().bottom_contacts, 4);
   ASSERT_EQ(analysis.snapshots().size(), 1u);
-  const double plate_z = world.wall(1).point.z();
+  const double plate_z = world.wall(WallId{1}).point.z();
   for (const dem::analysis::PlateContactT<3>& c : analysis.snapshots()[0].loading)
     EXPECT_NEAR(c.point.z(), plate_z, 1e-3);
   std::ifstream in(directory / "plate_contacts.csv");

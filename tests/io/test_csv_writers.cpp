@@ -53,9 +53,9 @@ class CsvWriters : public ::testing::Test {
     WorldDef def;
     def.materials.push_back({"disc", 1000, 0.5, 0});
     def.contact_models.push_back({});
-    def.particles.push_back({Vec2(0.0, 0.0099), 0.01, 0, Vec2(0.1 / 3, 0), 0.5});
-    def.particles.push_back({Vec2(0.0199, 0.0099), 0.01, 0, Vec2::Zero(), 0});
-    def.particles.push_back({Vec2(0.1, 0.05), 0.01, 0, Vec2::Zero(), 0});
+    def.particles.push_back({Vec2(0.0, 0.0099), 0.01, MaterialId{0}, Vec2(0.1 / 3, 0), 0.5});
+    def.particles.push_back({Vec2(0.0199, 0.0099), 0.01, MaterialId{0}, Vec2::Zero(), 0});
+    def.particles.push_back({Vec2(0.1, 0.05), 0.01, MaterialId{0}, Vec2::Zero(), 0});
     WallDef floor;
     floor.name = "floor";
     floor.point = Vec2(-0.05, 0);
@@ -92,8 +92,8 @@ TEST_F(CsvWriters, WallsAreLongFormat) {
   EXPECT_EQ(number(row[8]), measure.eccentricity);
   EXPECT_EQ(number(row[9]), measure.point.x());
   EXPECT_EQ(number(row[12]), measure.displacement.y());
-  EXPECT_EQ(number(row[13]), measure.normal_force / world_.wall_area(0));
-  EXPECT_EQ(number(row[14]), world_.wall_settlement(0));
+  EXPECT_EQ(number(row[13]), measure.normal_force / world_.wall_area(WallId{0}));
+  EXPECT_EQ(number(row[14]), world_.wall_settlement(WallId{0}));
   EXPECT_GT(measure.normal_force, 0);
 }
 
@@ -132,12 +132,12 @@ TEST_F(CsvWriters, AssemblyRoundTripsEveryDigit) {
 }
 
 TEST_F(CsvWriters, ProbesReportTouchingAndApartPairs) {
-  ProbesCsv probes(directory_, {{"pair", 0, 1}, {"apart", 0, 2}});
+  ProbesCsv probes(directory_, {{"pair", ParticleId{0}, ParticleId{1}}, {"apart", ParticleId{0}, ParticleId{2}}});
   probes.write(world_);
   const auto rows = read_csv(directory_ / "probes.csv");
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[0], (Row{"cycle", "time", "probe", "normal_force", "shear_force", "touching"}));
-  const ContactRecord contact = *world_.contact_between(0, 1);
+  const ContactRecord contact = *world_.contact_between(ParticleId{0}, ParticleId{1});
   EXPECT_EQ(rows[1][2], "pair");
   EXPECT_EQ(number(rows[1][3]), contact.normal_force);
   EXPECT_EQ(number(rows[1][4]), contact.shear_force);
@@ -169,17 +169,17 @@ TEST_F(CsvWriters, ParticlesRoundTrip) {
   for (int id = 0; id < 3; ++id) {
     const Row& row = rows[id + 1];
     EXPECT_EQ(row[0], std::to_string(id));
-    EXPECT_EQ(number(row[1]), particles.position[id].x());
-    EXPECT_EQ(number(row[2]), particles.position[id].y());
-    EXPECT_EQ(number(row[3]), particles.radius[id]);
-    EXPECT_EQ(number(row[4]), particles.velocity[id].x());
-    EXPECT_EQ(number(row[5]), particles.velocity[id].y());
-    EXPECT_EQ(number(row[6]), particles.angular_velocity[id]);
-    EXPECT_EQ(number(row[7]), particles.rotation[id]);
+    EXPECT_EQ(number(row[1]), particles.position[ParticleId::from_index(id)].x());
+    EXPECT_EQ(number(row[2]), particles.position[ParticleId::from_index(id)].y());
+    EXPECT_EQ(number(row[3]), particles.radius[ParticleId::from_index(id)]);
+    EXPECT_EQ(number(row[4]), particles.velocity[ParticleId::from_index(id)].x());
+    EXPECT_EQ(number(row[5]), particles.velocity[ParticleId::from_index(id)].y());
+    EXPECT_EQ(number(row[6]), particles.angular_velocity[ParticleId::from_index(id)]);
+    EXPECT_EQ(number(row[7]), particles.rotation[ParticleId::from_index(id)]);
     // Discs: material, and the shape a = b = R, n = 2.
     EXPECT_EQ(row[8], "disc");
-    EXPECT_EQ(number(row[9]), particles.radius[id]);
-    EXPECT_EQ(number(row[10]), particles.radius[id]);
+    EXPECT_EQ(number(row[9]), particles.radius[ParticleId::from_index(id)]);
+    EXPECT_EQ(number(row[10]), particles.radius[ParticleId::from_index(id)]);
     EXPECT_EQ(number(row[11]), 2.0);
   }
 }
@@ -195,7 +195,7 @@ TEST(CsvWritersShapes, SuperquadricsAndEllipsoidsKeepTheirShapes) {
   EXPECT_EQ((Row{rows[1][8], rows[1][9], rows[1][10], rows[1][11]}), (Row{"rock", "0.05", "0.025", "4"}));
   EXPECT_EQ((Row{rows[2][9], rows[2][10], rows[2][11]}), (Row{"0.03", "0.04", "2.5"}));
   EXPECT_EQ((Row{rows[3][9], rows[3][10], rows[3][11]}), (Row{"0.04", "0.02", "4"}));
-  EXPECT_EQ(number(rows[1][7]), world.particles().rotation[0]);  // the angle, 90 degrees
+  EXPECT_EQ(number(rows[1][7]), world.particles().rotation[ParticleId{0}]);  // the angle, 90 degrees
 
   const LoadedCase ellipsoids = load_case_file(std::filesystem::path(DEM_IO_TEST_DATA) / "ellipsoids.case.txtpb");
   World3 world3(convert_case<3>(ellipsoids.message).world);
@@ -241,9 +241,9 @@ class CsvWriters3d : public ::testing::Test {
     WorldDef3 def;
     def.materials.push_back({"sphere", 1000, 0.5, 0});
     def.contact_models.push_back({});
-    def.particles.push_back({Vec3(0.0, 0.0, 0.0099), 0.01, 0, Vec3(0.1 / 3, 0, 0), Vec3(0, 0, 0.5)});
-    def.particles.push_back({Vec3(0.0199, 0.0, 0.0099), 0.01, 0, Vec3::Zero(), Vec3::Zero()});
-    def.particles.push_back({Vec3(0.1, 0.05, 0.05), 0.01, 0, Vec3::Zero(), Vec3::Zero()});
+    def.particles.push_back({Vec3(0.0, 0.0, 0.0099), 0.01, MaterialId{0}, Vec3(0.1 / 3, 0, 0), Vec3(0, 0, 0.5)});
+    def.particles.push_back({Vec3(0.0199, 0.0, 0.0099), 0.01, MaterialId{0}, Vec3::Zero(), Vec3::Zero()});
+    def.particles.push_back({Vec3(0.1, 0.05, 0.05), 0.01, MaterialId{0}, Vec3::Zero(), Vec3::Zero()});
     WallDef3 floor;
     floor.name = "floor";
     floor.point = Vec3(-0.05, -0.05, 0);
@@ -297,22 +297,22 @@ TEST_F(CsvWriters3d, WallsHaveThreeComponentsAndTwoEccentricities) {
   EXPECT_EQ(number(row[12]), measure.eccentricity.y());
   EXPECT_EQ(number(row[13]), -0.05);
   EXPECT_EQ(number(row[18]), measure.displacement.z());
-  EXPECT_EQ(number(row[19]), measure.normal_force / world_.wall_area(0));
-  EXPECT_EQ(number(row[20]), world_.wall_settlement(0));
+  EXPECT_EQ(number(row[19]), measure.normal_force / world_.wall_area(WallId{0}));
+  EXPECT_EQ(number(row[20]), world_.wall_settlement(WallId{0}));
   EXPECT_GT(measure.normal_force, 0);
 }
 
 TEST_F(CsvWriters3d, AssemblyAndProbesKeepTheir2dColumns) {
   AssemblyCsv assembly(directory_);
   assembly.write(world_);
-  ProbesCsv probes(directory_, {{"pair", 0, 1}});
+  ProbesCsv probes(directory_, {{"pair", ParticleId{0}, ParticleId{1}}});
   probes.write(world_);
   const auto assembly_rows = read_csv(directory_ / "assembly.csv");
   ASSERT_EQ(assembly_rows.size(), 2u);
   EXPECT_EQ(number(assembly_rows[1][2]), world_.assembly_measures().kinetic_energy);
   const auto probe_rows = read_csv(directory_ / "probes.csv");
   ASSERT_EQ(probe_rows.size(), 2u);
-  EXPECT_EQ(number(probe_rows[1][3]), world_.contact_between(0, 1)->normal_force);
+  EXPECT_EQ(number(probe_rows[1][3]), world_.contact_between(ParticleId{0}, ParticleId{1})->normal_force);
   EXPECT_EQ(probe_rows[1][5], "1");
 }
 
@@ -325,7 +325,8 @@ TEST_F(CsvWriters3d, ContactsHaveAPointANormalAndTheTangentialForce) {
                           "shear_damping", "sliding"}));
   for (const ContactRecord3& contact : world_.contacts()) {
     const auto row = std::find_if(rows.begin() + 1, rows.end(), [&](const Row& r) {
-      return r[0] == std::to_string(contact.first) && r[1] == (contact.second_wall != kInvalidId ? "wall" : "particle");
+      return r[0] == std::to_string(contact.first.value()) &&
+             r[1] == (contact.second_wall != kInvalidId ? "wall" : "particle");
     });
     ASSERT_NE(row, rows.end());
     EXPECT_EQ(number((*row)[5]), contact.point.z());
@@ -348,14 +349,14 @@ TEST_F(CsvWriters3d, ParticlesHaveVectorsAndQuaternions) {
   const ParticleViewT<3> particles = world_.particles();
   for (int id = 0; id < 3; ++id) {
     const Row& row = rows[id + 1];
-    EXPECT_EQ(number(row[3]), particles.position[id].z());
-    EXPECT_EQ(number(row[4]), particles.radius[id]);
-    EXPECT_EQ(number(row[7]), particles.velocity[id].z());
-    EXPECT_EQ(number(row[10]), particles.angular_velocity[id].z());
-    EXPECT_EQ(number(row[11]), particles.rotation[id].w());
-    EXPECT_EQ(number(row[14]), particles.rotation[id].z());
+    EXPECT_EQ(number(row[3]), particles.position[ParticleId::from_index(id)].z());
+    EXPECT_EQ(number(row[4]), particles.radius[ParticleId::from_index(id)]);
+    EXPECT_EQ(number(row[7]), particles.velocity[ParticleId::from_index(id)].z());
+    EXPECT_EQ(number(row[10]), particles.angular_velocity[ParticleId::from_index(id)].z());
+    EXPECT_EQ(number(row[11]), particles.rotation[ParticleId::from_index(id)].w());
+    EXPECT_EQ(number(row[14]), particles.rotation[ParticleId::from_index(id)].z());
     EXPECT_EQ(row[15], "sphere");
-    EXPECT_EQ(number(row[18]), particles.radius[id]);
+    EXPECT_EQ(number(row[18]), particles.radius[ParticleId::from_index(id)]);
   }
   EXPECT_NE(number(rows[1][14]), 0);  // the first sphere spins about z
 }

@@ -30,7 +30,7 @@ TEST(ParticleFile, ReadsA3dFileWithCommentsAndAHeader) {
   EXPECT_EQ(particles[0].position, Vec3(0.002, 0.002, 0.001));
   EXPECT_EQ(particles[1].position, Vec3(0.002, 0.006, 0.001));  // spaces after the commas
   EXPECT_EQ(particles[2].radius, 0.0009);                       // after a blank line
-  EXPECT_EQ(particles[2].material, 0);
+  EXPECT_EQ(particles[2].material, MaterialId{0});
   EXPECT_EQ(particles[2].velocity, Vec3::Zero());
 }
 

@@ -70,7 +70,7 @@ TEST(Experiment, NineDiscTestThroughDemServerMatchesTheEngine) {
     for (std::size_t w = 0; w < measures.size(); ++w) {
       const protocol::WallForce& got = sample.walls[w];
       const WallMeasure& want = measures[w];
-      const WallDef& wall = engine.wall(static_cast<WallId>(w));
+      const WallDef& wall = engine.wall(WallId::from_index(w));
       EXPECT_EQ(got.name, wall.name);
       EXPECT_EQ(got.normal_force, want.normal_force) << wall.name << " at " << cycle;
       EXPECT_EQ(got.force.x, want.force.x());

@@ -49,7 +49,7 @@ TEST(EngineReadout, PlateStressIsNormalForceOverLengthTimesUnitDepth) {
   const auto measures = world.wall_measures();
   ASSERT_EQ(walls.size(), 4u);
   for (std::size_t i = 0; i < walls.size(); ++i) {
-    EXPECT_EQ(walls[i].name, world.wall(static_cast<WallId>(i)).name);
+    EXPECT_EQ(walls[i].name, world.wall(WallId::from_index(i)).name);
     EXPECT_EQ(walls[i].area, 400.0);  // h2 - h1 = 200 - (-200), depth 1
     EXPECT_EQ(walls[i].normal_force, measures[i].normal_force);
     EXPECT_EQ(walls[i].normal_stress, measures[i].normal_force / 400.0);
@@ -99,7 +99,7 @@ TEST(EngineReadout, ContactQueriesCombineTheirFilters) {
   on_top.wall = world.find_wall("top");
   const auto top = service::query_contacts(world, on_top);
   EXPECT_EQ(top.size(), 3u);
-  for (const auto& c : top) EXPECT_EQ(c.second_wall, *on_top.wall);
+  for (const auto& c : top) EXPECT_EQ(c.second_wall, on_top.wall->value());
   service::ContactFilter box;
   box.box_min = protocol::Vector3{0.0, 0.0, 0.0};
   box.box_max = protocol::Vector3{110.0, 110.0, 0.0};  // around disc 0 (50, 50)

@@ -94,8 +94,8 @@ void print_final_state(std::ostream& out, const BasicWorld<Dim>& world,
                        const std::vector<std::filesystem::path>& files) {
   if (world.wall_count() > 0) {
     int name_width = 4;
-    for (WallId id = 0; id < world.wall_count(); ++id) {
-      name_width = std::max(name_width, static_cast<int>(world.wall(id).name.size()));
+    for (int w = 0; w < world.wall_count(); ++w) {
+      name_width = std::max(name_width, static_cast<int>(world.wall(WallId{w}).name.size()));
     }
     out << "final wall forces (N):\n";
     print_wall_table(out, world, name_width);

@@ -35,7 +35,7 @@ DepositionRun run_deposition(const std::filesystem::path& case_file, const std::
   run.cycles = world.cycle_count();
   // Spheres in the plane weigh as spheres (Randall 4.4).
   const auto p = world.particles();
-  for (ParticleId i = 0; i < world.particle_count(); ++i) run.weight += p.mass[i] * std::abs(world.gravity().y());
+  for (const ParticleId i : world.particle_ids()) run.weight += p.mass[i] * std::abs(world.gravity().y());
   // The particles push the walls down by what the walls carry.
   for (const WallMeasure& m : world.wall_measures()) run.walls_vertical -= m.force.y();
   run.bed = analysis::measure_region(analysis::sample(world), io::region_for<2>(def.output.regions.front()));

@@ -24,7 +24,7 @@ constexpr double kGenerationTop = 0.054;     // m
 
 WallId wall_named(const WorldDef& def, const std::string& name) {
   for (std::size_t w = 0; w < def.walls.size(); ++w) {
-    if (def.walls[w].name == name) return static_cast<WallId>(w);
+    if (def.walls[w].name == name) return WallId::from_index(w);
   }
   throw std::runtime_error("hopper case: no wall named \"" + name + "\"");
 }
@@ -65,17 +65,17 @@ HopperRun run_hopper(const std::filesystem::path& case_file, double half_angle_d
   // counter-clockwise).
   const double s = std::sin(run.half_angle), c = std::cos(run.half_angle);
   const double length = kWedgeHeight / c;
-  WallDef& left = def.world.walls[static_cast<std::size_t>(wall_named(def.world, "left"))];
+  WallDef& left = def.world.walls[wall_named(def.world, "left").index()];
   left.point = {-0.5 * orifice, 0.0};
   left.direction = {s, -c};
   left.h1 = -length;
   left.h2 = 0.0;
-  WallDef& right = def.world.walls[static_cast<std::size_t>(wall_named(def.world, "right"))];
+  WallDef& right = def.world.walls[wall_named(def.world, "right").index()];
   right.point = {0.5 * orifice, 0.0};
   right.direction = {s, c};
   right.h1 = 0.0;
   right.h2 = length;
-  WallDef& gate = def.world.walls[static_cast<std::size_t>(wall_named(def.world, "orifice"))];
+  WallDef& gate = def.world.walls[wall_named(def.world, "orifice").index()];
   gate.h1 = -0.5 * orifice;
   gate.h2 = 0.5 * orifice;
   // The spheres, generated again in the rectangle as wide as the wedge at
@@ -99,7 +99,7 @@ HopperRun run_hopper(const std::filesystem::path& case_file, double half_angle_d
   run.fill_seconds = world.time();
 
   const double opened = world.time();
-  const double radius = world.particles().radius[0];
+  const double radius = world.particles().radius[ParticleId{0}];
   bool written = false;
   const auto count = [&](const World& w) {
     int below = 0;

@@ -74,7 +74,7 @@ ImpactResult sphere_wall_impact(const Sphere& sphere, const ContactModelDef& mod
   WorldDef3 def;
   def.materials = {material_of(sphere)};
   ContactModelDef m = model;
-  m.material_a = m.material_b = 0;
+  m.material_a = m.material_b = MaterialId{0};
   def.contact_models = {m};
   const double angle = angle_deg * std::numbers::pi / 180.0;
   const double r = sphere.radius;
@@ -93,7 +93,7 @@ ImpactResult sphere_wall_impact(const Sphere& sphere, const ContactModelDef& mod
   def.threads = 1;
   World3 world(def);
   const Vec3 v0 = p.velocity;
-  auto gap = [r](const World3& w) { return w.particles().position[0].z() - r; };
+  auto gap = [r](const World3& w) { return w.particles().position[ParticleId{0}].z() - r; };
   auto forces = [](const World3& w) {
     ContactForces f;
     for (const ContactRecord3& c : w.contacts()) {
@@ -106,8 +106,8 @@ ImpactResult sphere_wall_impact(const Sphere& sphere, const ContactModelDef& mod
   const auto cycles = static_cast<std::uint64_t>(std::min(2e6, (reach + 1e-3) / world.time_step()));
   ImpactResult result = run_impact(world, gap, forces, cycles);
   const auto view = world.particles();
-  const Vec3 v = view.velocity[0];
-  const Vec3 w = view.angular_velocity[0];
+  const Vec3 v = view.velocity[ParticleId{0}];
+  const Vec3 w = view.angular_velocity[ParticleId{0}];
   result.normal_velocity_after = v.z();
   // Velocity of the sphere's point at the wall: v + omega x (-r e_z).
   result.tangential_velocity_after = (v + w.cross(Vec3(0.0, 0.0, -r))).x();
@@ -120,7 +120,7 @@ ImpactResult sphere_sphere_impact(const Sphere& sphere, const ContactModelDef& m
   WorldDef3 def;
   def.materials = {material_of(sphere)};
   ContactModelDef m = model;
-  m.material_a = m.material_b = 0;
+  m.material_a = m.material_b = MaterialId{0};
   def.contact_models = {m};
   const double r = sphere.radius;
   ParticleDef3 a, b;
@@ -135,7 +135,7 @@ ImpactResult sphere_sphere_impact(const Sphere& sphere, const ContactModelDef& m
   World3 world(def);
   auto gap = [r](const World3& w) {
     const auto p = w.particles();
-    return (p.position[1] - p.position[0]).norm() - 2.0 * r;
+    return (p.position[ParticleId{1}] - p.position[ParticleId{0}]).norm() - 2.0 * r;
   };
   auto forces = [](const World3& w) {
     ContactForces f;
@@ -145,7 +145,7 @@ ImpactResult sphere_sphere_impact(const Sphere& sphere, const ContactModelDef& m
   const auto cycles = static_cast<std::uint64_t>(std::min(2e6, (0.002 * r / speed + 1e-3) / world.time_step()));
   ImpactResult result = run_impact(world, gap, forces, cycles);
   const auto view = world.particles();
-  result.normal_velocity_after = (view.velocity[1] - view.velocity[0]).x();
+  result.normal_velocity_after = (view.velocity[ParticleId{1}] - view.velocity[ParticleId{0}]).x();
   result.restitution = result.normal_velocity_after / speed;
   return result;
 }

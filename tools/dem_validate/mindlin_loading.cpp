@@ -138,7 +138,7 @@ FreshContactResult mindlin_fresh_contact_rising_normal_force(bool wall) {
   WorldDef3 def;
   def.materials = {steel};
   ContactModelDef model;
-  model.material_a = model.material_b = 0;
+  model.material_a = model.material_b = MaterialId{0};
   model.law = ContactLaw::kHertzMindlin;
   def.contact_models = {model};
   const double r_star = wall ? kRadius : 0.5 * kRadius;
@@ -184,7 +184,7 @@ FreshContactResult mindlin_fresh_contact_rising_normal_force(bool wall) {
     if (contacts.size() != 1) throw std::runtime_error("fresh contact: expected one contact");
     const ContactRecord3& c = contacts.front();
     const auto p = world.particles();
-    const ParticleId id = wall ? 0 : 1;
+    const ParticleId id{wall ? 0 : 1};
     // delta: the tangential displacement since the contact formed (the
     // first pass already moved it by one step's displacement).
     const double delta = (p.position[id].x() + tangential_speed * dt);

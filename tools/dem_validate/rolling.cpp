@@ -71,22 +71,22 @@ RollingToRest roll(double rolling_friction) {
   const double deceleration = rolling_friction * kGravity / (1.0 + inertia_ratio);
   r.theory_time = kSpeed / deceleration;
   r.theory_distance = kSpeed * kSpeed / (2.0 * deceleration);
-  const double start = world.particles().position[0].x();
+  const double start = world.particles().position[ParticleId{0}].x();
   const auto cycles = static_cast<std::uint64_t>(3.0 * r.theory_time / world.time_step());
   for (std::uint64_t k = 0; k < cycles; ++k) {
     world.cycle();
     const auto p = world.particles();
-    const double v = p.velocity[0].x();
+    const double v = p.velocity[ParticleId{0}].x();
     double contact_speed;
     if constexpr (Dim == 2) {
-      contact_speed = v + p.angular_velocity[0] * kRadius;
+      contact_speed = v + p.angular_velocity[ParticleId{0}] * kRadius;
     } else {
-      contact_speed = v - p.angular_velocity[0].y() * kRadius;
+      contact_speed = v - p.angular_velocity[ParticleId{0}].y() * kRadius;
     }
     r.largest_slip = std::max(r.largest_slip, std::abs(contact_speed) / kSpeed);
     if (v <= 1e-3 * kSpeed) {
       r.stop_time = world.time();
-      r.stop_distance = p.position[0].x() - start;
+      r.stop_distance = p.position[ParticleId{0}].x() - start;
       break;
     }
   }
@@ -115,9 +115,9 @@ Repose angle_of_repose(double rolling_friction) {
   packing.sizes = {{0.0015, 80}, {0.001, 120}};
   packing.seed = 11;
   def.particles = generate_random_packing(packing);
-  def.walls = {WallDef{"base", {0.0, 0.0}, {1, 0}, -0.025, 0.025, 0, {}},
-               WallDef{"column_right", {0.01, 0.0}, {0, 1}, 0.0, 0.15, 0, {}},
-               WallDef{"column_left", {-0.01, 0.15}, {0, -1}, 0.0, 0.15, 0, {}}};
+  def.walls = {WallDef{"base", {0.0, 0.0}, {1, 0}, -0.025, 0.025, MaterialId{0}, {}},
+               WallDef{"column_right", {0.01, 0.0}, {0, 1}, 0.0, 0.15, MaterialId{0}, {}},
+               WallDef{"column_left", {-0.01, 0.15}, {0, -1}, 0.0, 0.15, MaterialId{0}, {}}};
   def.gravity = {0.0, -kGravity};
   def.threads = 1;
   World world(def);
@@ -127,8 +127,8 @@ Repose angle_of_repose(double rolling_friction) {
   fill.until.min_cycles = 2000;
   fill.until.check_interval = 500;
   run_stage(world, fill);
-  world.remove_wall(1);
-  world.remove_wall(2);
+  world.remove_wall(WallId{1});
+  world.remove_wall(WallId{2});
   Repose r;
   r.rolling_friction = rolling_friction;
   // Collapse and settle, in chunks, taking out what has left the base.
@@ -136,7 +136,7 @@ Repose angle_of_repose(double rolling_friction) {
     world.cycle(500);
     std::vector<ParticleId> fallen;
     const auto p = world.particles();
-    for (ParticleId i = 0; i < world.particle_count(); ++i) {
+    for (const ParticleId i : world.particle_ids()) {
       if (p.position[i].y() < -0.005) fallen.push_back(i);
     }
     if (static_cast<int>(fallen.size()) == world.particle_count()) break;
@@ -147,7 +147,7 @@ Repose angle_of_repose(double rolling_friction) {
   // either side of the peak between a fifth and four fifths of its height.
   const auto p = world.particles();
   std::map<int, double> top;
-  for (ParticleId i = 0; i < world.particle_count(); ++i) {
+  for (const ParticleId i : world.particle_ids()) {
     const Vec2 x = p.position[i];
     const int column = static_cast<int>(std::floor(x.x() / 0.002));
     top[column] = std::max(top.contains(column) ? top[column] : 0.0, x.y() + p.radius[i]);

@@ -22,7 +22,7 @@ VerificationStage read_stage(const World& world, const std::string& name, bool s
   const auto walls = world.wall_measures();
   for (std::size_t k = 0; k < 4; ++k) {
     s.walls[k] = walls[k];
-    const WallDef& wall = world.wall(static_cast<WallId>(k));
+    const WallDef& wall = world.wall(WallId::from_index(k));
     const double shear = walls[k].force.dot(wall.direction);
     if (walls[k].normal_force > 0.0) {
       s.largest_wall_obliquity = std::max(s.largest_wall_obliquity, std::abs(shear) / walls[k].normal_force);
@@ -46,7 +46,7 @@ VerificationRun run_verification(const std::filesystem::path& case_file) {
   const io::CaseDefinition def = io::convert_case(loaded.message, loaded.source);
   VerificationRun run;
   run.name = def.name;
-  run.wall_friction = def.world.materials[def.world.walls.front().material].friction;
+  run.wall_friction = def.world.materials[def.world.walls.front().material.index()].friction;
   World world(def.world);
   bool settled = true;
   for (const StageDef& stage : def.stages) {
@@ -70,7 +70,7 @@ void print_verification(std::FILE* out, const VerificationRun& run) {
                  s->ratio, 100.0 * s->out_of_balance, s->contacts, s->sliding);
     std::fprintf(out, "    wall  F_1          F_2          e/(L/2)   contacts\n");
     for (const WallMeasure& m : s->walls) {
-      std::fprintf(out, "    %d     %+.4e  %+.4e  %6.2f%%   %d\n", m.wall + 1, m.force.x(), m.force.y(),
+      std::fprintf(out, "    %d     %+.4e  %+.4e  %6.2f%%   %d\n", m.wall.value() + 1, m.force.x(), m.force.y(),
                    100.0 * m.eccentricity, m.contacts);
     }
     std::fprintf(out, "    largest |wall shear| / wall normal force %.4f (tan phi disc to wall %.2f)\n",
@@ -85,7 +85,7 @@ void write_verification_csv(const std::filesystem::path& out, const Verification
   for (const VerificationStage* s : {&run.a, &run.b}) {
     for (const WallMeasure& m : s->walls) {
       csv.write_row(run.name, s->name, s->cycle, s->settled, s->ratio, s->out_of_balance, s->contacts, s->sliding,
-                    m.wall + 1, m.force.x(), m.force.y(), m.normal_force, m.eccentricity, m.contacts);
+                    m.wall.value() + 1, m.force.x(), m.force.y(), m.normal_force, m.eccentricity, m.contacts);
     }
   }
 }
@@ -105,7 +105,7 @@ Verdict judge_verification(const VerificationRun& run) {
     v.at_least(stage + ": tan(phi) disc to wall x 1.001 against the largest |wall shear| / normal force",
                1.001 * run.wall_friction, s->largest_wall_obliquity);
     for (const WallMeasure& m : s->walls) {
-      v.above(stage + ": contacts on wall " + std::to_string(m.wall + 1), m.contacts, 2);
+      v.above(stage + ": contacts on wall " + std::to_string(m.wall.value() + 1), m.contacts, 2);
     }
   }
   return v;

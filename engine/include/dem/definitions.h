@@ -143,7 +143,7 @@ template <int Dim>
 struct ParticleDefT {
   Vec<Dim> position = Vec<Dim>::Zero();  // m
   double radius = 1.0;                   // m; a shaped particle's is its bounding radius, set from the shape
-  MaterialId material = 0;
+  MaterialId material{0};
   Vec<Dim> velocity = Vec<Dim>::Zero();                  // m/s
   Spin<Dim> angular_velocity = Space<Dim>::zero_spin();  // rad/s (2D: counter-clockwise positive)
   ShapeDefT<Dim> shape;
@@ -181,7 +181,7 @@ struct WallDefT<2> {
   Vec2 direction = Vec2::UnitX();  // e, unit vector
   double h1 = 0.0;                 // m, h1 < h2
   double h2 = 1.0;                 // m
-  MaterialId material = 0;
+  MaterialId material{0};
   WallMotionT<2> motion;
   // Taken out of the world (BasicWorld::remove_wall: a hopper's orifice
   // opened, Randall 1989, 6.2): it keeps its id but touches nothing.
@@ -205,7 +205,7 @@ struct WallDefT<3> {
   Vec3 direction2 = Vec3::UnitY();  // v, unit vector perpendicular to u
   double k1 = 0.0;                  // m, k1 < k2
   double k2 = 1.0;
-  MaterialId material = 0;
+  MaterialId material{0};
   WallMotionT<3> motion;
   std::vector<std::array<Vec3, 3>> triangles;  // m, vertices where they stand now
   bool removed = false;                        // taken out of the world: keeps its id, touches nothing

@@ -18,7 +18,7 @@ enum class LatticeArrangement { kSquare, kHexagonal };
 
 template <int Dim>
 struct LatticeDefT {
-  MaterialId material = 0;
+  MaterialId material{0};
   double radius = 1.0;                 // m
   Vec<Dim> origin = Vec<Dim>::Zero();  // centre of the first particle, m
   int columns = 1;
@@ -46,7 +46,7 @@ struct SizeClassT {
 // (DefinitionError) naming its size class.
 template <int Dim>
 struct RandomPackingDefT {
-  MaterialId material = 0;
+  MaterialId material{0};
   Vec<Dim> min = Vec<Dim>::Zero();
   Vec<Dim> max = Vec<Dim>::Ones();
   std::vector<SizeClassT<Dim>> sizes;

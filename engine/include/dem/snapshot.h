@@ -49,7 +49,9 @@ struct MindlinHistory {
 // computes the same from the same state.
 template <int Dim>
 struct ContactSnapshotT {
-  ParticleId first = kInvalidId;
+  // The ids' values (ParticleId::value, WallId::value): the row names a
+  // particle and either kind of body.
+  std::int32_t first = kInvalidId;
   std::int32_t second = kInvalidId;  // a particle, or a wall when with_wall
   bool with_wall = false;
   double normal_force = 0.0;

@@ -23,17 +23,17 @@ template <int Dim>
 struct WorldState;  // engine/src: particles, walls, contacts
 
 // One particle quantity read by ParticleId. The engine stores particles in
-// its own order (close in space, close in memory), so this looks each id up;
-// iterating goes through the ids in order.
+// its own order (close in space, close in memory), so this looks each id up
+// (slots: indexed by id); iterating goes through the particles' ids in
+// ascending order (ids).
 template <typename T>
 class ById {
  public:
-  ById(std::span<const T> values, std::span<const std::int32_t> slots) : values_(values), slots_(slots) {}
-  const T& operator[](ParticleId id) const {
-    return values_[static_cast<std::size_t>(slots_[static_cast<std::size_t>(id)])];
-  }
-  std::size_t size() const { return slots_.size(); }
-  bool empty() const { return slots_.empty(); }
+  ById(std::span<const T> values, std::span<const std::int32_t> slots, std::span<const ParticleId> ids)
+      : values_(values), slots_(slots), ids_(ids) {}
+  const T& operator[](ParticleId id) const { return values_[static_cast<std::size_t>(slots_[id.index()])]; }
+  std::size_t size() const { return ids_.size(); }
+  bool empty() const { return ids_.empty(); }
 
   class iterator {
    public:
@@ -42,29 +42,30 @@ class ById {
     using difference_type = std::ptrdiff_t;
     using pointer = const T*;
     using reference = const T&;
-    iterator(const ById* view, ParticleId id) : view_(view), id_(id) {}
-    const T& operator*() const { return (*view_)[id_]; }
+    iterator(const ById* view, std::span<const ParticleId>::iterator at) : view_(view), at_(at) {}
+    const T& operator*() const { return (*view_)[*at_]; }
     iterator& operator++() {
-      ++id_;
+      ++at_;
       return *this;
     }
     iterator operator++(int) {
       iterator old = *this;
-      ++id_;
+      ++at_;
       return old;
     }
-    bool operator==(const iterator& o) const { return id_ == o.id_; }
+    bool operator==(const iterator& o) const { return at_ == o.at_; }
 
    private:
     const ById* view_;
-    ParticleId id_;
+    std::span<const ParticleId>::iterator at_;
   };
-  iterator begin() const { return {this, 0}; }
-  iterator end() const { return {this, static_cast<ParticleId>(slots_.size())}; }
+  iterator begin() const { return {this, ids_.begin()}; }
+  iterator end() const { return {this, ids_.end()}; }
 
  private:
   std::span<const T> values_;
   std::span<const std::int32_t> slots_;
+  std::span<const ParticleId> ids_;
 };
 
 // Read-only views of the particles' state, by ParticleId. Valid until the
@@ -112,9 +113,12 @@ class BasicWorld {
 
   int particle_count() const;
   int wall_count() const;
+  // The particles' ids in ascending order (0 .. particle_count() - 1).
+  std::span<const ParticleId> particle_ids() const;
   ParticleViewT<Dim> particles() const;
 
-  // Walls, by dense id; find_wall returns kInvalidId for an unknown name.
+  // Walls, by dense id (definition order; ids out of range are a
+  // programmer error); find_wall returns kInvalidId for an unknown name.
   WallId find_wall(std::string_view name) const;
   const WallDefinition& wall(WallId id) const;  // current geometry and motion
   void set_wall_motion(WallId id, const Motion& motion);

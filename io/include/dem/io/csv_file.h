@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "dem/ids.h"
+
 namespace dem::io {
 
 void append_field(std::string& line, double value);
@@ -27,6 +29,11 @@ requires(!std::same_as<T, bool>) void append_field(std::string& line, T value) {
   } else {
     append_field(line, static_cast<std::uint64_t>(value));
   }
+}
+// An id (dem/ids.h) as its value, the number the wire and the files carry.
+template <typename Tag>
+void append_field(std::string& line, Id<Tag> id) {
+  append_field(line, static_cast<std::int64_t>(id.value()));
 }
 
 // How long each table of a run was when it was checkpointed (file name ->
