@@ -142,10 +142,12 @@ inline Pair dot(const PairVector& a, const PairVector& b) { return a.x * b.x + a
 // last step (as evaluate and finish would take them): Newton's to first
 // order when both |g| are below kFirstOrder, else Halley's for both.
 // own holds (M_i, M_j), rhs (M_j d0, -M_i d0); the points come back as
-// arms d from their centres, with the half-gradients M_own d there. Returns false when either search does not end
-// there (the caller then searches one body at a time).
+// arms d from their centres, with the half-gradients M_own d there.
+// Returns false when either search does not end there (the caller then
+// searches one body at a time).
 //
-// Unnormalised, so that one division serves: with A = M_other + mu M_own,
+// Unnormalised, so that the products wait on no division: with
+// A = M_other + mu M_own,
 // D = det A and adj(A) = D A^-1, the vectors u = adj(A) rhs = D d,
 // w = M_own u = D M_own d and z = adj(A) w = -D^2 d' give
 //   g = E / D^2 with E = u.w - D^2,   g' = -2 (w.z) / D^3,
@@ -356,7 +358,7 @@ EllipsoidContact ellipsoid_contact(const EllipsoidFrame& i, const Vec3& centre_i
   // that it need not wait for the root.
   const double squared_length = sum.squaredNorm();
   const double product = quadratic_form(cofactors(mi.scaled(lengths[1]).plus(lengths[0], mj)), sum);
-  const double scale = squares[0] * squares[1] * squared_length;  // R_e^2 k1 k2 |s|^2 (|g_i| |g_j|)^2
+  const double scale = squares[0] * squares[1] * squared_length;  // R_e^2 times product
   // 1 / |s| = sqrt(|s|^2) / |s|^2 and R_e = (k1 k2)^(-1/2) =
   // sqrt(scale product) / product: one division and one root for both,
   // side by side rather than one after the other.
