@@ -64,6 +64,7 @@ OPTIONALS = {
     "dem_interfaces/RunUntil.settlement": "settlement_set",
     "dem_interfaces/RunUntil.kinetic_energy": "kinetic_energy_set",
     "dem_interfaces/ContactQuery.min_normal_force": "force_set",
+    "dem_interfaces/ContactQuery.particle": "particle_set",
 }
 
 # String members that carry the name of an enum member of the same struct:

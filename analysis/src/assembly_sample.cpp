@@ -22,7 +22,16 @@ AssemblySampleT<Dim> sample(const BasicWorld<Dim>& world) {
       s.rotation.push_back(2.0 * std::acos(std::min(1.0, std::abs(p.rotation[i].w()))));
     }
   }
+  const std::span<const ParticleId> ids = world.particle_ids();
+  s.ids.assign(ids.begin(), ids.end());
+  // Each id's position in the sample (the ids ascend, with gaps after a trim).
+  std::vector<std::int32_t> position(static_cast<std::size_t>(world.particle_id_count()), -1);
+  for (std::size_t k = 0; k < ids.size(); ++k) position[ids[k].index()] = static_cast<std::int32_t>(k);
   s.contacts = world.contacts();
+  for (ContactRecordT<Dim>& c : s.contacts) {
+    c.first = ParticleId{position[c.first.index()]};
+    if (c.second_particle.valid()) c.second_particle = ParticleId{position[c.second_particle.index()]};
+  }
   s.depth = world.depth();
   s.periodic = world.periodic();
   return s;

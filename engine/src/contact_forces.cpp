@@ -370,8 +370,7 @@ std::vector<ContactRecordT<Dim>> report_wall_contacts(const WorldState<Dim>& sta
 template <int Dim>
 std::optional<ContactRecordT<Dim>> report_pair_contact(const WorldState<Dim>& state, ParticleId a, ParticleId b) {
   const Particles<Dim>& p = state.particles;
-  const std::size_t n = p.slot.size();
-  if (!a.valid() || !b.valid() || a.index() >= n || b.index() >= n || a == b) return std::nullopt;
+  if (!p.contains(a) || !p.contains(b) || a == b) return std::nullopt;
   // Rows are oriented from the lower id and sorted by slot.
   const ContactKey key{p.slot_of(std::min(a, b)), p.slot_of(std::max(a, b))};
   const ContactRows<Dim>& rows = state.contacts.pairs;

@@ -47,7 +47,10 @@ struct Particles {
   std::vector<Vec3> principal_inertia;  // ellipsoid worlds only: about the body's own axes
   std::vector<ParticleId> id;           // the particle in each slot
 
-  // The slot of each particle id (indexed by id, not by slot).
+  // The slot of each particle id (indexed by id, not by slot); -1 for an
+  // id whose particle was removed. Ids are given once, in definition order,
+  // and never reused or renamed (remove_particles leaves holes), so its
+  // size is the number of ids ever given.
   std::vector<Slot> slot;
   // The particles' ids in ascending order: what the API iterates.
   std::vector<ParticleId> ids;
@@ -75,15 +78,24 @@ struct Particles {
     visit(id);
   }
 
-  // Rebuilds `slot` and `ids` from `id`.
-  void index_ids() {
-    slot.assign(id.size(), 0);
+  // Rebuilds `slot` and `ids` from `id`; `id_count` is the number of ids
+  // ever given (0: keep slot's size).
+  void index_ids(std::size_t id_count = 0) {
+    if (id_count == 0) id_count = slot.size();
+    slot.assign(id_count, -1);
     for (std::size_t k = 0; k < id.size(); ++k) slot[id[k].index()] = static_cast<Slot>(k);
-    ids.resize(id.size());
-    for (std::size_t k = 0; k < ids.size(); ++k) ids[k] = ParticleId::from_index(k);
+    ids.clear();
+    ids.reserve(id.size());
+    for (std::size_t i = 0; i < slot.size(); ++i) {
+      if (slot[i] >= 0) ids.push_back(ParticleId::from_index(i));
+    }
   }
 
-  // The slot of a particle id.
+  // Whether a particle of that id is in the world (given and not removed).
+  bool contains(ParticleId particle) const {
+    return particle.valid() && particle.index() < slot.size() && slot[particle.index()] >= 0;
+  }
+  // The slot of a particle id; only for ids the world contains.
   Slot slot_of(ParticleId particle) const { return slot[particle.index()]; }
 
   // omega^T I omega: with the scalar inertia for discs, spheres and

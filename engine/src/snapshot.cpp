@@ -55,6 +55,7 @@ template <int Dim>
 void restore_contact_table(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) {
   const Particles<Dim>& p = s.particles;
   const auto n = static_cast<std::int32_t>(p.size());
+  const auto known = [&](std::int32_t id) { return p.contains(ParticleId{id}); };
   // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on "(" + std::string once inlined here.
   auto name = [](const ContactSnapshotT<Dim>& c) {
     std::string text = "(";
@@ -68,11 +69,11 @@ void restore_contact_table(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) 
     return ContactKey{p.slot[c.first], c.with_wall ? c.second : p.slot[c.second]};
   };
   for (const ContactSnapshotT<Dim>& c : snap.contacts) {
-    check(c.first >= 0 && c.first < n, "contact names particle " + std::to_string(c.first));
+    check(known(c.first), "contact names particle " + std::to_string(c.first));
     if (c.with_wall) {
       check(c.second >= 0 && c.second < s.walls.size(), "contact names wall " + std::to_string(c.second));
     } else {
-      check(c.second > c.first && c.second < n, "contact names particle " + std::to_string(c.second));
+      check(c.second > c.first && known(c.second), "contact names particle " + std::to_string(c.second));
     }
   }
   const bool saved_rows = !snap.reference_positions.empty();
@@ -89,7 +90,9 @@ void restore_contact_table(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) 
     }
     merge_rows(t.pairs, pairs);
     merge_rows(t.walls, walls);
-    for (std::int32_t id = 0; id < n; ++id) s.particles.reference_position[p.slot[id]] = snap.reference_positions[id];
+    for (std::int32_t k = 0; k < n; ++k) {
+      s.particles.reference_position[p.slot_of(p.ids[k])] = snap.reference_positions[k];
+    }
     s.particle_travel = snap.particle_travel;
     s.wall_travel = snap.wall_travel;
     s.contacts_stale = snap.contacts_stale;
@@ -104,21 +107,41 @@ void restore_contact_table(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) 
   }
 }
 
+// Gives the particles, just built in definition order (slot k holds
+// def.particles[k]), their saved ids.
+template <int Dim>
+void restore_ids(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) {
+  if (snap.particle_ids.empty()) return;
+  Particles<Dim>& p = s.particles;
+  const std::size_t n = p.size();
+  check(snap.particle_ids.size() == n, "particle ids do not match the " + std::to_string(n) + " particles");
+  for (std::size_t k = 0; k < n; ++k) {
+    const ParticleId id = snap.particle_ids[k];
+    check(id.valid() && (k == 0 || snap.particle_ids[k - 1] < id), "particle ids must ascend from 0");
+  }
+  const auto given = static_cast<std::size_t>(snap.particle_ids.back().value()) + 1;
+  check(snap.particle_id_count == 0 || static_cast<std::size_t>(snap.particle_id_count) >= given,
+        "particle_id_count " + std::to_string(snap.particle_id_count) + " is below the ids");
+  p.id = snap.particle_ids;
+  p.index_ids(std::max(given, static_cast<std::size_t>(snap.particle_id_count)));
+}
+
 // Puts the particles in the saved storage order.
 template <int Dim>
 void restore_order(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) {
   if (snap.particle_order.empty()) return;
   const std::size_t n = s.particles.size();
   check(snap.particle_order.size() == n, "particle order does not match the " + std::to_string(n) + " particles");
-  std::vector<bool> seen(n, false);
+  const Particles<Dim>& p = s.particles;
+  std::vector<bool> seen(p.slot.size(), false);
   std::vector<Slot> order;
   order.reserve(n);
   for (ParticleId id : snap.particle_order) {
-    check(id.valid() && id.index() < n && !seen[id.index()], "particle order is not a permutation of the ids");
+    check(p.contains(id) && !seen[id.index()], "particle order is not a permutation of the ids");
     seen[id.index()] = true;
-    order.push_back(id.value());
+    order.push_back(p.slot_of(id));
   }
-  // The state was just built in id order (slot = id): slot k takes particle order[k].
+  // The state was just built in id order: slot k takes particle order[k].
   reorder_particles(s.particles, s.contacts, order);
   s.sorted_cycle = snap.sorted_cycle;
 }
@@ -147,14 +170,19 @@ WorldSnapshotT<Dim> save_snapshot(const WorldState<Dim>& s) {
   snap.force.reserve(n);
   snap.moment.reserve(n);
   snap.reference_positions.reserve(n);
-  for (std::size_t id = 0; id < n; ++id) {
-    const auto i = static_cast<std::size_t>(p.slot[id]);
+  for (const ParticleId id : p.ids) {
+    const auto i = static_cast<std::size_t>(p.slot_of(id));
     def.particles.push_back(ParticleDefT<Dim>{p.position[i], p.radius[i], MaterialId{p.material[i]}, p.velocity[i],
                                               p.angular_velocity[i], p.shape.empty() ? ShapeDefT<Dim>{} : p.shape[i]});
     snap.rotation.push_back(p.rotation[i]);
     snap.force.push_back(p.force[i]);
     snap.moment.push_back(p.moment[i]);
     snap.reference_positions.push_back(p.reference_position[i]);
+  }
+  // Ids are saved once something was removed (they are 0 .. n-1 before).
+  if (p.slot.size() != n) {
+    snap.particle_ids = p.ids;
+    snap.particle_id_count = static_cast<std::int32_t>(p.slot.size());
   }
   snap.particle_order = p.id;
   snap.sorted_cycle = s.sorted_cycle == kNeverSorted ? 0 : s.sorted_cycle;
@@ -204,13 +232,16 @@ void restore_snapshot(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) {
         "per-particle arrays do not match the " + std::to_string(n) + " particles");
   check(snap.walls.size() == s.walls.def.size(), "per-wall records do not match the walls");
   check(snap.time_step > 0.0 && snap.critical_time_step > 0.0, "time step must be > 0");
+  restore_ids(s, snap);
   restore_order(s, snap);
   Particles<Dim>& p = s.particles;
-  for (std::size_t id = 0; id < n; ++id) {
-    const auto i = static_cast<std::size_t>(p.slot[id]);
-    p.rotation[i] = snap.rotation[id];
-    p.force[i] = snap.force[id];
-    p.moment[i] = snap.moment[id];
+  // The per-particle arrays follow def.particles: the k-th entry is the
+  // particle of the k-th id.
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(p.slot_of(p.ids[k]));
+    p.rotation[i] = snap.rotation[k];
+    p.force[i] = snap.force[k];
+    p.moment[i] = snap.moment[k];
   }
   for (std::size_t w = 0; w < snap.walls.size(); ++w) {
     const WallSnapshotT<Dim>& ws = snap.walls[w];

@@ -60,7 +60,8 @@ std::uint64_t hash_state(const WorldState<Dim>& s) {
   h.add(s.time);
   const Particles<Dim>& p = s.particles;
   // By id, so the hash names the physical state whatever the storage order.
-  for (const Slot i : p.slot) {
+  for (const ParticleId id : p.ids) {
+    const Slot i = p.slot_of(id);
     h.add(p.position[i]);
     h.add(p.velocity[i]);
     h.add(p.angular_velocity[i]);

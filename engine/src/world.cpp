@@ -171,6 +171,21 @@ template <int Dim>
 std::span<const ParticleId> BasicWorld<Dim>::particle_ids() const {
   return state_->particles.ids;
 }
+template <int Dim>
+int BasicWorld<Dim>::particle_id_count() const {
+  return static_cast<int>(state_->particles.slot.size());
+}
+template <int Dim>
+bool BasicWorld<Dim>::has_particle(ParticleId id) const {
+  return state_->particles.contains(id);
+}
+template <int Dim>
+std::optional<std::string> BasicWorld<Dim>::missing_particle(ParticleId id) const {
+  const Particles<Dim>& p = state_->particles;
+  if (p.contains(id)) return std::nullopt;
+  if (id.valid() && id.index() < p.slot.size()) return "particle " + to_string(id) + " was removed";
+  return "no particle " + to_string(id);
+}
 
 template <int Dim>
 ParticleViewT<Dim> BasicWorld<Dim>::particles() const {

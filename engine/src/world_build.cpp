@@ -103,7 +103,7 @@ void add_particles(WorldState<Dim>& s, const WorldDefT<Dim>& def) {
   p.reference_position = p.position;
   p.id.resize(n);
   for (std::size_t i = 0; i < n; ++i) p.id[i] = ParticleId::from_index(i);
-  p.index_ids();
+  p.index_ids(n);
   for (Vec<Dim>& x : p.position) s.periodic.wrap(x);
 }
 

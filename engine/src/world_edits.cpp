@@ -59,37 +59,33 @@ template <int Dim>
 void BasicWorld<Dim>::remove_particles(std::span<const ParticleId> ids) {
   WorldState<Dim>& s = *state_;
   Particles<Dim>& p = s.particles;
-  const std::size_t n = p.size();
-  std::vector<bool> keep_id(n, true);
+  // Every id is checked before anything changes: a stale id is an error,
+  // never half of a removal.
   for (ParticleId id : ids) {
-    if (!id.valid() || id.index() >= n) throw DefinitionError("remove particles: no particle " + to_string(id));
-    keep_id[id.index()] = false;
+    if (const auto missing = missing_particle(id)) throw DefinitionError("remove particles: " + *missing);
   }
-  if (std::all_of(keep_id.begin(), keep_id.end(), [](bool k) { return k; })) return;
-  if (std::none_of(keep_id.begin(), keep_id.end(), [](bool k) { return k; })) {
-    throw DefinitionError("remove particles: cannot remove every particle");
-  }
+  std::vector<bool> removed(p.slot.size(), false);
+  for (ParticleId id : ids) removed[id.index()] = true;
+  const auto kept = static_cast<std::size_t>(
+      std::count_if(p.id.begin(), p.id.end(), [&](ParticleId id) { return !removed[id.index()]; }));
+  if (kept == p.size()) return;
+  if (kept == 0) throw DefinitionError("remove particles: cannot remove every particle");
   const double held_before = s.energy_budget ? held_energy(s) : 0.0;
 
-  // The kept particles get new dense ids in the old id order, and keep
-  // their storage order.
-  std::vector<ParticleId> new_id(n, kInvalidId);
-  std::size_t next = 0;
-  for (std::size_t id = 0; id < n; ++id) {
-    if (keep_id[id]) new_id[id] = ParticleId::from_index(next++);
-  }
-  std::vector<Slot> kept_slots, renamed(n, -1);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!keep_id[p.id[i].index()]) continue;
+  // The kept particles keep their ids (LIGGGHTS' atom ids, PFC's ball ids:
+  // a client's id names the same particle for the whole run) and their
+  // storage order; the removed ones' ids name nothing from now on.
+  std::vector<Slot> kept_slots, renamed(p.size(), -1);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (removed[p.id[i].index()]) continue;
     renamed[i] = static_cast<Slot>(kept_slots.size());
     kept_slots.push_back(static_cast<Slot>(i));
   }
   p.for_each_slot_array([&](auto& values) { gather(values, kept_slots); });
-  for (ParticleId& id : p.id) id = new_id[id.index()];
   p.index_ids();
 
   // Contacts between kept particles keep their history; a pair row's first
-  // particle still has the lower id.
+  // particle still has the lower id (ids did not change).
   rename_slots(s.contacts.pairs, renamed, true);
   rename_slots(s.contacts.walls, renamed, false);
   plan_blocks(s.blocks, s.contacts, p.size(), block_size(s));

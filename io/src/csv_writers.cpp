@@ -120,8 +120,9 @@ void write_particles_csv(const std::filesystem::path& directory, const BasicWorl
   // The particles' materials and shapes are in the snapshot only (the
   // particle view has the dynamic state); a particles.csv is written once.
   const WorldSnapshotT<Dim> snapshot = world.snapshot();
-  for (const ParticleId id : world.particle_ids()) {
-    const ParticleDefT<Dim>& def = snapshot.def.particles[id.index()];
+  for (std::size_t k = 0; k < snapshot.def.particles.size(); ++k) {
+    const ParticleId id = world.particle_ids()[k];  // the snapshot lists the particles in id order
+    const ParticleDefT<Dim>& def = snapshot.def.particles[k];
     const std::string& material = snapshot.def.materials[def.material.index()].name;
     const double r = p.radius[id];
     if constexpr (Dim == 2) {

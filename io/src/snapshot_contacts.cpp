@@ -118,10 +118,10 @@ bool check_contacts(Problems& problems, const proto::SnapshotContacts& in, const
   if (!sizes) return false;
   for (int i = 0; i < in.first_size(); ++i) {
     const std::string path = "contacts[" + std::to_string(i) + "]";
-    if (!in_range(in.first(i), n.particles)) {
+    if (!in_range(in.first(i), n.particle_ids)) {
       problems.add(path + ".first", "particle " + std::to_string(in.first(i)) + " out of range");
     }
-    if (!in_range(in.second(i), in.with_wall(i) ? n.walls : n.particles)) {
+    if (!in_range(in.second(i), in.with_wall(i) ? n.walls : n.particle_ids)) {
       problems.add(path + ".second", std::string(in.with_wall(i) ? "wall " : "particle ") +
                                          std::to_string(in.second(i)) + " out of range");
     }

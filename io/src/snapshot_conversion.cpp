@@ -320,6 +320,8 @@ proto::Snapshot snapshot_to_proto(const WorldSnapshotT<Dim>& s, const SnapshotIn
   m.set_wall_travel(s.wall_travel);
   m.set_contacts_stale(s.contacts_stale);
   for (ParticleId id : s.particle_order) m.add_particle_order(id.value());
+  for (ParticleId id : s.particle_ids) m.add_particle_ids(id.value());
+  m.set_particle_id_count(s.particle_id_count);
   m.set_sorted_cycle(s.sorted_cycle);
   m.set_cycle(s.cycle);
   m.set_time(s.time);
@@ -353,6 +355,8 @@ WorldSnapshotT<Dim> snapshot_from_proto(const proto::Snapshot& m, SnapshotInfo* 
   s.wall_travel = m.wall_travel();
   s.contacts_stale = m.contacts_stale();
   for (const std::int32_t id : m.particle_order()) s.particle_order.push_back(ParticleId{id});
+  for (const std::int32_t id : m.particle_ids()) s.particle_ids.push_back(ParticleId{id});
+  s.particle_id_count = m.particle_id_count();
   s.sorted_cycle = m.sorted_cycle();
   s.cycle = m.cycle();
   s.time = m.time();

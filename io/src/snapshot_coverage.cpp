@@ -142,6 +142,8 @@ struct WorldSnapshotMirror {
   double particle_travel, wall_travel;
   bool contacts_stale;
   std::vector<ParticleId> particle_order;
+  std::vector<ParticleId> particle_ids;
+  std::int32_t particle_id_count;
   std::uint64_t sorted_cycle;
   EnergyBudget energy;
   double tangential_work;

@@ -66,6 +66,9 @@ inline bool in_range(std::int32_t id, std::size_t count) { return id >= 0 && sta
 
 struct Counts {
   std::size_t particles = 0;
+  // One past the highest particle id (ids stay with their particles, so
+  // after a trim this exceeds `particles`).
+  std::size_t particle_ids = 0;
   std::size_t walls = 0;
   std::size_t contacts = 0;
   std::size_t materials = 0;

@@ -112,6 +112,27 @@ void check_structure(const proto::Snapshot& m, Problems& problems, const Resourc
   for (const auto& [path, message] : snapshot_value_problems(m, limits)) problems.add(path, message);
   Counts n;
   n.particles = static_cast<std::size_t>(m.particles().radius_size());
+  n.particle_ids = n.particles;
+  if (m.particle_ids_size() > 0) {
+    const auto& ids = m.particle_ids();
+    if (static_cast<std::size_t>(ids.size()) != n.particles) {
+      problems.add("particle_ids",
+                   "has " + std::to_string(ids.size()) + " entries for " + std::to_string(n.particles) + " particles");
+    }
+    for (int i = 0; i < ids.size(); ++i) {
+      if (ids[i] < 0 || (i > 0 && ids[i] <= ids[i - 1])) {
+        problems.add("particle_ids[" + std::to_string(i) + "]", "ids must ascend from 0");
+        break;
+      }
+    }
+    n.particle_ids = static_cast<std::size_t>(std::max(ids[ids.size() - 1], 0)) + 1;
+  }
+  if (m.particle_id_count() < 0 ||
+      (m.particle_id_count() > 0 && static_cast<std::size_t>(m.particle_id_count()) < n.particle_ids)) {
+    problems.add("particle_id_count", "is below the particle ids");
+  } else if (m.particle_id_count() > 0) {
+    n.particle_ids = static_cast<std::size_t>(m.particle_id_count());
+  }
   n.walls = static_cast<std::size_t>(m.wall_size());
   n.contacts = static_cast<std::size_t>(m.contacts().first_size());
   n.materials = static_cast<std::size_t>(m.settings().material_size());
@@ -155,10 +176,10 @@ void check_structure(const proto::Snapshot& m, Problems& problems, const Resourc
       problems.add("particle_order", "has " + std::to_string(m.particle_order_size()) + " entries for " +
                                          std::to_string(n.particles) + " particles");
     } else {
-      std::vector<bool> seen(n.particles, false);
+      std::vector<bool> seen(n.particle_ids, false);
       for (int i = 0; i < m.particle_order_size(); ++i) {
         const std::int32_t id = m.particle_order(i);
-        if (!in_range(id, n.particles) || seen[static_cast<std::size_t>(id)]) {
+        if (!in_range(id, n.particle_ids) || seen[static_cast<std::size_t>(id)]) {
           problems.add("particle_order[" + std::to_string(i) + "]", "is not a permutation of the particle ids");
           break;
         }

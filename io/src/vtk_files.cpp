@@ -88,11 +88,13 @@ double shear_magnitude_or_signed(const ShearForce<Dim>& shear) {
 template <int Dim>
 void write_particles_vtp(const std::filesystem::path& file, const WorldSnapshotT<Dim>& snapshot) {
   const auto& particles = snapshot.def.particles;
+  // Contacts name particles by id (ids keep gaps after a trim): each id's entry.
+  const std::vector<std::int32_t> entry = snapshot_entries_by_id(snapshot);
   std::vector<int> coordination(particles.size(), 0);
   for (const ContactSnapshotT<Dim>& c : snapshot.contacts) {
     if (!c.touching) continue;
-    ++coordination[c.first];
-    if (!c.with_wall) ++coordination[c.second];
+    ++coordination[entry[c.first]];
+    if (!c.with_wall) ++coordination[entry[c.second]];
   }
 
   vtk::PolyData data;
@@ -110,7 +112,7 @@ void write_particles_vtp(const std::filesystem::path& file, const WorldSnapshotT
     const ParticleDefT<Dim>& p = particles[i];
     data.points.push_back(point3<Dim>(p.position));
     data.verts.add({static_cast<std::int64_t>(i)});
-    id.add(static_cast<std::int64_t>(i));
+    id.add(static_cast<std::int64_t>(snapshot_particle_id(snapshot, i).value()));
     material.add(static_cast<std::int64_t>(p.material.value()));
     radius.add(p.radius);
     velocity.add(point3<Dim>(p.velocity));
@@ -140,6 +142,7 @@ void write_particles_vtp(const std::filesystem::path& file, const WorldSnapshotT
 template <int Dim>
 void write_contacts_vtp(const std::filesystem::path& file, const WorldSnapshotT<Dim>& snapshot) {
   const auto& particles = snapshot.def.particles;
+  const std::vector<std::int32_t> entry = snapshot_entries_by_id(snapshot);  // each id's particle
   vtk::PolyData data;
   vtk::DataArray normal_force{.name = "normal_force", .type = "Float64"};
   vtk::DataArray shear_force{.name = "shear_force", .type = "Float64"};
@@ -152,11 +155,10 @@ void write_contacts_vtp(const std::filesystem::path& file, const WorldSnapshotT<
   vtk::DataArray point{.name = "point", .type = "Float64", .components = 3};
   for (const ContactSnapshotT<Dim>& c : snapshot.contacts) {
     if (!c.touching) continue;
-    const Vec<Dim>& from = particles[c.first].position;
-    const Vec<Dim> to =
-        c.with_wall
-            ? c.point
-            : Vec<Dim>(from + nearest_separation<Dim>(from, particles[c.second].position, snapshot.def.periodic));
+    const Vec<Dim>& from = particles[entry[c.first]].position;
+    const Vec<Dim> to = c.with_wall ? c.point
+                                    : Vec<Dim>(from + nearest_separation<Dim>(from, particles[entry[c.second]].position,
+                                                                              snapshot.def.periodic));
     const auto start = static_cast<std::int64_t>(data.points.size());
     data.points.push_back(point3<Dim>(from));
     data.points.push_back(point3<Dim>(to));

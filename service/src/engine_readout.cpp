@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dem/service/command_error.h"
+
 namespace dem::service {
 
 namespace {
@@ -40,6 +42,7 @@ protocol::WallForce to_wall_force(const BasicWorld<Dim>& world, const WallMeasur
 template <int Dim>
 bool inside(const ContactRecordT<Dim>& c, const ContactFilter& filter) {
   if (filter.wall && c.second_wall != *filter.wall) return false;
+  if (filter.particle && c.first != *filter.particle && c.second_particle != *filter.particle) return false;
   if (filter.min_normal_force && !(c.normal_force > *filter.min_normal_force)) return false;
   if (filter.box_min && filter.box_max) {
     const protocol::Vector3 p = vector3(c.point);
@@ -121,6 +124,11 @@ protocol::ContactStats read_contact_stats(const BasicWorld<Dim>& world) {
 
 template <int Dim>
 std::vector<protocol::ContactEntry> query_contacts(const BasicWorld<Dim>& world, const ContactFilter& filter) {
+  if (filter.particle) {
+    if (const auto missing = world.missing_particle(*filter.particle)) {
+      throw CommandError(protocol::ReplyStatus::kNotFound, *missing);
+    }
+  }
   std::vector<protocol::ContactEntry> entries;
   // One wall's: a pass over its rows, not over every contact.
   for (const ContactRecordT<Dim>& c : filter.wall ? world.wall_contacts(*filter.wall) : world.contacts()) {

@@ -263,6 +263,7 @@ std::string Simulation::set_parameter(const protocol::ParameterArgs& args) {
 std::vector<protocol::ContactEntry> Simulation::query_contacts(const protocol::ContactQueryArgs& args) const {
   ContactFilter filter;
   if (args.wall_set) filter.wall = find_wall(args.wall, args.wall_id);
+  if (args.particle) filter.particle = ParticleId{*args.particle};
   if (args.box_set) {
     require(finite(args.box_min) && finite(args.box_max), "the box must be finite");
     require(args.box_min.x <= args.box_max.x && args.box_min.y <= args.box_max.y && args.box_min.z <= args.box_max.z,

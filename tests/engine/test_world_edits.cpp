@@ -3,7 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "dem/error.h"
 #include "dem/packing.h"
@@ -47,7 +51,7 @@ World settled_box() {
 TEST(WorldEdits, TrimmingRemovesTheTopAndKeepsTheRest) {
   World world = settled_box();
   const int before = world.particle_count();
-  // Pick a surviving contact to follow through the renumbering.
+  // Pick a surviving contact to follow through the trim.
   const auto contacts = world.contacts();
   ContactRecord kept{};
   for (const ContactRecord& c : contacts) {
@@ -66,19 +70,17 @@ TEST(WorldEdits, TrimmingRemovesTheTopAndKeepsTheRest) {
   trim.cycles = 0;
   run_stage(world, trim);
   const auto p = world.particles();
-  for (int i = 0; i < world.particle_count(); ++i) {
-    EXPECT_LE(p.position[ParticleId::from_index(i)].y(),
-              0.4 + 0.05 * std::sin(2.0 * std::numbers::pi * p.position[ParticleId::from_index(i)].x() / 0.5) + 1e-15);
+  for (const ParticleId i : world.particle_ids()) {
+    EXPECT_LE(p.position[i].y(), 0.4 + 0.05 * std::sin(2.0 * std::numbers::pi * p.position[i].x() / 0.5) + 1e-15);
   }
   std::printf("trimmed %d of %d particles\n", before - world.particle_count(), before);
   EXPECT_LT(world.particle_count(), before);
-  // The followed contact survives with its history under the new ids.
+  // The followed contact survives with its history under the same ids.
   bool found = false;
   for (const ContactRecord& c : world.contacts()) {
-    if (c.second_particle == kInvalidId || (p.position[c.first] - kept_first).norm() > 1e-15 ||
-        (p.position[c.second_particle] - kept_second).norm() > 1e-15) {
-      continue;
-    }
+    if (c.first != kept.first || c.second_particle != kept.second_particle) continue;
+    EXPECT_EQ(p.position[c.first], kept_first);
+    EXPECT_EQ(p.position[c.second_particle], kept_second);
     EXPECT_EQ(c.normal_force, kept.normal_force);
     EXPECT_EQ(c.shear_force, kept.shear_force);
     EXPECT_EQ(c.formed_cycle, kept.formed_cycle);
@@ -127,6 +129,75 @@ TEST(WorldEdits, PlateIsPlacedOnTheSampleAndLoadedToAStress) {
     if (c.second_wall == plate) {
       EXPECT_GT(c.formed_cycle, world.cycle_count() - result.cycles_run);
     }
+  }
+}
+
+// Ids stay with their particles (LIGGGHTS' atom ids, PFC's ball ids): a
+// trim leaves the survivors' ids, and the removed ones' name nothing.
+TEST(WorldEdits, TrimKeepsEveryOtherParticlesId) {
+  World world = settled_box();
+  const int before = world.particle_count();
+  std::vector<Vec2> position;
+  for (const ParticleId id : world.particle_ids()) position.push_back(world.particles().position[id]);
+  const std::vector<ParticleId> gone{ParticleId{3}, ParticleId{10}, ParticleId{before - 1}};
+  world.remove_particles(gone);
+  EXPECT_EQ(world.particle_count(), before - 3);
+  EXPECT_EQ(world.particle_id_count(), before);  // ids are not reused
+  ASSERT_EQ(world.particle_ids().size(), static_cast<std::size_t>(before - 3));
+  int checked = 0;
+  for (const ParticleId id : world.particle_ids()) {
+    EXPECT_TRUE(id != gone[0] && id != gone[1] && id != gone[2]) << id;
+    // Nothing moved: the id still reads the particle it named before.
+    EXPECT_EQ(world.particles().position[id], position[id.index()]) << id;
+    ++checked;
+  }
+  EXPECT_EQ(checked, before - 3);
+  for (const ContactRecord& c : world.contacts()) {
+    EXPECT_TRUE(world.has_particle(c.first)) << c.first;
+    if (c.second_particle != kInvalidId) EXPECT_TRUE(world.has_particle(c.second_particle)) << c.second_particle;
+  }
+  EXPECT_FALSE(world.has_particle(ParticleId{10}));
+  EXPECT_TRUE(world.has_particle(ParticleId{11}));
+  EXPECT_EQ(world.missing_particle(ParticleId{10}), "particle 10 was removed");
+  EXPECT_EQ(world.missing_particle(ParticleId{before}), "no particle " + std::to_string(before));
+  EXPECT_EQ(world.missing_particle(ParticleId{11}), std::nullopt);
+  EXPECT_FALSE(world.contact_between(ParticleId{10}, ParticleId{11}).has_value());
+  // The hash of the state is unchanged by the ids' gaps: a copy through
+  // the snapshot continues bit for bit, with the same ids.
+  World restored(world.snapshot());
+  EXPECT_EQ(std::vector<ParticleId>(restored.particle_ids().begin(), restored.particle_ids().end()),
+            std::vector<ParticleId>(world.particle_ids().begin(), world.particle_ids().end()));
+  EXPECT_EQ(restored.missing_particle(ParticleId{before - 1}),
+            "particle " + std::to_string(before - 1) + " was removed");
+  EXPECT_EQ(restored.state_hash(), world.state_hash());
+  world.cycle(300);
+  restored.cycle(300);
+  std::printf("after the trim and 300 cycles: original %016llx, restored %016llx\n",
+              static_cast<unsigned long long>(world.state_hash()),
+              static_cast<unsigned long long>(restored.state_hash()));
+  EXPECT_EQ(restored.state_hash(), world.state_hash());
+}
+
+TEST(WorldEdits, AStaleIdIsAnErrorAndNothingIsRemoved) {
+  World world = settled_box();
+  const int before = world.particle_count();
+  world.remove_particles(std::vector<ParticleId>{ParticleId{7}});
+  const std::uint64_t hash = world.state_hash();
+  try {
+    world.remove_particles(std::vector<ParticleId>{ParticleId{8}, ParticleId{7}});
+    FAIL() << "a removed id was accepted";
+  } catch (const DefinitionError& e) {
+    EXPECT_STREQ(e.what(), "remove particles: particle 7 was removed");
+  }
+  // Not half-applied: particle 8, named before the stale id, is still there.
+  EXPECT_TRUE(world.has_particle(ParticleId{8}));
+  EXPECT_EQ(world.particle_count(), before - 1);
+  EXPECT_EQ(world.state_hash(), hash);
+  try {
+    world.remove_particles(std::vector<ParticleId>{ParticleId{before + 5}});
+    FAIL() << "an unknown id was accepted";
+  } catch (const DefinitionError& e) {
+    EXPECT_STREQ(e.what(), ("remove particles: no particle " + std::to_string(before + 5)).c_str());
   }
 }
 

@@ -70,6 +70,7 @@ enum Domain : std::uint32_t {
   kProgrammeCommand,
   kProgrammeCommandStop,
   kProgrammeCommandErrors,
+  kProgrammeStableIds,
   kLastDomain
 };
 static_assert(kLastDomain <= 118, "the shell tests use domains 118 and 119");

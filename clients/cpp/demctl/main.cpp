@@ -142,6 +142,9 @@ int main(int argc, char** argv) {
   auto* box_option =
       contacts->add_option("--box", box, "XMIN,YMIN,XMAX,YMAX: contact points inside")->delimiter(',')->expected(4);
   auto* force_option = contacts->add_option("--min-force", min_force, "N: contacts carrying more");
+  std::int32_t particle = -1;
+  auto* particle_option =
+      contacts->add_option("--particle", particle, "the contacts of this particle (its id, kept through trims)");
   contacts->add_option("--csv", csv, "write every contact to this file");
   contacts->add_option("--limit", limit, "rows to print")->capture_default_str();
   contacts->callback([&] {
@@ -152,6 +155,7 @@ int main(int argc, char** argv) {
       query.box_max = {box[2], box[3], 0.0};
     }
     if (force_option->count() > 0) query.min_normal_force = min_force;
+    if (particle_option->count() > 0) query.particle = particle;
     action = [&] { return demctl::contacts(global, query, csv, limit); };
   });
 

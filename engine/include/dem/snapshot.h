@@ -4,6 +4,7 @@
 // The conversion layer (io/) turns it into a Protocol Buffers message.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
@@ -288,6 +289,14 @@ struct WorldSnapshotT {
   // sorted at the next rebuild. Float sums follow this order, so an exact
   // restart needs it.
   std::vector<ParticleId> particle_order;
+  // The id of each particle of def.particles, ascending; empty: 0 .. n-1
+  // (a world nothing was removed from, and every snapshot written before
+  // ids were saved). Ids stay with their particles (world.h), so after a
+  // trim they have gaps; particle_id_count is one past the highest id
+  // ever given (0: one past the last of particle_ids), so a removed id
+  // stays "removed" rather than "unknown".
+  std::vector<ParticleId> particle_ids;
+  std::int32_t particle_id_count = 0;
   std::uint64_t sorted_cycle = 0;
   EnergyBudget energy;           // the accumulated terms since the world was first built
   double tangential_work = 0.0;  // J, done on the tangential springs since then
@@ -296,6 +305,26 @@ struct WorldSnapshotT {
   double time_step = 0.0;           // s, as in use (not re-estimated on restore)
   double critical_time_step = 0.0;  // s
 };
+
+// The id of the k-th particle of def.particles.
+template <int Dim>
+ParticleId snapshot_particle_id(const WorldSnapshotT<Dim>& s, std::size_t k) {
+  return s.particle_ids.empty() ? ParticleId::from_index(k) : s.particle_ids[k];
+}
+
+// For readers of the contacts, which name particles by id: each id's
+// entry in def.particles, -1 for removed ids. Assumes a consistent
+// snapshot (ids ascending, contacts naming them), as the engine and the
+// snapshot loader check it.
+template <int Dim>
+std::vector<std::int32_t> snapshot_entries_by_id(const WorldSnapshotT<Dim>& s) {
+  const std::size_t n = s.def.particles.size();
+  std::size_t count = s.particle_ids.empty() ? n : s.particle_ids.back().index() + 1;
+  if (s.particle_id_count > 0) count = std::max(count, static_cast<std::size_t>(s.particle_id_count));
+  std::vector<std::int32_t> entry(count, -1);
+  for (std::size_t k = 0; k < n; ++k) entry[snapshot_particle_id(s, k).index()] = static_cast<std::int32_t>(k);
+  return entry;
+}
 
 using ContactSnapshot = ContactSnapshotT<2>;
 using WallSnapshot = WallSnapshotT<2>;

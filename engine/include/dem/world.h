@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -31,6 +32,7 @@ class ById {
  public:
   ById(std::span<const T> values, std::span<const std::int32_t> slots, std::span<const ParticleId> ids)
       : values_(values), slots_(slots), ids_(ids) {}
+  // Only for ids the world holds (BasicWorld::has_particle).
   const T& operator[](ParticleId id) const { return values_[static_cast<std::size_t>(slots_[id.index()])]; }
   std::size_t size() const { return ids_.size(); }
   bool empty() const { return ids_.empty(); }
@@ -111,10 +113,22 @@ class BasicWorld {
   double time_step() const;           // s
   double critical_time_step() const;  // s, the estimate 2 sqrt(m/k)
 
-  int particle_count() const;
+  // Particle ids are given once, in definition order (ParticleId{k} is
+  // WorldDef::particles[k]), and stay with their particle for the whole
+  // run: removing particles leaves the others' ids as they were, and a
+  // removed particle's id names nothing from then on.
+  int particle_count() const;  // particles in the world now
   int wall_count() const;
-  // The particles' ids in ascending order (0 .. particle_count() - 1).
+  // The ids of the particles in the world, ascending; after a removal
+  // they have gaps.
   std::span<const ParticleId> particle_ids() const;
+  // One past the highest id ever given (WorldDef::particles' size).
+  int particle_id_count() const;
+  bool has_particle(ParticleId id) const;
+  // Why an id names no particle ("no particle 12", "particle 12 was
+  // removed"), or nothing if it names one: the message a command that
+  // names a stale id fails with.
+  std::optional<std::string> missing_particle(ParticleId id) const;
   ParticleViewT<Dim> particles() const;
 
   // Walls, by dense id (definition order; ids out of range are a
@@ -152,9 +166,10 @@ class BasicWorld {
   // The box as the last force pass left it; requires a box control.
   BoxMeasureT<Dim> box_measure() const;
 
-  // Removes particles (trimming a sample's surface). The others keep their
-  // order and are renumbered densely; contacts between them keep their
-  // history. The energy they held is booked as removed.
+  // Removes particles (trimming a sample's surface). The others keep
+  // their ids; contacts between them keep their history. The energy they
+  // held is booked as removed. Throws DefinitionError naming the first id
+  // that names no particle (missing_particle), before removing any.
   void remove_particles(std::span<const ParticleId> ids);
 
   std::vector<Measure> wall_measures() const;
@@ -163,7 +178,8 @@ class BasicWorld {
   // The touching contacts of one wall, as contacts() reports them: a pass
   // over that wall's rows alone.
   std::vector<Record> wall_contacts(WallId wall) const;
-  // The touching contact between two particles, if any.
+  // The touching contact between two particles, if any (none when either
+  // id names no particle: see missing_particle).
   std::optional<Record> contact_between(ParticleId a, ParticleId b) const;
 
   // 2D: the out-of-plane depth that turns forces per unit depth into

@@ -1,6 +1,9 @@
 // What the measures of a region read, as plain data: the particles (round:
 // discs or spheres) and every touching contact as the last force pass left
-// it. A test builds one by hand; sample() copies it from a world.
+// it. A test builds one by hand; sample() copies it from a world. The
+// arrays are by position in the sample, and the contacts name particles by
+// that position: the world's ids keep gaps after a trim (world.h), `ids`
+// holds them.
 #pragma once
 
 #include <vector>
@@ -13,7 +16,8 @@ namespace dem::analysis {
 
 template <int Dim>
 struct AssemblySampleT {
-  std::vector<Vec<Dim>> position;  // m, by particle id
+  std::vector<Vec<Dim>> position;  // m
+  std::vector<ParticleId> ids;     // the world's id of each particle (sample() only)
   std::vector<double> radius;      // m
   // The angle each particle has turned through since the world was built,
   // rad: the accumulated angle (2D, counter-clockwise positive) or the

@@ -47,9 +47,12 @@ struct ContactFilter {
   std::optional<protocol::Vector3> box_min;  // with box_max: the contact point inside the box
   std::optional<protocol::Vector3> box_max;
   std::optional<double> min_normal_force;  // N: contacts carrying more
+  std::optional<ParticleId> particle;      // the contacts of this particle
 };
 
 template <int Dim>
+// Throws CommandError (not found) when the filter names a particle the
+// world does not hold: a stale id is an error, not another particle.
 std::vector<protocol::ContactEntry> query_contacts(const BasicWorld<Dim>& world, const ContactFilter& filter);
 
 // A servo's gain and speed cap when a command leaves them to the server.
