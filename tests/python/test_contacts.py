@@ -91,6 +91,14 @@ def test_filters_and_an_empty_result(serve):
     assert 0 < left_half.size < every.size and np.all(left_half["point"][:, 0] <= 150)
     with pytest.raises(ValueError, match="2 or 3 components"):
         client.contacts(box=((0,), (1, 1)))
+    # A particle's contacts by its id: those of the query that name it, and
+    # an id the case never had is an error naming it, not another particle.
+    middle = client.contacts(particle=4)
+    naming = every[(every["first"] == 4) | (every["second_particle"] == 4)]
+    assert middle.size == naming.size > 0
+    np.testing.assert_array_equal(middle, naming)
+    with pytest.raises(DemError, match="no particle 99"):
+        client.contacts(particle=99)
 
     # The state in a snapshot: the nine discs, their radii and the walls.
     state = State.from_bytes(client.snapshot())

@@ -192,14 +192,17 @@ class Client:
         (dem.ContactStats), ``state`` (dem.Status) and ``state_hash``."""
         return self._native.get_state(timeout)
 
-    def contacts(self, *, wall=None, box=None, min_force=None, chunk_size=0, timeout=None):
+    def contacts(self, *, wall=None, box=None, min_force=None, particle=None, chunk_size=0, timeout=None):
         """The contacts as a numpy structured array (dem.CONTACT_DTYPE), one
         row per contact: those on ``wall`` (a name), with their point inside
         ``box`` ((min corner, max corner)), with a normal force above
-        ``min_force`` - any that are given."""
+        ``min_force``, of ``particle`` (its id, which a trim does not
+        change) - any that are given. A removed or unknown particle raises
+        dem.NotFound naming it."""
         box_min, box_max = (None, None) if box is None else (_vector(box[0], "a box corner"),
                                                              _vector(box[1], "a box corner"))
-        reply = self._native.query_contacts(wall, box_min, box_max, _optional(min_force), int(chunk_size), timeout)
+        reply = self._native.query_contacts(wall, box_min, box_max, _optional(min_force),
+                                            None if particle is None else int(particle), int(chunk_size), timeout)
         return reply.contacts
 
     def snapshot(self, *, timeout=None):

@@ -307,8 +307,8 @@ void bind_client(py::module_& m) {
       .def(
           "query_contacts",
           [](ClientHandle& h, std::optional<std::string> wall, std::optional<Vector> box_min,
-             std::optional<Vector> box_max, std::optional<double> min_normal_force, std::uint32_t chunk_size,
-             Seconds t) {
+             std::optional<Vector> box_max, std::optional<double> min_normal_force,
+             std::optional<std::int32_t> particle, std::uint32_t chunk_size, Seconds t) {
             if (box_min.has_value() != box_max.has_value()) {
               throw py::value_error("a contact box needs both corners (box_min and box_max)");
             }
@@ -323,11 +323,12 @@ void bind_client(py::module_& m) {
               c.query.box_max = vector3(*box_max);
             }
             c.query.min_normal_force = min_normal_force;
+            c.query.particle = particle;
             c.query.chunk_size = chunk_size;
             return call(h, std::move(c), command_wait(h, t, py::none(), 0.1));
           },
-          py::arg("wall"), py::arg("box_min"), py::arg("box_max"), py::arg("min_normal_force"), py::arg("chunk_size"),
-          timeout)
+          py::arg("wall"), py::arg("box_min"), py::arg("box_max"), py::arg("min_normal_force"), py::arg("particle"),
+          py::arg("chunk_size"), timeout)
       .def(
           "save_snapshot",
           [](ClientHandle& h, std::string path, bool transfer, Seconds t) {
