@@ -206,21 +206,26 @@ WallId BasicWorld<Dim>::find_wall(std::string_view name) const {
 }
 
 template <int Dim>
+std::optional<std::string> BasicWorld<Dim>::missing_wall(WallId id) const {
+  return dem::missing_wall(state_->walls.def, id);
+}
+
+template <int Dim>
 const WallDefT<Dim>& BasicWorld<Dim>::wall(WallId id) const {
-  assert(id.valid() && id.value() < wall_count());
+  assert(!missing_wall(id));
   return state_->walls.def[id.index()];
 }
 
 template <int Dim>
 void BasicWorld<Dim>::set_wall_motion(WallId id, const Motion& motion) {
-  assert(id.valid() && id.value() < wall_count());
+  assert(!missing_wall(id));
   check_wall_motion(motion, id);
   state_->walls.def[id.index()].motion = motion;
 }
 
 template <int Dim>
 double BasicWorld<Dim>::wall_area(WallId id) const {
-  assert(id.valid() && id.value() < wall_count());
+  assert(!missing_wall(id));
   return wall_extent(state_->walls.def[id.index()], state_->periodic) * (Dim == 2 ? state_->depth : 1.0);
 }
 
