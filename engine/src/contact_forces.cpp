@@ -162,10 +162,12 @@ const ContactParams* shared_params(const WorldState<Dim>& s) {
   return &s.params(0, 0);
 }
 
+// What the rows of a pass read: the state's bodies and parameters, the
+// step's dt and cycle.
 template <int Dim>
-PassInputs<Dim> inputs(const WorldState<Dim>& s, const std::vector<EllipsoidFrame>& frames) {
-  return {s.particles, s.walls, s.periodic,     s.params,     shared_params(s),
-          s.time_step, s.cycle, near_margin(s), frames.data()};
+PassInputs<Dim> inputs(const WorldState<Dim>& s, const StepContext& step, const std::vector<EllipsoidFrame>& frames) {
+  return {s.particles, s.walls,    s.periodic,     s.params,     shared_params(s),
+          step.dt,     step.cycle, near_margin(s), frames.data()};
 }
 
 // Each ellipsoid's matrices, once per pass rather than once per contact
@@ -187,14 +189,14 @@ void batched_pair_rows(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows
 // Runs the chosen pass over every block, then adds the shares set aside,
 // then sums the walls' shares in block order.
 template <Pass kPass, int Dim>
-ContactEnergy run_pass(WorldState<Dim>& s) {
+ContactEnergy run_pass(WorldState<Dim>& s, const StepContext& step) {
   const bool ellipsoids = s.shape == ShapeKind::kEllipsoid;
   if (ellipsoids) s.ellipsoid_frames.resize(s.particles.size());
-  const PassInputs<Dim> in = inputs(s, s.ellipsoid_frames);
+  const PassInputs<Dim> in = inputs(s, step, s.ellipsoid_frames);
   BlockFn<Dim> pair_fn = nullptr;
   bool hot = false;  // the batched pass reads the particles' side-by-side copies (contact_batch.h)
   BlockFn<Dim> wall_fn = nullptr;
-  const bool energy = s.energy_budget && kPass == Pass::kAdvance;
+  const bool energy = step.energy_budget && kPass == Pass::kAdvance;
   with_energy(energy, [&]<bool kEnergy>() {
     with_shape<Dim>(s.shape, [&]<typename Shape>() {
       with_law(s.pair_law, [&]<typename Law>() {
@@ -220,7 +222,7 @@ ContactEnergy run_pass(WorldState<Dim>& s) {
   const int walls = s.walls.size();
   std::vector<WallSum<Dim>> wall_sums(static_cast<std::size_t>(count) * walls);
   std::vector<ContactEnergy> energies(static_cast<std::size_t>(count));
-  const int threads = count > 1 ? s.threads : 1;
+  const int threads = count > 1 ? step.threads : 1;
   const bool shaped = s.shape != ShapeKind::kRound;
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
@@ -323,7 +325,7 @@ void visit_rows(const WorldState<Dim>& s, std::optional<std::size_t> only_pair_r
     frames.resize(s.particles.size());
     frame_ellipsoids(s.particles, frames, 0, static_cast<std::int64_t>(frames.size()));
   }
-  const PassInputs<Dim> in = inputs(s, frames);
+  const PassInputs<Dim> in = inputs(s, current_context(s), frames);
   ContactEnergy unused;
   const Particles<Dim>& p = s.particles;
   auto report = [&](bool wall, std::size_t r, const RowResult<Dim>& c, const ContactRows<Dim>& rows) {
@@ -370,13 +372,13 @@ void visit_rows(const WorldState<Dim>& s, std::optional<std::size_t> only_pair_r
 }  // namespace
 
 template <int Dim>
-ContactEnergy advance_contacts(WorldState<Dim>& state) {
-  return run_pass<Pass::kAdvance>(state);
+ContactEnergy advance_contacts(WorldState<Dim>& state, const StepContext& step) {
+  return run_pass<Pass::kAdvance>(state, step);
 }
 
 template <int Dim>
 void evaluate_contacts(WorldState<Dim>& state) {
-  run_pass<Pass::kEvaluate>(state);
+  run_pass<Pass::kEvaluate>(state, current_context(state));
 }
 
 template <int Dim>
@@ -426,8 +428,8 @@ std::optional<ContactRecordT<Dim>> report_pair_contact(const WorldState<Dim>& st
   return std::nullopt;
 }
 
-template ContactEnergy advance_contacts(WorldState<2>&);
-template ContactEnergy advance_contacts(WorldState<3>&);
+template ContactEnergy advance_contacts(WorldState<2>&, const StepContext&);
+template ContactEnergy advance_contacts(WorldState<3>&, const StepContext&);
 template void evaluate_contacts(WorldState<2>&);
 template void evaluate_contacts(WorldState<3>&);
 template void visit_touching_rows(const WorldState<2>&, const std::function<void(const RowReport<2>&)>&);
