@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "dem/error.h"
 #include "world_validation.h"
 
 namespace dem {
@@ -116,7 +117,7 @@ void check_box_control(const BoxControlT<Dim>& box, const std::vector<WallDefT<D
     const BoxAxisDef& a = box.axes[static_cast<std::size_t>(i)];
     const std::string axis = std::string("box control: axes[") + std::to_string(i) + "] (" + kAxisNames[i] + ")";
     for (const auto& [field, id, sign] : {std::tuple{".lower", a.lower, 1.0}, std::tuple{".upper", a.upper, -1.0}}) {
-      check(id.valid() && id.index() < walls.size(), axis + field + ": no wall " + to_string(id));
+      if (const auto missing = missing_wall(walls, id)) throw DefinitionError(axis + field + ": " + *missing);
       const WallDefT<Dim>& wall = walls[id.index()];
       const std::string named = axis + field + ": wall " + to_string(id) + " (\"" + wall.name + "\")";
       check(!used[id.index()], named + " already bounds the box");

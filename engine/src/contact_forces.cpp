@@ -23,54 +23,69 @@ struct WallSum {
   Eccentricity<Dim> normal_force_arm = zero_eccentricity<Dim>();
 };
 
-// The pair rows of block b: shares added to the block's own particles, or
-// set aside for the other blocks' (contact_blocks.h).
-template <Pass kPass, bool kEnergy, typename Law, typename Shape, int Dim>
-void pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows, ContactBlocks<Dim>& blocks, int b,
-                ContactEnergy& energy) {
-  std::int32_t cross = blocks.cross_begin[b];
-  const std::int32_t cross_end = blocks.cross_begin[b + 1];
-  std::int32_t next_cross = cross < cross_end ? blocks.cross_row[cross] : -1;
-  for (std::int32_t r = blocks.pair_begin[b]; r < blocks.pair_begin[b + 1]; ++r) {
-    const RowResult<Dim> c = pair_row<kPass, kEnergy, Law, Shape, Dim>(in, rows, r, energy);
-    std::int32_t aside = -1;
-    if (r == next_cross) {
-      aside = blocks.cross_slot[cross++];
-      next_cross = cross < cross_end ? blocks.cross_row[cross] : -1;
+// Where the pair rows of block b put the second particle's share: into its
+// sums when the block holds it, else into the slot set aside for it
+// (contact_blocks.h), which the pass adds once every block is done.
+template <int Dim>
+class PairShares {
+ public:
+  using Body = ParticleBody<Dim>;
+  PairShares(const PassInputs<Dim>&, ContactBlocks<Dim>& blocks, int b, WallSum<Dim>*)
+      : begin(blocks.pair_begin[b]),
+        end(blocks.pair_begin[b + 1]),
+        blocks_(blocks),
+        cross_(blocks.cross_begin[b]),
+        cross_end_(blocks.cross_begin[b + 1]),
+        next_cross_(cross_ < cross_end_ ? blocks.cross_row[cross_] : -1) {}
+
+  const std::int32_t begin, end;  // the block's pair rows
+
+  // Row r is next: is it one that crosses to another block?
+  void next(std::int32_t r) {
+    aside_ = -1;
+    if (r == next_cross_) {
+      aside_ = blocks_.cross_slot[cross_++];
+      next_cross_ = cross_ < cross_end_ ? blocks_.cross_row[cross_] : -1;
     }
-    if (!c.touching) {
-      if (aside >= 0) {
-        blocks.deferred_force[aside] = Vec<Dim>::Zero();
-        blocks.deferred_moment[aside] = Space<Dim>::zero_spin();
-      }
-      continue;
-    }
-    const Slot x = rows.first[r], y = rows.second[r];
-    p.force[x] += c.force;
-    p.moment[x] += c.moment_first;
-    if (aside >= 0) {
-      blocks.deferred_force[aside] = -c.force;
-      blocks.deferred_moment[aside] = c.moment_second;
+  }
+  // The row does not touch: its set-aside share, if it has one, is nothing.
+  void apart() {
+    if (aside_ < 0) return;
+    blocks_.deferred_force[aside_] = Vec<Dim>::Zero();
+    blocks_.deferred_moment[aside_] = Space<Dim>::zero_spin();
+  }
+  void add(Particles<Dim>& p, Slot y, const RowResult<Dim>& c) {
+    if (aside_ >= 0) {
+      blocks_.deferred_force[aside_] = -c.force;
+      blocks_.deferred_moment[aside_] = c.moment_second;
     } else {
       p.force[y] -= c.force;
       p.moment[y] += c.moment_second;
     }
   }
-}
 
-// The wall rows of block b, with each wall's share of them.
-template <Pass kPass, bool kEnergy, typename Law, typename Shape, int Dim>
-void wall_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows, const ContactBlocks<Dim>& blocks,
-                int b, ContactEnergy& energy, WallSum<Dim>* walls) {
-  for (std::int32_t r = blocks.wall_begin[b]; r < blocks.wall_begin[b + 1]; ++r) {
-    const RowResult<Dim> c = wall_row<kPass, kEnergy, Law, Shape, Dim>(in, rows, r, energy);
-    if (!c.touching) continue;
-    const Slot x = rows.first[r];
-    p.force[x] += c.force;
-    p.moment[x] += c.moment_first;
-    const std::int32_t w = rows.second[r];
-    const WallDefT<Dim>& wall = in.walls.def[w];
-    WallSum<Dim>& sum = walls[w];
+ private:
+  ContactBlocks<Dim>& blocks_;
+  std::int32_t cross_, cross_end_, next_cross_;
+  std::int32_t aside_ = -1;
+};
+
+// Where the wall rows of block b put the wall's share: the block's own sum
+// for each wall, added up over the blocks in block order after the pass.
+template <int Dim>
+class WallShares {
+ public:
+  using Body = WallBody<Dim>;
+  WallShares(const PassInputs<Dim>& in, ContactBlocks<Dim>& blocks, int b, WallSum<Dim>* sums)
+      : begin(blocks.wall_begin[b]), end(blocks.wall_begin[b + 1]), walls_(in.walls), sums_(sums) {}
+
+  const std::int32_t begin, end;  // the block's wall rows
+
+  void next(std::int32_t) {}
+  void apart() {}
+  void add(Particles<Dim>&, std::int32_t w, const RowResult<Dim>& c) {
+    const WallDefT<Dim>& wall = walls_.def[w];
+    WallSum<Dim>& sum = sums_[w];
     const Vec<Dim> on_wall = -c.force;
     // Compressive normal force: the particle pushes the wall away from its particle side.
     const double normal = -on_wall.dot(wall_normal(wall));
@@ -79,6 +94,34 @@ void wall_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& 
     sum.normal_force += normal;
     sum.normal_force_arm += normal * closest_point(wall, c.geometry.point).coordinates;
     ++sum.contacts;
+  }
+
+ private:
+  const Walls<Dim>& walls_;
+  WallSum<Dim>* sums_;
+};
+
+// The rows of block b, pairs or walls (Shares): each row's forces, the
+// first particle's share into its sums, the second body's where Shares
+// puts it. Flattened: with the row body written once over its policies,
+// GCC stopped inlining the geometry, the history's load and the result's
+// constructor into the wall rows (callgrind, 10k plate benchmark: +80
+// instructions a wall row); everything a row calls in this file is inlined.
+template <Pass kPass, bool kEnergy, typename Law, typename Shape, typename Shares, int Dim>
+[[gnu::flatten]] void row_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows,
+                                ContactBlocks<Dim>& blocks, int b, ContactEnergy& energy, WallSum<Dim>* wall_sums) {
+  Shares shares(in, blocks, b, wall_sums);
+  for (std::int32_t r = shares.begin; r < shares.end; ++r) {
+    const RowResult<Dim> c = contact_row<kPass, kEnergy, Law, Shape, typename Shares::Body>(in, rows, r, energy);
+    shares.next(r);
+    if (!c.touching) {
+      shares.apart();
+      continue;
+    }
+    const Slot x = rows.first[r];
+    p.force[x] += c.force;
+    p.moment[x] += c.moment_first;
+    shares.add(p, rows.second[r], c);
   }
 }
 
@@ -108,12 +151,11 @@ void with_energy(bool energy, Run&& run) {
   }
 }
 
+// One block of one table (row_block, or the batched pass): its rows'
+// energy flows, and for wall rows each wall's sum of the block.
 template <int Dim>
-using PairBlockFn = void (*)(const PassInputs<Dim>&, Particles<Dim>&, ContactRows<Dim>&, ContactBlocks<Dim>&, int,
-                             ContactEnergy&);
-template <int Dim>
-using WallBlockFn = void (*)(const PassInputs<Dim>&, Particles<Dim>&, ContactRows<Dim>&, const ContactBlocks<Dim>&, int,
-                             ContactEnergy&, WallSum<Dim>*);
+using BlockFn = void (*)(const PassInputs<Dim>&, Particles<Dim>&, ContactRows<Dim>&, ContactBlocks<Dim>&, int,
+                         ContactEnergy&, WallSum<Dim>*);
 
 // The one parameter set every pair of bodies uses, if they all share one
 // (a single material): the rows then skip the table lookup.
@@ -123,10 +165,12 @@ const ContactParams* shared_params(const WorldState<Dim>& s) {
   return &s.params(0, 0);
 }
 
+// What the rows of a pass read: the state's bodies and parameters, the
+// step's dt and cycle.
 template <int Dim>
-PassInputs<Dim> inputs(const WorldState<Dim>& s, const std::vector<EllipsoidFrame>& frames) {
-  return {s.particles, s.walls, s.periodic,     s.params,     shared_params(s),
-          s.time_step, s.cycle, near_margin(s), frames.data()};
+PassInputs<Dim> inputs(const WorldState<Dim>& s, const StepContext& step, const std::vector<EllipsoidFrame>& frames) {
+  return {s.particles, s.walls,    s.periodic,     s.params,     shared_params(s),
+          step.dt,     step.cycle, near_margin(s), frames.data()};
 }
 
 // Each ellipsoid's matrices, once per pass rather than once per contact
@@ -141,25 +185,25 @@ void frame_ellipsoids(const Particles<Dim>& p, std::vector<EllipsoidFrame>& fram
 
 template <typename Law, int Dim, bool kPrefetch>
 void batched_pair_rows(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows, ContactBlocks<Dim>& blocks,
-                       int b, ContactEnergy&) {
+                       int b, ContactEnergy&, WallSum<Dim>*) {
   batched_pair_block<Law, Dim, kPrefetch>(in, p, rows, blocks, b);
 }
 
 // Runs the chosen pass over every block, then adds the shares set aside,
 // then sums the walls' shares in block order.
 template <Pass kPass, int Dim>
-ContactEnergy run_pass(WorldState<Dim>& s) {
+ContactEnergy run_pass(WorldState<Dim>& s, const StepContext& step) {
   const bool ellipsoids = s.shape == ShapeKind::kEllipsoid;
   if (ellipsoids) s.ellipsoid_frames.resize(s.particles.size());
-  const PassInputs<Dim> in = inputs(s, s.ellipsoid_frames);
-  PairBlockFn<Dim> pair_fn = nullptr;
+  const PassInputs<Dim> in = inputs(s, step, s.ellipsoid_frames);
+  BlockFn<Dim> pair_fn = nullptr;
   bool hot = false;  // the batched pass reads the particles' side-by-side copies (contact_batch.h)
-  WallBlockFn<Dim> wall_fn = nullptr;
-  const bool energy = s.energy_budget && kPass == Pass::kAdvance;
+  BlockFn<Dim> wall_fn = nullptr;
+  const bool energy = step.energy_budget && kPass == Pass::kAdvance;
   with_energy(energy, [&]<bool kEnergy>() {
     with_shape<Dim>(s.shape, [&]<typename Shape>() {
       with_law(s.pair_law, [&]<typename Law>() {
-        pair_fn = &pair_block<kPass, kEnergy, Law, Shape, Dim>;
+        pair_fn = &row_block<kPass, kEnergy, Law, Shape, PairShares<Dim>, Dim>;
         if constexpr (kPass == Pass::kAdvance && !kEnergy && kBatchableShape<Shape> && Law::kBatchable) {
           if (in.shared_params) {
             hot = static_cast<std::int64_t>(s.particles.size()) > kPrefetchParticles;
@@ -167,7 +211,8 @@ ContactEnergy run_pass(WorldState<Dim>& s) {
           }
         }
       });
-      with_law(s.wall_law, [&]<typename Law>() { wall_fn = &wall_block<kPass, kEnergy, Law, Shape, Dim>; });
+      with_law(s.wall_law,
+               [&]<typename Law>() { wall_fn = &row_block<kPass, kEnergy, Law, Shape, WallShares<Dim>, Dim>; });
     });
   });
   ContactBlocks<Dim>& blocks = s.blocks;
@@ -180,7 +225,7 @@ ContactEnergy run_pass(WorldState<Dim>& s) {
   const int walls = s.walls.size();
   std::vector<WallSum<Dim>> wall_sums(static_cast<std::size_t>(count) * walls);
   std::vector<ContactEnergy> energies(static_cast<std::size_t>(count));
-  const int threads = count > 1 ? s.threads : 1;
+  const int threads = count > 1 ? step.threads : 1;
   const bool shaped = s.shape != ShapeKind::kRound;
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
@@ -200,7 +245,7 @@ ContactEnergy run_pass(WorldState<Dim>& s) {
         p.force[i] = Vec<Dim>::Zero();
         p.moment[i] = Space<Dim>::zero_spin();
       }
-      pair_fn(in, p, s.contacts.pairs, blocks, b, energies[b]);
+      pair_fn(in, p, s.contacts.pairs, blocks, b, energies[b], nullptr);
       wall_fn(in, p, s.contacts.walls, blocks, b, energies[b], wall_sums.data() + static_cast<std::size_t>(b) * walls);
     };
     // Round particles: each thread keeps the same run of blocks every step,
@@ -283,7 +328,7 @@ void visit_rows(const WorldState<Dim>& s, std::optional<std::size_t> only_pair_r
     frames.resize(s.particles.size());
     frame_ellipsoids(s.particles, frames, 0, static_cast<std::int64_t>(frames.size()));
   }
-  const PassInputs<Dim> in = inputs(s, frames);
+  const PassInputs<Dim> in = inputs(s, current_context(s), frames);
   ContactEnergy unused;
   const Particles<Dim>& p = s.particles;
   auto report = [&](bool wall, std::size_t r, const RowResult<Dim>& c, const ContactRows<Dim>& rows) {
@@ -302,25 +347,27 @@ void visit_rows(const WorldState<Dim>& s, std::optional<std::size_t> only_pair_r
     visit(out);
   };
   with_shape<Dim>(s.shape, [&]<typename Shape>() {
-    if (!only_wall)
-      with_law(s.pair_law, [&]<typename Law>() {
-        const ContactRows<Dim>& rows = s.contacts.pairs;
-        const std::size_t begin = only_pair_row.value_or(0);
-        const std::size_t end = only_pair_row ? begin + 1 : rows.size();
+    // The touching rows of one table in [begin, end) that `wanted` keeps.
+    const auto visit_table = [&]<typename Body>(ContactLaw law, const ContactRows<Dim>& rows, std::size_t begin,
+                                                std::size_t end, auto wanted) {
+      with_law(law, [&]<typename Law>() {
         for (std::size_t r = begin; r < end; ++r) {
-          if (!rows.touching(r)) continue;
-          const RowResult<Dim> c = pair_row<Pass::kEvaluate, false, Law, Shape, Dim>(in, rows, r, unused);
-          if (c.touching) report(false, r, c, rows);
+          if (!rows.touching(r) || !wanted(r)) continue;
+          const RowResult<Dim> c = contact_row<Pass::kEvaluate, false, Law, Shape, Body>(in, rows, r, unused);
+          if (c.touching) report(Body::kWall, r, c, rows);
         }
       });
+    };
+    if (!only_wall) {
+      const std::size_t begin = only_pair_row.value_or(0);
+      const std::size_t end = only_pair_row ? begin + 1 : s.contacts.pairs.size();
+      visit_table.template operator()<ParticleBody<Dim>>(s.pair_law, s.contacts.pairs, begin, end,
+                                                         [](std::size_t) { return true; });
+    }
     if (only_pair_row) return;
-    with_law(s.wall_law, [&]<typename Law>() {
-      const ContactRows<Dim>& rows = s.contacts.walls;
-      for (std::size_t r = 0; r < rows.size(); ++r) {
-        if (!rows.touching(r) || (only_wall && rows.second[r] != only_wall->value())) continue;
-        const RowResult<Dim> c = wall_row<Pass::kEvaluate, false, Law, Shape, Dim>(in, rows, r, unused);
-        if (c.touching) report(true, r, c, rows);
-      }
+    const ContactRows<Dim>& walls = s.contacts.walls;
+    visit_table.template operator()<WallBody<Dim>>(s.wall_law, walls, 0, walls.size(), [&](std::size_t r) {
+      return !only_wall || walls.second[r] == only_wall->value();
     });
   });
 }
@@ -328,13 +375,13 @@ void visit_rows(const WorldState<Dim>& s, std::optional<std::size_t> only_pair_r
 }  // namespace
 
 template <int Dim>
-ContactEnergy advance_contacts(WorldState<Dim>& state) {
-  return run_pass<Pass::kAdvance>(state);
+ContactEnergy advance_contacts(WorldState<Dim>& state, const StepContext& step) {
+  return run_pass<Pass::kAdvance>(state, step);
 }
 
 template <int Dim>
 void evaluate_contacts(WorldState<Dim>& state) {
-  run_pass<Pass::kEvaluate>(state);
+  run_pass<Pass::kEvaluate>(state, current_context(state));
 }
 
 template <int Dim>
@@ -384,8 +431,8 @@ std::optional<ContactRecordT<Dim>> report_pair_contact(const WorldState<Dim>& st
   return std::nullopt;
 }
 
-template ContactEnergy advance_contacts(WorldState<2>&);
-template ContactEnergy advance_contacts(WorldState<3>&);
+template ContactEnergy advance_contacts(WorldState<2>&, const StepContext&);
+template ContactEnergy advance_contacts(WorldState<3>&, const StepContext&);
 template void evaluate_contacts(WorldState<2>&);
 template void evaluate_contacts(WorldState<3>&);
 template void visit_touching_rows(const WorldState<2>&, const std::function<void(const RowReport<2>&)>&);

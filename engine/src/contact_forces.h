@@ -13,6 +13,7 @@
 
 #include "dem/measures.h"
 #include "dem/snapshot.h"
+#include "step_context.h"
 
 namespace dem {
 
@@ -36,10 +37,9 @@ struct ContactEnergy {
 
 // The force pass: advances every row's history over the step that brought
 // the particles where they are, and sets the force and moment sums of every
-// particle and wall. The energy flows are zero unless the world keeps an
-// energy budget.
+// particle and wall. The energy flows are zero unless the step books them.
 template <int Dim>
-ContactEnergy advance_contacts(WorldState<Dim>& state);
+ContactEnergy advance_contacts(WorldState<Dim>& state, const StepContext& step);
 
 // The same sums from the histories as they stand, without advancing them:
 // after an edit (particles removed, a wall placed) changed which contacts

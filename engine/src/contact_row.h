@@ -1,9 +1,10 @@
 // One row of the force pass: the contact's geometry (contact_geometry.h),
 // the relative velocity at the contact point (Cundall & Strack eqs. 11-13),
 // the contact law's step and forces (contact_history.h), and the shares of
-// force and moment the two bodies receive. The same functions advance a row
-// (the force pass) and read it (contact reports), so a report shows what
-// the pass applied.
+// force and moment the two bodies receive. One body serves particle-particle
+// and particle-wall rows (the second body is a policy), and the same body
+// advances a row (the force pass) and reads it (contact reports), so a
+// report shows what the pass applied.
 #pragma once
 
 #include <type_traits>
@@ -99,20 +100,98 @@ void resolve(RowResult<Dim>& out, const ContactForces<Dim>& f, const ContactGeom
 template <Pass kPass, int Dim>
 using RowsOf = std::conditional_t<kPass == Pass::kAdvance, ContactRows<Dim>&, const ContactRows<Dim>&>;
 
-// One particle-particle row (Cundall & Strack eqs. 8-19).
-template <Pass kPass, bool kEnergy, typename Law, typename Shape, int Dim>
-RowResult<Dim> pair_row(const PassInputs<Dim>& in, RowsOf<kPass, Dim> rows, std::size_t r, ContactEnergy& energy) {
+// The second body of a row: what a particle-particle row and a
+// particle-wall row differ in. Where the bodies touch, the second's
+// velocity at the contact point, its part of the effective mass and the
+// parameters of the pair, and what it adds to the row's result. Each is a
+// policy chosen with the table (pairs or walls), so contact_row below is
+// written once and compiled for each without a branch or a call.
+
+// Another particle (Cundall & Strack eqs. 8-19).
+template <int Dim>
+struct ParticleBody {
+  static constexpr bool kWall = false;
+  Slot y;
+
+  ParticleBody(const PassInputs<Dim>&, std::int32_t second) : y(second) {}
+
+  // A shaped pair starts its search from where the last one ended
+  // (contact_geometry.h), and the force pass keeps where this one ends.
+  template <Pass kPass, bool kApartGeometry, typename Shape>
+  ContactGeometry<Dim> geometry(const PassInputs<Dim>& in, RowsOf<kPass, Dim> rows, std::size_t r, Slot x) const {
+    ContactSearch search;
+    if constexpr (!Shape::round) search = rows.search[r];
+    const ContactGeometry<Dim> g = Shape::template pair<kApartGeometry>(in, x, y, search);
+    if constexpr (kPass == Pass::kAdvance && !Shape::round) rows.search[r] = search;
+    return g;
+  }
+  template <typename Shape>
+  Vec<Dim> relative_velocity(const PassInputs<Dim>& in, Slot x, const ContactGeometry<Dim>& g) const {
+    const Particles<Dim>& p = in.particles;
+    return contact_velocity<Shape>(p, x, p.velocity[y], p.angular_velocity[y], p.radius[y], g);
+  }
+  double effective_mass(const Particles<Dim>& p, Slot x) const {
+    const double mx = p.mass[x], my = p.mass[y];
+    return mx * my / (mx + my);  // Randall 4.5-4.6
+  }
+  const ContactParams& params(const PassInputs<Dim>& in, Slot x) const {
+    return in.pair_params(in.particles.material[x], in.particles.material[y]);
+  }
+  double radius(const Particles<Dim>& p) const { return p.radius[y]; }
+  template <Pass kPass, bool kEnergy>
+  void finish(RowResult<Dim>&, double, ContactEnergy&) const {}
+};
+
+// A wall: infinitely heavy, moving as commanded; it takes no moment.
+template <int Dim>
+struct WallBody {
+  static constexpr bool kWall = true;
+  std::int32_t w;
+  const WallDefT<Dim>& wall;
+  Vec<Dim> velocity = Vec<Dim>::Zero();  // the wall's, at the contact point
+
+  WallBody(const PassInputs<Dim>& in, std::int32_t second) : w(second), wall(in.walls.def[second]) {}
+
+  template <Pass kPass, bool kApartGeometry, typename Shape>
+  ContactGeometry<Dim> geometry(const PassInputs<Dim>& in, RowsOf<kPass, Dim>, std::size_t, Slot x) const {
+    return Shape::wall(in, wall, x);
+  }
+  template <typename Shape>
+  Vec<Dim> relative_velocity(const PassInputs<Dim>& in, Slot x, const ContactGeometry<Dim>& g) {
+    velocity = wall_point_velocity(wall, in.walls.last_velocity[w], in.walls.last_angular_velocity[w], g.point);
+    return contact_velocity<Shape>(in.particles, x, velocity, Space<Dim>::zero_spin(), 0.0, g);
+  }
+  double effective_mass(const Particles<Dim>& p, Slot x) const { return p.mass[x]; }
+  const ContactParams& params(const PassInputs<Dim>& in, Slot x) const {
+    return in.params(in.particles.material[x], wall.material.value());
+  }
+  double radius(const Particles<Dim>&) const { return 0.0; }
+  template <Pass kPass, bool kEnergy>
+  void finish(RowResult<Dim>& out, double dt, ContactEnergy& energy) const {
+    out.wall_velocity = velocity;
+    out.moment_second = Space<Dim>::zero_spin();
+    if constexpr (kPass == Pass::kAdvance && kEnergy) {
+      energy.wall_work += out.force.dot(velocity) * dt;  // the wall's motion does work through the contact
+    }
+  }
+};
+
+// One row, pair or wall (Body): the geometry, the relative velocity
+// (eqs. 11-13), the history brought over the step when the pass advances
+// it (the work of last cycle's forces settled, a separation ended, the
+// shear carried into the new tangent plane), the law's forces, the history
+// and the work stored, and the two bodies' shares.
+template <Pass kPass, bool kEnergy, typename Law, typename Shape, typename Body, int Dim>
+RowResult<Dim> contact_row(const PassInputs<Dim>& in, RowsOf<kPass, Dim> rows, std::size_t r, ContactEnergy& energy) {
   const Particles<Dim>& p = in.particles;
-  const Slot x = rows.first[r], y = rows.second[r];
+  const Slot x = rows.first[r];
+  Body second(in, rows.second[r]);
   RowResult<Dim> out;
-  ContactSearch search;
-  if constexpr (!Shape::round) search = rows.search[r];
-  const ContactGeometry<Dim> g = Shape::template pair<kEnergy>(in, x, y, search);
-  if constexpr (kPass == Pass::kAdvance && !Shape::round) rows.search[r] = search;
+  const ContactGeometry<Dim> g = second.template geometry<kPass, kEnergy, Shape>(in, rows, r, x);
   ContactHistory<Dim> h = load_history<Law>(rows, r);
   if (g.overlap <= 0.0 && (!h.touching || kPass == Pass::kEvaluate)) return out;  // eq. 8: apart
   if (kPass == Pass::kEvaluate && !h.touching) return out;
-  const Vec<Dim> relative = contact_velocity<Shape>(p, x, p.velocity[y], p.angular_velocity[y], p.radius[y], g);
+  const Vec<Dim> relative = second.template relative_velocity<Shape>(in, x, g);
   if constexpr (kPass == Pass::kAdvance) {
     if constexpr (kEnergy) {
       if (h.touching) settle_contact_work(rows.dashpot[r], relative, in.dt, energy);
@@ -127,10 +206,9 @@ RowResult<Dim> pair_row(const PassInputs<Dim>& in, RowsOf<kPass, Dim> rows, std:
       rows.formed_cycle[r] = in.cycle;
     }
   }
-  const double mx = p.mass[x], my = p.mass[y];
-  const PairProperties pair{g.effective_radius, mx * my / (mx + my)};  // Randall 4.5-4.6
+  const PairProperties pair{g.effective_radius, second.effective_mass(p, x)};
   const ContactKinematics<Dim> k = kinematics(g.overlap, relative, g.normal);
-  const ContactParams& params = in.pair_params(p.material[x], p.material[y]);
+  const ContactParams& params = second.params(in, x);
   if constexpr (kPass == Pass::kAdvance) Law::advance(h, k, pair, params, in.dt);
   const ContactForces<Dim> f = Law::forces(h, k, pair, params);
   if constexpr (kPass == Pass::kAdvance) {
@@ -141,58 +219,8 @@ RowResult<Dim> pair_row(const PassInputs<Dim>& in, RowsOf<kPass, Dim> rows, std:
   out.geometry = g;
   out.forces = f;
   out.sliding = h.sliding;
-  resolve<Shape>(out, f, g, p.radius[x], p.radius[y]);
-  return out;
-}
-
-// One particle-wall row: the wall is infinitely heavy and moves as commanded.
-template <Pass kPass, bool kEnergy, typename Law, typename Shape, int Dim>
-RowResult<Dim> wall_row(const PassInputs<Dim>& in, RowsOf<kPass, Dim> rows, std::size_t r, ContactEnergy& energy) {
-  const Particles<Dim>& p = in.particles;
-  const Slot x = rows.first[r];
-  const std::int32_t w = rows.second[r];
-  const WallDefT<Dim>& wall = in.walls.def[w];
-  RowResult<Dim> out;
-  const ContactGeometry<Dim> g = Shape::wall(in, wall, x);
-  ContactHistory<Dim> h = load_history<Law>(rows, r);
-  if (g.overlap <= 0.0 && (!h.touching || kPass == Pass::kEvaluate)) return out;
-  if (kPass == Pass::kEvaluate && !h.touching) return out;
-  const Vec<Dim> wall_velocity =
-      wall_point_velocity(wall, in.walls.last_velocity[w], in.walls.last_angular_velocity[w], g.point);
-  const Vec<Dim> relative = contact_velocity<Shape>(p, x, wall_velocity, Space<Dim>::zero_spin(), 0.0, g);
-  if constexpr (kPass == Pass::kAdvance) {
-    if constexpr (kEnergy) {
-      if (h.touching) settle_contact_work(rows.dashpot[r], relative, in.dt, energy);
-    }
-    if (g.overlap <= 0.0) {
-      separate(rows, r);
-      return out;
-    }
-    if (h.touching) {
-      carry_shear(h.shear, g.normal);
-    } else {
-      rows.formed_cycle[r] = in.cycle;
-    }
-  }
-  const PairProperties pair{g.effective_radius, p.mass[x]};
-  const ContactKinematics<Dim> k = kinematics(g.overlap, relative, g.normal);
-  const ContactParams& params = in.params(p.material[x], wall.material.value());
-  if constexpr (kPass == Pass::kAdvance) Law::advance(h, k, pair, params, in.dt);
-  const ContactForces<Dim> f = Law::forces(h, k, pair, params);
-  if constexpr (kPass == Pass::kAdvance) {
-    store_history<Law>(rows, r, h);
-    if constexpr (kEnergy) remember_work(rows.dashpot[r], f, g.normal, relative);
-  }
-  out.touching = true;
-  out.geometry = g;
-  out.forces = f;
-  out.sliding = h.sliding;
-  out.wall_velocity = wall_velocity;
-  resolve<Shape>(out, f, g, p.radius[x], 0.0);
-  out.moment_second = Space<Dim>::zero_spin();
-  if constexpr (kPass == Pass::kAdvance && kEnergy) {
-    energy.wall_work += out.force.dot(wall_velocity) * in.dt;  // the wall's motion does work through the contact
-  }
+  resolve<Shape>(out, f, g, p.radius[x], second.radius(p));
+  second.template finish<kPass, kEnergy>(out, in.dt, energy);
   return out;
 }
 

@@ -98,7 +98,7 @@ void restore_contact_table(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) 
     s.contacts_stale = snap.contacts_stale;
     plan_blocks(s.blocks, t, p.size(), block_size(s));
   } else {
-    find_contacts(s);
+    find_contacts(s, current_context(s));
   }
   for (const ContactSnapshotT<Dim>& c : snap.contacts) {
     if (!saved_rows && !c.touching) continue;  // only history matters in a rebuilt table

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "dem/definitions.h"
@@ -32,6 +33,16 @@ struct Walls {
 
   int size() const { return static_cast<int>(def.size()); }
 };
+
+// Why an id names none of the walls ("no wall 7"), or nothing if it names
+// one: the one check of a wall id, for the world's edits and accessors
+// (BasicWorld::missing_wall) and the box control's axes. A removed wall
+// keeps its id and still answers to it.
+template <int Dim>
+std::optional<std::string> missing_wall(const std::vector<WallDefT<Dim>>& walls, WallId id) {
+  if (id.valid() && id.index() < walls.size()) return std::nullopt;
+  return "no wall " + to_string(id);
+}
 
 // The wall's normal, towards the particle side: e rotated counter-clockwise
 // in 2D, u x v in 3D.

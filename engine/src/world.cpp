@@ -41,6 +41,47 @@ void book(WorldState<Dim>& s, const ContactEnergy& e) {
   s.energy.wall_work += e.wall_work;
 }
 
+// The law of motion (motion.cpp) under the last pass's force sums, and
+// what it reports booked: how far the particles went (for the contact
+// search and the near rows), the energy flows, the time-step check.
+template <int Dim>
+void particle_motion(WorldState<Dim>& s, const StepContext& step) {
+  const MotionStep motion =
+      integrate_motion(s.particles, MotionInputs<Dim>{s.periodic, s.gravity, s.damping, step.dt, step.threads,
+                                                      step.energy_budget, step.keep_force, step.check_step});
+  s.particle_travel = motion.max_travel;
+  s.near_slack -= 2.0 * motion.max_speed * step.dt;
+  if (s.near_slack < 0.0) s.blocks.near_stale = true;
+  s.energy.gravity_work += motion.gravity_work;
+  s.energy.global_damping += motion.global_damping;
+  s.energy.local_damping += motion.local_damping;
+  if (step.check_step) s.time_step_ratio = motion.time_step_ratio;
+}
+
+// The walls' motion over the step (walls.cpp), and how far they went.
+template <int Dim>
+void wall_motion(WorldState<Dim>& s, const StepContext& step) {
+  move_walls(s.walls, step.dt);
+  s.wall_travel += max_wall_step(s.walls, step.dt);
+}
+
+// A pair outside the table had a gap of at least TOL when it was built:
+// rebuild before anything could have closed that gap.
+template <int Dim>
+bool contacts_due(const WorldState<Dim>& s) {
+  return s.contacts_stale || 2.0 * s.particle_travel >= s.contact_tolerance ||
+         s.particle_travel + s.wall_travel >= s.contact_tolerance;
+}
+
+// The force-displacement law at every contact (contact_forces.cpp), its
+// energy flows booked, then rolling resistance (its own pass: nothing when
+// off).
+template <int Dim>
+void contact_forces(WorldState<Dim>& s, const StepContext& step) {
+  book(s, advance_contacts(s, step));
+  if (s.rolling) apply_rolling_resistance(s);
+}
+
 // ---------------------------------------------------------------------------
 // The calculation cycle (Cundall & Strack 1979, The calculation cycle). The
 // force sums of the last pass move the particles (law of motion) and the
@@ -50,37 +91,23 @@ void book(WorldState<Dim>& s, const ContactEnergy& e) {
 // forces all belong to the same instant.
 //
 // Randall's particle-wise time-step check compares each particle's force
-// sum with the last cycle's, so `check` asks for it on the cycles whose
-// result is read (the last of each cycle(n)), and `keep` for the cycles
-// before them.
+// sum with the last cycle's, so the step's context asks for it on the
+// cycles whose result is read (the last of each cycle(n)), and for keeping
+// the sums on the cycles before them.
 template <int Dim>
-void step(WorldState<Dim>& s, bool keep, bool check) {
+void step(WorldState<Dim>& s, const StepContext& context) {
   PhaseTimer timer;
-  const MotionStep motion = integrate_motion(
-      s.particles,
-      MotionInputs<Dim>{s.periodic, s.gravity, s.damping, s.time_step, s.threads, s.energy_budget, keep, check});
-  s.particle_travel = motion.max_travel;
-  s.near_slack -= 2.0 * motion.max_speed * s.time_step;
-  if (s.near_slack < 0.0) s.blocks.near_stale = true;
-  s.energy.gravity_work += motion.gravity_work;
-  s.energy.global_damping += motion.global_damping;
-  s.energy.local_damping += motion.local_damping;
-  if (check) s.time_step_ratio = motion.time_step_ratio;
+  particle_motion(s, context);
   timer.lap(s.profile.motion);
-  move_walls(s.walls, s.time_step);
-  s.wall_travel += max_wall_step(s.walls, s.time_step);
-  ++s.cycle;
-  s.time += s.time_step;
+  wall_motion(s, context);
+  s.cycle = context.cycle;  // from here on the world is at the step's end
+  s.time += context.dt;
   timer.lap(s.profile.walls);
-  // A pair outside the table had a gap of at least TOL when it was built:
-  // rebuild before anything could have closed that gap.
-  if (s.contacts_stale || 2.0 * s.particle_travel >= s.contact_tolerance ||
-      s.particle_travel + s.wall_travel >= s.contact_tolerance) {
-    find_contacts(s);
+  if (contacts_due(s)) {
+    find_contacts(s, context);
     timer.lap(s.profile.find_contacts);
   }
-  book(s, advance_contacts(s));
-  if (s.rolling) apply_rolling_resistance(s);  // its own pass: nothing when off
+  contact_forces(s, context);
   timer.lap(s.profile.contact_forces);
   ++s.profile.cycles;
 }
@@ -93,15 +120,15 @@ constexpr std::uint64_t kResortCycles = 1000;
 }  // namespace
 
 template <int Dim>
-void find_contacts(WorldState<Dim>& s) {
+void find_contacts(WorldState<Dim>& s, const StepContext& step) {
   Particles<Dim>& p = s.particles;
-  if (s.sorted_cycle == kNeverSorted || s.cycle - s.sorted_cycle >= kResortCycles) {
+  if (s.sorted_cycle == kNeverSorted || step.cycle - s.sorted_cycle >= kResortCycles) {
     double max_radius = 0.0;
     for (double r : p.radius) max_radius = std::max(max_radius, r);
     reorder_particles(p, s.contacts, spatial_order(p, s.periodic, 2.0 * max_radius + s.contact_tolerance));
-    s.sorted_cycle = s.cycle;
+    s.sorted_cycle = step.cycle;
   }
-  merge_rows(s.contacts.pairs, find_pair_keys(p, s.periodic, s.contact_tolerance, s.threads));
+  merge_rows(s.contacts.pairs, find_pair_keys(p, s.periodic, s.contact_tolerance, step.threads));
   merge_rows(s.contacts.walls, find_wall_keys(p, s.walls, s.contact_tolerance));
   plan_blocks(s.blocks, s.contacts, p.size(), block_size(s));
   s.profile.pair_rows = s.contacts.pairs.size();
@@ -119,9 +146,9 @@ BasicWorld<Dim>::BasicWorld(const Def& def) : state_(std::make_unique<WorldState
   WorldState<Dim>& s = *state_;
   build_world(s, def);
   // The contacts and forces of cycle 0, for the first step's motion.
-  find_contacts(s);
-  book(s, advance_contacts(s));
-  if (s.rolling) apply_rolling_resistance(s);
+  const StepContext now = current_context(s);
+  find_contacts(s, now);
+  contact_forces(s, now);
   s.energy.initial_kinetic = measure_assembly(s).kinetic_energy;
 }
 
@@ -140,7 +167,7 @@ BasicWorld<Dim>& BasicWorld<Dim>::operator=(BasicWorld&&) noexcept = default;
 
 template <int Dim>
 void BasicWorld<Dim>::cycle(std::uint64_t n) {
-  for (std::uint64_t k = 0; k < n; ++k) step(*state_, k + 2 >= n, k + 1 == n);
+  for (std::uint64_t k = 0; k < n; ++k) step(*state_, begin_step(*state_, k + 2 >= n, k + 1 == n));
 }
 
 template <int Dim>
@@ -206,21 +233,26 @@ WallId BasicWorld<Dim>::find_wall(std::string_view name) const {
 }
 
 template <int Dim>
+std::optional<std::string> BasicWorld<Dim>::missing_wall(WallId id) const {
+  return dem::missing_wall(state_->walls.def, id);
+}
+
+template <int Dim>
 const WallDefT<Dim>& BasicWorld<Dim>::wall(WallId id) const {
-  assert(id.valid() && id.value() < wall_count());
+  assert(!missing_wall(id));
   return state_->walls.def[id.index()];
 }
 
 template <int Dim>
 void BasicWorld<Dim>::set_wall_motion(WallId id, const Motion& motion) {
-  assert(id.valid() && id.value() < wall_count());
+  assert(!missing_wall(id));
   check_wall_motion(motion, id);
   state_->walls.def[id.index()].motion = motion;
 }
 
 template <int Dim>
 double BasicWorld<Dim>::wall_area(WallId id) const {
-  assert(id.valid() && id.value() < wall_count());
+  assert(!missing_wall(id));
   return wall_extent(state_->walls.def[id.index()], state_->periodic) * (Dim == 2 ? state_->depth : 1.0);
 }
 
@@ -328,8 +360,8 @@ bool BasicWorld<Dim>::energy_budget() const {
   return state_->energy_budget;
 }
 
-template void find_contacts(WorldState<2>&);
-template void find_contacts(WorldState<3>&);
+template void find_contacts(WorldState<2>&, const StepContext&);
+template void find_contacts(WorldState<3>&, const StepContext&);
 template class BasicWorld<2>;
 template class BasicWorld<3>;
 

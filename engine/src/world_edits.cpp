@@ -97,7 +97,7 @@ void BasicWorld<Dim>::remove_particles(std::span<const ParticleId> ids) {
 
 template <int Dim>
 void BasicWorld<Dim>::place_wall(WallId id, const Vec<Dim>& point) {
-  if (!id.valid() || id.value() >= wall_count()) throw DefinitionError("place wall: no wall " + to_string(id));
+  if (const auto missing = missing_wall(id)) throw DefinitionError("place wall: " + *missing);
   if (!point.allFinite()) throw DefinitionError("place wall: the point must be finite");
   WorldState<Dim>& s = *state_;
   const std::size_t w = id.index();
@@ -112,7 +112,7 @@ void BasicWorld<Dim>::place_wall(WallId id, const Vec<Dim>& point) {
 
 template <int Dim>
 void BasicWorld<Dim>::remove_wall(WallId id) {
-  if (!id.valid() || id.value() >= wall_count()) throw DefinitionError("remove wall: no wall " + to_string(id));
+  if (const auto missing = missing_wall(id)) throw DefinitionError("remove wall: " + *missing);
   WorldState<Dim>& s = *state_;
   const std::size_t w = id.index();
   if (s.walls.box) {
@@ -183,6 +183,7 @@ double BasicWorld<Dim>::furthest_reach(const Vec<Dim>& u) const {
 
 template <int Dim>
 double BasicWorld<Dim>::wall_settlement(WallId id) const {
+  assert(!missing_wall(id));
   const Walls<Dim>& w = state_->walls;
   return (w.def[id.index()].point - w.initial_point[id.index()]).dot(wall_normal(w.def[id.index()]));
 }

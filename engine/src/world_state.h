@@ -16,6 +16,7 @@
 #include "ellipsoid.h"
 #include "particles.h"
 #include "periodic.h"
+#include "step_context.h"
 #include "walls.h"
 
 namespace dem {
@@ -89,10 +90,23 @@ double near_margin(const WorldState<Dim>& state) {
   return 0.125 * state.contact_tolerance;
 }
 
+// The context of the step from the state's cycle N to N + 1.
+template <int Dim>
+StepContext begin_step(const WorldState<Dim>& state, bool keep_force, bool check_step) {
+  return {state.time_step, state.cycle + 1, state.threads, state.energy_budget, keep_force, check_step};
+}
+
+// The context of work on the state as it stands, outside a step: a world's
+// first contact search and force pass, the sums after an edit, reports.
+template <int Dim>
+StepContext current_context(const WorldState<Dim>& state) {
+  return {state.time_step, state.cycle, state.threads, state.energy_budget, false, false};
+}
+
 // Rebuilds the contact table from the broad phase (keeping history),
 // putting the particles back in spatial order first when that is due.
 template <int Dim>
-void find_contacts(WorldState<Dim>& state);
+void find_contacts(WorldState<Dim>& state, const StepContext& step);
 
 // Critical time step 2 sqrt(m/k) over particles and the stiffnesses they can meet.
 template <int Dim>

@@ -201,11 +201,49 @@ TEST(WorldEdits, AStaleIdIsAnErrorAndNothingIsRemoved) {
   }
 }
 
+// The message a call fails with, or "" when it does not throw.
+template <typename Call>
+std::string refusal(Call&& call) {
+  try {
+    call();
+  } catch (const DefinitionError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 TEST(WorldEdits, BadIdsAreRefused) {
   World world = settled_box();
   const std::vector<ParticleId> bad{ParticleId{world.particle_count()}};
   EXPECT_THROW(world.remove_particles(bad), DefinitionError);
   EXPECT_THROW(world.place_wall(WallId{9}, Vec2::Zero()), DefinitionError);
+}
+
+// Every edit that names a wall checks its id through missing_wall, so they
+// fail alike; a removed wall keeps its id.
+TEST(WorldEdits, AWallIdIsCheckedInOnePlace) {
+  WorldDef def;
+  def.materials = {MaterialDef{"rock", 1650.0, 0.51, 0.0}};
+  def.contact_models = {testing::linear_model(1e7, 1e7)};
+  def.particles = {ParticleDef{{0.5, 0.5}, 0.05, MaterialId{0}}};
+  def.walls = {WallDef{"bottom", {0.5, 0.0}, {1, 0}, -0.5, 0.5, MaterialId{0}, {}},
+               WallDef{"right", {1.0, 0.0}, {0, 1}, 0.0, 1.0, MaterialId{0}, {}},
+               WallDef{"top", {0.5, 1.0}, {-1, 0}, -0.5, 0.5, MaterialId{0}, {}},
+               WallDef{"left", {0.0, 1.0}, {0, -1}, 0.0, 1.0, MaterialId{0}, {}}};
+  World world(def);
+  EXPECT_EQ(world.missing_wall(WallId{3}), std::nullopt);
+  EXPECT_EQ(world.missing_wall(WallId{4}), "no wall 4");
+  EXPECT_EQ(world.missing_wall(kInvalidId), "no wall -1");
+  EXPECT_EQ(refusal([&] { world.place_wall(WallId{4}, Vec2::Zero()); }), "place wall: no wall 4");
+  EXPECT_EQ(refusal([&] { world.remove_wall(kInvalidId); }), "remove wall: no wall -1");
+  BoxControlT<2> box;
+  box.axes[0] = BoxAxisDef{WallId{3}, WallId{1}};
+  box.axes[1] = BoxAxisDef{WallId{0}, WallId{7}};
+  EXPECT_EQ(refusal([&] { world.set_box_control(box); }), "box control: axes[1] (y).upper: no wall 7");
+  world.remove_wall(WallId{2});
+  EXPECT_EQ(world.missing_wall(WallId{2}), std::nullopt);
+  EXPECT_EQ(world.wall(WallId{2}).name, "top");
+  EXPECT_TRUE(world.wall(WallId{2}).removed);
 }
 
 }  // namespace

@@ -134,6 +134,10 @@ class BasicWorld {
   // Walls, by dense id (definition order; ids out of range are a
   // programmer error); find_wall returns kInvalidId for an unknown name.
   WallId find_wall(std::string_view name) const;
+  // Why an id names no wall ("no wall 7"), or nothing if it names one: the
+  // message an edit that names a wrong id fails with. A removed wall keeps
+  // its id (remove_wall), so its id still names it.
+  std::optional<std::string> missing_wall(WallId id) const;
   const WallDefinition& wall(WallId id) const;  // current geometry and motion
   void set_wall_motion(WallId id, const Motion& motion);
   // Length (2D, times the out-of-plane depth) or area (3D) that turns a
