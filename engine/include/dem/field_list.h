@@ -55,16 +55,6 @@ constexpr bool same_field(const A& a, const B& b) {
 }
 
 template <class Tuple, std::size_t... I>
-constexpr bool members_distinct(const Tuple& members, std::index_sequence<I...>) {
-  bool distinct = true;
-  const auto against_all = [&]<std::size_t A>(std::integral_constant<std::size_t, A>) {
-    ((distinct = distinct && (A == I || !same_member(std::get<A>(members), std::get<I>(members)))), ...);
-  };
-  (against_all(std::integral_constant<std::size_t, I>{}), ...);
-  return distinct;
-}
-
-template <class Tuple, std::size_t... I>
 constexpr bool fields_distinct(const Tuple& list, std::index_sequence<I...>) {
   bool distinct = true;
   const auto against_all = [&]<std::size_t A>(std::integral_constant<std::size_t, A>) {
@@ -82,14 +72,6 @@ template <class Struct, class Tuple>
 constexpr bool lists_every_member(const Tuple& list) {
   constexpr std::size_t n = std::tuple_size_v<Tuple>;
   return n == detail::member_count<Struct>() && detail::fields_distinct(list, std::make_index_sequence<n>{});
-}
-
-// The members a hand-written conversion carries name every member of Struct
-// once: the guard of a struct without a field list.
-template <class Struct, class... Members>
-constexpr bool names_every_member(Members Struct::*... members) {
-  return sizeof...(Members) == detail::member_count<Struct>() &&
-         detail::members_distinct(std::make_tuple(members...), std::index_sequence_for<Members...>{});
 }
 
 // The position of the field called `name` in a list, or the list's size.
