@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <stdexcept>
+#include <utility>
 
 namespace dem::analysis {
 
@@ -106,6 +108,15 @@ CompressionResults CompressionAnalysisT<Dim>::results(const BasicWorld<Dim>& wor
   r.load_by_formation = {load_by_formation_order<Dim>(loading), load_by_formation_order<Dim>(bottom)};
   if (!samples_.empty()) r.last = samples_.back();
   return r;
+}
+
+template <int Dim>
+void CompressionAnalysisT<Dim>::restore(CompressionStateT<Dim> state) {
+  if (state.snapshots.size() > targets_.size())
+    throw std::runtime_error("the plate loading analyses' state has more snapshots than targets");
+  samples_ = std::move(state.samples);
+  snapshots_ = std::move(state.snapshots);
+  next_target_ = snapshots_.size();  // a snapshot per target reached
 }
 
 template class CompressionAnalysisT<2>;

@@ -1,12 +1,9 @@
-// The plate loading analyses' state as text, for checkpoints: the samples
-// and the contact snapshots taken so far (the next target follows from
-// how many there are: one snapshot per target reached). Doubles are
-// written in the shortest form that reads back to the same bits.
+#include "dem/io/compression_state.h"
+
 #include <charconv>
 #include <sstream>
 #include <stdexcept>
 
-#include "dem/analysis/compression_analysis.h"
 #include "format_number.h"
 
 namespace dem::io {
@@ -93,29 +90,17 @@ std::vector<analysis::PlateContactT<Dim>> get_contacts(Reader& in) {
 }
 
 }  // namespace
-}  // namespace dem::io
-
-// The accumulator is analysis's (dem/analysis/compression_analysis.h); its
-// state as text is written and read here, beside the other checkpoint I/O.
-namespace dem::analysis {
-
-using io::get_contacts;
-using io::get_sample;
-using io::put;
-using io::put_contacts;
-using io::put_sample;
-using io::Reader;
 
 template <int Dim>
-std::string CompressionAnalysisT<Dim>::state() const {
+std::string compression_state_text(const analysis::CompressionStateT<Dim>& state) {
   std::string out = "samples ";
-  put(out, static_cast<std::uint64_t>(samples_.size()));
+  put(out, static_cast<std::uint64_t>(state.samples.size()));
   out += '\n';
-  for (const CompressionSample& s : samples_) put_sample(out, s);
+  for (const analysis::CompressionSample& s : state.samples) put_sample(out, s);
   out += "snapshots ";
-  put(out, static_cast<std::uint64_t>(snapshots_.size()));
+  put(out, static_cast<std::uint64_t>(state.snapshots.size()));
   out += '\n';
-  for (const PlateSnapshotT<Dim>& s : snapshots_) {
+  for (const analysis::PlateSnapshotT<Dim>& s : state.snapshots) {
     put(out, s.index);
     put(out, s.target_stress);
     put(out, static_cast<int>(s.for_distribution));
@@ -127,16 +112,15 @@ std::string CompressionAnalysisT<Dim>::state() const {
 }
 
 template <int Dim>
-void CompressionAnalysisT<Dim>::restore(std::string_view state) {
-  Reader in(state);
+analysis::CompressionStateT<Dim> compression_state_from_text(std::string_view text) {
+  Reader in(text);
+  analysis::CompressionStateT<Dim> state;
   in.expect("samples");
-  std::vector<CompressionSample> samples(in.next<std::uint64_t>());
-  for (CompressionSample& s : samples) s = get_sample(in);
+  state.samples.resize(in.next<std::uint64_t>());
+  for (analysis::CompressionSample& s : state.samples) s = get_sample(in);
   in.expect("snapshots");
-  std::vector<PlateSnapshotT<Dim>> snapshots(in.next<std::uint64_t>());
-  if (snapshots.size() > targets_.size())
-    throw std::runtime_error("the plate loading analyses' state has more snapshots than targets");
-  for (PlateSnapshotT<Dim>& s : snapshots) {
+  state.snapshots.resize(in.next<std::uint64_t>());
+  for (analysis::PlateSnapshotT<Dim>& s : state.snapshots) {
     s.index = in.next<int>();
     s.target_stress = in.next<double>();
     s.for_distribution = in.next<int>() != 0;
@@ -144,14 +128,12 @@ void CompressionAnalysisT<Dim>::restore(std::string_view state) {
     s.loading = get_contacts<Dim>(in);
     s.bottom = get_contacts<Dim>(in);
   }
-  samples_ = std::move(samples);
-  snapshots_ = std::move(snapshots);
-  next_target_ = snapshots_.size();  // a snapshot per target reached
+  return state;
 }
 
-template std::string CompressionAnalysisT<2>::state() const;
-template std::string CompressionAnalysisT<3>::state() const;
-template void CompressionAnalysisT<2>::restore(std::string_view);
-template void CompressionAnalysisT<3>::restore(std::string_view);
+template std::string compression_state_text(const analysis::CompressionStateT<2>&);
+template std::string compression_state_text(const analysis::CompressionStateT<3>&);
+template analysis::CompressionStateT<2> compression_state_from_text<2>(std::string_view);
+template analysis::CompressionStateT<3> compression_state_from_text<3>(std::string_view);
 
-}  // namespace dem::analysis
+}  // namespace dem::io

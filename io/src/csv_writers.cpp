@@ -1,5 +1,10 @@
 #include "dem/io/csv_writers.h"
 
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <type_traits>
 #include <utility>
 
 namespace dem::io {
@@ -10,11 +15,83 @@ constexpr const char* kWallsHeader2 =
 constexpr const char* kWallsHeader3 =
     "cycle,time,wall,fx,fy,fz,moment_x,moment_y,moment_z,normal_force,contacts,eccentricity_u,eccentricity_v,"
     "x,y,z,dx,dy,dz,normal_stress,settlement";
-constexpr const char* kContactsHeader2 =
-    "first,second_kind,second,x,y,nx,ny,overlap,normal_force,shear_force,normal_damping,shear_damping,sliding";
-constexpr const char* kContactsHeader3 =
-    "first,second_kind,second,x,y,z,nx,ny,nz,overlap,normal_force,shear_force,tangential_x,tangential_y,"
-    "tangential_z,normal_damping,shear_damping,sliding";
+
+// contacts.csv's columns follow the record's one field list
+// (ContactRecordFields, dem/measures.h): the bodies as first, second_kind,
+// second; then, in list order, a column per number or flag and one per
+// axis of a vector.
+template <class T>
+constexpr bool kIsBody = std::is_same_v<T, ParticleId> || std::is_same_v<T, WallId>;
+
+template <int Dim>
+constexpr std::size_t body_fields() {
+  return std::apply(
+      [](const auto&... f) {
+        return (std::size_t{0} + ... +
+                (kIsBody<std::remove_cvref_t<decltype(ContactRecordT<Dim>{}.*f.member)>> ? 1 : 0));
+      },
+      ContactRecordFields<Dim>::list);
+}
+// The three written as first, second_kind, second (write_contacts_csv).
+static_assert(body_fields<2>() == 3 && body_fields<3>() == 3,
+              "a ContactRecordT id field other than first, second_particle, second_wall: give it its contacts.csv "
+              "columns");
+
+// The vectors contacts.csv had before the field list keep their short
+// column names (x, nx, tangential_x); any other is <name>_x.
+std::string axis_stem(std::string_view field) {
+  if (field == "point") return "";
+  if (field == "normal") return "n";
+  if (field == "tangential_force") return "tangential_";
+  return std::string(field) + "_";
+}
+
+template <int Dim>
+std::string contacts_header() {
+  std::string header = "first,second_kind,second";
+  std::apply(
+      [&](const auto&... f) {
+        const auto columns = [&](const auto& field) {
+          using T = std::remove_cvref_t<decltype(ContactRecordT<Dim>{}.*field.member)>;
+          if constexpr (kIsBody<T>) {
+            return;
+          } else if constexpr (std::is_same_v<T, Vec<Dim>>) {
+            for (int k = 0; k < Dim; ++k) {
+              header += ',';
+              header += axis_stem(field.name);
+              header += "xyz"[k];
+            }
+          } else {
+            static_assert(std::is_arithmetic_v<T>, "a ContactRecordT member with no contacts.csv columns");
+            header += ",";
+            header += field.name;
+          }
+        };
+        (columns(f), ...);
+      },
+      ContactRecordFields<Dim>::list);
+  return header;
+}
+
+template <int Dim>
+void add_measures(std::string& line, const ContactRecordT<Dim>& c) {
+  std::apply(
+      [&](const auto&... f) {
+        const auto cells = [&](const auto& field) {
+          const auto& value = c.*field.member;
+          using T = std::remove_cvref_t<decltype(value)>;
+          if constexpr (kIsBody<T>) {
+            return;
+          } else if constexpr (std::is_same_v<T, Vec<Dim>>) {
+            for (int k = 0; k < Dim; ++k) CsvFile::add_field(line, value[k]);
+          } else {
+            CsvFile::add_field(line, value);
+          }
+        };
+        (cells(f), ...);
+      },
+      ContactRecordFields<Dim>::list);
+}
 constexpr const char* kParticlesHeader2 = "id,x,y,radius,vx,vy,angular_velocity,rotation,material,a,b,n";
 constexpr const char* kParticlesHeader3 =
     "id,x,y,z,radius,vx,vy,vz,angular_velocity_x,angular_velocity_y,angular_velocity_z,rotation_w,rotation_x,"
@@ -90,25 +167,19 @@ void ProbesCsv::write(const BasicWorld<Dim>& world) {
 
 template <int Dim>
 void write_contacts_csv(const std::filesystem::path& directory, const BasicWorld<Dim>& world) {
-  CsvFile file(directory, "contacts.csv", Dim == 2 ? kContactsHeader2 : kContactsHeader3);
+  CsvFile file(directory, "contacts.csv", contacts_header<Dim>());
   for (const ContactRecordT<Dim>& c : world.contacts()) {
-    const bool wall = c.second_wall != kInvalidId;
-    const auto fields = [&](const auto& second) {
-      const char* kind = wall ? "wall" : "particle";
-      if constexpr (Dim == 2) {
-        file.write_row(c.first.value(), kind, second, c.point.x(), c.point.y(), c.normal.x(), c.normal.y(), c.overlap,
-                       c.normal_force, c.shear_force, c.normal_damping, c.shear_damping, c.sliding);
-      } else {
-        file.write_row(c.first.value(), kind, second, c.point.x(), c.point.y(), c.point.z(), c.normal.x(), c.normal.y(),
-                       c.normal.z(), c.overlap, c.normal_force, c.shear_force, c.tangential_force.x(),
-                       c.tangential_force.y(), c.tangential_force.z(), c.normal_damping, c.shear_damping, c.sliding);
-      }
-    };
-    if (wall) {
-      fields(world.wall(c.second_wall).name);
+    std::string line;
+    CsvFile::add_field(line, c.first);
+    if (c.second_wall != kInvalidId) {
+      CsvFile::add_field(line, "wall");
+      CsvFile::add_field(line, world.wall(c.second_wall).name);
     } else {
-      fields(c.second_particle.value());
+      CsvFile::add_field(line, "particle");
+      CsvFile::add_field(line, c.second_particle);
     }
+    add_measures(line, c);
+    file.write_built_row(std::move(line));
   }
   file.flush();
 }

@@ -7,6 +7,9 @@
 #include <tuple>
 #include <vector>
 
+// The definition and state structs' field lists: a member the lists lack
+// fails the build there, and the round-trip test walks them.
+#include "dem/snapshot_fields.h"
 #include "snapshot_contacts.h"
 #include "snapshot_packing.h"
 #include "snapshot_structure_checks.h"

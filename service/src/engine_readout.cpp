@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact_entry.h"
 #include "dem/service/command_error.h"
 
 namespace dem::service {
@@ -52,23 +53,6 @@ bool inside(const ContactRecordT<Dim>& c, const ContactFilter& filter) {
     if (Dim == 3 && (p.z < lo.z || p.z > hi.z)) return false;
   }
   return true;
-}
-
-template <int Dim>
-protocol::ContactEntry to_entry(const ContactRecordT<Dim>& c) {
-  protocol::ContactEntry e;
-  e.first = c.first.value();
-  e.second_particle = c.second_particle.value();
-  e.second_wall = c.second_wall.value();
-  e.point = vector3(c.point);
-  e.normal = vector3(c.normal);
-  e.overlap = c.overlap;
-  e.normal_force = c.normal_force;
-  e.shear_force = c.shear_force;
-  e.normal_damping = c.normal_damping;
-  e.shear_damping = c.shear_damping;
-  e.sliding = c.sliding;
-  return e;
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "dem/io/compression_state.h"
 #include "dem/io/file_access.h"
 
 namespace dem::service {
@@ -42,7 +43,8 @@ void OutputRecorder::make_compression(const BasicWorld<Dim>& world) {
       new Compression<Dim>{dem::analysis::CompressionAnalysisT<Dim>(*compression_settings_),
                            io::CompressionCsvT<Dim>(directory_, world.wall(compression_settings_->loading_plate).name,
                                                     world.wall(compression_settings_->bottom_plate).name, tables)});
-  if (resume_ && !resume_->analysis.empty()) compression<Dim>()->analysis.restore(resume_->analysis);
+  if (resume_ && !resume_->analysis.empty())
+    compression<Dim>()->analysis.restore(io::compression_state_from_text<Dim>(resume_->analysis));
 }
 
 template <int Dim>
@@ -111,7 +113,7 @@ void OutputRecorder::fill(io::ResumePoint& point) {
     if (!c) return;
     tables.push_back(&c->csv.samples_file());
     tables.push_back(&c->csv.contacts_file());
-    point.analysis = c->analysis.state();
+    point.analysis = io::compression_state_text(c->analysis.state());
   };
   add_compression(compression2_);
   add_compression(compression3_);

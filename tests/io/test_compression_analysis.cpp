@@ -7,10 +7,12 @@
 #include <fstream>
 #include <numbers>
 #include <numeric>
+#include <stdexcept>
 #include <string>
 
 #include "dem/analysis/compression_analysis.h"
 #include "dem/io/compression_csv.h"
+#include "dem/io/compression_state.h"
 #include "dem/programme.h"
 #include "io_test_support.h"
 
@@ -177,6 +179,51 @@ TEST_F(CompressionAnalysisTest, SnapshotsAtTheirStresses) {
     EXPECT_EQ(snapshots[k].loading.size(), 5u);
   }
   EXPECT_EQ(std::count_if(snapshots.begin(), snapshots.end(), [](const auto& s) { return s.for_distribution; }), 4);
+}
+
+// A checkpoint keeps the analysis's state as text (dem/io/compression_state.h):
+// a fresh analysis restored from it holds the same samples and snapshots,
+// bit for bit, and sums up the run the same.
+TEST_F(CompressionAnalysisTest, ItsStateComesBackFromACheckpointsText) {
+  run();
+  const std::string text = dem::io::compression_state_text(analysis_.state());
+  dem::analysis::CompressionAnalysis restored{settings()};
+  restored.restore(dem::io::compression_state_from_text<2>(text));
+  ASSERT_EQ(restored.samples().size(), analysis_.samples().size());
+  ASSERT_EQ(restored.snapshots().size(), 5u);
+  for (std::size_t i = 0; i < analysis_.samples().size(); ++i) {
+    const auto& a = restored.samples()[i];
+    const auto& b = analysis_.samples()[i];
+    EXPECT_TRUE(a.stage == b.stage && a.cycle == b.cycle && a.time == b.time && a.settlement == b.settlement &&
+                a.stress == b.stress && a.loading_contacts == b.loading_contacts &&
+                a.bottom_stress == b.bottom_stress && a.bottom_contacts == b.bottom_contacts)
+        << "sample " << i;
+  }
+  for (std::size_t k = 0; k < 5; ++k) {
+    const PlateSnapshot& a = restored.snapshots()[k];
+    const PlateSnapshot& b = analysis_.snapshots()[k];
+    EXPECT_EQ(a.index, b.index);
+    EXPECT_EQ(a.target_stress, b.target_stress);
+    EXPECT_EQ(a.for_distribution, b.for_distribution);
+    ASSERT_EQ(a.loading.size(), b.loading.size());
+    for (std::size_t c = 0; c < a.loading.size(); ++c) {
+      EXPECT_EQ(a.loading[c].particle, b.loading[c].particle);
+      EXPECT_EQ(a.loading[c].point, b.loading[c].point);
+      EXPECT_EQ(a.loading[c].normal_force, b.loading[c].normal_force);
+      EXPECT_EQ(a.loading[c].shear_force, b.loading[c].shear_force);
+      EXPECT_EQ(a.loading[c].formed_cycle, b.loading[c].formed_cycle);
+    }
+    EXPECT_EQ(a.bottom.size(), b.bottom.size());
+  }
+  EXPECT_EQ(dem::io::compression_state_text(restored.state()), text);
+  EXPECT_EQ(restored.results(world_).states[1].secant_stiffness, analysis_.results(world_).states[1].secant_stiffness);
+  // More snapshots than the settings have targets: not this analysis's state.
+  dem::analysis::CompressionSettings fewer = settings();
+  fewer.contacts_at_stress.clear();
+  fewer.force_distribution.reset();
+  dem::analysis::CompressionAnalysis other{fewer};
+  EXPECT_THROW(other.restore(dem::io::compression_state_from_text<2>(text)), std::runtime_error);
+  EXPECT_THROW(dem::io::compression_state_from_text<2>("samples 3\n1 2"), std::runtime_error);
 }
 
 TEST_F(CompressionAnalysisTest, ForceDistributionPoolsTheSnapshots) {

@@ -152,8 +152,8 @@ TEST_F(CsvWriters, ContactsNameTheSecondBody) {
   for (std::string line; std::getline(in, line);) lines.push_back(line);
   ASSERT_EQ(lines.size(), 4u);
   EXPECT_EQ(lines[0],
-            "first,second_kind,second,x,y,nx,ny,overlap,normal_force,shear_force,normal_damping,shear_damping,"
-            "sliding");
+            "first,second_kind,second,x,y,nx,ny,overlap,normal_force,shear_force,tangential_x,tangential_y,"
+            "normal_damping,shear_damping,sliding,formed_cycle,force_x,force_y");
   EXPECT_THAT(lines, ::testing::Contains(::testing::StartsWith("0,particle,1,")));
   EXPECT_THAT(lines, ::testing::Contains(::testing::StartsWith("0,wall,floor,")));
   EXPECT_THAT(lines, ::testing::Contains(::testing::StartsWith("1,wall,floor,")));
@@ -320,9 +320,28 @@ TEST_F(CsvWriters3d, ContactsHaveAPointANormalAndTheTangentialForce) {
   write_contacts_csv(directory_, world_);
   const auto rows = read_csv(directory_ / "contacts.csv");
   ASSERT_EQ(rows.size(), 4u);
-  EXPECT_EQ(rows[0], (Row{"first", "second_kind", "second", "x", "y", "z", "nx", "ny", "nz", "overlap", "normal_force",
-                          "shear_force", "tangential_x", "tangential_y", "tangential_z", "normal_damping",
-                          "shear_damping", "sliding"}));
+  EXPECT_EQ(rows[0], (Row{"first",
+                          "second_kind",
+                          "second",
+                          "x",
+                          "y",
+                          "z",
+                          "nx",
+                          "ny",
+                          "nz",
+                          "overlap",
+                          "normal_force",
+                          "shear_force",
+                          "tangential_x",
+                          "tangential_y",
+                          "tangential_z",
+                          "normal_damping",
+                          "shear_damping",
+                          "sliding",
+                          "formed_cycle",
+                          "force_x",
+                          "force_y",
+                          "force_z"}));
   for (const ContactRecord3& contact : world_.contacts()) {
     const auto row = std::find_if(rows.begin() + 1, rows.end(), [&](const Row& r) {
       return r[0] == std::to_string(contact.first.value()) &&
@@ -334,6 +353,11 @@ TEST_F(CsvWriters3d, ContactsHaveAPointANormalAndTheTangentialForce) {
     EXPECT_EQ(number((*row)[10]), contact.normal_force);
     EXPECT_EQ(number((*row)[12]), contact.tangential_force.x());
     EXPECT_EQ(number((*row)[14]), contact.tangential_force.z());
+    EXPECT_EQ(number((*row)[15]), contact.normal_damping);
+    EXPECT_EQ((*row)[17], contact.sliding ? "1" : "0");
+    EXPECT_EQ((*row)[18], std::to_string(contact.formed_cycle));
+    EXPECT_EQ(number((*row)[19]), contact.force.x());
+    EXPECT_EQ(number((*row)[21]), contact.force.z());
   }
   EXPECT_EQ(rows[3][2], "floor");
 }

@@ -53,6 +53,9 @@ def test_the_contact_array_equals_the_cpp_clients_contacts(serve, out):
         for field in ("overlap", "normal_force", "shear_force", "normal_damping", "shear_damping"):
             assert float(row[field]) == c[field], field
         assert bool(int(row["sliding"])) == c["sliding"]
+        assert [float(row[k]) for k in ("tangential_x", "tangential_y", "tangential_z")] == list(c["tangential_force"])
+        assert [float(row[k]) for k in ("force_x", "force_y", "force_z")] == list(c["force"])
+        assert int(row["formed_cycle"]) == c["formed_cycle"]
     # 2D: z is 0, normals are unit vectors.
     assert np.all(contacts["point"][:, 2] == 0.0)
     np.testing.assert_allclose(np.linalg.norm(contacts["normal"], axis=1), 1.0, rtol=1e-12)

@@ -43,9 +43,12 @@ def test_the_contact_dtype():
 
     dtype = dem.CONTACT_DTYPE
     assert dtype.names == ("first", "second_particle", "second_wall", "point", "normal", "overlap", "normal_force",
-                           "shear_force", "normal_damping", "shear_damping", "sliding")
-    assert dtype["point"].shape == (3,) and dtype["normal"].shape == (3,)
+                           "shear_force", "tangential_force", "normal_damping", "shear_damping", "sliding",
+                           "formed_cycle", "force")
+    for vector in ("point", "normal", "tangential_force", "force"):
+        assert dtype[vector].shape == (3,), vector
     assert dtype["first"] == np.int32 and dtype["normal_force"] == np.float64 and dtype["sliding"] == np.bool_
+    assert dtype["formed_cycle"] == np.uint64
 
 
 def test_the_case_classes_are_generated_from_the_schema():

@@ -47,7 +47,8 @@ def nine_discs():
 def contacts(rows):
     array = np.zeros(len(rows), dtype=dem.CONTACT_DTYPE)
     for k, (first, second, wall, point, normal, fn, fs) in enumerate(rows):
-        array[k] = (first, second, wall, point + (0.0,), normal + (0.0,), 0.01, fn, fs, 0.0, 0.0, False)
+        array[k] = (first, second, wall, point + (0.0,), normal + (0.0,), 0.01, fn, fs, (0.0, 0.0, 0.0), 0.0, 0.0,
+                    False, 0, (0.0, 0.0, 0.0))
     return array
 
 

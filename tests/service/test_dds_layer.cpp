@@ -118,7 +118,8 @@ protocol::Reply full_reply() {
   r.stats = full_stats();
   r.state_hash = 0xfeedface12345678ULL;
   r.total_contacts = 2;
-  protocol::ContactEntry e{1, 2, -1, {0.5, 0.6, 0.0}, {1.0, 0.0, 0.0}, 1e-3, 5.0, -1.0, 0.1, 0.2, true};
+  protocol::ContactEntry e{1,   2,    -1, {0.5, 0.6, 0.0},  {1.0, 0.0, 0.0}, 1e-3, 5.0, -1.0, {0.0, 1.0, 0.0}, 0.1,
+                           0.2, true, 17, {-5.1, -0.9, 0.0}};
   r.contacts = {e, e};
   r.contacts[1].second_particle = -1;
   r.contacts[1].second_wall = 3;

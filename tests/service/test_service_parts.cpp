@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <tuple>
+#include <vector>
 
 #include "dem/io/case_conversion.h"
 #include "dem/io/case_loader.h"
@@ -110,6 +112,45 @@ TEST(EngineReadout, ContactQueriesCombineTheirFilters) {
   service::ContactFilter strong = on_top;
   strong.min_normal_force = 1e300;
   EXPECT_TRUE(service::query_contacts(world, strong).empty());
+}
+
+// The wire's ContactEntry is the engine's record field for field
+// (service/src/contact_entry.h): every value arrives, 2D vectors with z = 0,
+// and the wire has no field the record lacks.
+TEST(EngineReadout, AContactEntryIsTheRecordFieldForField) {
+  const World world = compressed_nine_discs();
+  const std::vector<ContactRecord> records = world.contacts();
+  const auto entries = service::query_contacts(world, {});
+  ASSERT_EQ(entries.size(), records.size());
+  ASSERT_GT(records.size(), 3u);
+  const auto same = [](const protocol::Vector3& wire, const Vec2& v) {
+    return wire.x == v.x() && wire.y == v.y() && wire.z == 0.0;
+  };
+  bool walls = false, moving = false;
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const ContactRecord& r = records[i];
+    const protocol::ContactEntry& e = entries[i];
+    EXPECT_EQ(e.first, r.first.value());
+    EXPECT_EQ(e.second_particle, r.second_particle.value());
+    EXPECT_EQ(e.second_wall, r.second_wall.value());
+    EXPECT_TRUE(same(e.point, r.point));
+    EXPECT_TRUE(same(e.normal, r.normal));
+    EXPECT_EQ(e.overlap, r.overlap);
+    EXPECT_EQ(e.normal_force, r.normal_force);
+    EXPECT_EQ(e.shear_force, r.shear_force);
+    EXPECT_TRUE(same(e.tangential_force, r.tangential_force));
+    EXPECT_EQ(e.normal_damping, r.normal_damping);
+    EXPECT_EQ(e.shear_damping, r.shear_damping);
+    EXPECT_EQ(e.sliding, r.sliding);
+    EXPECT_EQ(e.formed_cycle, r.formed_cycle);
+    EXPECT_TRUE(same(e.force, r.force));
+    walls = walls || r.second_wall != kInvalidId;
+    moving = moving || (r.tangential_force.norm() > 0.0 && r.force.norm() > 0.0);
+  }
+  EXPECT_TRUE(walls);   // both kinds of second body were compared
+  EXPECT_TRUE(moving);  // and the vectors held something other than their defaults
+  EXPECT_EQ(std::tuple_size_v<decltype(protocol::Fields<protocol::ContactEntry>::list)>, 14u)
+      << "a ContactEntry field this test does not compare";
 }
 
 TEST(EngineReadout, ServoDefaultsKeepTheServoStable) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "dem/io/compression_state.h"
+
 namespace dem::run {
 
 template <int Dim>
@@ -43,7 +45,7 @@ RunRecorder<Dim>::RunRecorder(const std::filesystem::path& directory, const io::
     compression_.emplace(*output.compression);
     compression_csv_.emplace(directory, world.wall(output.compression->loading_plate).name,
                              world.wall(output.compression->bottom_plate).name, tables);
-    if (resume) compression_->restore(resume->analysis);
+    if (resume) compression_->restore(io::compression_state_from_text<Dim>(resume->analysis));
   }
   // The checkpoint's row is in the tables already.
   if (resume) last_cycle_ = resume->cycle;
@@ -64,7 +66,7 @@ void RunRecorder<Dim>::fill(io::ResumePoint& point) {
     table->flush();
     point.tables[table->path().filename().string()] = table->bytes();
   }
-  point.analysis = compression_ ? compression_->state() : std::string();
+  point.analysis = compression_ ? io::compression_state_text(compression_->state()) : std::string();
   point.vtk_steps = vtk_ ? vtk_->step_list() : std::vector<io::VtkSeries::Step>{};
 }
 

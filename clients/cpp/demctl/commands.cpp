@@ -11,6 +11,10 @@
 #include <iterator>
 #include <map>
 #include <sstream>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <type_traits>
 
 #include "csv.h"
 #include "dem/client/errors.h"
@@ -300,6 +304,68 @@ int stop(const Global& global, bool force) {
   return kOk;
 }
 
+namespace {
+
+// contacts --csv writes the columns of the server's contacts.csv
+// (io/src/csv_writers.cpp) from the wire's fields (ContactEntry, generated
+// from the IDL): the bodies as first, second_kind, second, then a column per
+// number or flag and three per vector, so a field added to the IDL is a
+// column here. The vectors keep contacts.csv's short names (x, nx,
+// tangential_x); any other is <name>_x.
+bool is_body(std::string_view field) {
+  return field == "first" || field == "second_particle" || field == "second_wall";
+}
+
+std::string axis_stem(std::string_view field) {
+  if (field == "point") return "";
+  if (field == "normal") return "n";
+  if (field == "tangential_force") return "tangential_";
+  return std::string(field) + "_";
+}
+
+std::string contact_columns() {
+  std::string header = "first,second_kind,second";
+  std::apply(
+      [&](const auto&... f) {
+        const auto columns = [&](const auto& field) {
+          if (is_body(field.name)) return;
+          using T = std::remove_cvref_t<decltype(dem::protocol::ContactEntry{}.*field.member)>;
+          if constexpr (std::is_same_v<T, dem::protocol::Vector3>) {
+            for (const char axis : {'x', 'y', 'z'}) {
+              header += ',';
+              header += axis_stem(field.name);
+              header += axis;
+            }
+          } else {
+            header += ",";
+            header += field.name;
+          }
+        };
+        (columns(f), ...);
+      },
+      dem::protocol::Fields<dem::protocol::ContactEntry>::list);
+  return header;
+}
+
+void add_contact_cells(std::string& line, const dem::protocol::ContactEntry& c) {
+  std::apply(
+      [&](const auto&... f) {
+        const auto cells = [&](const auto& field) {
+          if (is_body(field.name)) return;
+          const auto& value = c.*field.member;
+          if constexpr (std::is_same_v<std::remove_cvref_t<decltype(value)>, dem::protocol::Vector3>) {
+            for (const double v : {value.x, value.y, value.z}) CsvWriter::add(line, v);
+          } else {
+            CsvWriter::add(line, value);
+          }
+        };
+        (cells(f), ...);
+      },
+      dem::protocol::Fields<dem::protocol::ContactEntry>::list);
+}
+
+}  // namespace
+
 int contacts(const Global& global, const dem::protocol::ContactQueryArgs& query, const std::string& csv, int limit) {
   Client client = connect(global);
   const Reply reply = client.query_contacts(query);
@@ -313,13 +379,14 @@ int contacts(const Global& global, const dem::protocol::ContactQueryArgs& query,
   };
   std::cout << reply.message << '\n';
   if (!csv.empty()) {
-    CsvWriter out(csv,
-                  "first,second_kind,second,x,y,z,nx,ny,nz,overlap,normal_force,shear_force,normal_damping,"
-                  "shear_damping,sliding");
+    CsvWriter out(csv, contact_columns());
     for (const auto& c : reply.contacts) {
-      out.row(c.first, c.second_wall >= 0 ? "wall" : "particle", second(c), c.point.x, c.point.y, c.point.z, c.normal.x,
-              c.normal.y, c.normal.z, c.overlap, c.normal_force, c.shear_force, c.normal_damping, c.shear_damping,
-              c.sliding);
+      std::string line;
+      CsvWriter::add(line, c.first);
+      CsvWriter::add(line, c.second_wall >= 0 ? "wall" : "particle");
+      CsvWriter::add(line, second(c));
+      add_contact_cells(line, c);
+      out.built_row(std::move(line));
     }
     std::cout << "wrote " << csv << '\n';
   }

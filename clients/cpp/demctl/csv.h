@@ -27,6 +27,17 @@ class CsvWriter {
     out_ << line;
     if (!out_) throw std::runtime_error("cannot write " + path_);
   }
+  // A row built a cell at a time with add (tables whose columns follow a
+  // field list).
+  template <typename T>
+  static void add(std::string& line, const T& value) {
+    append(line, value);
+  }
+  void built_row(std::string line) {
+    line.back() = '\n';
+    out_ << line;
+    if (!out_) throw std::runtime_error("cannot write " + path_);
+  }
   void flush() { out_.flush(); }
 
  private:

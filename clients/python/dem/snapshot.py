@@ -158,5 +158,17 @@ def _contacts(table, dim):
         values = np.array(values, dtype=float).reshape(-1, tangential)
         rows[name] = values[:, 0] if dim == 2 else np.linalg.norm(values, axis=1)
     rows["sliding"] = table.sliding
+    # The shear spring's force on the first particle, as the engine reports
+    # it (engine/src/contact_forces.cpp, to_record): -F_s t with t the normal
+    # turned clockwise in 2D, minus the shear vector in 3D.
+    shear = np.array(table.shear_force, dtype=float).reshape(-1, tangential)
+    if dim == 2:
+        normal = rows["normal"]
+        rows["tangential_force"][:, 0] = -(shear[:, 0] * normal[:, 1])
+        rows["tangential_force"][:, 1] = shear[:, 0] * normal[:, 0]
+    else:
+        rows["tangential_force"] = -shear
+    rows["formed_cycle"] = table.formed_cycle
+    rows["force"][:, :dim] = np.array(table.force, dtype=float).reshape(-1, dim)
     order = np.concatenate([np.flatnonzero(touching & ~with_wall), np.flatnonzero(touching & with_wall)])
     return rows[order]  # indexing keeps CONTACT_DTYPE's layout; concatenating would pack it

@@ -33,6 +33,8 @@ Column column_of(std::string_view name) {
     return {name.data(), "<f8", sizeof(double), 1};
   } else if constexpr (std::is_same_v<T, std::int32_t>) {
     return {name.data(), "<i4", sizeof(std::int32_t), 1};
+  } else if constexpr (std::is_same_v<T, std::uint64_t>) {
+    return {name.data(), "<u8", sizeof(std::uint64_t), 1};
   } else {
     static_assert(std::is_same_v<T, bool>, "a ContactEntry member with no numpy column: add its format here");
     return {name.data(), "?", sizeof(bool), 1};

@@ -4,8 +4,10 @@
 #pragma once
 
 #include <cstdint>
+#include <tuple>
 #include <type_traits>
 
+#include "dem/field_list.h"
 #include "dem/ids.h"
 #include "dem/math.h"
 
@@ -110,6 +112,31 @@ struct ContactRecordT {
   // (stress, its normal and tangential parts) read it.
   Vec<Dim> force = Vec<Dim>::Zero();
 };
+
+// The one list of a contact record's fields, in the order tables and
+// messages show them. The names are the fields' everywhere: the wire's
+// ContactEntry (idl/dem/command.idl, filled field by field from this list
+// in service/src/contact_entry.h, which fails to build while a record field
+// has no wire field of its name or a wire field no record field),
+// contacts.csv (io/src/csv_writers.cpp) and Python's contact array.
+// Adding a field is a member above, a line below and, to send it, the
+// IDL's field of the same name.
+template <int Dim>
+struct ContactRecordFields {
+  using Record = ContactRecordT<Dim>;
+  static constexpr auto list = std::make_tuple(
+      Field{"first", &Record::first}, Field{"second_particle", &Record::second_particle},
+      Field{"second_wall", &Record::second_wall}, Field{"point", &Record::point}, Field{"normal", &Record::normal},
+      Field{"overlap", &Record::overlap}, Field{"normal_force", &Record::normal_force},
+      Field{"shear_force", &Record::shear_force}, Field{"tangential_force", &Record::tangential_force},
+      Field{"normal_damping", &Record::normal_damping}, Field{"shear_damping", &Record::shear_damping},
+      Field{"sliding", &Record::sliding}, Field{"formed_cycle", &Record::formed_cycle}, Field{"force", &Record::force});
+};
+
+static_assert(lists_every_member<ContactRecordT<2>>(ContactRecordFields<2>::list),
+              "ContactRecordT changed: give the new member its line in ContactRecordFields");
+static_assert(lists_every_member<ContactRecordT<3>>(ContactRecordFields<3>::list),
+              "ContactRecordT changed: give the new member its line in ContactRecordFields");
 
 // The box of an element test (BoxControlT) as it stands: its extents, the
 // stresses its walls carry and its strains since the control was set.

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "dem/definitions.h"
+#include "dem/field_list.h"
 #include "dem/measures.h"
 
 namespace dem {
@@ -217,23 +218,6 @@ constexpr void for_each_contact_field(Visit&& visit) {
   visit(
       ContactFieldInfo{"moment_second", kReport}, [](auto& c) -> auto& { return c.moment_second; }, NoRow{});
 }
-
-namespace detail {
-// Converts to any member type: counts an aggregate's members by the
-// longest brace list that initializes it.
-struct AnyMember {
-  template <typename T>
-  operator T() const;  // NOLINT(google-explicit-constructor): only named in unevaluated contexts
-};
-template <typename T, typename... Members>
-constexpr std::size_t member_count() {
-  if constexpr (requires { T{Members{}..., AnyMember{}}; }) {
-    return member_count<T, Members..., AnyMember>();
-  } else {
-    return sizeof...(Members);
-  }
-}
-}  // namespace detail
 
 template <int Dim>
 constexpr std::size_t contact_field_count() {

@@ -9,8 +9,6 @@
 #include <array>
 #include <cstdint>
 #include <optional>
-#include <string>
-#include <string_view>
 #include <vector>
 
 #include "dem/analysis/compression_settings.h"
@@ -60,6 +58,15 @@ struct CompressionResults {
   CompressionSample last;  // the plates at the end of the run
 };
 
+// Everything an analysis has gathered, which a checkpoint keeps (io turns
+// it into text: dem/io/compression_state.h); the next target follows from
+// how many snapshots there are, one per target reached.
+template <int Dim>
+struct CompressionStateT {
+  std::vector<CompressionSample> samples;
+  std::vector<PlateSnapshotT<Dim>> snapshots;
+};
+
 template <int Dim>
 class CompressionAnalysisT {
  public:
@@ -74,12 +81,11 @@ class CompressionAnalysisT {
 
   const CompressionSettings& settings() const { return settings_; }
 
-  // Everything gathered so far as text (every double exactly), for a
-  // checkpoint; restore() makes a fresh analysis of the same settings carry
-  // on from it (compression_state.cpp). restore throws std::runtime_error
-  // for text that is not such a state.
-  std::string state() const;
-  void restore(std::string_view state);
+  // Everything gathered so far, for a checkpoint; restore() makes a fresh
+  // analysis of the same settings carry on from it, and throws
+  // std::runtime_error for a state with more snapshots than its targets.
+  CompressionStateT<Dim> state() const { return {samples_, snapshots_}; }
+  void restore(CompressionStateT<Dim> state);
   const std::vector<CompressionSample>& samples() const { return samples_; }
   const std::vector<PlateSnapshotT<Dim>>& snapshots() const { return snapshots_; }
 

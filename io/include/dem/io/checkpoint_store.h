@@ -22,12 +22,12 @@ namespace dem::io {
 
 // Where a run stood at a checkpoint, beyond the world's state.
 struct ResumePoint {
-  std::uint64_t cycle = 0;         // the world's cycle (the snapshot's)
-  std::size_t stage = 0;           // the stage running, from 0
-  std::uint64_t stage_cycles = 0;  // of it run; 0: the stage has not started (its start actions are to come)
-  std::string case_digest;         // SHA-256 of the case's bytes, hex: --resume refuses another case
-  TableSizes tables;               // each table's length
-  std::string analysis;  // the plate loading analyses' state (analysis::CompressionAnalysisT::state), or empty
+  std::uint64_t cycle = 0;                 // the world's cycle (the snapshot's)
+  std::size_t stage = 0;                   // the stage running, from 0
+  std::uint64_t stage_cycles = 0;          // of it run; 0: the stage has not started (its start actions are to come)
+  std::string case_digest;                 // SHA-256 of the case's bytes, hex: --resume refuses another case
+  TableSizes tables;                       // each table's length
+  std::string analysis;                    // the plate loading analyses' state as text (compression_state.h), or empty
   std::vector<VtkSeries::Step> vtk_steps;  // the ParaView series' steps so far (none: no series yet)
 };
 

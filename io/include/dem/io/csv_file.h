@@ -70,6 +70,17 @@ class CsvFile {
     write_line(line);
   }
 
+  // A row built by the caller, a field at a time with add_field (tables
+  // whose columns follow a field list).
+  template <typename Field>
+  static void add_field(std::string& line, const Field& field) {
+    append_separated(line, field);
+  }
+  void write_built_row(std::string line) {
+    line += '\n';
+    write_line(line);
+  }
+
   // Pushes buffered rows to the file, so a long run can be watched as it
   // grows; throws std::runtime_error naming the file when that fails.
   void flush();

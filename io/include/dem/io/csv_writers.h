@@ -37,14 +37,22 @@
 //                 shear_force is signed in 2D, the magnitude in 3D.
 // Snapshots, written once (at the end of a run):
 //   contacts.csv  2D: first,second_kind,second,x,y,nx,ny,overlap,normal_force,
-//                     shear_force,normal_damping,shear_damping,sliding
+//                     shear_force,tangential_x,tangential_y,normal_damping,
+//                     shear_damping,sliding,formed_cycle,force_x,force_y
 //                 3D: first,second_kind,second,x,y,z,nx,ny,nz,overlap,
 //                     normal_force,shear_force,tangential_x,tangential_y,
-//                     tangential_z,normal_damping,shear_damping,sliding
-//                 second_kind is "particle" (second is its id) or "wall"
-//                 (second is the wall's name, as in walls.csv). In 3D the
-//                 shear force and damping are magnitudes and tangential_* is
-//                 the shear spring's force on the first particle.
+//                     tangential_z,normal_damping,shear_damping,sliding,
+//                     formed_cycle,force_x,force_y,force_z
+//                 the fields of the engine's contact record, in the order
+//                 of its field list (ContactRecordFields, dem/measures.h),
+//                 vectors one column per axis: a field added there is a
+//                 column here. second_kind is "particle" (second is its id)
+//                 or "wall" (second is the wall's name, as in walls.csv).
+//                 The shear force and damping are signed along t in 2D,
+//                 magnitudes in 3D; tangential_* is the shear spring's force
+//                 on the first particle, force_* the whole force the contact
+//                 puts on it (springs and dashpots), formed_cycle the cycle
+//                 the contact began touching.
 //   particles.csv 2D: id,x,y,radius,vx,vy,angular_velocity,rotation,
 //                     material,a,b,n
 //                 3D: id,x,y,z,radius,vx,vy,vz,angular_velocity_x,
