@@ -41,7 +41,11 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
                         ContactBlocks<Dim>& blocks, int b) {
   constexpr int kBatch = 64;
   constexpr int kAhead = 16;  // rows ahead to fetch
-  const ContactParams& params = *in.shared_params;
+  // A copy, not a reference: its fields become loop invariants in registers.
+  // Read through a reference, the stores of the batch could alias them,
+  // and a field read under a condition (a dashpot off while sliding) becomes
+  // a masked load that stops the law loop from vectorising.
+  const ContactParams params = *in.shared_params;
   const double dt = in.dt;
   // The packed rows of one batch, structure of arrays.
   alignas(64) double dx[Dim][kBatch], v1[Dim][kBatch], v2[Dim][kBatch];

@@ -54,6 +54,8 @@ ContactParamTable::ContactParamTable(const std::vector<MaterialDef>& materials,
     p.damping_ratio =
         model.hertz.restitution ? damping_ratio_from_restitution(*model.hertz.restitution) : model.hertz.damping_ratio;
     p.tangential_damping_ratio = model.hertz.tangential ? p.damping_ratio : 0.0;
+    p.normal_dashpot = 2.0 * p.damping_ratio * std::sqrt(2.0 * p.contact_modulus);
+    p.tangential_dashpot = 2.0 * p.tangential_damping_ratio * std::sqrt(8.0 * p.shear_modulus);
     p.rolling_friction = model.rolling.friction;
     p.rolling_damping_ratio = model.rolling.damping_ratio;
     params_[a * count_ + b] = p;

@@ -27,6 +27,12 @@ struct ContactParams {
   // The same fraction on the tangential stiffness (Randall 4.19), 0 when
   // the model has no tangential dashpot.
   double tangential_damping_ratio = 0.0;
+  // The dashpots' coefficients over sqrt(m* a): both stiffnesses grow as the
+  // contact radius a (2 E* a, 8 G* a), so 2 beta sqrt(m* k) (Randall 4.13,
+  // 4.19) is 2 beta sqrt(2 E*) sqrt(m* a) and 2 beta sqrt(8 G*) sqrt(m* a),
+  // and one root per contact serves both.
+  double normal_dashpot = 0.0;
+  double tangential_dashpot = 0.0;
   // Rolling resistance (rolling_resistance.h): mu_r and eta_r.
   double rolling_friction = 0.0;
   double rolling_damping_ratio = 0.0;
