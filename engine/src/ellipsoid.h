@@ -59,6 +59,21 @@ EllipsoidContact ellipsoid_contact(const EllipsoidFrame& i, const Vec3& centre_i
 EllipsoidContact ellipsoid_contact(const PlacedEllipsoid& i, const PlacedEllipsoid& j, double mu_i = 0.0,
                                    double mu_j = 0.0);
 
+// One search of a batch: the two bodies' frames and centres (the second at
+// its nearest image) and where the last cycle's searches ended.
+struct EllipsoidQuery {
+  const EllipsoidFrame* i;
+  const EllipsoidFrame* j;
+  Vec3 centre_i, centre_j;
+  double mu_i = 0.0, mu_j = 0.0;
+};
+
+// ellipsoid_contact for each of `count` queries, several at a time across
+// the lanes of a vector (each contact's two searches in two lanes, as
+// ellipsoid_contact does them): the same operations lane by lane, so the
+// same bits as one by one.
+void ellipsoid_contacts(const EllipsoidQuery* queries, EllipsoidContact* out, int count);
+
 // The contact of an ellipsoid with a plane through `on_plane` whose unit
 // normal `towards` points to the ellipsoid's side: the support point P
 // (eq. 54), its depth past the plane (eq. 55) and the projected point Q
