@@ -7,6 +7,8 @@
 // face meets an ellipsoid at its support point (eqs. 50-56).
 #pragma once
 
+#include <array>
+
 #include "dem/math.h"
 
 namespace dem {
@@ -42,6 +44,10 @@ struct EllipsoidFrame {
   SymmetricMatrix reach;
 };
 EllipsoidFrame ellipsoid_frame(const Vec3& axes, const Quaternion& orientation);
+// Four bodies' frames at once, one in each lane of a vector: the same
+// operations lane by lane, so the same bits as ellipsoid_frame.
+void ellipsoid_frames(const std::array<Vec3, 4>& axes, const std::array<Quaternion, 4>& orientation,
+                      EllipsoidFrame* out);
 
 struct EllipsoidContact {
   double overlap;                     // > 0 in contact

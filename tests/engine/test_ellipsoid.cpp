@@ -2,6 +2,7 @@
 // configurations with known answers.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -187,6 +188,36 @@ TEST(Ellipsoid, BatchedSearchesGiveTheSameBitsAsOneByOne) {
   std::printf("%d of %d batched contacts differ from one by one in any bit (%d touching)\n", differing, compared,
               touching);
   EXPECT_GT(touching, 5000);
+  EXPECT_EQ(differing, 0);
+}
+
+// ellipsoid_frames: four bodies' frames at once, the same bits as one by
+// one (bodies of three sizes, the axes in any order, any orientation).
+TEST(Ellipsoid, BatchedFramesGiveTheSameBitsAsOneByOne) {
+  std::mt19937_64 random(59);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
+  const auto same = [&](const SymmetricMatrix& a, const SymmetricMatrix& b) {
+    return bits(a.xx) == bits(b.xx) && bits(a.xy) == bits(b.xy) && bits(a.xz) == bits(b.xz) &&
+           bits(a.yy) == bits(b.yy) && bits(a.yz) == bits(b.yz) && bits(a.zz) == bits(b.zz);
+  };
+  int differing = 0;
+  for (int trial = 0; trial < 2500; ++trial) {
+    std::array<Vec3, 4> axes;
+    std::array<Quaternion, 4> orientation;
+    for (int k = 0; k < 4; ++k) {
+      const double size = std::pow(10.0, 2.0 * unit(random));  // 0.01 to 100 m
+      axes[k] = size * Vec3(1.0 + unit(random), 1.0 + unit(random), 1.0 + unit(random)) + Vec3::Constant(1e-3 * size);
+      orientation[k] = Quaternion(
+          Eigen::AngleAxisd(3.2 * unit(random), Vec3(unit(random), unit(random), unit(random)).normalized()));
+    }
+    EllipsoidFrame batched[4];
+    ellipsoid_frames(axes, orientation, batched);
+    for (int k = 0; k < 4; ++k) {
+      const EllipsoidFrame one = ellipsoid_frame(axes[k], orientation[k]);
+      differing += !same(batched[k].potential, one.potential) || !same(batched[k].reach, one.reach);
+    }
+  }
   EXPECT_EQ(differing, 0);
 }
 
