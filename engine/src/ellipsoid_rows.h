@@ -43,4 +43,16 @@ void ellipsoid_pair_geometry(const PassInputs<3>& in, const Slot* first, const s
   }
 }
 
+// Bodies [begin, end)'s frames (the pass's frame_ellipsoids), four at a
+// time across the lanes of a vector (ellipsoid_frames): the same bits as
+// ellipsoid_frame body by body.
+inline void ellipsoid_frames_of(const Particles<3>& p, EllipsoidFrame* frames, std::int64_t begin, std::int64_t end) {
+  std::int64_t i = begin;
+  for (; i + 4 <= end; i += 4) {
+    ellipsoid_frames({p.shape[i].axes, p.shape[i + 1].axes, p.shape[i + 2].axes, p.shape[i + 3].axes},
+                     {p.rotation[i], p.rotation[i + 1], p.rotation[i + 2], p.rotation[i + 3]}, frames + i);
+  }
+  for (; i < end; ++i) frames[i] = ellipsoid_frame(p.shape[i].axes, p.rotation[i]);
+}
+
 }  // namespace dem

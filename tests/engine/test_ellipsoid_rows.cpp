@@ -91,6 +91,42 @@ void compare_rows() {
   EXPECT_EQ(differing, 0);
 }
 
+// The frames of a run of bodies, four at a time, from any first body and
+// any count: ellipsoid_frame's bits body by body, the bodies outside the
+// run untouched.
+TEST(EllipsoidRows, FramesOfARunAreBodyByBodysBitForBit) {
+  std::mt19937_64 random(61);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  Particles<3> p;
+  constexpr int kBodies = 23;
+  for (int k = 0; k < kBodies; ++k) {
+    ShapeDefT<3> shape;
+    shape.axes = Vec3(0.3 + 0.1 * unit(random), 0.2 + 0.1 * unit(random), 0.15 + 0.1 * unit(random));
+    p.shape.push_back(shape);
+    p.rotation.push_back(
+        Quaternion(Eigen::AngleAxisd(3.2 * unit(random), Vec3(unit(random), unit(random), unit(random)).normalized())));
+  }
+  const auto same = [](const SymmetricMatrix& a, const SymmetricMatrix& b) {
+    return same_bits(a.xx, b.xx) && same_bits(a.xy, b.xy) && same_bits(a.xz, b.xz) && same_bits(a.yy, b.yy) &&
+           same_bits(a.yz, b.yz) && same_bits(a.zz, b.zz);
+  };
+  int differing = 0, runs = 0;
+  for (int begin = 0; begin < kBodies; begin += 3) {
+    for (int end = begin; end <= kBodies; end += 5) {
+      std::vector<EllipsoidFrame> frames(kBodies, EllipsoidFrame{{7, 7, 7, 7, 7, 7}, {7, 7, 7, 7, 7, 7}});
+      ellipsoid_frames_of(p, frames.data(), begin, end);
+      for (int k = 0; k < kBodies; ++k) {
+        const EllipsoidFrame expected = k >= begin && k < end ? ellipsoid_frame(p.shape[k].axes, p.rotation[k])
+                                                              : EllipsoidFrame{{7, 7, 7, 7, 7, 7}, {7, 7, 7, 7, 7, 7}};
+        differing += !same(frames[k].potential, expected.potential) || !same(frames[k].reach, expected.reach);
+      }
+      ++runs;
+    }
+  }
+  EXPECT_GT(runs, 20);
+  EXPECT_EQ(differing, 0);
+}
+
 TEST(EllipsoidRows, BatchedGeometryIsRowByRowsBitForBit) { compare_rows<false>(); }
 TEST(EllipsoidRows, BatchedGeometryOfRowsApartIsRowByRowsBitForBit) { compare_rows<true>(); }
 
