@@ -165,14 +165,34 @@ struct EllipsoidShape {
 
   template <bool kApartGeometry>
   static ContactGeometry<3> pair(const PassInputs<3>& in, Slot x, Slot y, ContactSearch& search) {
+    ContactGeometry<3> g;
+    EllipsoidQuery q;
+    if (!screen<kApartGeometry>(in, x, y, search, g, q)) return g;
+    const EllipsoidContact c = ellipsoid_contact(*q.i, q.centre_i, *q.j, q.centre_j, q.mu_i, q.mu_j);
+    search = {c.multiplier_i, c.multiplier_j, true};
+    return geometry(c, q.centre_i, q.centre_j);
+  }
+
+  // What comes before the search: false, with `g` the row's geometry, when
+  // the bounding spheres or the supports tell the bodies apart; else true,
+  // with `q` the search to make (ellipsoid_rows.h makes several at once).
+  template <bool kApartGeometry>
+  [[gnu::always_inline]] static bool screen(const PassInputs<3>& in, Slot x, Slot y, ContactSearch& search,
+                                            ContactGeometry<3>& g, EllipsoidQuery& q) {
     const Particles<3>& p = in.particles;
     const Vec3& cx = p.position[x];
     const Vec3 d = in.periodic.separation(cx, p.position[y]);
     // Most rows are neighbours apart: they get no root and no normal
     // unless kApartGeometry asks (see RoundShape).
-    ContactGeometry<3> none;
-    none.overlap = -1.0;
-    if (!bounding_circles_meet(p, x, y, d, search)) return kApartGeometry ? apart(p, x, y, d) : none;
+    if (!bounding_circles_meet(p, x, y, d, search)) {
+      if (kApartGeometry) {
+        g = apart(p, x, y, d);
+      } else {
+        g = ContactGeometry<3>{};
+        g.overlap = -1.0;
+      }
+      return false;
+    }
     // An elongated body's bounding sphere reaches far past it. How far each
     // reaches along the line of centres (its support) tells most pairs
     // whose spheres meet apart: the plane across that line between the two
@@ -182,17 +202,22 @@ struct EllipsoidShape {
     const double reach_times_distance = std::sqrt(d.dot(fx.reach * d)) + std::sqrt(d.dot(fy.reach * d));
     const double distance2 = d.squaredNorm();
     if (reach_times_distance < distance2) {
-      if (!kApartGeometry) return none;
-      const double distance = std::sqrt(distance2);
-      ContactGeometry<3> g;
-      g.overlap = reach_times_distance / distance - distance;
-      g.normal = d / distance;
-      return g;
+      g = ContactGeometry<3>{};
+      g.overlap = -1.0;
+      if (kApartGeometry) {
+        const double distance = std::sqrt(distance2);
+        g.overlap = reach_times_distance / distance - distance;
+        g.normal = d / distance;
+      }
+      return false;
     }
-    const Vec3 cy = cx + d;  // the nearest image of y
-    const EllipsoidContact c =
-        ellipsoid_contact(fx, cx, fy, cy, search.valid ? search.first : 0.0, search.valid ? search.second : 0.0);
-    search = {c.multiplier_i, c.multiplier_j, true};
+    // With the nearest image of y.
+    q = {&fx, &fy, cx, cx + d, search.valid ? search.first : 0.0, search.valid ? search.second : 0.0};
+    return true;
+  }
+
+  // A row's geometry from its search, cx and cy the centres searched.
+  static ContactGeometry<3> geometry(const EllipsoidContact& c, const Vec3& cx, const Vec3& cy) {
     ContactGeometry<3> g;
     g.overlap = c.overlap;
     g.normal = c.normal;

@@ -323,6 +323,38 @@ EllipsoidFrame ellipsoid_frame(const Vec3& axes, const Quaternion& orientation) 
           turned(squares.x(), squares.y(), squares.z())};
 }
 
+void ellipsoid_frames(const std::array<Vec3, 4>& axes, const std::array<Quaternion, 4>& orientation,
+                      EllipsoidFrame* out) {
+  // As ellipsoid_frame, body k in lane k.
+  using V = double __attribute__((vector_size(32)));
+  V x, y, z, w, ax, ay, az;
+  for (int k = 0; k < 4; ++k) {
+    x[k] = orientation[k].x(), y[k] = orientation[k].y(), z[k] = orientation[k].z(), w[k] = orientation[k].w();
+    ax[k] = axes[k].x(), ay[k] = axes[k].y(), az[k] = axes[k].z();
+  }
+  const V c1x = 0.5 - (y * y + z * z), c1y = x * y + w * z, c1z = x * z - w * y;
+  const V c3x = x * z + w * y, c3y = y * z - w * x, c3z = 0.5 - (x * x + y * y);
+  const V o1[6] = {c1x * c1x, c1x * c1y, c1x * c1z, c1y * c1y, c1y * c1z, c1z * c1z};
+  const V o3[6] = {c3x * c3x, c3x * c3y, c3x * c3z, c3y * c3y, c3y * c3z, c3z * c3z};
+  const auto turned = [&](V w1, V w2, V w3, V(&m)[6]) {
+    const V s1 = 4.0 * (w1 - w2), s3 = 4.0 * (w3 - w2);
+    for (int e = 0; e < 6; ++e) m[e] = s1 * o1[e] + s3 * o3[e];
+    m[0] += w2;
+    m[3] += w2;
+    m[5] += w2;
+  };
+  const V sx = ax * ax, sy = ay * ay, sz = az * az;
+  const V inverse_product = 1.0 / (sx * sy * sz);
+  V potential[6], reach[6];
+  turned(sy * sz * inverse_product, sx * sz * inverse_product, sx * sy * inverse_product, potential);
+  turned(sx, sy, sz, reach);
+  for (int k = 0; k < 4; ++k) {
+    out[k].potential = {potential[0][k], potential[1][k], potential[2][k],
+                        potential[3][k], potential[4][k], potential[5][k]};
+    out[k].reach = {reach[0][k], reach[1][k], reach[2][k], reach[3][k], reach[4][k], reach[5][k]};
+  }
+}
+
 EllipsoidContact ellipsoid_contact(const EllipsoidFrame& i, const Vec3& centre_i, const EllipsoidFrame& j,
                                    const Vec3& centre_j, double mu_i, double mu_j) {
   const Symmetric& mi = i.potential;
@@ -375,6 +407,272 @@ EllipsoidContact ellipsoid_contact(const EllipsoidFrame& i, const Vec3& centre_i
   c.multiplier_i = mu[0];
   c.multiplier_j = mu[1];
   return c;
+}
+
+namespace {
+
+// Several contacts at once: lanes 2k and 2k + 1 of a vector of doubles
+// hold contact k's two searches (body i's, body j's), as Pair does for one
+// contact, and every step of ellipsoid_contact is taken in all lanes with
+// the same operations in the same order, so lane by lane the same bits.
+// The searches end after one evaluation in nearly every contact, so the
+// lanes rarely part: a contact whose searches do not end there goes the
+// scalar way (deepest_apart) on its own, the others' lanes unchanged.
+using Quad = double __attribute__((vector_size(32)));
+using Octet = double __attribute__((vector_size(64)));
+template <int L>
+struct LaneType;
+template <>
+struct LaneType<2> {
+  using type = Pair;
+};
+template <>
+struct LaneType<4> {
+  using type = Quad;
+};
+template <>
+struct LaneType<8> {
+  using type = Octet;
+};
+template <int L>
+using Lanes = typename LaneType<L>::type;
+
+template <typename V>
+using LaneMask = decltype(V{} < V{});
+
+template <typename V>
+struct LaneVector {
+  V x, y, z;
+};
+template <typename V>
+struct LaneMatrix {
+  V xx, xy, xz, yy, yz, zz;
+};
+
+// Each lane's partner: lanes 2k and 2k + 1 swapped (a shuffle within each
+// pair, which AVX does in one instruction).
+template <typename T>
+inline T partner(T a) {
+  using Index = LaneMask<Lanes<sizeof(T) / 8>>;
+  if constexpr (sizeof(T) == 16) {
+    return __builtin_shuffle(a, Index{1, 0});
+  } else if constexpr (sizeof(T) == 32) {
+    return __builtin_shuffle(a, Index{1, 0, 3, 2});
+  } else {
+    static_assert(sizeof(T) == 64);
+    return __builtin_shuffle(a, Index{1, 0, 3, 2, 5, 4, 7, 6});
+  }
+}
+template <typename V>
+inline LaneVector<V> partner(const LaneVector<V>& v) {
+  return {partner(v.x), partner(v.y), partner(v.z)};
+}
+template <typename V>
+inline LaneMatrix<V> partner(const LaneMatrix<V>& m) {
+  return {partner(m.xx), partner(m.xy), partner(m.xz), partner(m.yy), partner(m.yz), partner(m.zz)};
+}
+
+template <typename M>
+inline bool any(M m) {
+  bool out = false;
+  for (int k = 0; k < static_cast<int>(sizeof(M) / 8); ++k) out |= m[k] != 0;
+  return out;
+}
+template <typename M>
+inline bool all(M m) {
+  bool out = true;
+  for (int k = 0; k < static_cast<int>(sizeof(M) / 8); ++k) out &= m[k] != 0;
+  return out;
+}
+
+template <typename V>
+inline LaneMatrix<V> cofactors(const LaneMatrix<V>& a) {
+  return {a.yy * a.zz - a.yz * a.yz, a.xz * a.yz - a.xy * a.zz, a.xy * a.yz - a.xz * a.yy,
+          a.xx * a.zz - a.xz * a.xz, a.xy * a.xz - a.xx * a.yz, a.xx * a.yy - a.xy * a.xy};
+}
+template <typename V>
+inline LaneVector<V> operator*(const LaneMatrix<V>& m, const LaneVector<V>& v) {
+  return {m.xx * v.x + m.xy * v.y + m.xz * v.z, m.xy * v.x + m.yy * v.y + m.yz * v.z,
+          m.xz * v.x + m.yz * v.y + m.zz * v.z};
+}
+template <typename V>
+inline LaneVector<V> operator*(V s, const LaneVector<V>& v) {
+  return {s * v.x, s * v.y, s * v.z};
+}
+template <typename V>
+inline LaneVector<V> operator+(const LaneVector<V>& a, const LaneVector<V>& b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+template <typename V>
+inline LaneVector<V> operator-(const LaneVector<V>& a, const LaneVector<V>& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+template <typename V>
+inline V dot(const LaneVector<V>& a, const LaneVector<V>& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+// A dot product summed as Eigen sums a Vec3's (x + (y + z), halves
+// first), for the lanes to match ellipsoid_contact's Eigen products.
+template <typename V>
+inline V split_dot(const LaneVector<V>& a, const LaneVector<V>& b) {
+  return a.x * b.x + (a.y * b.y + a.z * b.z);
+}
+template <typename V, typename M>
+inline LaneVector<V> select(M m, const LaneVector<V>& a, const LaneVector<V>& b) {
+  return {m ? a.x : b.x, m ? a.y : b.y, m ? a.z : b.z};
+}
+template <typename V>
+inline V root(V a) {
+  if constexpr (sizeof(V) == 32) {
+    return V{std::sqrt(a[0]), std::sqrt(a[1]), std::sqrt(a[2]), std::sqrt(a[3])};
+  } else {
+    V out;
+    for (int k = 0; k < static_cast<int>(sizeof(V) / 8); ++k) out[k] = std::sqrt(a[k]);
+    return out;
+  }
+}
+
+// deepest_pair in every lane. `ended` comes in as the contacts whose
+// warm searches may try it (both multipliers positive, each centre
+// outside the other body) and goes out as those whose searches both ended
+// there (in both of the contact's lanes).
+template <typename V>
+inline void deepest_lanes(const LaneMatrix<V>& own, const LaneVector<V>& rhs, V mu, LaneMask<V>& ended,
+                          LaneVector<V>& d, LaneVector<V>& gradient, V& ends) {
+  const LaneMatrix<V> other = partner(own);
+  const LaneMatrix<V> a{other.xx + mu * own.xx, other.xy + mu * own.xy, other.xz + mu * own.xz,
+                        other.yy + mu * own.yy, other.yz + mu * own.yz, other.zz + mu * own.zz};
+  const LaneMatrix<V> adj = cofactors(a);
+  const V det = a.xx * adj.xx + a.xy * adj.xy + a.xz * adj.xz;
+  const LaneVector<V> u = adj * rhs;
+  const LaneVector<V> w = own * u;
+  const LaneVector<V> z = adj * w;
+  const V wz = dot(w, z);
+  const V det2 = det * det;
+  const V e = dot(u, w) - det2;
+  const V size = e < 0.0 ? -e : e;
+  LaneMask<V> ok = ended & (size < kSecondOrder * det2) & (wz > 0.0) & (det > 1e-300) & (2.0 * mu * wz + e * det > 0.0);
+  ok &= partner(ok);
+  ended = ok;
+  if (!any(ok)) return;
+  const LaneVector<V> own_z = own * z;
+  LaneMask<V> first_order = size < kFirstOrder * det2;
+  first_order &= partner(first_order);
+  const V q = first_order ? 2.0 * wz : 4.0 * wz * wz - 3.0 * e * dot(z, own_z);
+  const V step = first_order ? e : 2.0 * e * wz;
+  LaneMask<V> in_range = (q > 1e-300) & (q < 1e300) & (det < 1e300);
+  ended = ok & in_range & partner(in_range);
+  const V t = step / q, inverse_det = 1.0 / det;
+  ends = mu + t * det;
+  const LaneVector<V> near = u - t * z;
+  const LaneVector<V> near_gradient = w - t * own_z;
+  if (all(first_order | ~ended)) {
+    d = inverse_det * near;
+    gradient = inverse_det * near_gradient;
+  } else {
+    const LaneVector<V> second = adj * own_z;
+    const V tt = t * t;
+    d = inverse_det * select(first_order, near, near + tt * second);
+    gradient = inverse_det * select(first_order, near_gradient, near_gradient + tt * (own * second));
+  }
+}
+
+template <int L>
+void contacts_in_lanes(const EllipsoidQuery* q, EllipsoidContact* out) {
+  using V = Lanes<L>;
+  constexpr int kContacts = L / 2;
+  LaneMatrix<V> own;
+  LaneVector<V> d0;
+  V mu;
+  for (int k = 0; k < kContacts; ++k) {
+    const Symmetric& mi = q[k].i->potential;
+    const Symmetric& mj = q[k].j->potential;
+    const Vec3 between = q[k].centre_j - q[k].centre_i;
+    for (int s = 0; s < 2; ++s) {
+      const Symmetric& m = s == 0 ? mi : mj;
+      const int l = 2 * k + s;
+      own.xx[l] = m.xx, own.xy[l] = m.xy, own.xz[l] = m.xz, own.yy[l] = m.yy, own.yz[l] = m.yz, own.zz[l] = m.zz;
+      d0.x[l] = between.x(), d0.y[l] = between.y(), d0.z[l] = between.z();
+    }
+    mu[2 * k] = q[k].mu_i;
+    mu[2 * k + 1] = q[k].mu_j;
+  }
+  const LaneVector<V> own_d0 = own * d0;  // (M_i d0, M_j d0) in each contact's lanes
+  const V f0 = dot(d0, own_d0);
+  V sign;
+  for (int l = 0; l < L; ++l) sign[l] = l % 2 == 0 ? 1.0 : -1.0;
+  const LaneMask<V> odd = sign < 0.0;
+  const LaneVector<V> rhs{sign * partner(own_d0.x), sign * partner(own_d0.y), sign * partner(own_d0.z)};
+  LaneMask<V> ended = (f0 > 1.0) & (mu > 0.0);
+  ended &= partner(ended);
+  LaneVector<V> d, g;
+  V ends{};
+  if (any(ended)) deepest_lanes(own, rhs, mu, ended, d, g, ends);
+  for (int k = 0; k < kContacts; ++k) {
+    const int l = 2 * k;
+    if (ended[l]) [[likely]] {
+      continue;
+    }
+    const PairVector own_d0_k{Pair{own_d0.x[l], own_d0.x[l + 1]}, Pair{own_d0.y[l], own_d0.y[l + 1]},
+                              Pair{own_d0.z[l], own_d0.z[l + 1]}};
+    PairVector dk, gk;
+    Pair muk;
+    deepest_apart(q[k].i->potential, q[k].j->potential, q[k].centre_j - q[k].centre_i, own_d0_k, Pair{f0[l], f0[l + 1]},
+                  Pair{mu[l], mu[l + 1]}, dk, gk, muk);
+    for (int s = 0; s < 2; ++s) {
+      d.x[l + s] = dk.x[s], d.y[l + s] = dk.y[s], d.z[l + s] = dk.z[s];
+      g.x[l + s] = gk.x[s], g.y[l + s] = gk.y[s], g.z[l + s] = gk.z[s];
+      ends[l + s] = muk[s];
+    }
+  }
+  // As in ellipsoid_contact; lane 2k + 1 holds -s of contact k, whose
+  // squares and products are those of s.
+  const V squares = dot(g, g);
+  const V lengths = root(squares);
+  const LaneVector<V> weighted = partner(lengths) * g;
+  const LaneVector<V> sum = weighted - partner(weighted);
+  const V squared_length = split_dot(sum, sum);
+  const V other_length = partner(lengths);
+  const LaneMatrix<V> scaled{other_length * own.xx, other_length * own.xy, other_length * own.xz,
+                             other_length * own.yy, other_length * own.yz, other_length * own.zz};
+  const LaneMatrix<V> k_sum = cofactors(LaneMatrix<V>{scaled.xx + partner(scaled.xx), scaled.xy + partner(scaled.xy),
+                                                      scaled.xz + partner(scaled.xz), scaled.yy + partner(scaled.yy),
+                                                      scaled.yz + partner(scaled.yz), scaled.zz + partner(scaled.zz)});
+  const V x = sum.x, y = sum.y, z = sum.z;
+  const V product = (k_sum.xx * (x * x) + k_sum.yy * (y * y) + k_sum.zz * (z * z)) +
+                    2.0 * (k_sum.xy * (x * y) + k_sum.xz * (x * z) + k_sum.yz * (y * z));
+  const V scale = squares * partner(squares) * squared_length;
+  const V floor = 1e-300 * scale;
+  const V denominator = odd ? (product < floor ? floor : product) : squared_length;
+  const V roots = root((odd ? scale : V{} + 1.0) * denominator) * (1.0 / denominator);
+  const LaneVector<V> gap = d - partner(d) - d0;
+  const V along = split_dot(gap, sum);
+  for (int k = 0; k < kContacts; ++k) {
+    const int l = 2 * k;
+    EllipsoidContact& c = out[k];
+    const Vec3 s(sum.x[l], sum.y[l], sum.z[l]);
+    c.normal = roots[l] * s;
+    c.overlap = roots[l] * along[l];
+    c.first_point = q[k].centre_i + Vec3(d.x[l], d.y[l], d.z[l]);
+    c.second_point = q[k].centre_j + Vec3(d.x[l + 1], d.y[l + 1], d.z[l + 1]);
+    c.point = 0.5 * (c.first_point + c.second_point);
+    c.effective_radius = roots[l + 1];
+    c.multiplier_i = ends[l];
+    c.multiplier_j = ends[l + 1];
+  }
+}
+
+}  // namespace
+
+void ellipsoid_contacts(const EllipsoidQuery* queries, EllipsoidContact* out, int count) {
+  constexpr int kLanes = 4;
+  constexpr int kContacts = kLanes / 2;
+  int k = 0;
+  for (; k + kContacts <= count; k += kContacts) contacts_in_lanes<kLanes>(queries + k, out + k);
+  for (; k < count; ++k) {
+    const EllipsoidQuery& q = queries[k];
+    out[k] = ellipsoid_contact(*q.i, q.centre_i, *q.j, q.centre_j, q.mu_i, q.mu_j);
+  }
 }
 
 EllipsoidContact ellipsoid_contact(const PlacedEllipsoid& i, const PlacedEllipsoid& j, double mu_i, double mu_j) {

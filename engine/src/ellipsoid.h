@@ -7,6 +7,8 @@
 // face meets an ellipsoid at its support point (eqs. 50-56).
 #pragma once
 
+#include <array>
+
 #include "dem/math.h"
 
 namespace dem {
@@ -42,6 +44,10 @@ struct EllipsoidFrame {
   SymmetricMatrix reach;
 };
 EllipsoidFrame ellipsoid_frame(const Vec3& axes, const Quaternion& orientation);
+// Four bodies' frames at once, one in each lane of a vector: the same
+// operations lane by lane, so the same bits as ellipsoid_frame.
+void ellipsoid_frames(const std::array<Vec3, 4>& axes, const std::array<Quaternion, 4>& orientation,
+                      EllipsoidFrame* out);
 
 struct EllipsoidContact {
   double overlap;                     // > 0 in contact
@@ -58,6 +64,21 @@ EllipsoidContact ellipsoid_contact(const EllipsoidFrame& i, const Vec3& centre_i
                                    const Vec3& centre_j, double mu_i = 0.0, double mu_j = 0.0);
 EllipsoidContact ellipsoid_contact(const PlacedEllipsoid& i, const PlacedEllipsoid& j, double mu_i = 0.0,
                                    double mu_j = 0.0);
+
+// One search of a batch: the two bodies' frames and centres (the second at
+// its nearest image) and where the last cycle's searches ended.
+struct EllipsoidQuery {
+  const EllipsoidFrame* i;
+  const EllipsoidFrame* j;
+  Vec3 centre_i, centre_j;
+  double mu_i = 0.0, mu_j = 0.0;
+};
+
+// ellipsoid_contact for each of `count` queries, several at a time across
+// the lanes of a vector (each contact's two searches in two lanes, as
+// ellipsoid_contact does them): the same operations lane by lane, so the
+// same bits as one by one.
+void ellipsoid_contacts(const EllipsoidQuery* queries, EllipsoidContact* out, int count);
 
 // The contact of an ellipsoid with a plane through `on_plane` whose unit
 // normal `towards` points to the ellipsoid's side: the support point P

@@ -2,9 +2,13 @@
 // configurations with known answers.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <random>
+#include <vector>
 
 #include "ellipsoid.h"
 
@@ -119,6 +123,102 @@ TEST(Ellipsoid, WarmStartedSearchesFollowAMovingPairExactly) {
   std::printf("largest difference warm - cold over 10,000 steps (%d touching): %.3g m\n", touching, worst);
   EXPECT_GT(touching, 1000);
   EXPECT_LT(worst, 1e-12);
+}
+
+// ellipsoid_contacts takes several contacts at once across vector lanes
+// with the same operations as ellipsoid_contact: every field comes out
+// with the same bits, whichever way each search goes - warm and ending
+// after one evaluation (settling and loading steps), warm but needing
+// more (steps of 1e-3 m and 1e-2 rad), from scratch, a centre inside the
+// other body - and whatever its neighbours in the lanes do.
+TEST(Ellipsoid, BatchedSearchesGiveTheSameBitsAsOneByOne) {
+  std::mt19937_64 random(47);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const auto jiggle = [&] { return Vec3(unit(random), unit(random), unit(random)); };
+  const auto turn = [&](double angle) { return Quaternion(Eigen::AngleAxisd(angle, jiggle().normalized())); };
+  constexpr int kPairs = 7;  // not a multiple of the lanes' contacts
+  struct Pair {
+    PlacedEllipsoid i, j;
+    double mu_i = 0.0, mu_j = 0.0;
+  };
+  std::vector<Pair> pairs(kPairs);
+  for (int k = 0; k < kPairs; ++k) {
+    const double distance = k == 3 ? 0.05 : 0.45;  // pair 3: each centre inside the other body
+    pairs[k].i = {kAxes, Vec3(1, 2, 3), turn(3.0)};
+    pairs[k].j = {kAxes, pairs[k].i.centre + distance * jiggle().normalized(), turn(3.0)};
+  }
+  const auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
+  const auto same = [&](const Vec3& a, const Vec3& b) {
+    return bits(a.x()) == bits(b.x()) && bits(a.y()) == bits(b.y()) && bits(a.z()) == bits(b.z());
+  };
+  int differing = 0, compared = 0, touching = 0;
+  for (int step = 0; step < 3000; ++step) {
+    std::vector<EllipsoidFrame> frames_i(kPairs), frames_j(kPairs);
+    std::vector<EllipsoidQuery> queries(kPairs);
+    for (int k = 0; k < kPairs; ++k) {
+      Pair& p = pairs[k];
+      // Each pair its own mix of steps, changing as the steps go on.
+      const int kind = (step / 100 + k) % 4;
+      const double shift = kind == 0 ? 1e-5 : kind == 1 ? 1.4e-7 : 1e-3, angle = kind == 2 ? 1e-2 : 1e-4;
+      if (k != 3) p.j.centre += shift * jiggle();
+      p.j.orientation = (turn(angle * unit(random)) * p.j.orientation).normalized();
+      if (kind == 3 && step % 3 == 0) p.mu_i = p.mu_j = 0.0;  // from scratch
+      frames_i[k] = ellipsoid_frame(p.i.axes, p.i.orientation);
+      frames_j[k] = ellipsoid_frame(p.j.axes, p.j.orientation);
+      queries[k] = {&frames_i[k], &frames_j[k], p.i.centre, p.j.centre, p.mu_i, p.mu_j};
+    }
+    std::vector<EllipsoidContact> batched(kPairs);
+    ellipsoid_contacts(queries.data(), batched.data(), kPairs);
+    for (int k = 0; k < kPairs; ++k) {
+      Pair& p = pairs[k];
+      const EllipsoidContact one = ellipsoid_contact(frames_i[k], p.i.centre, frames_j[k], p.j.centre, p.mu_i, p.mu_j);
+      const EllipsoidContact& b = batched[k];
+      const bool equal = bits(b.overlap) == bits(one.overlap) && same(b.normal, one.normal) &&
+                         same(b.point, one.point) && bits(b.effective_radius) == bits(one.effective_radius) &&
+                         same(b.first_point, one.first_point) && same(b.second_point, one.second_point) &&
+                         bits(b.multiplier_i) == bits(one.multiplier_i) &&
+                         bits(b.multiplier_j) == bits(one.multiplier_j);
+      differing += !equal;
+      ++compared;
+      touching += one.overlap > 0.0;
+      p.mu_i = one.multiplier_i;
+      p.mu_j = one.multiplier_j;
+    }
+  }
+  std::printf("%d of %d batched contacts differ from one by one in any bit (%d touching)\n", differing, compared,
+              touching);
+  EXPECT_GT(touching, 5000);
+  EXPECT_EQ(differing, 0);
+}
+
+// ellipsoid_frames: four bodies' frames at once, the same bits as one by
+// one (bodies of three sizes, the axes in any order, any orientation).
+TEST(Ellipsoid, BatchedFramesGiveTheSameBitsAsOneByOne) {
+  std::mt19937_64 random(59);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
+  const auto same = [&](const SymmetricMatrix& a, const SymmetricMatrix& b) {
+    return bits(a.xx) == bits(b.xx) && bits(a.xy) == bits(b.xy) && bits(a.xz) == bits(b.xz) &&
+           bits(a.yy) == bits(b.yy) && bits(a.yz) == bits(b.yz) && bits(a.zz) == bits(b.zz);
+  };
+  int differing = 0;
+  for (int trial = 0; trial < 2500; ++trial) {
+    std::array<Vec3, 4> axes;
+    std::array<Quaternion, 4> orientation;
+    for (int k = 0; k < 4; ++k) {
+      const double size = std::pow(10.0, 2.0 * unit(random));  // 0.01 to 100 m
+      axes[k] = size * Vec3(1.0 + unit(random), 1.0 + unit(random), 1.0 + unit(random)) + Vec3::Constant(1e-3 * size);
+      orientation[k] = Quaternion(
+          Eigen::AngleAxisd(3.2 * unit(random), Vec3(unit(random), unit(random), unit(random)).normalized()));
+    }
+    EllipsoidFrame batched[4];
+    ellipsoid_frames(axes, orientation, batched);
+    for (int k = 0; k < 4; ++k) {
+      const EllipsoidFrame one = ellipsoid_frame(axes[k], orientation[k]);
+      differing += !same(batched[k].potential, one.potential) || !same(batched[k].reach, one.reach);
+    }
+  }
+  EXPECT_EQ(differing, 0);
 }
 
 TEST(Ellipsoid, MassAndInertiaOfASphere) {
