@@ -3,9 +3,11 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <type_traits>
 
 #include "contact_batch.h"
 #include "contact_row.h"
+#include "ellipsoid_rows.h"
 #include "law_dispatch.h"
 #include "world_state.h"
 
@@ -110,18 +112,46 @@ class WallShares {
 template <Pass kPass, bool kEnergy, typename Law, typename Shape, typename Shares, int Dim>
 [[gnu::flatten]] void row_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows,
                                 ContactBlocks<Dim>& blocks, int b, ContactEnergy& energy, WallSum<Dim>* wall_sums) {
+  using Body = typename Shares::Body;
   Shares shares(in, blocks, b, wall_sums);
-  for (std::int32_t r = shares.begin; r < shares.end; ++r) {
-    const RowResult<Dim> c = contact_row<kPass, kEnergy, Law, Shape, typename Shares::Body>(in, rows, r, energy);
+  const auto add = [&](std::int32_t r, const RowResult<Dim>& c) {
     shares.next(r);
     if (!c.touching) {
       shares.apart();
-      continue;
+      return;
     }
     const Slot x = rows.first[r];
     p.force[x] += c.force;
     p.moment[x] += c.moment_first;
     shares.add(p, rows.second[r], c);
+  };
+  if constexpr (std::is_same_v<Shape, EllipsoidShape> && !Body::kWall) {
+    // Ellipsoid pairs: a run of rows' geometry first, the searches several
+    // at a time across a vector's lanes (ellipsoid_rows.h), then each row
+    // as below; the same bits. A pass that only evaluates leaves the rows'
+    // search state as it was.
+    constexpr int kRun = 64;
+    ContactGeometry<3> geometry[kRun];
+    ContactSearch scratch[kRun];
+    for (std::int32_t run = shares.begin; run < shares.end; run += kRun) {
+      const int count = std::min<std::int32_t>(kRun, shares.end - run);
+      ContactSearch* search = scratch;
+      if constexpr (kPass == Pass::kAdvance) {
+        search = rows.search.data() + run;
+      } else {
+        std::copy(rows.search.begin() + run, rows.search.begin() + run + count, scratch);
+      }
+      ellipsoid_pair_geometry<kEnergy>(in, rows.first.data() + run, rows.second.data() + run, search, count, geometry);
+      for (int k = 0; k < count; ++k) {
+        const std::int32_t r = run + k;
+        Body second(in, rows.second[r]);
+        add(r, contact_row_from<kPass, kEnergy, Law, Shape, Body>(in, rows, r, second, geometry[k], energy));
+      }
+    }
+  } else {
+    for (std::int32_t r = shares.begin; r < shares.end; ++r) {
+      add(r, contact_row<kPass, kEnergy, Law, Shape, Body>(in, rows, r, energy));
+    }
   }
 }
 
@@ -178,9 +208,7 @@ PassInputs<Dim> inputs(const WorldState<Dim>& s, const StepContext& step, const 
 template <int Dim>
 void frame_ellipsoids(const Particles<Dim>& p, std::vector<EllipsoidFrame>& frames, std::int64_t begin,
                       std::int64_t end) {
-  if constexpr (Dim == 3) {
-    for (std::int64_t i = begin; i < end; ++i) frames[i] = ellipsoid_frame(p.shape[i].axes, p.rotation[i]);
-  }
+  if constexpr (Dim == 3) ellipsoid_frames_of(p, frames.data(), begin, end);
 }
 
 template <typename Law, int Dim, bool kPrefetch>

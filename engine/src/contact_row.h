@@ -182,12 +182,24 @@ struct WallBody {
 // shear carried into the new tangent plane), the law's forces, the history
 // and the work stored, and the two bodies' shares.
 template <Pass kPass, bool kEnergy, typename Law, typename Shape, typename Body, int Dim>
+RowResult<Dim> contact_row_from(const PassInputs<Dim>& in, RowsOf<kPass, Dim> rows, std::size_t r, Body& second,
+                                const ContactGeometry<Dim>& g, ContactEnergy& energy);
+
+template <Pass kPass, bool kEnergy, typename Law, typename Shape, typename Body, int Dim>
 RowResult<Dim> contact_row(const PassInputs<Dim>& in, RowsOf<kPass, Dim> rows, std::size_t r, ContactEnergy& energy) {
+  Body second(in, rows.second[r]);
+  const ContactGeometry<Dim> g = second.template geometry<kPass, kEnergy, Shape>(in, rows, r, rows.first[r]);
+  return contact_row_from<kPass, kEnergy, Law, Shape, Body, Dim>(in, rows, r, second, g, energy);
+}
+
+// The rest of a row from its geometry, found beforehand (for ellipsoid
+// pairs, a run of rows' searches at once: ellipsoid_rows.h).
+template <Pass kPass, bool kEnergy, typename Law, typename Shape, typename Body, int Dim>
+RowResult<Dim> contact_row_from(const PassInputs<Dim>& in, RowsOf<kPass, Dim> rows, std::size_t r, Body& second,
+                                const ContactGeometry<Dim>& g, ContactEnergy& energy) {
   const Particles<Dim>& p = in.particles;
   const Slot x = rows.first[r];
-  Body second(in, rows.second[r]);
   RowResult<Dim> out;
-  const ContactGeometry<Dim> g = second.template geometry<kPass, kEnergy, Shape>(in, rows, r, x);
   ContactHistory<Dim> h = load_history<Law>(rows, r);
   if (g.overlap <= 0.0 && (!h.touching || kPass == Pass::kEvaluate)) return out;  // eq. 8: apart
   if (kPass == Pass::kEvaluate && !h.touching) return out;
