@@ -161,47 +161,60 @@ void SuperquadricContactSearch(benchmark::State& state) {
       static_cast<double>(touching) / static_cast<double>(state.iterations() * pairs.size());
 }
 
-// The step's motion comes from a table made beforehand, so the figure is
-// the search's (and a vector sum and a quaternion product per pair). The
-// turned body's matrices are worked out at every step, as the force pass
-// does once per body (so here once per contact, in a bed about once per
-// five).
-// range(0) 0: settling steps (1e-5 m, 1e-4 rad per step); 1: the loading
-// stage of Miyata's 3D case (0.02 m/s for 6.86e-6 s: about 1.4e-7 m and
-// 5e-7 rad per step).
-void EllipsoidContactSearch(benchmark::State& state) {
-  const Vec3 axes(0.371, 0.260, 0.182);
-  const bool loading = state.range(0) != 0;
-  const double shift = loading ? 1.4e-7 : 1e-5, angle = loading ? 5e-7 : 1e-4;
-  Jiggle jiggle;
+// The ellipsoid searches' bed: 256 pairs of Miyata's ellipsoids, each
+// second body moved at every step by a table made beforehand.
+// loading false: settling steps (1e-5 m, 1e-4 rad per step); true: the
+// loading stage of Miyata's 3D case (0.02 m/s for 6.86e-6 s: about
+// 1.4e-7 m and 5e-7 rad per step).
+struct EllipsoidPairs {
   struct Pair {
     PlacedEllipsoid i, j;
     EllipsoidFrame frame_i;
     double mu_i = 0.0, mu_j = 0.0;
   };
-  auto turn = [&](double size) {
-    return Quaternion(Eigen::AngleAxisd(size, Vec3(jiggle(), jiggle(), jiggle()).normalized()));
-  };
-  std::vector<Pair> pairs(256);
-  for (Pair& p : pairs) {
-    p.i = {axes, Vec3::Zero(), turn(3.2)};
-    p.j = {axes, 0.45 * Vec3(jiggle(), jiggle(), jiggle()).normalized(), turn(3.2)};
-    p.frame_i = ellipsoid_frame(p.i.axes, p.i.orientation);
-  }
   struct Step {
     Vec3 shift;
     Quaternion turn;
   };
-  std::vector<Step> steps(4099);  // not a multiple of the pair count
-  for (Step& s : steps) s = {shift * Vec3(jiggle(), jiggle(), jiggle()), turn(angle * jiggle())};
+  std::vector<Pair> pairs = std::vector<Pair>(256);
+  std::vector<Step> steps = std::vector<Step>(4099);  // not a multiple of the pair count
   std::size_t next = 0;
+
+  explicit EllipsoidPairs(bool loading) {
+    const Vec3 axes(0.371, 0.260, 0.182);
+    const double shift = loading ? 1.4e-7 : 1e-5, angle = loading ? 5e-7 : 1e-4;
+    Jiggle jiggle;
+    auto turn = [&](double size) {
+      return Quaternion(Eigen::AngleAxisd(size, Vec3(jiggle(), jiggle(), jiggle()).normalized()));
+    };
+    for (Pair& p : pairs) {
+      p.i = {axes, Vec3::Zero(), turn(3.2)};
+      p.j = {axes, 0.45 * Vec3(jiggle(), jiggle(), jiggle()).normalized(), turn(3.2)};
+      p.frame_i = ellipsoid_frame(p.i.axes, p.i.orientation);
+    }
+    for (Step& s : steps) s = {shift * Vec3(jiggle(), jiggle(), jiggle()), turn(angle * jiggle())};
+  }
+  // Moves pair p's second body by the next step of the table.
+  void move(Pair& p) {
+    const Step& step = steps[next];
+    next = next + 1 == steps.size() ? 0 : next + 1;
+    p.j.centre += step.shift;
+    p.j.orientation = (step.turn * p.j.orientation).normalized();
+  }
+};
+
+// The step's motion comes from a table made beforehand, so the figure is
+// the search's (and a vector sum and a quaternion product per pair). The
+// turned body's matrices are worked out at every step, as the force pass
+// does once per body (so here once per contact, in a bed about once per
+// five). range(0) 0: settling steps, 1: loading steps (EllipsoidPairs).
+void EllipsoidContactSearch(benchmark::State& state) {
+  EllipsoidPairs bed(state.range(0) != 0);
+  std::vector<EllipsoidPairs::Pair>& pairs = bed.pairs;
   std::int64_t touching = 0;
   for (auto _ : state) {
-    for (Pair& p : pairs) {
-      const Step& step = steps[next];
-      next = next + 1 == steps.size() ? 0 : next + 1;
-      p.j.centre += step.shift;
-      p.j.orientation = (step.turn * p.j.orientation).normalized();
+    for (EllipsoidPairs::Pair& p : pairs) {
+      bed.move(p);
       const EllipsoidContact c = ellipsoid_contact(p.frame_i, p.i.centre, ellipsoid_frame(p.j.axes, p.j.orientation),
                                                    p.j.centre, p.mu_i, p.mu_j);
       p.mu_i = c.multiplier_i;
@@ -223,44 +236,18 @@ void EllipsoidContactSearch(benchmark::State& state) {
 // ellipsoid_frames), then searched together, as a force pass would take a
 // batch of rows whose bounding spheres meet.
 void EllipsoidContactBatch(benchmark::State& state) {
-  const Vec3 axes(0.371, 0.260, 0.182);
-  const bool loading = state.range(0) != 0;
-  const double shift = loading ? 1.4e-7 : 1e-5, angle = loading ? 5e-7 : 1e-4;
-  Jiggle jiggle;
-  struct Pair {
-    PlacedEllipsoid i, j;
-    EllipsoidFrame frame_i;
-    double mu_i = 0.0, mu_j = 0.0;
-  };
-  auto turn = [&](double size) {
-    return Quaternion(Eigen::AngleAxisd(size, Vec3(jiggle(), jiggle(), jiggle()).normalized()));
-  };
-  std::vector<Pair> pairs(256);
-  for (Pair& p : pairs) {
-    p.i = {axes, Vec3::Zero(), turn(3.2)};
-    p.j = {axes, 0.45 * Vec3(jiggle(), jiggle(), jiggle()).normalized(), turn(3.2)};
-    p.frame_i = ellipsoid_frame(p.i.axes, p.i.orientation);
-  }
-  struct Step {
-    Vec3 shift;
-    Quaternion turn;
-  };
-  std::vector<Step> steps(4099);  // not a multiple of the pair count
-  for (Step& s : steps) s = {shift * Vec3(jiggle(), jiggle(), jiggle()), turn(angle * jiggle())};
+  EllipsoidPairs bed(state.range(0) != 0);
+  std::vector<EllipsoidPairs::Pair>& pairs = bed.pairs;
   constexpr int kGroup = 16;
   EllipsoidFrame frames_j[kGroup];
   EllipsoidQuery queries[kGroup];
   EllipsoidContact contacts[kGroup];
-  std::size_t next = 0;
   std::int64_t touching = 0;
   for (auto _ : state) {
     for (std::size_t first = 0; first < pairs.size(); first += kGroup) {
       for (int k = 0; k < kGroup; ++k) {
-        Pair& p = pairs[first + k];
-        const Step& step = steps[next];
-        next = next + 1 == steps.size() ? 0 : next + 1;
-        p.j.centre += step.shift;
-        p.j.orientation = (step.turn * p.j.orientation).normalized();
+        EllipsoidPairs::Pair& p = pairs[first + k];
+        bed.move(p);
         queries[k] = {&p.frame_i, &frames_j[k], p.i.centre, p.j.centre, p.mu_i, p.mu_j};
       }
       for (int k = 0; k < kGroup; k += 4) {
@@ -274,7 +261,7 @@ void EllipsoidContactBatch(benchmark::State& state) {
       }
       ellipsoid_contacts(queries, contacts, kGroup);
       for (int k = 0; k < kGroup; ++k) {
-        Pair& p = pairs[first + k];
+        EllipsoidPairs::Pair& p = pairs[first + k];
         p.mu_i = contacts[k].multiplier_i;
         p.mu_j = contacts[k].multiplier_j;
         touching += contacts[k].overlap > 0.0;
