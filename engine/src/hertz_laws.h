@@ -38,15 +38,12 @@ DEM_INLINE ContactForces<Dim> hertz_forces(const ContactHistory<Dim>& h, const C
                                            const PairProperties& pair, const ContactParams& p, const HertzContact& c,
                                            double root_theta) {
   const double root = std::sqrt(pair.effective_mass * c.contact_radius);
-  // Both coefficients read before the choice: a parameter read inside it
-  // would be a masked load, which stops the batched pass's vectorising.
-  const double normal_dashpot = p.normal_dashpot, tangential_dashpot = p.tangential_dashpot;
-  const ShearForce<Dim> shear_damping = tangential_dashpot * root_theta * root * k.shear_velocity;
   ContactForces<Dim> f;
   f.normal = c.normal_force;
-  f.normal_damping = normal_dashpot * root * k.normal_velocity;
+  f.normal_damping = p.normal_dashpot * root * k.normal_velocity;
   f.shear = h.shear;
-  f.shear_damping = choose(h.sliding, zero_shear<Dim>(), shear_damping);
+  f.shear_damping = choose(h.sliding, zero_shear<Dim>(),
+                           ShearForce<Dim>(p.tangential_dashpot * root_theta * root * k.shear_velocity));
   return f;
 }
 
