@@ -57,8 +57,8 @@ endif()
 # every definition struct), and the instruction set what inline code is.
 # A program built against the installed libraries must use the same.
 target_compile_definitions(dem_engine INTERFACE "$<INSTALL_INTERFACE:EIGEN_NO_DEBUG;EIGEN_DONT_VECTORIZE>")
-if(DEM_ARCH AND DEM_ARCH_SUPPORTED)
-  target_compile_options(dem_engine INTERFACE $<INSTALL_INTERFACE:-march=${DEM_ARCH}>)
+if(DEM_ARCH_FLAGS)
+  target_compile_options(dem_engine INTERFACE "$<INSTALL_INTERFACE:${DEM_ARCH_FLAGS}>")
 endif()
 if(DEM_USES_DDS)
   # idlc_generate's interface target only carries the generated sources
