@@ -13,8 +13,10 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 
+#include "batch_columns.h"
 #include "contact_blocks.h"
 #include "contact_row.h"
 
@@ -57,6 +59,11 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
   alignas(64) double was_touching[kBatch], sliding[kBatch];
   std::int32_t row[kBatch];
   Slot first_of[kBatch], second_of[kBatch];
+  // The unpacked batch, before the touching rows are packed.
+  alignas(64) double place1[Dim][kBatch], place2[Dim][kBatch], separation[Dim][kBatch], radius1[kBatch],
+      radius2[kBatch], batch_distance2[kBatch], batch_touch[kBatch], batch_near[kBatch];
+  alignas(64) std::int32_t batch_row[kBatch];
+  alignas(64) Slot batch_first[kBatch], batch_second[kBatch];
 
   // Plain pointers: the flag bytes stored below could alias any vector's
   // own pointer, so reading through the vectors would reload them all.
@@ -109,6 +116,16 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
     else
       return mass[i];
   };
+  // The 3D pass gathers by columns (batch_columns.h): each quantity's
+  // first component and the stride between particles, in doubles.
+  constexpr int kPlaceStride = kHot ? sizeof(HotPlace<Dim>) / sizeof(double) : Dim;
+  constexpr int kRadiusStride = kHot ? kPlaceStride : 1;
+  constexpr int kMotionStride = kHot ? sizeof(HotMotion<Dim>) / sizeof(double) : Dim;
+  const double* place_column = kHot ? reinterpret_cast<const double*>(hot_place) : position->data();
+  const double* radius_column = kHot ? place_column + Dim : radius;
+  const double* velocity_column = kHot ? reinterpret_cast<const double*>(hot_motion) : velocity->data();
+  const double* spin_column = kHot ? velocity_column + offsetof(HotMotion<Dim>, angular_velocity) / sizeof(double)
+                                   : reinterpret_cast<const double*>(angular_velocity);
   const Periodic<Dim> periodic = in.periodic;
   const std::uint64_t cycle = in.cycle;
 
@@ -146,59 +163,116 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
     // 1. Which rows touch (eq. 8): pack them; a row that stopped touching
     // loses its history.
     int count = 0;
-    for (std::int32_t k = k0; k < k1; ++k) {
-      const std::int32_t r = sort_out ? begin + k : near[k];
-      const Slot x = first[r], y = second[r];
-      if constexpr (kPrefetch) {
-        if (k + kAhead < listed) {
-          const Slot ahead = second[sort_out ? begin + k + kAhead : near[k + kAhead]];
-          if constexpr (kHot) {
-            __builtin_prefetch(&hot_place[ahead]);
-            __builtin_prefetch(&hot_motion[ahead]);
-          } else {
-            __builtin_prefetch(&position[ahead]);
-            __builtin_prefetch(&velocity[ahead]);
-            __builtin_prefetch(&angular_velocity[ahead]);
+    if constexpr (Dim == 3) {
+      // The batch's rows, their particles' places by columns, then the
+      // distances in one vector loop, then the touching rows packed.
+      const int n = k1 - k0;
+      for (int i = 0; i < n; ++i) {
+        const std::int32_t r = sort_out ? begin + k0 + i : near[k0 + i];
+        batch_row[i] = r;
+        batch_first[i] = first[r];
+        batch_second[i] = second[r];
+        if constexpr (kPrefetch) {  // the same row of the next batch: its misses overlap this batch's work
+          const std::int32_t k = k0 + i;
+          if (k + kBatch < listed) {
+            const Slot ahead = second[sort_out ? begin + k + kBatch : near[k + kBatch]];
+            __builtin_prefetch(place_column + kPlaceStride * ahead);
+            __builtin_prefetch(velocity_column + kMotionStride * ahead);
+            if constexpr (!kHot) __builtin_prefetch(spin_column + kMotionStride * ahead);
           }
         }
       }
-      const Vec<Dim> d = periodic.separation(position_of(x), position_of(y));
-      const double reach = radius_of(x) + radius_of(y);
-      const double d2 = d.squaredNorm();
-      for (int c = 0; c < Dim; ++c) dx[c][count] = d[c];
-      distance2[count] = d2;
-      row[count] = r;
-      first_of[count] = x;
-      second_of[count] = y;
-      const bool touch = d2 < reach * reach;
-      // Whether a row touches follows no pattern: no branch on it, only on
-      // the rare row that has just stopped touching.
-      if ((row_flags[r] & kTouching) & !touch) separate(rows, r);
-      count += touch;
-      if (sort_out) {  // (kept <= k: the list is rewritten behind the reading)
-        near[kept] = r;
-        kept += d2 < (reach + margin) * (reach + margin);
+      gather_columns<kPlaceStride>(place_column, batch_first, n, place1[0], place1[1], place1[2]);
+      gather_columns<kPlaceStride>(place_column, batch_second, n, place2[0], place2[1], place2[2]);
+      for (int i = 0; i < n; ++i) {
+        radius1[i] = radius_column[kRadiusStride * batch_first[i]];
+        radius2[i] = radius_column[kRadiusStride * batch_second[i]];
+      }
+      for (int i = 0; i < n; ++i) {
+        Vec3 d;
+        for (int c = 0; c < 3; ++c) {
+          d[c] = nearest_image(place2[c][i] - place1[c][i], periodic.length[c]);
+          separation[c][i] = d[c];
+        }
+        const double d2 = d.squaredNorm();
+        const double reach = radius1[i] + radius2[i];
+        batch_distance2[i] = d2;
+        batch_touch[i] = d2 < reach * reach ? 1.0 : 0.0;
+        batch_near[i] = d2 < (reach + margin) * (reach + margin) ? 1.0 : 0.0;
+      }
+      for (int i = 0; i < n; ++i) {
+        const std::int32_t r = batch_row[i];
+        for (int c = 0; c < 3; ++c) dx[c][count] = separation[c][i];
+        distance2[count] = batch_distance2[i];
+        row[count] = r;
+        first_of[count] = batch_first[i];
+        second_of[count] = batch_second[i];
+        rx[count] = radius1[i];
+        ry[count] = radius2[i];
+        const bool touch = batch_touch[i] != 0.0;
+        if ((row_flags[r] & kTouching) & !touch) separate(rows, r);
+        count += touch;
+        if (sort_out) {  // (kept <= k: the list is rewritten behind the reading)
+          near[kept] = r;
+          kept += batch_near[i] != 0.0;
+        }
+      }
+    } else {
+      for (std::int32_t k = k0; k < k1; ++k) {
+        const std::int32_t r = sort_out ? begin + k : near[k];
+        const Slot x = first[r], y = second[r];
+        if constexpr (kPrefetch) {
+          if (k + kAhead < listed) {
+            const Slot ahead = second[sort_out ? begin + k + kAhead : near[k + kAhead]];
+            if constexpr (kHot) {
+              __builtin_prefetch(&hot_place[ahead]);
+              __builtin_prefetch(&hot_motion[ahead]);
+            } else {
+              __builtin_prefetch(&position[ahead]);
+              __builtin_prefetch(&velocity[ahead]);
+              __builtin_prefetch(&angular_velocity[ahead]);
+            }
+          }
+        }
+        const Vec<Dim> d = periodic.separation(position_of(x), position_of(y));
+        const double reach = radius_of(x) + radius_of(y);
+        const double d2 = d.squaredNorm();
+        for (int c = 0; c < Dim; ++c) dx[c][count] = d[c];
+        distance2[count] = d2;
+        row[count] = r;
+        first_of[count] = x;
+        second_of[count] = y;
+        const bool touch = d2 < reach * reach;
+        // Whether a row touches follows no pattern: no branch on it, only on
+        // the rare row that has just stopped touching.
+        if ((row_flags[r] & kTouching) & !touch) separate(rows, r);
+        count += touch;
+        if (sort_out) {  // (kept <= k: the list is rewritten behind the reading)
+          near[kept] = r;
+          kept += d2 < (reach + margin) * (reach + margin);
+        }
       }
     }
     // Gather what the law needs of each packed row's two particles.
+    if constexpr (Dim == 3) {
+      gather_columns<kMotionStride>(velocity_column, first_of, count, v1[0], v1[1], v1[2]);
+      gather_columns<kMotionStride>(velocity_column, second_of, count, v2[0], v2[1], v2[2]);
+      gather_columns<kMotionStride>(spin_column, first_of, count, w1[0], w1[1], w1[2]);
+      gather_columns<kMotionStride>(spin_column, second_of, count, w2[0], w2[1], w2[2]);
+      gather_columns<3>(row_shear->data(), row, count, shear[0], shear[1], shear[2]);
+    }
     for (int j = 0; j < count; ++j) {
       const std::int32_t r = row[j];
       const Slot x = first_of[j], y = second_of[j];
-      rx[j] = radius_of(x);
-      ry[j] = radius_of(y);
       mx[j] = mass_of(x);
       my[j] = mass_of(y);
-      for (int k = 0; k < Dim; ++k) {
-        v1[k][j] = velocity_of(x)[k];
-        v2[k][j] = velocity_of(y)[k];
-      }
-      if constexpr (Dim == 3) {
-        for (int k = 0; k < 3; ++k) {
-          w1[k][j] = angular_velocity_of(x)[k];
-          w2[k][j] = angular_velocity_of(y)[k];
-          shear[k][j] = row_shear[r][k];
+      if constexpr (Dim == 2) {
+        rx[j] = radius_of(x);
+        ry[j] = radius_of(y);
+        for (int k = 0; k < Dim; ++k) {
+          v1[k][j] = velocity_of(x)[k];
+          v2[k][j] = velocity_of(y)[k];
         }
-      } else {
         w1[0][j] = angular_velocity_of(x);
         w2[0][j] = angular_velocity_of(y);
         shear[0][j] = row_shear[r];

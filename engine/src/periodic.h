@@ -8,6 +8,14 @@
 
 namespace dem {
 
+// One component of Periodic::separation without a branch, for vector
+// loops: the same bits (along an axis that does not repeat, length 0, a
+// difference is left as it is).
+inline double nearest_image(double difference, double length) {
+  const double half = 0.5 * length;
+  return difference > half ? difference - length : (difference < -half ? difference + length : difference);
+}
+
 template <int Dim>
 struct Periodic {
   Vec<Dim> min = Vec<Dim>::Zero();
