@@ -22,7 +22,8 @@
 //                                         packed across the items (the particles)
 // Columns are copied in bulk through the repeated field itself, not value by
 // value through reflection, so a 100,000-particle world costs what the
-// hand-written copies did (bench/bench_snapshot.cpp).
+// hand-written copies did (bench/bench_snapshot.cpp); the contact table's
+// columns go the same way (put_column and get_column, snapshot_contacts.cpp).
 //
 // A list entry with no field, or one whose field cannot carry its type,
 // throws std::logic_error naming both at the first conversion;
