@@ -48,9 +48,15 @@ void check_values(Problems& problems, const Message& message, const std::string&
       for (int i = 0; i < size && found < kMaxPerField; ++i) {
         const std::size_t before = problems.size();
         switch (field->cpp_type()) {
-          case FieldDescriptor::CPPTYPE_DOUBLE:
-            check_double(problems, item(path, i), reflection->GetRepeatedDouble(message, field, i), true);
+          case FieldDescriptor::CPPTYPE_DOUBLE: {
+            // The item's path only for a value that has a problem: a
+            // 100,000-particle snapshot has millions of good ones.
+            const double value = reflection->GetRepeatedDouble(message, field, i);
+            if (!std::isfinite(value) || std::abs(value) > kLargestMagnitude) {
+              check_double(problems, item(path, i), value, true);
+            }
             break;
+          }
           case FieldDescriptor::CPPTYPE_ENUM:
             if (field->enum_type()->FindValueByNumber(reflection->GetRepeatedEnumValue(message, field, i)) == nullptr) {
               problems.emplace_back(item(path, i), "is not a known value");
@@ -99,19 +105,19 @@ void check_not_tiny(Problems& problems, const std::string& path, double value) {
 
 void check_names(Problems& problems, const proto::Snapshot& m) {
   std::map<std::string, int, std::less<>> walls;
-  for (int i = 0; i < m.wall_size(); ++i) {
-    if (const auto [first, inserted] = walls.emplace(m.wall(i).name(), i); !inserted) {
-      problems.emplace_back(item("wall", i) + ".name", "duplicate wall name \"" + m.wall(i).name() + "\" (" +
-                                                           item("wall", first->second) + " has it too)");
+  for (int i = 0; i < m.walls_size(); ++i) {
+    if (const auto [first, inserted] = walls.emplace(m.walls(i).name(), i); !inserted) {
+      problems.emplace_back(item("walls", i) + ".name", "duplicate wall name \"" + m.walls(i).name() + "\" (" +
+                                                            item("walls", first->second) + " has it too)");
     }
   }
   std::map<std::string, int, std::less<>> materials;
-  for (int i = 0; i < m.settings().material_size(); ++i) {
-    const std::string& name = m.settings().material(i).name();
+  for (int i = 0; i < m.settings().materials_size(); ++i) {
+    const std::string& name = m.settings().materials(i).name();
     if (const auto [first, inserted] = materials.emplace(name, i); !inserted) {
       problems.emplace_back(
-          item("settings.material", i) + ".name",
-          "duplicate material name \"" + name + "\" (" + item("settings.material", first->second) + " has it too)");
+          item("settings.materials", i) + ".name",
+          "duplicate material name \"" + name + "\" (" + item("settings.materials", first->second) + " has it too)");
     }
   }
 }
@@ -120,10 +126,10 @@ void check_counts(Problems& problems, const proto::Snapshot& m, const ResourceLi
   if (const auto problem = thread_count_problem(m.settings().threads(), limits)) {
     problems.emplace_back("settings.threads", *problem);
   }
-  for (int i = 0; i < m.wall_size(); ++i) {
-    if (m.wall(i).contacts() < 0) {
-      problems.emplace_back(item("wall", i) + ".contacts",
-                            "must be >= 0 (got " + std::to_string(m.wall(i).contacts()) + ")");
+  for (int i = 0; i < m.walls_size(); ++i) {
+    if (m.walls(i).contacts() < 0) {
+      problems.emplace_back(item("walls", i) + ".contacts",
+                            "must be >= 0 (got " + std::to_string(m.walls(i).contacts()) + ")");
     }
   }
   if (const auto problem = particle_count_problem(static_cast<std::uint64_t>(m.particles().radius_size()), limits)) {
@@ -134,15 +140,15 @@ void check_counts(Problems& problems, const proto::Snapshot& m, const ResourceLi
 
 void check_small_quantities(Problems& problems, const proto::Snapshot& m) {
   const proto::SnapshotSettings& s = m.settings();
-  for (int i = 0; i < s.material_size(); ++i) {
-    const std::string path = item("settings.material", i);
-    check_not_tiny(problems, path + ".density", s.material(i).density());
-    check_not_tiny(problems, path + ".youngs_modulus", s.material(i).youngs_modulus());
+  for (int i = 0; i < s.materials_size(); ++i) {
+    const std::string path = item("settings.materials", i);
+    check_not_tiny(problems, path + ".density", s.materials(i).density());
+    check_not_tiny(problems, path + ".youngs_modulus", s.materials(i).youngs_modulus());
   }
-  for (int i = 0; i < s.contact_model_size(); ++i) {
-    const std::string path = item("settings.contact_model", i);
-    check_not_tiny(problems, path + ".normal_stiffness", s.contact_model(i).normal_stiffness());
-    check_not_tiny(problems, path + ".shear_stiffness", s.contact_model(i).shear_stiffness());
+  for (int i = 0; i < s.contact_models_size(); ++i) {
+    const std::string path = item("settings.contact_models", i);
+    check_not_tiny(problems, path + ".linear_normal_stiffness", s.contact_models(i).linear_normal_stiffness());
+    check_not_tiny(problems, path + ".linear_shear_stiffness", s.contact_models(i).linear_shear_stiffness());
   }
   for (int i = 0; i < m.particles().radius_size() && problems.size() < kMaxPerField; ++i) {
     check_not_tiny(problems, item("particles.radius", i), m.particles().radius(i));

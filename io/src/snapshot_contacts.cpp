@@ -10,6 +10,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "snapshot_conversion_fields.h"
 #include "snapshot_packing.h"
 
 namespace dem::io {
@@ -34,10 +35,13 @@ template <int Dim>
 std::array<const FieldDescriptor*, contact_field_count<Dim>()> find_message_fields() {
   std::array<const FieldDescriptor*, contact_field_count<Dim>()> fields{};
   std::size_t k = 0;
-  for_each_contact_field<Dim>([&](const ContactFieldInfo& info, auto, auto) {
+  for_each_contact_field<Dim>([&](const ContactFieldInfo& info, auto field, auto) {
     const FieldDescriptor* f = proto::SnapshotContacts::descriptor()->FindFieldByName(info.name);
     if (f == nullptr || !f->is_repeated()) {
       throw std::logic_error(std::string("dem.proto.SnapshotContacts has no repeated field ") + info.name);
+    }
+    if (const char* problem = fields::column_problem<FieldType<Dim, decltype(field)>>(*f)) {
+      throw std::logic_error("field " + f->full_name() + " cannot carry its list entry: " + problem);
     }
     fields[k++] = f;
   });
@@ -50,51 +54,17 @@ const std::array<const FieldDescriptor*, contact_field_count<Dim>()>& message_fi
   return fields;
 }
 
-// Appends doubles to a repeated field through reflection (Packing's output).
-struct ReflectedDoubles {
-  const Reflection* reflection;
-  proto::SnapshotContacts* message;
-  const FieldDescriptor* field;
-  void Add(double value) const { reflection->AddDouble(message, field, value); }
-};
-
-template <typename T>
-void add(const Reflection& r, proto::SnapshotContacts& out, const FieldDescriptor* f, const T& value) {
-  if constexpr (std::is_same_v<T, bool>) {
-    r.AddBool(&out, f, value);
-  } else if constexpr (std::is_same_v<T, std::int32_t>) {
-    r.AddInt32(&out, f, value);
-  } else if constexpr (std::is_same_v<T, std::uint64_t>) {
-    r.AddUInt64(&out, f, value);
-  } else {
-    ReflectedDoubles doubles{&r, &out, f};
-    put(&doubles, value);
-  }
-}
-
-template <typename T>
-T read(const Reflection& r, const proto::SnapshotContacts& in, const FieldDescriptor* f, int i) {
-  if constexpr (std::is_same_v<T, bool>) {
-    return r.GetRepeatedBool(in, f, i);
-  } else if constexpr (std::is_same_v<T, std::int32_t>) {
-    return r.GetRepeatedInt32(in, f, i);
-  } else if constexpr (std::is_same_v<T, std::uint64_t>) {
-    return r.GetRepeatedUInt64(in, f, i);
-  } else {
-    return get<T>(r.GetRepeatedFieldRef<double>(in, f), i);
-  }
-}
-
 }  // namespace
 
 template <int Dim>
 void put_contacts(const std::vector<ContactSnapshotT<Dim>>& contacts, proto::SnapshotContacts& out) {
   const auto& fields = message_fields<Dim>();
-  const Reflection& r = *out.GetReflection();
   std::size_t k = 0;
   for_each_contact_field<Dim>([&](const ContactFieldInfo&, auto field, auto) {
-    const FieldDescriptor* f = fields[k++];
-    for (const ContactSnapshotT<Dim>& c : contacts) add(r, out, f, field(c));
+    using T = FieldType<Dim, decltype(field)>;
+    // Column by column, in bulk (snapshot_conversion_fields.h).
+    fields::put_column<T>(out, fields[k++], contacts.size(),
+                          [&](std::size_t i) -> const T& { return field(contacts[i]); });
   });
 }
 
@@ -110,9 +80,9 @@ bool check_contacts(Problems& problems, const proto::SnapshotContacts& in, const
     const std::string path = std::string("contacts.") + info.name;
     if (info.may_be_empty && r.FieldSize(in, f) == 0) return;
     if constexpr (kPacked<T>) {
-      sizes = check_array(problems, path, r.GetRepeatedFieldRef<double>(in, f), n.contacts, width<T>) && sizes;
+      sizes = check_array(problems, path, fields::column<double>(in, f), n.contacts, width<T>) && sizes;
     } else {
-      sizes = check_length(problems, path, r.GetRepeatedFieldRef<T>(in, f), n.contacts) && sizes;
+      sizes = check_length(problems, path, fields::column<T>(in, f), n.contacts) && sizes;
     }
   });
   if (!sizes) return false;
@@ -132,14 +102,12 @@ bool check_contacts(Problems& problems, const proto::SnapshotContacts& in, const
 template <int Dim>
 std::vector<ContactSnapshotT<Dim>> get_contacts(const proto::SnapshotContacts& in) {
   const auto& fields = message_fields<Dim>();
-  const Reflection& r = *in.GetReflection();
   std::vector<ContactSnapshotT<Dim>> contacts(static_cast<std::size_t>(in.first_size()));
   std::size_t k = 0;
-  for_each_contact_field<Dim>([&](const ContactFieldInfo& info, auto field, auto) {
+  for_each_contact_field<Dim>([&](const ContactFieldInfo&, auto field, auto) {
     using T = FieldType<Dim, decltype(field)>;
-    const FieldDescriptor* f = fields[k++];
-    if (info.may_be_empty && r.FieldSize(in, f) == 0) return;  // the default
-    for (std::size_t i = 0; i < contacts.size(); ++i) field(contacts[i]) = read<T>(r, in, f, static_cast<int>(i));
+    // An empty field (may_be_empty, checked) leaves the default.
+    fields::get_column<T>(in, fields[k++], contacts.size(), [&](std::size_t i) -> T& { return field(contacts[i]); });
   });
   return contacts;
 }

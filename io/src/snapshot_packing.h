@@ -5,9 +5,13 @@
 
 #include <google/protobuf/repeated_field.h>
 
+#include <array>
 #include <cstddef>
+#include <tuple>
+#include <type_traits>
 
 #include "dem/math.h"
+#include "dem/snapshot_fields.h"
 
 namespace dem::io {
 
@@ -73,6 +77,67 @@ struct Packing<Quaternion> {
   }
 };
 
+// A quantity Packing knows.
+template <typename T>
+concept Packable = requires {
+  Packing<T>::width;
+};
+
+// N items one after the other (a triangle face: its three corners).
+template <Packable T, std::size_t N>
+struct Packing<std::array<T, N>> {
+  static constexpr std::size_t width = N * Packing<T>::width;
+  template <typename Out>
+  static void put(Out* out, const std::array<T, N>& items) {
+    for (const T& item : items) Packing<T>::put(out, item);
+  }
+  template <typename In>
+  static std::array<T, N> get(const In& in, int at) {
+    std::array<T, N> items;
+    for (std::size_t i = 0; i < N; ++i) items[i] = Packing<T>::get(in, at + static_cast<int>(i * Packing<T>::width));
+    return items;
+  }
+};
+
+// A struct of packable members (a particle's shape): its members in the
+// order of its field list (dem/snapshot_fields.h).
+template <typename T>
+constexpr bool packable_members() {
+  return std::apply(
+      [](const auto&... field) {
+        return (Packable<std::remove_cvref_t<decltype(std::declval<T>().*field.member)>> && ...);
+      },
+      SnapshotFields<T>::list);
+}
+template <typename T>
+requires(HasSnapshotFields<T>&& packable_members<T>()) struct Packing<T> {
+  static constexpr std::size_t width = std::apply(
+      [](const auto&... field) {
+        return (Packing<std::remove_cvref_t<decltype(std::declval<T>().*field.member)>>::width + ... + 0);
+      },
+      SnapshotFields<T>::list);
+  template <typename Out>
+  static void put(Out* out, const T& value) {
+    std::apply(
+        [&](const auto&... field) {
+          (Packing<std::remove_cvref_t<decltype(value.*field.member)>>::put(out, value.*field.member), ...);
+        },
+        SnapshotFields<T>::list);
+  }
+  template <typename In>
+  static T get(const In& in, int at) {
+    T value;
+    std::apply(
+        [&](const auto&... field) {
+          ((value.*field.member = Packing<std::remove_cvref_t<decltype(value.*field.member)>>::get(in, at),
+            at += static_cast<int>(Packing<std::remove_cvref_t<decltype(value.*field.member)>>::width)),
+           ...);
+        },
+        SnapshotFields<T>::list);
+    return value;
+  }
+};
+
 template <typename T, typename Out>
 void put(Out* out, const T& value) {
   Packing<T>::put(out, value);
@@ -88,6 +153,7 @@ constexpr std::size_t width = Packing<T>::width;
 // A particle's shape: a 2D superquadric's a, b, n, angle; a 3D ellipsoid's
 // semi-axes and orientation.
 template <int Dim>
-constexpr std::size_t kShapeWidth = Dim == 2 ? 4 : 7;
+constexpr std::size_t kShapeWidth = width<ShapeDefT<Dim>>;
+static_assert(kShapeWidth<2> == 4 && kShapeWidth<3> == 7, "a shape's width is part of the snapshot format");
 
 }  // namespace dem::io

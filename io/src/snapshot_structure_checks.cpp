@@ -18,11 +18,11 @@ namespace {
 
 template <int Dim>
 void check_settings(Problems& problems, const proto::SnapshotSettings& s, const Counts& n) {
-  for (int i = 0; i < s.contact_model_size(); ++i) {
-    const auto& c = s.contact_model(i);
+  for (int i = 0; i < s.contact_models_size(); ++i) {
+    const auto& c = s.contact_models(i);
     const bool default_law = c.material_a() == kInvalidId && c.material_b() == kInvalidId;
     if (!default_law && (!in_range(c.material_a(), n.materials) || !in_range(c.material_b(), n.materials))) {
-      problems.add("settings.contact_model[" + std::to_string(i) + "]",
+      problems.add("settings.contact_models[" + std::to_string(i) + "]",
                    "material ids (" + std::to_string(c.material_a()) + ", " + std::to_string(c.material_b()) +
                        ") out of range for " + std::to_string(n.materials) + " materials");
     }
@@ -60,14 +60,14 @@ void check_particles(Problems& problems, const proto::SnapshotParticles& p, cons
 
 template <int Dim>
 void check_wall(Problems& problems, const proto::SnapshotWall& w, int index, const Counts& n) {
-  const std::string path = "wall[" + std::to_string(index) + "]";
+  const std::string path = "walls[" + std::to_string(index) + "]";
   const std::size_t spin = width<Spin<Dim>>;
   for (const auto& [name, values, item_width] :
        {std::tuple{"point", &w.point(), std::size_t{Dim}},
         {"direction", &w.direction(), std::size_t{Dim}},
         {"direction2", &w.direction2(), std::size_t{Dim == 3 ? 3u : 0u}},
-        {"velocity", &w.velocity(), std::size_t{Dim}},
-        {"angular_velocity", &w.angular_velocity(), spin},
+        {"motion_velocity", &w.motion_velocity(), std::size_t{Dim}},
+        {"motion_angular_velocity", &w.motion_angular_velocity(), spin},
         {"initial_point", &w.initial_point(), std::size_t{Dim}},
         {"last_velocity", &w.last_velocity(), std::size_t{Dim}},
         {"last_angular_velocity", &w.last_angular_velocity(), spin},
@@ -133,12 +133,12 @@ void check_structure(const proto::Snapshot& m, Problems& problems, const Resourc
   } else if (m.particle_id_count() > 0) {
     n.particle_ids = static_cast<std::size_t>(m.particle_id_count());
   }
-  n.walls = static_cast<std::size_t>(m.wall_size());
+  n.walls = static_cast<std::size_t>(m.walls_size());
   n.contacts = static_cast<std::size_t>(m.contacts().first_size());
-  n.materials = static_cast<std::size_t>(m.settings().material_size());
+  n.materials = static_cast<std::size_t>(m.settings().materials_size());
   check_settings<Dim>(problems, m.settings(), n);
   check_particles<Dim>(problems, m.particles(), n);
-  for (int i = 0; i < m.wall_size(); ++i) check_wall<Dim>(problems, m.wall(i), i, n);
+  for (int i = 0; i < m.walls_size(); ++i) check_wall<Dim>(problems, m.walls(i), i, n);
   check_contacts<Dim>(problems, m.contacts(), n);
   for (const auto& [name, value] : {std::pair{"energy.initial_kinetic", m.energy().initial_kinetic()},
                                     {"energy.gravity_work", m.energy().gravity_work()},
@@ -158,15 +158,15 @@ void check_structure(const proto::Snapshot& m, Problems& problems, const Resourc
   }
   if (m.has_box_control()) {
     const proto::SnapshotBoxControl& box = m.box_control();
-    if (box.axis_size() != Dim) {
-      problems.add("box_control.axis",
-                   "has " + std::to_string(box.axis_size()) + " axes, expected " + std::to_string(Dim));
+    if (box.axes_size() != Dim) {
+      problems.add("box_control.axes",
+                   "has " + std::to_string(box.axes_size()) + " axes, expected " + std::to_string(Dim));
     }
-    for (int i = 0; i < box.axis_size(); ++i) {
-      const std::string path = "box_control.axis[" + std::to_string(i) + "]";
-      if (!in_range(box.axis(i).lower(), n.walls)) problems.add(path + ".lower", "names no wall");
-      if (!in_range(box.axis(i).upper(), n.walls)) problems.add(path + ".upper", "names no wall");
-      if (box.axis(i).control() < 0 || box.axis(i).control() > 2) problems.add(path + ".control", "must be 0, 1 or 2");
+    for (int i = 0; i < box.axes_size(); ++i) {
+      const std::string path = "box_control.axes[" + std::to_string(i) + "]";
+      if (!in_range(box.axes(i).lower(), n.walls)) problems.add(path + ".lower", "names no wall");
+      if (!in_range(box.axes(i).upper(), n.walls)) problems.add(path + ".upper", "names no wall");
+      if (box.axes(i).control() < 0 || box.axes(i).control() > 2) problems.add(path + ".control", "must be 0, 1 or 2");
     }
     if (box.path() < 0 || box.path() > 2) problems.add("box_control.path", "must be 0, 1 or 2");
     check_length(problems, "box_control.reference_extent", box.reference_extent(), Dim);

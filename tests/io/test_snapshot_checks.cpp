@@ -33,19 +33,19 @@ TEST(SnapshotChecks, AGoodSnapshotPasses) { EXPECT_EQ(problems_of(good_snapshot(
 
 TEST(SnapshotChecks, UnknownEnumValuesAreRefused) {
   proto::Snapshot m = good_snapshot();
-  ASSERT_GT(m.settings().contact_model_size(), 0);
-  m.mutable_settings()->mutable_contact_model(0)->set_law(static_cast<proto::SnapshotContactLaw>(7));
-  EXPECT_THAT(problems_of(m), HasSubstr("settings.contact_model[0].law: is 7, not a known SnapshotContactLaw"));
+  ASSERT_GT(m.settings().contact_models_size(), 0);
+  m.mutable_settings()->mutable_contact_models(0)->set_law(static_cast<proto::SnapshotContactLaw>(7));
+  EXPECT_THAT(problems_of(m), HasSubstr("settings.contact_models[0].law: is 7, not a known SnapshotContactLaw"));
 }
 
 TEST(SnapshotChecks, DuplicateNamesAreRefused) {
   proto::Snapshot m = good_snapshot();
-  ASSERT_GE(m.wall_size(), 2);
-  m.mutable_wall(1)->set_name(m.wall(0).name());
+  ASSERT_GE(m.walls_size(), 2);
+  m.mutable_walls(1)->set_name(m.walls(0).name());
   EXPECT_THAT(problems_of(m),
-              HasSubstr("wall[1].name: duplicate wall name \"" + m.wall(0).name() + "\" (wall[0] has it too)"));
+              HasSubstr("walls[1].name: duplicate wall name \"" + m.walls(0).name() + "\" (walls[0] has it too)"));
   m = good_snapshot();
-  m.mutable_settings()->add_material()->set_name(m.settings().material(0).name());
+  m.mutable_settings()->add_materials()->set_name(m.settings().materials(0).name());
   EXPECT_THAT(problems_of(m), HasSubstr("duplicate material name"));
 }
 
@@ -56,8 +56,8 @@ TEST(SnapshotChecks, NegativeOrExcessiveCountsAreRefused) {
   m.mutable_settings()->set_threads(100000);
   EXPECT_THAT(problems_of(m), HasSubstr("settings.threads: asks for 100000 threads"));
   m = good_snapshot();
-  m.mutable_wall(0)->set_contacts(-1);
-  EXPECT_THAT(problems_of(m), HasSubstr("wall[0].contacts: must be >= 0 (got -1)"));
+  m.mutable_walls(0)->set_contacts(-1);
+  EXPECT_THAT(problems_of(m), HasSubstr("walls[0].contacts: must be >= 0 (got -1)"));
   m = good_snapshot();
   EXPECT_THAT(problems_of(m, limits_with_budget(10, 0)),
               HasSubstr("particles: holds 100 particles, more than the particle budget of 10"));
@@ -65,11 +65,11 @@ TEST(SnapshotChecks, NegativeOrExcessiveCountsAreRefused) {
 
 TEST(SnapshotChecks, NumbersTheForceArithmeticCannotCarryAreRefused) {
   proto::Snapshot m = good_snapshot();
-  m.mutable_settings()->mutable_material(0)->set_density(4.9e-324);
-  EXPECT_THAT(problems_of(m), HasSubstr("settings.material[0].density: is 5e-324, below 1e-30"));
+  m.mutable_settings()->mutable_materials(0)->set_density(4.9e-324);
+  EXPECT_THAT(problems_of(m), HasSubstr("settings.materials[0].density: is 5e-324, below 1e-30"));
   m = good_snapshot();
-  m.mutable_settings()->mutable_contact_model(0)->set_normal_stiffness(1e308);
-  EXPECT_THAT(problems_of(m), HasSubstr("settings.contact_model[0].normal_stiffness: is 1e+308, beyond 1e+30"));
+  m.mutable_settings()->mutable_contact_models(0)->set_linear_normal_stiffness(1e308);
+  EXPECT_THAT(problems_of(m), HasSubstr("settings.contact_models[0].linear_normal_stiffness: is 1e+308, beyond 1e+30"));
   m = good_snapshot();
   m.mutable_particles()->set_position(6, -2e31);
   EXPECT_THAT(problems_of(m), HasSubstr("particles.position[6]: is -2e+31, beyond 1e+30"));

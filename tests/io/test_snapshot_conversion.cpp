@@ -16,7 +16,30 @@
 
 #include "dem/io/snapshot_conversion.h"
 #include "dem/snapshot_fields.h"
+#include "snapshot_conversion_fields.h"
 #include "snapshot_worlds.h"
+
+// Made-up structs whose lists disagree with the schema: a name it lacks,
+// and a type its field cannot carry.
+namespace dem::schema_test {
+struct Recoloured {
+  double density = 1.0;
+  double colour = 0.0;
+};
+struct Renumbered {
+  double name = 0.0;  // a string in dem.proto.SnapshotMaterial
+};
+}  // namespace dem::schema_test
+template <>
+struct dem::SnapshotFields<dem::schema_test::Recoloured> {
+  using T = dem::schema_test::Recoloured;
+  static constexpr auto list = std::make_tuple(Field{"density", &T::density}, Field{"colour", &T::colour});
+};
+template <>
+struct dem::SnapshotFields<dem::schema_test::Renumbered> {
+  using T = dem::schema_test::Renumbered;
+  static constexpr auto list = std::make_tuple(Field{"name", &T::name});
+};
 
 namespace dem::io {
 namespace {
@@ -132,7 +155,7 @@ TEST(SnapshotConversion, RollingTorquesBoxControlAndRemovedWallsContinueBitForBi
   boxed.cycle(500);
   const proto::Snapshot message = snapshot_to_proto(boxed.snapshot(), SnapshotInfo{});
   EXPECT_TRUE(message.has_box_control());
-  EXPECT_TRUE(message.wall(4).removed());
+  EXPECT_TRUE(message.walls(4).removed());
   World again(snapshot_from_proto<2>(message));
   EXPECT_TRUE(again.wall(WallId{4}).removed);
   EXPECT_EQ(again.box_control()->reference_extent, boxed.box_control()->reference_extent);
@@ -182,7 +205,7 @@ TEST(SnapshotConversion, EllipsoidsOnTriangleFacesContinueBitForBit) {
   original.cycle(2500);
   ASSERT_GT(original.wall_measures()[0].contacts, 3);
   const proto::Snapshot message = snapshot_to_proto(original.snapshot(), SnapshotInfo{});
-  EXPECT_EQ(message.wall(0).triangles_size(), 18);
+  EXPECT_EQ(message.walls(0).triangles_size(), 18);
   EXPECT_GT(message.contacts().first_size(),
             static_cast<int>(original.contacts().size()));  // rows that do not touch too
   World3 restored(snapshot_from_proto<3>(message));
@@ -196,14 +219,14 @@ TEST(SnapshotConversion, EllipsoidsOnTriangleFacesContinueBitForBit) {
             snapshot_to_proto(original.snapshot(), SnapshotInfo{}).SerializeAsString());
 
   proto::Snapshot broken = message;
-  broken.mutable_wall(0)->mutable_triangles()->RemoveLast();
+  broken.mutable_walls(0)->mutable_triangles()->RemoveLast();
   broken.mutable_reference_positions()->RemoveLast();
   try {
     snapshot_from_proto<3>(broken);
     FAIL() << "a cut face was accepted";
   } catch (const SnapshotError& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("wall[0].triangles: has 17 values"), std::string::npos) << what;
+    EXPECT_NE(what.find("walls[0].triangles: has 17 values"), std::string::npos) << what;
     EXPECT_NE(what.find("reference_positions: has"), std::string::npos) << what;
   }
 }
@@ -219,9 +242,9 @@ TEST(SnapshotConversion, ConversionIsLossless) {
   stack.cycle(20);  // while the grown stack is in contact (it springs apart later)
   ASSERT_FALSE(stack.contacts().empty());
   const proto::Snapshot message3 = snapshot_to_proto(stack.snapshot(), SnapshotInfo{"stack", ""});
-  EXPECT_EQ(message3.settings().contact_model(0).law(), proto::SNAPSHOT_LAW_HERTZ_MINDLIN);
-  EXPECT_EQ(message3.settings().contact_model(0).hertz_restitution(), 0.8);
-  EXPECT_EQ(message3.settings().material(0).youngs_modulus(), 210e9);
+  EXPECT_EQ(message3.settings().contact_models(0).law(), proto::SNAPSHOT_LAW_HERTZ_MINDLIN);
+  EXPECT_EQ(message3.settings().contact_models(0).hertz_restitution(), 0.8);
+  EXPECT_EQ(message3.settings().materials(0).youngs_modulus(), 210e9);
   EXPECT_EQ(message3.particles().rotation_size(), 4 * 27);
   const proto::Snapshot again3 = snapshot_to_proto(snapshot_from_proto<3>(message3), SnapshotInfo{"stack", ""});
   EXPECT_EQ(again3.SerializeAsString(), message3.SerializeAsString());
@@ -358,6 +381,91 @@ void expect_every_field_round_trips(WorldSnapshotT<Dim> snap) {
   EXPECT_EQ(compared, filler.k);
 }
 
+// The conversion finds every field by its list's name (dem/snapshot_fields.h,
+// io/src/snapshot_conversion_fields.h): each list entry must have its field
+// in idl/dem/snapshot.proto, of a type that carries it. A list line added
+// without its schema field fails here, by name.
+TEST(SnapshotConversion, EveryListedFieldHasItsFieldInTheSchema) {
+  for (const int dim : {2, 3}) {
+    int checked = 0;
+    const std::vector<std::string> problems =
+        dim == 2 ? snapshot_schema_problems<2>(&checked) : snapshot_schema_problems<3>(&checked);
+    for (const std::string& p : problems) ADD_FAILURE() << dim << "D: " << p;
+    std::printf("%dD: %d list entries found in the schema, %zu problems\n", dim, checked, problems.size());
+    EXPECT_GT(checked, 80);  // the walk reached into the nested structs
+  }
+}
+
+TEST(SnapshotConversion, AListEntryTheSchemaLacksIsNamedNeverSkipped) {
+  using schema_test::Recoloured;
+  std::vector<std::string> problems;
+  int checked = 0;
+  fields::schema_problems<Recoloured>({proto::SnapshotMaterial::descriptor()}, "", {}, problems, checked);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0], "dem.proto.SnapshotMaterial has no field colour");
+  EXPECT_EQ(checked, 1);
+  fields::schema_problems<schema_test::Renumbered>({proto::SnapshotMaterial::descriptor()}, "", {}, problems, checked);
+  ASSERT_EQ(problems.size(), 2u);
+  EXPECT_EQ(problems[1], "dem.proto.SnapshotMaterial.name: a double wants a double field");
+  // At run time, both directions throw naming the field.
+  proto::SnapshotMaterial message;
+  for (const bool writing : {true, false}) {
+    try {
+      Recoloured value;
+      if (writing) {
+        fields::put_struct(value, fields::Scope<google::protobuf::Message>(&message));
+      } else {
+        fields::get_struct(value, fields::Scope<const google::protobuf::Message>(&message));
+      }
+      ADD_FAILURE() << "a list entry without its field was passed over";
+    } catch (const std::logic_error& e) {
+      EXPECT_NE(std::string(e.what()).find("dem.proto.SnapshotMaterial has no field colour"), std::string::npos)
+          << e.what();
+    }
+  }
+}
+
+// The walker checks lengths itself, behind the structure checks: an empty
+// array (a field added after a file was written) leaves the member at its
+// default, another length is refused by field.
+TEST(SnapshotConversion, TheWalkerKeepsDefaultsForEmptyArraysAndRefusesOtherLengths) {
+  proto::SnapshotWall message;
+  message.add_force(1.0);
+  message.add_force(2.0);
+  WallSnapshotT<2> state;
+  state.initial_point = {5.0, 6.0};
+  fields::get_struct(state, fields::Scope<const google::protobuf::Message>(&message));
+  EXPECT_EQ(state.force, Vec2(1.0, 2.0));
+  EXPECT_EQ(state.initial_point, Vec2(5.0, 6.0));
+  message.add_initial_point(1.0);
+  try {
+    fields::get_struct(state, fields::Scope<const google::protobuf::Message>(&message));
+    ADD_FAILURE() << "a point of one value was read";
+  } catch (const SnapshotError& e) {
+    EXPECT_STREQ(e.what(), "dem.proto.SnapshotWall.initial_point: has 1 values, expected 2");
+  }
+}
+
+// Enums go by number: every contact law lands on the schema's value of its
+// name, and comes back.
+TEST(SnapshotConversion, EveryContactLawKeepsItsSchemaValue) {
+  const std::vector<std::pair<ContactLaw, proto::SnapshotContactLaw>> laws = {
+      {ContactLaw::kLinear, proto::SNAPSHOT_LAW_LINEAR},
+      {ContactLaw::kLinearRestitution, proto::SNAPSHOT_LAW_LINEAR_RESTITUTION},
+      {ContactLaw::kHertzMindlin, proto::SNAPSHOT_LAW_HERTZ_MINDLIN},
+      {ContactLaw::kHertzLinearTangential, proto::SNAPSHOT_LAW_HERTZ_LINEAR_TANGENTIAL}};
+  for (const auto& [law, value] : laws) {
+    ContactModelDef model;
+    model.law = law;
+    proto::SnapshotContactModel message;
+    fields::put_struct(model, fields::Scope<google::protobuf::Message>(&message));
+    EXPECT_EQ(message.law(), value);
+    ContactModelDef back;
+    fields::get_struct(back, fields::Scope<const google::protobuf::Message>(&message));
+    EXPECT_EQ(back.law, law);
+  }
+}
+
 TEST(SnapshotConversion, EveryDefinitionAndStateFieldComesBackAsItWent) {
   World world(settling_box());
   world.cycle(20);
@@ -454,8 +562,8 @@ TEST(SnapshotConversion, NamesTheFieldOfEachInconsistency) {
   EXPECT_NE(problems_of(m).find("contacts.sliding: has"), std::string::npos) << problems_of(m);
 
   m = good;
-  m.mutable_wall(2)->mutable_point()->Add(1.0);
-  EXPECT_NE(problems_of(m).find("wall[2].point: has 3 values, expected 2"), std::string::npos) << problems_of(m);
+  m.mutable_walls(2)->mutable_point()->Add(1.0);
+  EXPECT_NE(problems_of(m).find("walls[2].point: has 3 values, expected 2"), std::string::npos) << problems_of(m);
 
   m = good;
   m.set_time_step(0.0);

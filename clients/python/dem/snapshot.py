@@ -102,7 +102,7 @@ class State:
         walls = tuple(
             WallState(w.name, np.array(w.point), np.array(w.direction), w.h1, w.h2,
                       np.array(w.direction2), w.k1, w.k2)
-            for w in message.wall)
+            for w in message.walls)
         angular = np.array(p.angular_velocity, dtype=float)
         rotation = np.array(p.rotation, dtype=float)
         shapes = np.array(p.shape, dtype=float)

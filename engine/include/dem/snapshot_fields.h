@@ -1,14 +1,13 @@
 // The field lists of the structs a snapshot holds besides the contact table
 // (whose list is for_each_contact_field, dem/snapshot.h): every member of
 // the definition structs (dem/definitions.h), the energy budget and the
-// wall and world state, by name. The conversion to Protocol Buffers
-// (io/src/snapshot_conversion.cpp) is written by hand, as the message packs
-// vectors into arrays of doubles; these lists are what keeps it whole. A new
-// member fails the build below until it has its line, and the round-trip
-// test (tests/io/test_snapshot_conversion.cpp) walks the lists, filling
-// every field with a value of its own: a listed field the snapshot does not
-// carry fails it. Adding a member is a line here, a field of
-// idl/dem/snapshot.proto and its two lines in the conversion.
+// wall and world state, by name. The conversion to Protocol Buffers walks
+// these lists (io/src/snapshot_conversion_fields.h), finding each field of
+// idl/dem/snapshot.proto by the name given here. A new member fails the
+// build below until it has its line; a line whose name the schema lacks
+// fails the io tests by name (SnapshotConversion.EveryListedField...) and
+// the conversion itself, loudly. Adding a member is a line here and a
+// field of that name in idl/dem/snapshot.proto.
 #pragma once
 
 #include <tuple>
@@ -183,7 +182,7 @@ constexpr bool snapshot_fields_complete() {
 
 // Every member of every struct is listed once: a new member - a bool that
 // fits in padding too - fails the build here until it has its line above
-// (and the snapshot carries it: idl/dem/snapshot.proto, the conversion).
+// (and the snapshot carries it: a field of its name in idl/dem/snapshot.proto).
 #define DEM_SNAPSHOT_FIELDS_COMPLETE(...)                        \
   static_assert(detail::snapshot_fields_complete<__VA_ARGS__>(), \
                 #__VA_ARGS__ " changed: give the new member its line in SnapshotFields (dem/snapshot_fields.h)")

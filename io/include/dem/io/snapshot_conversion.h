@@ -6,6 +6,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "dem/io/resource_limits.h"
 #include "dem/snapshot.h"
@@ -43,9 +44,19 @@ template <int Dim>
 WorldSnapshotT<Dim> snapshot_from_proto(const proto::Snapshot& message, SnapshotInfo* info = nullptr,
                                         const ResourceLimits& limits = machine_limits());
 
+// Every entry of the snapshot's field lists (dem/snapshot_fields.h) against
+// the schema, as the conversion finds them: one line per entry with no
+// field of its name or a field that cannot carry its type (the conversion
+// throws std::logic_error at the first). Empty when they agree; the io
+// tests check it, so a list line without its schema field fails there.
+template <int Dim>
+std::vector<std::string> snapshot_schema_problems(int* fields_checked = nullptr);
+
 extern template proto::Snapshot snapshot_to_proto<2>(const WorldSnapshotT<2>&, const SnapshotInfo&);
 extern template proto::Snapshot snapshot_to_proto<3>(const WorldSnapshotT<3>&, const SnapshotInfo&);
 extern template WorldSnapshotT<2> snapshot_from_proto<2>(const proto::Snapshot&, SnapshotInfo*, const ResourceLimits&);
 extern template WorldSnapshotT<3> snapshot_from_proto<3>(const proto::Snapshot&, SnapshotInfo*, const ResourceLimits&);
+extern template std::vector<std::string> snapshot_schema_problems<2>(int*);
+extern template std::vector<std::string> snapshot_schema_problems<3>(int*);
 
 }  // namespace dem::io
