@@ -175,7 +175,9 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
         if constexpr (kPrefetch) {  // the same row of the next batch: its misses overlap this batch's work
           const std::int32_t k = k0 + i;
           if (k + kBatch < listed) {
-            const Slot ahead = second[sort_out ? begin + k + kBatch : near[k + kBatch]];
+            const std::int32_t row_ahead = sort_out ? begin + k + kBatch : near[k + kBatch];
+            const Slot ahead = second[row_ahead];
+            __builtin_prefetch(&row_shear[row_ahead]);
             __builtin_prefetch(place_column + kPlaceStride * ahead);
             __builtin_prefetch(velocity_column + kMotionStride * ahead);
             if constexpr (!kHot) __builtin_prefetch(spin_column + kMotionStride * ahead);
