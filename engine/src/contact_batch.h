@@ -41,7 +41,9 @@ inline constexpr std::int64_t kPrefetchParticles = 32768;
 template <typename Law, int Dim, bool kPrefetch, bool kHot = kPrefetch>
 void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows,
                         ContactBlocks<Dim>& blocks, int b) {
-  constexpr int kBatch = 64;
+  // Rows per batch: 128 ran 1.018 (10k) and 1.025 (100k) against 64, 256 as
+  // 128, 32 at 0.92 (docs/PERFORMANCE.md).
+  constexpr int kBatch = 128;
   constexpr int kAhead = 16;  // rows ahead to fetch
   // A copy, not a reference: its fields become loop invariants in registers.
   // Read through a reference, the stores of the batch could alias them,
