@@ -79,10 +79,15 @@ void move_plain_block(Particles<Dim>& p, const Vec<Dim>& gravity, const Periodic
   // patterns read as integers: an integer maximum vectorises, a double one
   // does not without giving up NaN and signed-zero semantics.
   std::int64_t max_travel_bits = 0, max_speed_bits = 0;
-  constexpr std::int64_t kChunk = 128;
+  // Chunks of 128 particles while the particles stay in the shared cache
+  // between steps; of 32 on larger beds, whose arrays come from memory
+  // (plate benchmark, one thread, motion phase against 128: at 10k 32 was
+  // 1.105, at 100k 0.557; docs/PERFORMANCE.md, item 12).
+  constexpr std::int64_t kChunk = 128, kLargeBedChunk = 32, kLargeBed = 32768;
+  const std::int64_t chunk = static_cast<std::int64_t>(p.size()) > kLargeBed ? kLargeBedChunk : kChunk;
   alignas(64) double cosine[kChunk], ax[kChunk], ay[kChunk], az[kChunk], angle2[kChunk];
-  for (std::int64_t c0 = begin; c0 < end; c0 += kChunk) {
-    const std::int64_t n = std::min(kChunk, end - c0);
+  for (std::int64_t c0 = begin; c0 < end; c0 += chunk) {
+    const std::int64_t n = std::min(chunk, end - c0);
     double* __restrict xc = x + D * c0;
     double* __restrict vc = v + D * c0;
     const double* __restrict fc = f + D * c0;
