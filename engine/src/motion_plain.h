@@ -9,6 +9,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "motion.h"
 
@@ -35,6 +36,12 @@ void large_half_angle(double h2, double& cosine, double& sine_over_h);
   q[3] = nw * rescale;
 }
 
+// The particles [begin, end) go through in chunks small enough that what
+// one loop writes, the next reads from the core's first-level cache: each
+// particle's arrays come from memory once a step (at 100k particles the
+// law of motion is bound by that traffic). Within a chunk, one loop per
+// stride: GCC vectorises a loop over the three-number arrays (position,
+// velocity, spin) or over the four-number orientations, not one over both.
 template <int Dim>
 void move_plain_block(Particles<Dim>& p, const Vec<Dim>& gravity, const Periodic<Dim>& cell, double dt, double keep,
                       double scale, double keep_rotation, double scale_rotation, std::int64_t begin, std::int64_t end,
@@ -46,6 +53,7 @@ void move_plain_block(Particles<Dim>& p, const Vec<Dim>& gravity, const Periodic
   const double* __restrict f = p.force.data()->data();
   const double* __restrict mass = p.mass.data();
   const double* __restrict inertia = p.inertia.data();
+  const double* __restrict reference = p.reference_position.data()->data();
   double* __restrict w;
   const double* __restrict moment;
   if constexpr (Dim == 3) {
@@ -55,65 +63,99 @@ void move_plain_block(Particles<Dim>& p, const Vec<Dim>& gravity, const Periodic
     w = p.angular_velocity.data();
     moment = p.moment.data();
   }
-  double g[D], lo[D], period[D];
+  // The cell's bounds; an axis that does not repeat has infinite ones, so
+  // the wrap below treats every axis alike (a test of the axis inside the
+  // loop kept GCC from vectorising it).
+  double g[D], lo[D], hi[D], period[D];
   for (int k = 0; k < D; ++k) {
     g[k] = gravity[k];
-    lo[k] = cell.min[k];
-    period[k] = cell.length[k];
+    const bool repeats = cell.length[k] > 0.0;
+    period[k] = repeats ? cell.length[k] : 0.0;
+    lo[k] = repeats ? cell.min[k] : -std::numeric_limits<double>::infinity();
+    hi[k] = repeats ? cell.min[k] + cell.length[k] : std::numeric_limits<double>::infinity();
   }
-  // Velocities and positions (Cundall & Strack eqs. 35, 22a), the body
-  // force m g added to the force sum.
-  for (std::int64_t i = begin; i < end; ++i) {
-    const double m = mass[i], dt_m = dt / m;
-    for (int k = 0; k < D; ++k) {
-      const double v1 = (v[D * i + k] * keep + (f[D * i + k] + m * g[k]) * dt_m) * scale;
-      v[D * i + k] = v1;
-      x[D * i + k] += v1 * dt;
-    }
-  }
-  // Spins (eq. 36).
-  for (std::int64_t i = begin; i < end; ++i) {
-    const double inverse = 1.0 / inertia[i];
-    for (int k = 0; k < S; ++k) {
-      w[S * i + k] = (w[S * i + k] * keep_rotation + moment[S * i + k] * inverse * dt) * scale_rotation;
-    }
-  }
-  // Across the periodic cell: one period either way; a particle that moved
-  // farther, or landed on the edge, is wrapped in full afterwards (the loop
-  // itself has no branch, so it runs as vector code; the count of those
-  // outside is an integer sum for the same reason).
-  if (cell.any()) {
-    std::int64_t outside = 0;
-    for (std::int64_t i = begin; i < end; ++i) {
+  const bool periodic = cell.any();
+  // The largest of non-negative doubles is the largest of their bit
+  // patterns read as integers: an integer maximum vectorises, a double one
+  // does not without giving up NaN and signed-zero semantics.
+  std::int64_t max_travel_bits = 0, max_speed_bits = 0;
+  // Chunks of 128 particles while the particles stay in the shared cache
+  // between steps; of 32 on larger beds, whose arrays come from memory
+  // (plate benchmark, one thread, motion phase against 128: at 10k 32 was
+  // 1.105, at 100k 0.557; docs/PERFORMANCE.md, item 12).
+  constexpr std::int64_t kChunk = 128, kLargeBedChunk = 32, kLargeBed = 32768;
+  const std::int64_t chunk = static_cast<std::int64_t>(p.size()) > kLargeBed ? kLargeBedChunk : kChunk;
+  alignas(64) double cosine[kChunk], ax[kChunk], ay[kChunk], az[kChunk], angle2[kChunk];
+  for (std::int64_t c0 = begin; c0 < end; c0 += chunk) {
+    const std::int64_t n = std::min(chunk, end - c0);
+    double* __restrict xc = x + D * c0;
+    double* __restrict vc = v + D * c0;
+    const double* __restrict fc = f + D * c0;
+    const double* __restrict mc = mass + c0;
+    // Velocities and positions (Cundall & Strack eqs. 35, 22a), the body
+    // force m g added to the force sum; the largest speed.
+    for (std::int64_t i = 0; i < n; ++i) {
+      const double m = mc[i], dt_m = dt / m;
+      double speed2 = 0.0;
       for (int k = 0; k < D; ++k) {
-        if (!(period[k] > 0.0)) continue;
-        double coordinate = x[D * i + k];
-        coordinate = coordinate < lo[k] ? coordinate + period[k]
-                                        : (coordinate >= lo[k] + period[k] ? coordinate - period[k] : coordinate);
-        outside += (coordinate < lo[k]) | (coordinate >= lo[k] + period[k]);
-        x[D * i + k] = coordinate;
+        const double v1 = (vc[D * i + k] * keep + (fc[D * i + k] + m * g[k]) * dt_m) * scale;
+        vc[D * i + k] = v1;
+        xc[D * i + k] += v1 * dt;
+        speed2 += v1 * v1;
+      }
+      max_speed_bits = std::max(max_speed_bits, std::bit_cast<std::int64_t>(speed2));
+    }
+    // Across the periodic cell: one period either way; a particle that
+    // moved farther, or landed on the edge, is wrapped in full afterwards
+    // (the loop itself has no branch, so it runs as vector code; the count
+    // of those outside is an integer sum for the same reason).
+    if (periodic) {
+      std::int64_t outside = 0;
+      for (std::int64_t i = 0; i < n; ++i) {
+        for (int k = 0; k < D; ++k) {
+          double coordinate = xc[D * i + k];
+          coordinate =
+              coordinate < lo[k] ? coordinate + period[k] : (coordinate >= hi[k] ? coordinate - period[k] : coordinate);
+          outside += (coordinate < lo[k]) | (coordinate >= hi[k]);
+          xc[D * i + k] = coordinate;
+        }
+      }
+      if (outside > 0) {
+        for (std::int64_t i = c0; i < c0 + n; ++i) {
+          bool out = false;
+          for (int k = 0; k < D; ++k) out = out || xc[D * (i - c0) + k] < lo[k] || xc[D * (i - c0) + k] >= hi[k];
+          if (out) cell.wrap(p.position[i]);
+        }
       }
     }
-    if (outside > 0) {
-      for (std::int64_t i = begin; i < end; ++i) cell.wrap(p.position[i]);
+    // How far each particle is from where the contact table was built
+    // (cell.separation's nearest image, without its branches).
+    const double* __restrict rc = reference + D * c0;
+    for (std::int64_t i = 0; i < n; ++i) {
+      double travel2 = 0.0;
+      for (int k = 0; k < D; ++k) {
+        double d = xc[D * i + k] - rc[D * i + k];
+        d = d > 0.5 * period[k] ? d - period[k] : (d < -0.5 * period[k] ? d + period[k] : d);
+        travel2 += d * d;
+      }
+      max_travel_bits = std::max(max_travel_bits, std::bit_cast<std::int64_t>(travel2));
     }
-  }
-  // Orientations (eq. 23a): as turn() in motion.cpp; a turn through a large
-  // half angle is redone in full afterwards.
-  if constexpr (Dim == 3) {
-    double* __restrict q = reinterpret_cast<double*>(p.rotation.data());  // x, y, z, w per particle
-    // In chunks, two loops: the half-angle turn from the spins (three to a
-    // particle), then the product with the orientations (four to a
-    // particle); one loop over both strides does not vectorise.
-    constexpr std::int64_t kChunk = 256;
-    alignas(64) double cosine[kChunk], ax[kChunk], ay[kChunk], az[kChunk], angle2[kChunk];
-    std::int64_t large_count = 0;
-    for (std::int64_t c0 = begin; c0 < end; c0 += kChunk) {
-      const std::int64_t n = std::min(kChunk, end - c0);
+    double* __restrict wc = w + S * c0;
+    const double* __restrict momc = moment + S * c0;
+    const double* __restrict ic = inertia + c0;
+    if constexpr (Dim == 3) {
+      // Spins (eq. 36), and from each new spin the turn through the half
+      // angle h = |omega| dt / 2 (eq. 23a; turn() in motion.cpp): cos h and
+      // sin(h)/h by their series, the large ones redone in full below.
       std::int64_t chunk_large = 0;
-      const double* __restrict wc = w + 3 * c0;
       for (std::int64_t i = 0; i < n; ++i) {
-        const double hx = 0.5 * dt * wc[3 * i], hy = 0.5 * dt * wc[3 * i + 1], hz = 0.5 * dt * wc[3 * i + 2];
+        const double inverse = 1.0 / ic[i];
+        double w1[3];
+        for (int k = 0; k < 3; ++k) {
+          w1[k] = (wc[3 * i + k] * keep_rotation + momc[3 * i + k] * inverse * dt) * scale_rotation;
+          wc[3 * i + k] = w1[k];
+        }
+        const double hx = 0.5 * dt * w1[0], hy = 0.5 * dt * w1[1], hz = 0.5 * dt * w1[2];
         const double h2i = hx * hx + hy * hy + hz * hz;
         constexpr double k2 = 1.0 / 2.0, k12 = 1.0 / 12.0, k30 = 1.0 / 30.0;
         constexpr double k6 = 1.0 / 6.0, k20 = 1.0 / 20.0, k42 = 1.0 / 42.0;
@@ -125,51 +167,33 @@ void move_plain_block(Particles<Dim>& p, const Vec<Dim>& gravity, const Periodic
         angle2[i] = h2i;
         chunk_large += h2i >= 1e-4;
       }
-      double* __restrict qc = q + 4 * c0;
+      // Orientations (eq. 23a), four numbers a particle.
+      double* __restrict qc = reinterpret_cast<double*>(p.rotation.data() + c0);  // x, y, z, w per particle
       if (chunk_large == 0) {
         for (std::int64_t i = 0; i < n; ++i) turn_by(qc + 4 * i, cosine[i], ax[i], ay[i], az[i]);
       } else {
         for (std::int64_t i = 0; i < n; ++i) {
-          if (angle2[i] < 1e-4) turn_by(qc + 4 * i, cosine[i], ax[i], ay[i], az[i]);  // the large ones below
+          if (angle2[i] < 1e-4) {
+            turn_by(qc + 4 * i, cosine[i], ax[i], ay[i], az[i]);
+          } else {
+            const double hx = 0.5 * dt * wc[3 * i], hy = 0.5 * dt * wc[3 * i + 1], hz = 0.5 * dt * wc[3 * i + 2];
+            double full_cosine, sine_over_h;
+            large_half_angle(angle2[i], full_cosine, sine_over_h);
+            turn_by(qc + 4 * i, full_cosine, sine_over_h * hx, sine_over_h * hy, sine_over_h * hz);
+          }
         }
       }
-      large_count += chunk_large;
-    }
-    if (large_count > 0) {
-      for (std::int64_t i = begin; i < end; ++i) {
-        const double hx = 0.5 * dt * w[3 * i], hy = 0.5 * dt * w[3 * i + 1], hz = 0.5 * dt * w[3 * i + 2];
-        const double h2 = hx * hx + hy * hy + hz * hz;
-        if (h2 < 1e-4) continue;
-        double full_cosine, sine_over_h;
-        large_half_angle(h2, full_cosine, sine_over_h);
-        turn_by(q + 4 * i, full_cosine, sine_over_h * hx, sine_over_h * hy, sine_over_h * hz);
+    } else {
+      double* __restrict angle = p.rotation.data() + c0;
+      for (std::int64_t i = 0; i < n; ++i) {
+        const double w1 = (wc[i] * keep_rotation + momc[i] * (1.0 / ic[i]) * dt) * scale_rotation;  // eq. 36
+        wc[i] = w1;
+        angle[i] += w1 * dt;
       }
     }
-  } else {
-    for (std::int64_t i = begin; i < end; ++i) p.rotation[i] += w[i] * dt;
   }
-  // How far anything moved, and how fast.
-  const double* __restrict reference = p.reference_position.data()->data();
-  // The largest of non-negative doubles is the largest of their bit
-  // patterns read as integers: an integer maximum vectorises, a double one
-  // does not without giving up NaN and signed-zero semantics.
-  std::int64_t max_travel_bits = 0, max_speed_bits = 0;
-  for (std::int64_t i = begin; i < end; ++i) {
-    double speed2 = 0.0, travel2 = 0.0;
-    for (int k = 0; k < D; ++k) {
-      speed2 += v[D * i + k] * v[D * i + k];
-      // cell.separation's nearest image, without its branches.
-      double d = x[D * i + k] - reference[D * i + k];
-      d = d > 0.5 * period[k] ? d - period[k] : (d < -0.5 * period[k] ? d + period[k] : d);
-      travel2 += d * d;
-    }
-    max_speed_bits = std::max(max_speed_bits, std::bit_cast<std::int64_t>(speed2));
-    max_travel_bits = std::max(max_travel_bits, std::bit_cast<std::int64_t>(travel2));
-  }
-  const double max_travel2 = std::bit_cast<double>(max_travel_bits);
-  const double max_speed2 = std::bit_cast<double>(max_speed_bits);
-  step.max_travel = std::sqrt(max_travel2);
-  step.max_speed = std::sqrt(max_speed2);
+  step.max_travel = std::sqrt(std::bit_cast<double>(max_travel_bits));
+  step.max_speed = std::sqrt(std::bit_cast<double>(max_speed_bits));
 }
 
 }  // namespace dem
