@@ -65,6 +65,10 @@ struct ContactBlocks {
   // at the start of each batched pass on large beds, empty otherwise.
   std::vector<HotPlace<Dim>> hot_place;
   std::vector<HotMotion<Dim>> hot_motion;
+  // Whether the law of motion wrote those copies this step, after the
+  // particles moved and before anything reordered them: the pass then
+  // reads them as they are instead of copying (motion.cpp).
+  bool hot_fresh = false;
 
   int count() const { return static_cast<int>(particle_begin.size()) - 1; }
   int block_of(Slot s) const;

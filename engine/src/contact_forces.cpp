@@ -249,6 +249,8 @@ ContactEnergy run_pass(WorldState<Dim>& s, const StepContext& step) {
     blocks.hot_place.resize(p.size());
     blocks.hot_motion.resize(p.size());
   }
+  const bool copy_hot = hot && !blocks.hot_fresh;  // else the law of motion wrote them (motion.cpp)
+  blocks.hot_fresh = false;
   const int count = blocks.count();
   const int walls = s.walls.size();
   std::vector<WallSum<Dim>> wall_sums(static_cast<std::size_t>(count) * walls);
@@ -257,7 +259,7 @@ ContactEnergy run_pass(WorldState<Dim>& s, const StepContext& step) {
   const bool shaped = s.shape != ShapeKind::kRound;
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
-    if (hot) {
+    if (copy_hot) {
 #pragma omp for schedule(static)
       for (int b = 0; b < count; ++b)
         copy_hot_particles(p, blocks, blocks.particle_begin[b], blocks.particle_begin[b + 1]);

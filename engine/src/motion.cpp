@@ -189,9 +189,18 @@ MotionStep move_particles(Particles<Dim>& p, const MotionInputs<Dim>& in) {
       static_cast<std::int64_t>(p.size()), in.threads, [&](std::int64_t begin, std::int64_t end, MotionStep& step) {
         if constexpr (!kLocal && !kTensor && !kEnergy) {
           move_plain_block(p, c.gravity, c.cell, c.dt, c.keep, c.scale, c.keep_rotation, c.scale_rotation, begin, end,
-                           step);
+                           step, in.hot_place, in.hot_motion);
         } else {
           move_block<Dim, kLocal, kTensor, kEnergy>(p, c, begin, end, step);
+        }
+        if (in.hot_place != nullptr && (kLocal || kTensor || kEnergy)) {
+          for (std::int64_t i = begin; i < end; ++i) {
+            in.hot_place[i].position = p.position[i];
+            in.hot_place[i].radius = p.radius[i];
+            in.hot_motion[i].velocity = p.velocity[i];
+            in.hot_motion[i].mass = p.mass[i];
+            in.hot_motion[i].angular_velocity = p.angular_velocity[i];
+          }
         }
       });
   MotionStep total;

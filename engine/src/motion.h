@@ -3,6 +3,7 @@
 // force pass.
 #pragma once
 
+#include "contact_blocks.h"
 #include "dem/definitions.h"
 #include "particles.h"
 #include "periodic.h"
@@ -30,6 +31,11 @@ struct MotionInputs {
   bool energy_budget;  // book gravity's work and the damping's losses
   bool keep_force;     // remember each |sum F| for the next step's check
   bool check_step;     // Randall's particle-wise check against the kept |sum F|
+  // The force pass's side-by-side copies (contact_blocks.h) to write as the
+  // particles move, or null: each particle's new values are still in the
+  // core's cache here, where the pass would read them back from memory.
+  HotPlace<Dim>* hot_place = nullptr;
+  HotMotion<Dim>* hot_motion = nullptr;
 };
 
 // Time-centred central differences (Cundall & Strack eqs. 35-36, then

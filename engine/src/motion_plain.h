@@ -45,7 +45,7 @@ void large_half_angle(double h2, double& cosine, double& sine_over_h);
 template <int Dim>
 void move_plain_block(Particles<Dim>& p, const Vec<Dim>& gravity, const Periodic<Dim>& cell, double dt, double keep,
                       double scale, double keep_rotation, double scale_rotation, std::int64_t begin, std::int64_t end,
-                      MotionStep& step) {
+                      MotionStep& step, HotPlace<Dim>* hot_place = nullptr, HotMotion<Dim>* hot_motion = nullptr) {
   constexpr int D = Dim;
   constexpr int S = Dim == 3 ? 3 : 1;  // components of a spin
   double* __restrict x = p.position.data()->data();
@@ -189,6 +189,16 @@ void move_plain_block(Particles<Dim>& p, const Vec<Dim>& gravity, const Periodic
         const double w1 = (wc[i] * keep_rotation + momc[i] * (1.0 / ic[i]) * dt) * scale_rotation;  // eq. 36
         wc[i] = w1;
         angle[i] += w1 * dt;
+      }
+    }
+    // The force pass's side-by-side copies, while the chunk is in the core's cache.
+    if (hot_place != nullptr) {
+      for (std::int64_t i = c0; i < c0 + n; ++i) {
+        hot_place[i].position = p.position[i];
+        hot_place[i].radius = p.radius[i];
+        hot_motion[i].velocity = p.velocity[i];
+        hot_motion[i].mass = p.mass[i];
+        hot_motion[i].angular_velocity = p.angular_velocity[i];
       }
     }
   }

@@ -46,9 +46,13 @@ void book(WorldState<Dim>& s, const ContactEnergy& e) {
 // search and the near rows), the energy flows, the time-step check.
 template <int Dim>
 void particle_motion(WorldState<Dim>& s, const StepContext& step) {
-  const MotionStep motion =
-      integrate_motion(s.particles, MotionInputs<Dim>{s.periodic, s.gravity, s.damping, step.dt, step.threads,
-                                                      step.energy_budget, step.keep_force, step.check_step});
+  // The pass's copies, when it keeps them (large beds) at this size.
+  const bool hot = s.blocks.hot_place.size() == s.particles.size() && !s.particles.position.empty();
+  const MotionStep motion = integrate_motion(
+      s.particles, MotionInputs<Dim>{s.periodic, s.gravity, s.damping, step.dt, step.threads, step.energy_budget,
+                                     step.keep_force, step.check_step, hot ? s.blocks.hot_place.data() : nullptr,
+                                     hot ? s.blocks.hot_motion.data() : nullptr});
+  s.blocks.hot_fresh = hot;
   s.particle_travel = motion.max_travel;
   s.near_slack -= 2.0 * motion.max_speed * step.dt;
   if (s.near_slack < 0.0) s.blocks.near_stale = true;
@@ -126,6 +130,7 @@ void find_contacts(WorldState<Dim>& s, const StepContext& step) {
     double max_radius = 0.0;
     for (double r : p.radius) max_radius = std::max(max_radius, r);
     reorder_particles(p, s.contacts, spatial_order(p, s.periodic, 2.0 * max_radius + s.contact_tolerance));
+    s.blocks.hot_fresh = false;  // the copies are in the old order
     s.sorted_cycle = step.cycle;
   }
   merge_rows(s.contacts.pairs, find_pair_keys(p, s.periodic, s.contact_tolerance, step.threads));
