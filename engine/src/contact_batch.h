@@ -37,7 +37,7 @@ inline constexpr std::int64_t kPrefetchParticles = 32768;
 
 // kHot: the particles are read from the pass's side-by-side copies
 // (HotPlace, HotMotion in contact_blocks.h), filled beforehand by
-// copy_hot_particles; otherwise from the particle arrays.
+// copy_hot_particles (contact_blocks.h); otherwise from the particle arrays.
 template <typename Law, int Dim, bool kPrefetch, bool kHot = kPrefetch>
 void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows,
                         ContactBlocks<Dim>& blocks, int b) {
@@ -378,20 +378,6 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
   }
   flush_pending();
   if (sort_out) blocks.near_count[b] = kept;
-}
-
-// The pass's side-by-side copies of slots [begin, end) (kHot above).
-template <int Dim>
-void copy_hot_particles(const Particles<Dim>& p, ContactBlocks<Dim>& blocks, Slot begin, Slot end) {
-  HotPlace<Dim>* place = blocks.hot_place.data();
-  HotMotion<Dim>* motion = blocks.hot_motion.data();
-  for (Slot i = begin; i < end; ++i) {
-    place[i].position = p.position[i];
-    place[i].radius = p.radius[i];
-    motion[i].velocity = p.velocity[i];
-    motion[i].mass = p.mass[i];
-    motion[i].angular_velocity = p.angular_velocity[i];
-  }
 }
 
 }  // namespace dem

@@ -35,6 +35,21 @@ struct alignas(64) HotMotion {
   Spin<Dim> angular_velocity;
 };
 
+// Slots [begin, end) of the particles into the side-by-side copies: by the
+// force pass, or by the law of motion while each particle's new values
+// are still in the core's cache (motion.cpp, motion_plain.h).
+template <int Dim>
+void copy_hot_particles(const Particles<Dim>& p, HotPlace<Dim>* place, HotMotion<Dim>* motion, std::int64_t begin,
+                        std::int64_t end) {
+  for (std::int64_t i = begin; i < end; ++i) {
+    place[i].position = p.position[i];
+    place[i].radius = p.radius[i];
+    motion[i].velocity = p.velocity[i];
+    motion[i].mass = p.mass[i];
+    motion[i].angular_velocity = p.angular_velocity[i];
+  }
+}
+
 template <int Dim>
 struct ContactBlocks {
   std::vector<Slot> particle_begin;      // block b holds slots [particle_begin[b], particle_begin[b + 1])

@@ -262,7 +262,8 @@ ContactEnergy run_pass(WorldState<Dim>& s, const StepContext& step) {
     if (copy_hot) {
 #pragma omp for schedule(static)
       for (int b = 0; b < count; ++b)
-        copy_hot_particles(p, blocks, blocks.particle_begin[b], blocks.particle_begin[b + 1]);
+        copy_hot_particles(p, blocks.hot_place.data(), blocks.hot_motion.data(), blocks.particle_begin[b],
+                           blocks.particle_begin[b + 1]);
     }
     if (ellipsoids) {
 #pragma omp for schedule(static)

@@ -194,13 +194,7 @@ MotionStep move_particles(Particles<Dim>& p, const MotionInputs<Dim>& in) {
           move_block<Dim, kLocal, kTensor, kEnergy>(p, c, begin, end, step);
         }
         if (in.hot_place != nullptr && (kLocal || kTensor || kEnergy)) {
-          for (std::int64_t i = begin; i < end; ++i) {
-            in.hot_place[i].position = p.position[i];
-            in.hot_place[i].radius = p.radius[i];
-            in.hot_motion[i].velocity = p.velocity[i];
-            in.hot_motion[i].mass = p.mass[i];
-            in.hot_motion[i].angular_velocity = p.angular_velocity[i];
-          }
+          copy_hot_particles(p, in.hot_place, in.hot_motion, begin, end);
         }
       });
   MotionStep total;

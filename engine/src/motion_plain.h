@@ -192,15 +192,7 @@ void move_plain_block(Particles<Dim>& p, const Vec<Dim>& gravity, const Periodic
       }
     }
     // The force pass's side-by-side copies, while the chunk is in the core's cache.
-    if (hot_place != nullptr) {
-      for (std::int64_t i = c0; i < c0 + n; ++i) {
-        hot_place[i].position = p.position[i];
-        hot_place[i].radius = p.radius[i];
-        hot_motion[i].velocity = p.velocity[i];
-        hot_motion[i].mass = p.mass[i];
-        hot_motion[i].angular_velocity = p.angular_velocity[i];
-      }
-    }
+    if (hot_place != nullptr) copy_hot_particles(p, hot_place, hot_motion, c0, c0 + n);
   }
   step.max_travel = std::sqrt(std::bit_cast<double>(max_travel_bits));
   step.max_speed = std::sqrt(std::bit_cast<double>(max_speed_bits));
