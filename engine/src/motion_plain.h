@@ -82,7 +82,7 @@ void move_plain_block(Particles<Dim>& p, const Vec<Dim>& gravity, const Periodic
   // Chunks of 128 particles while the particles stay in the shared cache
   // between steps; of 32 on larger beds, whose arrays come from memory
   // (plate benchmark, one thread, motion phase against 128: at 10k 32 was
-  // 1.105, at 100k 0.557; docs/PERFORMANCE.md, item 12).
+  // 1.105, at 100k 0.557; docs/PERFORMANCE.md, item 14).
   constexpr std::int64_t kChunk = 128, kLargeBedChunk = 32, kLargeBed = 32768;
   const std::int64_t chunk = static_cast<std::int64_t>(p.size()) > kLargeBed ? kLargeBedChunk : kChunk;
   alignas(64) double cosine[kChunk], ax[kChunk], ay[kChunk], az[kChunk], angle2[kChunk];
