@@ -76,9 +76,16 @@ struct WorldState {
 // Particles per force-pass block (contact_blocks.h): large for round
 // particles, whose rows are cheap, so few rows cross blocks; small for
 // shaped ones, whose rows are dear, so even small worlds spread over threads.
+// A crossing row costs a round sphere's pass about as much as two rows that
+// stay inside (its share set aside and added later, a branch no predictor
+// learns, its second particle's data away from the block's): on the dense
+// benchmark, blocks of 4096 spheres instead of 1024 cut the crossing rows
+// from 17 % to 7 % (10k) and ran 1.055 (10k) and 1.09 (100k) on one thread
+// (docs/PERFORMANCE.md). Discs keep 1024: a 2D case has a few thousand.
 template <int Dim>
 int block_size(const WorldState<Dim>& state) {
-  return state.shape == ShapeKind::kRound ? 1024 : 32;
+  if (state.shape != ShapeKind::kRound) return 32;
+  return Dim == 3 ? 4096 : 1024;
 }
 
 // The gap below which a pair row counts as near (contact_blocks.h): an
