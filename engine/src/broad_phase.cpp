@@ -58,7 +58,7 @@ struct Candidates {
 template <int Dim>
 void find_cell_pairs(const CellGrid<Dim>& grid, const CellOrdered<Dim>& ordered, const Periodic<Dim>& periodic,
                      const typename CellGrid<Dim>::Cell& home, std::int64_t c, double tolerance, bool prefilter,
-                     std::vector<ContactKey>& keys) {
+                     std::vector<std::int32_t>& near, std::vector<ContactKey>& keys) {
   const std::int32_t home_begin = grid.cell_start[c];
   const std::int32_t home_end = grid.cell_start[c + 1];
   if (home_begin == home_end) return;
@@ -114,28 +114,43 @@ void find_cell_pairs(const CellGrid<Dim>& grid, const CellOrdered<Dim>& ordered,
     }
   }
 
+  std::size_t most = 0;
+  for (int k = 0; k < range_count; ++k) {
+    most += static_cast<std::size_t>(ranges[k].end - (ranges[k].from_next ? home_begin : ranges[k].begin));
+  }
+  if (near.size() < most) near.resize(most);
+  // Far apart for certain: the squared distance exceeds the squared reach
+  // by far more than the exact test's round-off (below) can make up, so the
+  // exact test would say no too.
+  constexpr double kMargin = 1.0 + 1e-8;
   for (std::int32_t s = home_begin; s < home_end; ++s) {
     const Vec<Dim>& xs = ordered.position[s];
     const double rs = ordered.radius[s];
+    // Every candidate is written down and kept only when it may be near,
+    // without a branch: whether one is near follows no pattern.
+    std::size_t count = 0;
     for (int k = 0; k < range_count; ++k) {
       const Candidates& range = ranges[k];
       for (std::int32_t t = range.from_next ? s + 1 : range.begin; t < range.end; ++t) {
-        const double rt = ordered.radius[t];
-        // Far apart for certain: the squared distance exceeds the squared
-        // reach by far more than the exact test's round-off (below) can
-        // make up, so the exact test would say no too.
-        if (prefilter) {
-          const double reach = rs + rt + tolerance;
-          if (periodic.separation(xs, ordered.position[t]).squaredNorm() > reach * reach * (1.0 + 1e-8)) continue;
+        double distance2 = 0.0;
+        for (int d = 0; d < Dim; ++d) {
+          const double along = nearest_image(ordered.position[t][d] - xs[d], periodic.length[d]);
+          distance2 += along * along;
         }
-        // The exact test, oriented from the lower id as the contact table's
-        // rows are, so its round-off is the same whichever cell found the pair.
-        const bool s_first = ordered.id[s] < ordered.id[t];
-        const std::int32_t a = s_first ? s : t, b = s_first ? t : s;
-        const double gap = periodic.separation(ordered.position[a], ordered.position[b]).norm() - ordered.radius[a] -
-                           ordered.radius[b];
-        if (gap < tolerance) keys.push_back({grid.cell_particles[a], grid.cell_particles[b]});
+        const double reach = rs + ordered.radius[t] + tolerance;
+        near[count] = t;
+        count += static_cast<std::size_t>(!prefilter || !(distance2 > reach * reach * kMargin));
       }
+    }
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::int32_t t = near[k];
+      // The exact test, oriented from the lower id as the contact table's
+      // rows are, so its round-off is the same whichever cell found the pair.
+      const bool s_first = ordered.id[s] < ordered.id[t];
+      const std::int32_t a = s_first ? s : t, b = s_first ? t : s;
+      const double gap =
+          periodic.separation(ordered.position[a], ordered.position[b]).norm() - ordered.radius[a] - ordered.radius[b];
+      if (gap < tolerance) keys.push_back({grid.cell_particles[a], grid.cell_particles[b]});
     }
   }
 }
@@ -184,8 +199,9 @@ std::vector<ContactKey> find_pair_keys(const Particles<Dim>& particles, const Pe
       rest /= grid.counts[d];
     }
     auto& chunk_keys = found[static_cast<std::size_t>(chunk)];
+    std::vector<std::int32_t> near;  // scratch: one particle's candidates that may be near
     for (std::int64_t c = begin; c < end; ++c) {
-      find_cell_pairs(grid, ordered, periodic, cell, c, tolerance, prefilter, chunk_keys);
+      find_cell_pairs(grid, ordered, periodic, cell, c, tolerance, prefilter, near, chunk_keys);
       for (int d = 0; d < Dim && ++cell[d] == grid.counts[d]; ++d) cell[d] = 0;
     }
   }
