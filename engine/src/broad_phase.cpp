@@ -134,8 +134,8 @@ void find_cell_pairs(const CellGrid<Dim>& grid, const CellOrdered<Dim>& ordered,
       for (std::int32_t t = range.from_next ? s + 1 : range.begin; t < range.end; ++t) {
         double distance2 = 0.0;
         for (int d = 0; d < Dim; ++d) {
-          const double along = nearest_image(ordered.position[t][d] - xs[d], periodic.length[d]);
-          distance2 += along * along;
+          const double apart = nearest_image(ordered.position[t][d] - xs[d], periodic.length[d]);
+          distance2 += apart * apart;
         }
         const double reach = rs + ordered.radius[t] + tolerance;
         near[count] = t;
