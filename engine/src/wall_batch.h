@@ -1,10 +1,9 @@
 // The force pass over the wall rows of round particles against segments
 // (2D) and rectangles (3D), in batches, as contact_batch.h takes the pair
 // rows. A wall row through the general row body (contact_row.h) cost about
-// five pair rows (10k plate benchmark: 48 ns against 9.5): the closest
-// point out of line twice, the row's result built and copied, the
-// parameter table looked up, one long chain of roots and divisions per
-// row. Here a batch of rows is taken in three sweeps: the geometry's
+// five pair rows (10k plate benchmark: 48 ns against 9.5; docs/PERFORMANCE.md),
+// each one chain of roots and divisions, with the closest point out of line
+// twice. Here a batch of rows is taken in three sweeps: the geometry's
 // distance and whether each row touches, with what the law reads of the
 // touching rows packed together; the law on the packed rows, one straight
 // loop over arrays that the compiler vectorises; then the history back to
