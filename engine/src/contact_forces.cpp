@@ -9,21 +9,12 @@
 #include "contact_row.h"
 #include "ellipsoid_rows.h"
 #include "law_dispatch.h"
+#include "wall_batch.h"
 #include "world_state.h"
 
 namespace dem {
 
 namespace {
-
-// What one block's wall rows add to each wall.
-template <int Dim>
-struct WallSum {
-  Vec<Dim> force = Vec<Dim>::Zero();
-  Spin<Dim> moment = Space<Dim>::zero_spin();
-  double normal_force = 0.0;
-  int contacts = 0;
-  Eccentricity<Dim> normal_force_arm = zero_eccentricity<Dim>();
-};
 
 // Where the pair rows of block b put the second particle's share: into its
 // sums when the block holds it, else into the slot set aside for it
@@ -87,15 +78,7 @@ class WallShares {
   void apart() {}
   void add(Particles<Dim>&, std::int32_t w, const RowResult<Dim>& c) {
     const WallDefT<Dim>& wall = walls_.def[w];
-    WallSum<Dim>& sum = sums_[w];
-    const Vec<Dim> on_wall = -c.force;
-    // Compressive normal force: the particle pushes the wall away from its particle side.
-    const double normal = -on_wall.dot(wall_normal(wall));
-    sum.force += on_wall;
-    sum.moment += cross(Vec<Dim>(c.geometry.point - wall.point), on_wall);
-    sum.normal_force += normal;
-    sum.normal_force_arm += normal * closest_point(wall, c.geometry.point).coordinates;
-    ++sum.contacts;
+    add_wall_share(sums_[w], wall, c.geometry.point, c.force, closest_point(wall, c.geometry.point).coordinates);
   }
 
  private:
@@ -217,6 +200,12 @@ void batched_pair_rows(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows
   batched_pair_block<Law, Dim, kPrefetch>(in, p, rows, blocks, b);
 }
 
+template <typename Law, int Dim>
+void batched_wall_rows(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows, ContactBlocks<Dim>& blocks,
+                       int b, ContactEnergy&, WallSum<Dim>* wall_sums) {
+  batched_wall_block<Law, Dim>(in, p, rows, blocks, b, wall_sums);
+}
+
 // Runs the chosen pass over every block, then adds the shares set aside,
 // then sums the walls' shares in block order.
 template <Pass kPass, int Dim>
@@ -239,8 +228,12 @@ ContactEnergy run_pass(WorldState<Dim>& s, const StepContext& step) {
           }
         }
       });
-      with_law(s.wall_law,
-               [&]<typename Law>() { wall_fn = &row_block<kPass, kEnergy, Law, Shape, WallShares<Dim>, Dim>; });
+      with_law(s.wall_law, [&]<typename Law>() {
+        wall_fn = &row_block<kPass, kEnergy, Law, Shape, WallShares<Dim>, Dim>;
+        if constexpr (kPass == Pass::kAdvance && !kEnergy && kBatchableShape<Shape> && Law::kBatchable) {
+          if (in.shared_params && planar_walls(s.walls)) wall_fn = &batched_wall_rows<Law, Dim>;
+        }
+      });
     });
   });
   ContactBlocks<Dim>& blocks = s.blocks;

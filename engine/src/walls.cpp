@@ -7,10 +7,7 @@
 
 namespace dem {
 
-WallPoint<2> closest_point(const WallDefT<2>& wall, const Vec2& x) {
-  const double s = std::clamp((x - wall.point).dot(wall.direction), wall.h1, wall.h2);
-  return {wall.point + s * wall.direction, s};
-}
+WallPoint<2> closest_point(const WallDefT<2>& wall, const Vec2& x) { return closest_planar_point(wall, x); }
 
 Vec3 closest_point_on_triangle(const std::array<Vec3, 3>& t, const Vec3& x) {
   // Ericson (2005), Real-Time Collision Detection 5.1.5: by the Voronoi
@@ -53,10 +50,7 @@ WallPoint<3> closest_point(const WallDefT<3>& wall, const Vec3& x) {
     const Vec3 d = best - wall.point;
     return {best, Eigen::Vector2d(d.dot(wall.direction), d.dot(wall.direction2))};
   }
-  const Vec3 d = x - wall.point;
-  const double s = std::clamp(d.dot(wall.direction), wall.h1, wall.h2);
-  const double t = std::clamp(d.dot(wall.direction2), wall.k1, wall.k2);
-  return {wall.point + s * wall.direction + t * wall.direction2, Eigen::Vector2d(s, t)};
+  return closest_planar_point(wall, x);
 }
 
 Eccentricity<2> wall_centre(const WallDefT<2>& wall) { return 0.5 * (wall.h1 + wall.h2); }

@@ -2,6 +2,7 @@
 // motion and the resultants the particles exert on them.
 #pragma once
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -58,6 +59,20 @@ struct WallPoint {
 };
 WallPoint<2> closest_point(const WallDefT<2>& wall, const Vec2& x);
 WallPoint<3> closest_point(const WallDefT<3>& wall, const Vec3& x);
+
+// closest_point of a segment (2D) or a rectangle (3D; its triangle faces,
+// if any, are not looked at): inline for the batched wall rows
+// (wall_batch.h), and what closest_point computes, so both give the same bits.
+inline WallPoint<2> closest_planar_point(const WallDefT<2>& wall, const Vec2& x) {
+  const double s = std::clamp((x - wall.point).dot(wall.direction), wall.h1, wall.h2);
+  return {wall.point + s * wall.direction, s};
+}
+inline WallPoint<3> closest_planar_point(const WallDefT<3>& wall, const Vec3& x) {
+  const Vec3 d = x - wall.point;
+  const double s = std::clamp(d.dot(wall.direction), wall.h1, wall.h2);
+  const double t = std::clamp(d.dot(wall.direction2), wall.k1, wall.k2);
+  return {wall.point + s * wall.direction + t * wall.direction2, Eigen::Vector2d(s, t)};
+}
 
 // The point of a triangle nearest to x (faces, edges and corners).
 Vec3 closest_point_on_triangle(const std::array<Vec3, 3>& t, const Vec3& x);

@@ -120,6 +120,54 @@ TEST(World, WallMeasuresSeeTheWeightOnTheFloor) {
   EXPECT_LT(world.assembly_measures().out_of_balance, 1e-3);
 }
 
+// The wall rows of round particles run through a batched pass
+// (wall_batch.h) when the energy budget is off, and through the general row
+// body (contact_row.h) when it is on: the same bits, the walls' sums with
+// them. The particles lie apart from each other, so the pair rows, whose
+// batched pass sums a particle's row group before adding it (contact_batch.h),
+// add nothing; they bounce on a turning floor (its velocity at the contact
+// point enters the rows; contacts form and end) under a lid held by a servo,
+// which moves by the normal force it measures.
+TEST(World, BatchedWallRowsGiveTheSameBitsAsTheGeneralRows) {
+  WorldDef plain_def = dense_box(12, 1);  // one row
+  plain_def.materials.resize(1);          // one parameter set, as the batched passes ask
+  for (WallDef& wall : plain_def.walls) wall.material = MaterialId{0};
+  for (ParticleDef& disc : plain_def.particles) disc.radius *= 0.7;
+  plain_def.walls[0].motion.angular_velocity = 0.05;
+  const double width = 12 * 0.0205 + 0.012;
+  WallMotion servo;
+  servo.servo = ServoDef{50.0, 2e-3, 0.1};
+  plain_def.walls.push_back(WallDef{"lid", {width, 0.02}, {-1, 0}, 0, width, MaterialId{0}, servo});  // normal -y
+  WorldDef budget_def = plain_def;
+  budget_def.energy_budget = true;
+  World plain(plain_def), budget(budget_def);
+  plain.cycle(600);
+  budget.cycle(600);
+  const auto& a = plain.particles();
+  const auto& b = budget.particles();
+  for (const ParticleId i : plain.particle_ids()) {
+    ASSERT_EQ(a.position[i], b.position[i]) << "particle " << i;
+    ASSERT_EQ(a.velocity[i], b.velocity[i]) << "particle " << i;
+    ASSERT_EQ(a.angular_velocity[i], b.angular_velocity[i]) << "particle " << i;
+  }
+  const auto plain_walls = plain.wall_measures(), budget_walls = budget.wall_measures();
+  ASSERT_EQ(plain_walls.size(), budget_walls.size());
+  for (std::size_t k = 0; k < plain_walls.size(); ++k) {
+    EXPECT_EQ(plain_walls[k].force, budget_walls[k].force) << "wall " << k;
+    EXPECT_EQ(plain_walls[k].moment, budget_walls[k].moment) << "wall " << k;
+    EXPECT_EQ(plain_walls[k].normal_force, budget_walls[k].normal_force) << "wall " << k;
+    EXPECT_EQ(plain_walls[k].contacts, budget_walls[k].contacts) << "wall " << k;
+    EXPECT_EQ(plain_walls[k].eccentricity, budget_walls[k].eccentricity) << "wall " << k;
+    EXPECT_EQ(plain_walls[k].point, budget_walls[k].point) << "wall " << k;
+  }
+  const auto& floor_measure = plain_walls[0];
+  const auto& lid_measure = plain_walls.back();
+  std::printf("floor %d contacts at %.6g N, lid %d at %.6g N: same bits\n", floor_measure.contacts,
+              floor_measure.normal_force, lid_measure.contacts, lid_measure.normal_force);
+  EXPECT_GT(floor_measure.contacts, 0);
+  EXPECT_GT(lid_measure.contacts, 0) << "the lid must reach the particles";
+}
+
 // One wall's contacts are those of contacts() with that wall, in order
 // (dem_server's wall queries read them without a pass over every contact).
 TEST(World, WallContactsAreTheWallsOwnOfAllContacts) {

@@ -178,6 +178,58 @@ TEST(World3, PlainLoopsGiveTheSameBitsAsTheGeneralStep) {
   EXPECT_GT(turned, 1e-6) << "the spheres must turn for the orientations to be compared";
 }
 
+// The wall rows of round particles run through a batched pass
+// (wall_batch.h) when the energy budget is off, and through the general row
+// body (contact_row.h) when it is on: the same bits, the walls' sums with
+// them. The particles lie apart from each other, so the pair rows, whose
+// batched pass sums a particle's row group before adding it (contact_batch.h),
+// add nothing; they bounce on a turning floor (its velocity at the contact
+// point enters the rows; contacts form and end) under a lid held by a servo,
+// which moves by the normal force it measures.
+TEST(World3, BatchedWallRowsGiveTheSameBitsAsTheGeneralRows) {
+  WorldDef3 plain_def = spheres_in_a_box(6, 1, 1);  // one layer
+  plain_def.materials.resize(1);                    // one parameter set, as the batched passes ask
+  for (WallDef3& wall : plain_def.walls) wall.material = MaterialId{0};
+  for (ParticleDef3& sphere : plain_def.particles) sphere.radius *= 0.8;
+  plain_def.walls[0].motion.angular_velocity = {0.0, 0.0, 0.5};
+  WallDef3 lid = plain_def.walls[0];
+  lid.name = "lid";
+  lid.point = {0.05, 0.05, 0.0072};
+  lid.direction = Vec3::UnitY();
+  lid.direction2 = Vec3::UnitX();  // normal -z
+  lid.motion = {};
+  lid.motion.servo = ServoDef{0.05, 1.0, 0.05};
+  plain_def.walls.push_back(lid);
+  WorldDef3 budget_def = plain_def;
+  budget_def.energy_budget = true;
+  World3 plain(plain_def), budget(budget_def);
+  plain.cycle(2000);
+  budget.cycle(2000);
+  const auto& a = plain.particles();
+  const auto& b = budget.particles();
+  for (const ParticleId i : plain.particle_ids()) {
+    ASSERT_EQ(a.position[i], b.position[i]) << "particle " << i;
+    ASSERT_EQ(a.velocity[i], b.velocity[i]) << "particle " << i;
+    ASSERT_EQ(a.angular_velocity[i], b.angular_velocity[i]) << "particle " << i;
+  }
+  const auto plain_walls = plain.wall_measures(), budget_walls = budget.wall_measures();
+  ASSERT_EQ(plain_walls.size(), budget_walls.size());
+  for (std::size_t k = 0; k < plain_walls.size(); ++k) {
+    EXPECT_EQ(plain_walls[k].force, budget_walls[k].force) << "wall " << k;
+    EXPECT_EQ(plain_walls[k].moment, budget_walls[k].moment) << "wall " << k;
+    EXPECT_EQ(plain_walls[k].normal_force, budget_walls[k].normal_force) << "wall " << k;
+    EXPECT_EQ(plain_walls[k].contacts, budget_walls[k].contacts) << "wall " << k;
+    EXPECT_EQ(plain_walls[k].eccentricity, budget_walls[k].eccentricity) << "wall " << k;
+    EXPECT_EQ(plain_walls[k].point, budget_walls[k].point) << "wall " << k;
+  }
+  const auto& floor_measure = plain_walls[0];
+  const auto& lid_measure = plain_walls.back();
+  std::printf("floor %d contacts at %.6g N, lid %d at %.6g N: same bits\n", floor_measure.contacts,
+              floor_measure.normal_force, lid_measure.contacts, lid_measure.normal_force);
+  EXPECT_GT(floor_measure.contacts, 0);
+  EXPECT_GT(lid_measure.contacts, 0) << "the lid must reach the particles";
+}
+
 // Past kPrefetchParticles (contact_batch.h) the batched pass reads the
 // particles from side-by-side copies that both threads fill before the
 // rows: one and two threads must still give the same state.
