@@ -6,10 +6,12 @@
 // touching ones are packed together), the contact law on the packed rows
 // (one straight loop over arrays, which the compiler turns into vector
 // instructions, so several contacts share each chain), then the shares
-// added into the sums in row order, exactly as the row-by-row pass adds
-// them. The law and the geometry are the same functions as there, so the
-// rows come out bit for bit as the row-by-row pass and the reports compute
-// them.
+// added into the sums in row order. The law and the geometry are the same
+// functions as there, so each row comes out bit for bit as the row-by-row
+// pass and the reports compute it. The sums round differently: a
+// particle's run of rows as the first body is summed apart and added to
+// its sum once, where the row-by-row pass adds each share. A world takes
+// the same pass every step, for any number of threads.
 #pragma once
 
 #include <algorithm>
