@@ -77,11 +77,12 @@ struct WorldState {
 // particles, whose rows are cheap, so few rows cross blocks; small for
 // shaped ones, whose rows are dear, so even small worlds spread over threads.
 // A crossing row costs a round sphere's pass about as much as two rows that
-// stay inside (its share set aside and added later, a branch no predictor
-// learns, its second particle's data away from the block's): on the dense
-// benchmark, blocks of 4096 spheres instead of 1024 cut the crossing rows
-// from 17 % to 7 % (10k) and ran 1.055 (10k) and 1.09 (100k) on one thread
-// (docs/PERFORMANCE.md). Discs keep 1024: a 2D case has a few thousand.
+// stay inside (its share set aside and added after all blocks, its slot
+// found by a walk of the block's crossing rows, its second particle's data
+// away from the block's): on the dense benchmark, blocks of 4096 spheres
+// instead of 1024 cut the crossing rows from 17 % to 7 % (10k) and ran
+// 1.055 (10k) and 1.09 (100k) on one thread (docs/PERFORMANCE.md, item 16).
+// Discs keep 1024: a 2D case has a few thousand.
 template <int Dim>
 int block_size(const WorldState<Dim>& state) {
   if (state.shape != ShapeKind::kRound) return 32;
