@@ -9,11 +9,35 @@
 
 #include <cstdint>
 
+#include "dem/math.h"
+#include "inline.h"
+
 #if defined(__AVX512F__) && defined(__AVX512VL__)
 #include <immintrin.h>
 #endif
 
 namespace dem {
+
+// Packed row j of a batch's three columns as a spin or a shear history: a
+// 3-vector in 3D, the first column's double in 2D (the two have one type
+// per dimension). The batched passes' law loops read and write their rows
+// through these (contact_batch.h, wall_batch.h).
+template <int Dim, int N>
+DEM_INLINE Spin<Dim> column_entry(const double (&columns)[3][N], int j) {
+  if constexpr (Dim == 3) {
+    return Vec3(columns[0][j], columns[1][j], columns[2][j]);
+  } else {
+    return columns[0][j];
+  }
+}
+template <int Dim, int N>
+DEM_INLINE void set_column_entry(double (&columns)[3][N], int j, const Spin<Dim>& value) {
+  if constexpr (Dim == 3) {
+    for (int k = 0; k < 3; ++k) columns[k][j] = value[k];
+  } else {
+    columns[0][j] = value;
+  }
+}
 
 // out_x[j], out_y[j], out_z[j] = the three doubles at base + kStride *
 // slot[j], for j in [0, count): a column of 3-vectors (kStride 3) or of

@@ -294,17 +294,9 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
         va[k] = v1[k][j];
         vb[k] = v2[k][j];
       }
-      Spin<Dim> wa, wb;
+      const Spin<Dim> wa = column_entry<Dim>(w1, j), wb = column_entry<Dim>(w2, j);
       ContactHistory<Dim> h;
-      if constexpr (Dim == 3) {
-        wa = Vec3(w1[0][j], w1[1][j], w1[2][j]);
-        wb = Vec3(w2[0][j], w2[1][j], w2[2][j]);
-        h.shear = Vec3(shear[0][j], shear[1][j], shear[2][j]);
-      } else {
-        wa = w1[0][j];
-        wb = w2[0][j];
-        h.shear = shear[0][j];
-      }
+      h.shear = column_entry<Dim>(shear, j);
       h.touching = was_touching[j] != 0.0;
       if constexpr (Law::kNormalHistory) h.normal_force = normal_force[j];
       const ContactGeometry<Dim> g = RoundShape::geometry<Dim>(d, distance2[j], rx[j], ry[j], Vec<Dim>::Zero());
@@ -318,15 +310,8 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
       const Vec<Dim> on_first = -(f.normal + f.normal_damping) * g.normal - shear_vector(total, g.normal);
       const Spin<Dim> turn = shear_lever(total, g.normal);
       for (int k = 0; k < Dim; ++k) force[k][j] = on_first[k];
-      if constexpr (Dim == 3) {
-        for (int k = 0; k < 3; ++k) {
-          lever[k][j] = turn[k];
-          shear[k][j] = h.shear[k];
-        }
-      } else {
-        lever[0][j] = turn;
-        shear[0][j] = h.shear;
-      }
+      set_column_entry<Dim>(lever, j, turn);
+      set_column_entry<Dim>(shear, j, h.shear);
       sliding[j] = h.sliding ? 1.0 : 0.0;
       overlap[j] = g.overlap;
       if constexpr (Law::kNormalHistory) normal_force[j] = h.normal_force;
@@ -340,22 +325,13 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
         if (was_touching[j] != 0.0) separate(rows, r);
         continue;
       }
-      if constexpr (Dim == 3) {
-        row_shear[r] = Vec3(shear[0][j], shear[1][j], shear[2][j]);
-      } else {
-        row_shear[r] = shear[0][j];
-      }
+      row_shear[r] = column_entry<Dim>(shear, j);
       if constexpr (Law::kNormalHistory) row_normal_force[r] = normal_force[j];
       if (was_touching[j] == 0.0) formed_cycle[r] = cycle;
       row_flags[r] = sliding[j] != 0.0 ? kTouching | kSliding : kTouching;
       Vec<Dim> on_first;
       for (int k = 0; k < Dim; ++k) on_first[k] = force[k][j];
-      Spin<Dim> turn;
-      if constexpr (Dim == 3) {
-        turn = Vec3(lever[0][j], lever[1][j], lever[2][j]);
-      } else {
-        turn = lever[0][j];
-      }
+      const Spin<Dim> turn = column_entry<Dim>(lever, j);
       // A block's rows come grouped by their first particle: its shares
       // are summed here and added to it once the group ends.
       if (x != pending) {

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "batch_columns.h"
 #include "contact_blocks.h"
 #include "contact_row.h"
 #include "walls.h"
@@ -164,17 +165,9 @@ void batched_wall_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
         wall_origin[k] = wall_point[k][j];
         wv[k] = wall_velocity[k][j];
       }
-      Spin<Dim> w, ww;
+      const Spin<Dim> w = column_entry<Dim>(spin, j), ww = column_entry<Dim>(wall_spin, j);
       ContactHistory<Dim> h;
-      if constexpr (Dim == 3) {
-        w = Vec3(spin[0][j], spin[1][j], spin[2][j]);
-        ww = Vec3(wall_spin[0][j], wall_spin[1][j], wall_spin[2][j]);
-        h.shear = Vec3(shear[0][j], shear[1][j], shear[2][j]);
-      } else {
-        w = spin[0][j];
-        ww = wall_spin[0][j];
-        h.shear = shear[0][j];
-      }
+      h.shear = column_entry<Dim>(shear, j);
       h.touching = was_touching[j] != 0.0;
       if constexpr (Law::kNormalHistory) h.normal_force = normal_force[j];
       const double rx = radius[j], dist = distance[j], ov = overlap[j];
@@ -198,15 +191,8 @@ void batched_wall_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
         force[k][j] = on_particle[k];
         point[k][j] = at[k];
       }
-      if constexpr (Dim == 3) {
-        for (int k = 0; k < 3; ++k) {
-          moment[k][j] = turn[k];
-          shear[k][j] = h.shear[k];
-        }
-      } else {
-        moment[0][j] = turn;
-        shear[0][j] = h.shear;
-      }
+      set_column_entry<Dim>(moment, j, turn);
+      set_column_entry<Dim>(shear, j, h.shear);
       sliding[j] = h.sliding ? 1.0 : 0.0;
       if constexpr (Law::kNormalHistory) normal_force[j] = h.normal_force;
     }
@@ -215,11 +201,7 @@ void batched_wall_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
       const std::int32_t r = row[j];
       const Slot x = particle[j];
       const std::int32_t w = wall_of[j];
-      if constexpr (Dim == 3) {
-        row_shear[r] = Vec3(shear[0][j], shear[1][j], shear[2][j]);
-      } else {
-        row_shear[r] = shear[0][j];
-      }
+      row_shear[r] = column_entry<Dim>(shear, j);
       if constexpr (Law::kNormalHistory) row_normal_force[r] = normal_force[j];
       if (was_touching[j] == 0.0) formed_cycle[r] = cycle;
       row_flags[r] = sliding[j] != 0.0 ? kTouching | kSliding : kTouching;
@@ -228,12 +210,7 @@ void batched_wall_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
         on_particle[k] = force[k][j];
         at[k] = point[k][j];
       }
-      Spin<Dim> turn;
-      if constexpr (Dim == 3) {
-        turn = Vec3(moment[0][j], moment[1][j], moment[2][j]);
-      } else {
-        turn = moment[0][j];
-      }
+      const Spin<Dim> turn = column_entry<Dim>(moment, j);
       particle_force[x] += on_particle;
       particle_moment[x] += turn;
       const WallDefT<Dim>& wall = wall_def[w];
