@@ -9,6 +9,7 @@
 #include "dem/packing.h"
 #include "dem/world.h"
 #include "model_builders.h"
+#include "same_bits.h"
 
 namespace dem {
 namespace {
@@ -205,27 +206,10 @@ TEST(World3, BatchedWallRowsGiveTheSameBitsAsTheGeneralRows) {
   World3 plain(plain_def), budget(budget_def);
   plain.cycle(2000);
   budget.cycle(2000);
-  const auto& a = plain.particles();
-  const auto& b = budget.particles();
-  for (const ParticleId i : plain.particle_ids()) {
-    ASSERT_EQ(a.position[i], b.position[i]) << "particle " << i;
-    ASSERT_EQ(a.velocity[i], b.velocity[i]) << "particle " << i;
-    ASSERT_EQ(a.angular_velocity[i], b.angular_velocity[i]) << "particle " << i;
-  }
-  const auto plain_walls = plain.wall_measures(), budget_walls = budget.wall_measures();
-  ASSERT_EQ(plain_walls.size(), budget_walls.size());
-  for (std::size_t k = 0; k < plain_walls.size(); ++k) {
-    EXPECT_EQ(plain_walls[k].force, budget_walls[k].force) << "wall " << k;
-    EXPECT_EQ(plain_walls[k].moment, budget_walls[k].moment) << "wall " << k;
-    EXPECT_EQ(plain_walls[k].normal_force, budget_walls[k].normal_force) << "wall " << k;
-    EXPECT_EQ(plain_walls[k].contacts, budget_walls[k].contacts) << "wall " << k;
-    EXPECT_EQ(plain_walls[k].eccentricity, budget_walls[k].eccentricity) << "wall " << k;
-    EXPECT_EQ(plain_walls[k].point, budget_walls[k].point) << "wall " << k;
-  }
-  const auto& floor_measure = plain_walls[0];
-  const auto& lid_measure = plain_walls.back();
-  std::printf("floor %d contacts at %.6g N, lid %d at %.6g N: same bits\n", floor_measure.contacts,
-              floor_measure.normal_force, lid_measure.contacts, lid_measure.normal_force);
+  ASSERT_NO_FATAL_FAILURE(testing::expect_same_particles_and_walls(plain, budget));
+  const auto walls = plain.wall_measures();
+  const auto& floor_measure = walls.front();
+  const auto& lid_measure = walls.back();
   EXPECT_GT(floor_measure.contacts, 0);
   EXPECT_GT(lid_measure.contacts, 0) << "the lid must reach the particles";
 }
