@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
 
 namespace dem::testing {
@@ -37,6 +38,27 @@ void expect_same_particles_and_walls(const World& a, const World& b) {
   const auto& last = walls_a.back();
   std::printf("floor %d contacts at %.6g N, lid %d at %.6g N: same bits\n", first.contacts, first.normal_force,
               last.contacts, last.normal_force);
+}
+
+// A world with round particles, walls and the energy budget off runs its
+// wall rows through the batched pass (wall_batch.h); the same world with
+// the budget on runs them through the general row body (contact_row.h).
+// After `cycles` both must hold the same bits, and the first wall (the
+// floor) and the last (a lid) must have been touched for it to mean
+// anything.
+template <typename World, typename Def>
+void expect_batched_wall_rows_match_the_general_rows(const Def& plain_def, std::uint64_t cycles) {
+  Def budget_def = plain_def;
+  budget_def.energy_budget = true;
+  World plain(plain_def), budget(budget_def);
+  plain.cycle(cycles);
+  budget.cycle(cycles);
+  ASSERT_NO_FATAL_FAILURE(expect_same_particles_and_walls(plain, budget));
+  const auto walls = plain.wall_measures();
+  const auto& floor_measure = walls.front();
+  const auto& lid_measure = walls.back();
+  EXPECT_GT(floor_measure.contacts, 0);
+  EXPECT_GT(lid_measure.contacts, 0) << "the lid must reach the particles";
 }
 
 }  // namespace dem::testing

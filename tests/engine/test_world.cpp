@@ -139,17 +139,7 @@ TEST(World, BatchedWallRowsGiveTheSameBitsAsTheGeneralRows) {
   WallMotion servo;
   servo.servo = ServoDef{50.0, 2e-3, 0.1};
   plain_def.walls.push_back(WallDef{"lid", {width, 0.02}, {-1, 0}, 0, width, MaterialId{0}, servo});  // normal -y
-  WorldDef budget_def = plain_def;
-  budget_def.energy_budget = true;
-  World plain(plain_def), budget(budget_def);
-  plain.cycle(600);
-  budget.cycle(600);
-  ASSERT_NO_FATAL_FAILURE(testing::expect_same_particles_and_walls(plain, budget));
-  const auto walls = plain.wall_measures();
-  const auto& floor_measure = walls.front();
-  const auto& lid_measure = walls.back();
-  EXPECT_GT(floor_measure.contacts, 0);
-  EXPECT_GT(lid_measure.contacts, 0) << "the lid must reach the particles";
+  testing::expect_batched_wall_rows_match_the_general_rows<World>(plain_def, 600);
 }
 
 // One wall's contacts are those of contacts() with that wall, in order

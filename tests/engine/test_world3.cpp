@@ -201,17 +201,7 @@ TEST(World3, BatchedWallRowsGiveTheSameBitsAsTheGeneralRows) {
   lid.motion = {};
   lid.motion.servo = ServoDef{0.05, 1.0, 0.05};
   plain_def.walls.push_back(lid);
-  WorldDef3 budget_def = plain_def;
-  budget_def.energy_budget = true;
-  World3 plain(plain_def), budget(budget_def);
-  plain.cycle(2000);
-  budget.cycle(2000);
-  ASSERT_NO_FATAL_FAILURE(testing::expect_same_particles_and_walls(plain, budget));
-  const auto walls = plain.wall_measures();
-  const auto& floor_measure = walls.front();
-  const auto& lid_measure = walls.back();
-  EXPECT_GT(floor_measure.contacts, 0);
-  EXPECT_GT(lid_measure.contacts, 0) << "the lid must reach the particles";
+  testing::expect_batched_wall_rows_match_the_general_rows<World3>(plain_def, 2000);
 }
 
 // Past kPrefetchParticles (contact_batch.h) the batched pass reads the
