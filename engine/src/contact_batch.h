@@ -21,6 +21,7 @@
 #include "batch_columns.h"
 #include "contact_blocks.h"
 #include "contact_row.h"
+#include "fetch_ahead.h"
 
 namespace dem {
 
@@ -46,7 +47,14 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
   // Rows per batch: 128 ran 1.018 (10k) and 1.025 (100k) against 64, 256 as
   // 128, 32 at 0.92 (docs/PERFORMANCE.md).
   constexpr int kBatch = 128;
-  constexpr int kAhead = 16;  // rows ahead to fetch
+  constexpr int kAhead = 16;  // rows ahead to fetch (2D)
+  // Particles ahead of the batch's first ones whose records and sums are
+  // fetched in order (3D, large beds): a row's second particle lies a
+  // median 14 slots ahead of its first, nearly nine in ten within 1,024.
+  // Fetched as one sweep ahead of the rows, those come as a stream instead
+  // of a miss per row; the rest are fetched row by row (docs/PERFORMANCE.md,
+  // item 19).
+  constexpr Slot kWindow = 1024;
   // A copy, not a reference: its fields become loop invariants in registers.
   // Read through a reference, the stores of the batch could alias them,
   // and a field read under a condition (a dashpot off while sliding) becomes
@@ -162,6 +170,9 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
   const std::int32_t listed = sort_out ? end - begin : blocks.near_count[b];
   const double margin = in.near_margin;
   std::int32_t kept = 0;
+  const Slot block_end = block_first + static_cast<Slot>(block_size);
+  const auto particle_count = static_cast<Slot>(p.size());
+  Slot window_end = block_first;  // the particles fetched so far: [block_first, window_end)
   for (std::int32_t k0 = 0; k0 < listed; k0 += kBatch) {
     const std::int32_t k1 = std::min(listed, k0 + kBatch);
     // 1. Which rows touch (eq. 8): pack them; a row that stopped touching
@@ -181,11 +192,36 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
           if (k + kBatch < listed) {
             const std::int32_t row_ahead = sort_out ? begin + k + kBatch : near[k + kBatch];
             const Slot ahead = second[row_ahead];
-            __builtin_prefetch(&row_shear[row_ahead]);
+            __builtin_prefetch(&row_shear[row_ahead], 0, static_cast<int>(Keep::kOnce));
             __builtin_prefetch(place_column + kPlaceStride * ahead);
             __builtin_prefetch(velocity_column + kMotionStride * ahead);
             if constexpr (!kHot) __builtin_prefetch(spin_column + kMotionStride * ahead);
           }
+        }
+      }
+      if constexpr (kPrefetch && kHot) {
+        // The next batch's rows: read once a step, so kept out of the
+        // shared cache, where they would push out the records and sums
+        // that the rows after them and the law of motion read again.
+        if (k1 < listed) {
+          const std::int32_t k2 = std::min(listed, k1 + kBatch);
+          const std::int32_t row_lo = sort_out ? begin + k1 : near[k1];
+          const std::int32_t row_hi = (sort_out ? begin + k2 - 1 : near[k2 - 1]) + 1;
+          if (!sort_out) fetch_lines<Keep::kOnce>(near + k1, near + k2);
+          fetch_lines<Keep::kOnce>(first + row_lo, first + row_hi);
+          fetch_lines<Keep::kOnce>(second + row_lo, second + row_hi);
+          fetch_lines<Keep::kOnce>(row_flags + row_lo, row_flags + row_hi);
+        }
+        const Slot window_to = std::min(particle_count, batch_first[n - 1] + kWindow);
+        if (window_to > window_end) {
+          fetch_lines<Keep::kReused>(hot_place + window_end, hot_place + window_to);
+          fetch_lines<Keep::kReused>(hot_motion + window_end, hot_motion + window_to);
+          const Slot sums_to = std::min(window_to, block_end);  // (others' sums are set aside)
+          if (sums_to > window_end) {
+            fetch_lines<Keep::kReused>(particle_force + window_end, particle_force + sums_to);
+            fetch_lines<Keep::kReused>(particle_moment + window_end, particle_moment + sums_to);
+          }
+          window_end = window_to;
         }
       }
       gather_columns<kPlaceStride>(place_column, batch_first, n, place1[0], place1[1], place1[2]);

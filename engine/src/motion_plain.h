@@ -192,8 +192,9 @@ void move_plain_block(Particles<Dim>& p, const Vec<Dim>& gravity, const Periodic
       }
     }
     // The force pass's side-by-side copies, while the chunk is in the core's cache.
-    if (hot_place != nullptr) copy_hot_particles(p, hot_place, hot_motion, c0, c0 + n);
+    if (hot_place != nullptr) stream_hot_particles(p, hot_place, hot_motion, c0, c0 + n);
   }
+  if (hot_place != nullptr) finish_streaming();
   step.max_travel = std::sqrt(std::bit_cast<double>(max_travel_bits));
   step.max_speed = std::sqrt(std::bit_cast<double>(max_speed_bits));
 }
