@@ -192,10 +192,10 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
           if (k + kBatch < listed) {
             const std::int32_t row_ahead = sort_out ? begin + k + kBatch : near[k + kBatch];
             const Slot ahead = second[row_ahead];
-            __builtin_prefetch(&row_shear[row_ahead], 0, static_cast<int>(Keep::kOnce));
-            __builtin_prefetch(place_column + kPlaceStride * ahead);
-            __builtin_prefetch(velocity_column + kMotionStride * ahead);
-            if constexpr (!kHot) __builtin_prefetch(spin_column + kMotionStride * ahead);
+            fetch_line<Keep::kOnce>(&row_shear[row_ahead]);
+            fetch_line(place_column + kPlaceStride * ahead);
+            fetch_line(velocity_column + kMotionStride * ahead);
+            if constexpr (!kHot) fetch_line(spin_column + kMotionStride * ahead);
           }
         }
       }
@@ -267,12 +267,12 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
           if (k + kAhead < listed) {
             const Slot ahead = second[sort_out ? begin + k + kAhead : near[k + kAhead]];
             if constexpr (kHot) {
-              __builtin_prefetch(&hot_place[ahead]);
-              __builtin_prefetch(&hot_motion[ahead]);
+              fetch_line(&hot_place[ahead]);
+              fetch_line(&hot_motion[ahead]);
             } else {
-              __builtin_prefetch(&position[ahead]);
-              __builtin_prefetch(&velocity[ahead]);
-              __builtin_prefetch(&angular_velocity[ahead]);
+              fetch_line(&position[ahead]);
+              fetch_line(&velocity[ahead]);
+              fetch_line(&angular_velocity[ahead]);
             }
           }
         }

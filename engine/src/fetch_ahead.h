@@ -1,6 +1,6 @@
-// Software prefetches over whole address ranges, for the force pass's
-// sweeps on large beds (contact_batch.h), where what a batch of rows needs
-// next lies farther ahead than the hardware's prefetchers look.
+// Software prefetches, of single lines and over whole address ranges, for
+// the force pass on large beds (contact_batch.h), where what a batch of
+// rows needs next lies farther ahead than the hardware's prefetchers look.
 #pragma once
 
 #include <cstdint>
@@ -13,13 +13,19 @@ namespace dem {
 // does not push out of the shared cache what is read again).
 enum class Keep { kReused = 3, kOnce = 0 };
 
+// Fetches the cache line that holds `address`.
+template <Keep kKeep = Keep::kReused>
+inline void fetch_line(const void* address) {
+  __builtin_prefetch(address, 0, static_cast<int>(kKeep));
+}
+
 // Fetches every cache line of [from, to).
 template <Keep kKeep>
 inline void fetch_lines(const void* from, const void* to) {
   constexpr std::uintptr_t kLine = 64;
   const auto end = reinterpret_cast<std::uintptr_t>(to);
   for (auto line = reinterpret_cast<std::uintptr_t>(from) & ~(kLine - 1); line < end; line += kLine) {
-    __builtin_prefetch(reinterpret_cast<const void*>(line), 0, static_cast<int>(kKeep));
+    fetch_line<kKeep>(reinterpret_cast<const void*>(line));
   }
 }
 
