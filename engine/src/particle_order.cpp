@@ -1,7 +1,9 @@
 #include "particle_order.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
+#include <limits>
 
 #include "cell_grid.h"
 
@@ -29,6 +31,57 @@ std::uint64_t spread(std::uint64_t v, int dim) {
   return v;
 }
 
+// Bisections stop at this many particles; inside, the Morton curve orders
+// the cells (half a block of spheres, world_state.h).
+constexpr std::ptrdiff_t kLeafParticles = 2048;
+
+template <int Dim>
+struct Entry {
+  typename CellGrid<Dim>::Cell cell;
+  std::uint64_t code;  // along the Morton curve
+  ParticleId id;
+  Slot slot;
+};
+
+// Splits entries [begin, end), which lie in the cells [lo, hi] (inclusive),
+// into two halves by count, across the axis whose cut is smallest: the
+// area of the cross-section, twice over for an axis the box spans whole
+// and that repeats (the cut is then made at the period's seam too). The
+// halves follow a total order (cell along the axis, curve, id), so they
+// depend on positions and ids only.
+template <int Dim>
+void bisect(const CellGrid<Dim>& grid, Entry<Dim>* begin, Entry<Dim>* end, typename CellGrid<Dim>::Cell lo,
+            typename CellGrid<Dim>::Cell hi) {
+  if (end - begin <= kLeafParticles) {
+    std::sort(begin, end, [](const Entry<Dim>& a, const Entry<Dim>& b) {
+      return a.code < b.code || (a.code == b.code && a.id < b.id);
+    });
+    return;
+  }
+  int axis = 0;
+  double least = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < Dim; ++a) {
+    double area = 1.0;
+    for (int k = 0; k < Dim; ++k) {
+      if (k != a) area *= static_cast<double>(hi[k] - lo[k] + 1) * grid.cell_size[k];
+    }
+    if (grid.wraps[a] && lo[a] == 0 && hi[a] == grid.counts[a] - 1) area *= 2.0;
+    if (area < least) {
+      least = area;
+      axis = a;
+    }
+  }
+  Entry<Dim>* mid = begin + (end - begin) / 2;
+  std::nth_element(begin, mid, end, [axis](const Entry<Dim>& a, const Entry<Dim>& b) {
+    if (a.cell[axis] != b.cell[axis]) return a.cell[axis] < b.cell[axis];
+    return a.code < b.code || (a.code == b.code && a.id < b.id);
+  });
+  auto left_hi = hi, right_lo = lo;
+  left_hi[axis] = right_lo[axis] = mid->cell[axis];
+  bisect(grid, begin, mid, lo, left_hi);
+  bisect(grid, mid, end, right_lo, hi);
+}
+
 }  // namespace
 
 template <int Dim>
@@ -36,20 +89,16 @@ std::vector<Slot> spatial_order(const Particles<Dim>& particles, const Periodic<
   const std::size_t n = particles.size();
   if (n == 0) return {};
   const CellGrid<Dim> grid = build_grid(particles, periodic, range);
-  struct Entry {
-    std::uint64_t code;
-    ParticleId id;
-    Slot slot;
-  };
-  std::vector<Entry> entries(n);
+  std::vector<Entry<Dim>> entries(n);
   for (std::size_t i = 0; i < n; ++i) {
     const auto cell = grid.cell_of(particles.position[i]);
     std::uint64_t code = 0;
     for (int d = 0; d < Dim; ++d) code |= spread(static_cast<std::uint64_t>(cell[d]), Dim) << d;
-    entries[i] = {code, particles.id[i], static_cast<Slot>(i)};
+    entries[i] = {cell, code, particles.id[i], static_cast<Slot>(i)};
   }
-  std::sort(entries.begin(), entries.end(),
-            [](const Entry& a, const Entry& b) { return a.code < b.code || (a.code == b.code && a.id < b.id); });
+  typename CellGrid<Dim>::Cell lo{}, hi{};
+  for (int d = 0; d < Dim; ++d) hi[d] = grid.counts[d] - 1;
+  bisect(grid, entries.data(), entries.data() + n, lo, hi);
   std::vector<Slot> order(n);
   for (std::size_t k = 0; k < n; ++k) order[k] = entries[k].slot;
   return order;

@@ -1,8 +1,13 @@
-// Particles close in space, close in memory: the slots follow the cells of
-// a grid one interaction range wide, in Morton (Z-curve) order. Every
-// contact then reads particles whose data share cache lines with its
-// neighbours', and a block of consecutive slots is a compact patch of the
-// assembly (contact_blocks.h). Ids never change; only slots move.
+// Particles close in space, close in memory. The order halves the assembly
+// again and again (orthogonal recursive bisection), each time across its
+// smallest section: a repeating axis counts twice, since cutting it cuts
+// the period's seam too. Below 2,048 particles the cells of a grid
+// one interaction range wide follow the Morton (Z) curve. Every contact
+// then reads particles whose data share cache lines with its neighbours';
+// a block of consecutive slots is a compact patch of the assembly
+// (contact_blocks.h), and so is each thread's run of blocks: two threads
+// share only the contacts across one cut (docs/PERFORMANCE.md, item 21).
+// Ids never change; only slots move.
 #pragma once
 
 #include <vector>
