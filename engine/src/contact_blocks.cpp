@@ -1,6 +1,7 @@
 #include "contact_blocks.h"
 
 #include <algorithm>
+#include <numbers>
 
 namespace dem {
 
@@ -27,7 +28,14 @@ std::vector<std::int32_t> row_begins(const std::vector<Slot>& first, const std::
 template <int Dim>
 void plan_blocks(ContactBlocks<Dim>& blocks, const ContactTable<Dim>& table, std::size_t particles, int block_size) {
   const auto n = static_cast<std::int64_t>(particles);
-  const std::int64_t count = std::max<std::int64_t>(1, (n + block_size / 2) / block_size);
+  // A power of two of blocks, the nearest to n / block_size (within a
+  // factor of the square root of two): each block is then one of the
+  // particle order's last halves, a compact box (particle_order.h), and so
+  // is each thread's run of blocks. Against 24 blocks on the 100k bed, 16
+  // or 32 ran 1.017 (docs/PERFORMANCE.md, item 22).
+  const double per_size = static_cast<double>(n) / static_cast<double>(block_size);
+  std::int64_t count = 1;
+  while (static_cast<double>(2 * count) <= per_size * std::numbers::sqrt2) count *= 2;
   blocks.particle_begin.resize(static_cast<std::size_t>(count) + 1);
   for (std::int64_t b = 0; b <= count; ++b) blocks.particle_begin[b] = static_cast<Slot>(b * n / count);
   blocks.pair_begin = row_begins(table.pairs.first, blocks.particle_begin);

@@ -131,8 +131,9 @@ struct ContactBlocks {
   int block_of(Slot s) const;
 };
 
-// Cuts `particles` slots into blocks of about `block_size` and sorts the
-// table's rows into them; call after every change to the table's keys.
+// Cuts `particles` slots into a power of two of blocks of about
+// `block_size` and sorts the table's rows into them; call after every
+// change to the table's keys.
 template <int Dim>
 void plan_blocks(ContactBlocks<Dim>& blocks, const ContactTable<Dim>& table, std::size_t particles, int block_size);
 

@@ -73,7 +73,8 @@ struct WorldState {
   double time_step_ratio = 0.0;
 };
 
-// Particles per force-pass block (contact_blocks.h): large for round
+// Particles per force-pass block, about (plan_blocks rounds the number of
+// blocks to a power of two; contact_blocks.h): large for round
 // particles, whose rows are cheap, so few rows cross blocks; small for
 // shaped ones, whose rows are dear, so even small worlds spread over threads.
 // A crossing row costs a round sphere's pass about as much as two rows that

@@ -57,20 +57,37 @@ TEST(ContactTable, RenamedSlotsKeepHistoryAndOrientation) {
 
 TEST(ContactBlocks, CrossRowsAreSetAsideInRowOrderForTheirBlock) {
   ContactTable<2> table;
-  // Six particles in three blocks of two: {0, 1}, {2, 3}, {4, 5}.
-  merge_rows(table.pairs, {{0, 1}, {0, 4}, {1, 2}, {2, 3}, {3, 0}, {4, 2}, {5, 4}});
+  // Eight particles in four blocks of two: {0, 1}, {2, 3}, {4, 5}, {6, 7}.
+  merge_rows(table.pairs, {{0, 1}, {0, 4}, {1, 2}, {2, 3}, {3, 0}, {4, 2}, {5, 4}, {6, 7}, {7, 5}});
   merge_rows(table.walls, {{1, 0}, {4, 0}});
   ContactBlocks<2> blocks;
-  plan_blocks(blocks, table, 6, 2);
-  ASSERT_EQ(blocks.count(), 3);
-  EXPECT_EQ(blocks.pair_begin, (std::vector<std::int32_t>{0, 3, 5, 7}));
-  EXPECT_EQ(blocks.wall_begin, (std::vector<std::int32_t>{0, 1, 1, 2}));
-  // Rows crossing blocks: 1 (0 -> 4), 2 (1 -> 2), 4 (3 -> 0), 5 (4 -> 2).
-  EXPECT_EQ(blocks.cross_row, (std::vector<std::int32_t>{1, 2, 4, 5}));
-  EXPECT_EQ(blocks.deferred_begin, (std::vector<std::int32_t>{0, 1, 3, 4}));
-  // Block 1 (particles 2, 3) receives rows 2 and 5, in that order.
-  EXPECT_EQ(blocks.deferred_particle, (std::vector<Slot>{0, 2, 2, 4}));
-  EXPECT_EQ(blocks.cross_slot, (std::vector<std::int32_t>{3, 1, 0, 2}));
+  plan_blocks(blocks, table, 8, 2);
+  ASSERT_EQ(blocks.count(), 4);
+  EXPECT_EQ(blocks.pair_begin, (std::vector<std::int32_t>{0, 3, 5, 7, 9}));
+  EXPECT_EQ(blocks.wall_begin, (std::vector<std::int32_t>{0, 1, 1, 2, 2}));
+  // Rows crossing blocks: 1 (0 -> 4), 2 (1 -> 2), 4 (3 -> 0), 5 (4 -> 2), 8 (7 -> 5).
+  EXPECT_EQ(blocks.cross_row, (std::vector<std::int32_t>{1, 2, 4, 5, 8}));
+  EXPECT_EQ(blocks.deferred_begin, (std::vector<std::int32_t>{0, 1, 3, 5, 5}));
+  // Block 1 (particles 2, 3) receives rows 2 and 5, block 2 rows 1 and 8, in that order.
+  EXPECT_EQ(blocks.deferred_particle, (std::vector<Slot>{0, 2, 2, 4, 5}));
+  EXPECT_EQ(blocks.cross_slot, (std::vector<std::int32_t>{3, 1, 0, 2, 4}));
+}
+
+// Blocks come in powers of two, the nearest to particles / block size, so
+// that each is one of the particle order's last halves (particle_order.h).
+TEST(ContactBlocks, ComeInPowersOfTwo) {
+  const ContactTable<3> table;
+  const auto count = [&](std::size_t particles, int block_size) {
+    ContactBlocks<3> blocks;
+    plan_blocks(blocks, table, particles, block_size);
+    return blocks.count();
+  };
+  EXPECT_EQ(count(1000, 4096), 1);
+  EXPECT_EQ(count(10000, 4096), 2);    // 2.4
+  EXPECT_EQ(count(100000, 4096), 32);  // 24.4
+  EXPECT_EQ(count(1000000, 4096), 256);
+  EXPECT_EQ(count(6, 2), 4);  // 3
+  EXPECT_EQ(count(1500, 32), 64);
 }
 
 // The law of motion writes the pass's side-by-side copies with streaming
