@@ -6,10 +6,10 @@ of their rates (second / first) per round and the median.
 On a shared 2-core guest a 100k run's rate drifts 5-15 % from one minute
 to the next, so builds timed one after the other differ by more than most
 changes do. Run together, both meet the same drift: the same build against
-itself read 0.972-1.004 over four rounds, where runs one after the other
-read 0.91-1.07 (docs/PERFORMANCE.md, item 21). The two share the
-third-level cache and the memory bus, so this compares builds; it does not
-replace the one-at-a-time rates of peer_comparison.py.
+itself read 0.972-1.004 over four rounds, where two builds 1 % apart, run
+one after the other, read 0.907-1.025 (docs/PERFORMANCE.md, item 21). The
+two share the third-level cache and the memory bus, so this compares
+builds; it does not replace the one-at-a-time rates of peer_comparison.py.
 
     /usr/bin/python3 bench/side_by_side.py OLD_BENCH NEW_BENCH [--case 100k] [--cycles 1000] [--rounds 8]
 """
