@@ -71,6 +71,16 @@ def run_timed(command, env=None, cwd=None):
 TIME = ["/usr/bin/time", "-f", "PEAK_RSS_KIB %M"]
 
 
+def case_file(size):
+    """The benchmark's case for a size ("10k", "100k")."""
+    return ROOT / "cases" / "bench" / f"plate_compression_{size}.case.txtpb"
+
+
+def bench_rate(out):
+    """Particle-steps per second from bench_plate_compression's output."""
+    return float(re.search(r"([0-9.e+]+) particle-steps/s", out).group(1))
+
+
 class Ours:
     def __init__(self, build):
         self.program = build / "bench" / "bench_plate_compression"
@@ -80,8 +90,7 @@ class Ours:
     def run(self, case, threads):
         env = dict(os.environ, OMP_WAIT_POLICY="active")
         out, rss = run_timed([*TIME, str(self.program), "--case", str(case), "--threads", str(threads)], env=env)
-        rate = float(re.search(r"([0-9.e+]+) particle-steps/s", out).group(1))
-        return {"rate": rate, "cpp": float(re.search(r"contacts/particle ([0-9.]+)", out).group(1)),
+        return {"rate": bench_rate(out), "cpp": float(re.search(r"contacts/particle ([0-9.]+)", out).group(1)),
                 "fz": float(re.search(r"plate Fz ([0-9.e+-]+) N", out).group(1)), "rss": rss, "text": out}
 
 
@@ -140,7 +149,7 @@ def million_case(work):
                 for row in rows:
                     x, rest = row.split(",", 1)
                     f.write(f"{float(x) + shift!r},{rest}\n")
-    case = (ROOT / "cases" / "bench" / "plate_compression_100k.case.txtpb").read_text()
+    case = case_file("100k").read_text()
     case = case.replace('name: "plate_compression_100k"', 'name: "plate_compression_1m"')
     case = case.replace("100000 spheres", "1000000 spheres (ten copies of the 100k bed along x)")
     case = re.sub(r'path: "[^"]*"', f'path: "{csv}"', case)
@@ -171,7 +180,7 @@ def main():
     rows = []
     for size in sizes:
         peer.prepare(size)
-        case = ROOT / "cases" / "bench" / f"plate_compression_{size}.case.txtpb"
+        case = case_file(size)
         for t in threads:
             runs_ours, runs_peer = [], []
             for r in range(args.repeats):

@@ -15,14 +15,11 @@ builds; it does not replace the one-at-a-time rates of peer_comparison.py.
 """
 import argparse
 import os
-import re
 import statistics
 import subprocess
 import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-CASES = {"10k": "cases/bench/plate_compression_10k.case.txtpb",
-         "100k": "cases/bench/plate_compression_100k.case.txtpb"}
+from peer_comparison import SIZES, bench_rate, case_file
 
 
 def start(binary, case, cycles, core):
@@ -32,10 +29,9 @@ def start(binary, case, cycles, core):
 
 def rate(process, binary):
     out, err = process.communicate()
-    match = re.search(r"([0-9.e+]+) particle-steps/s", out)
-    if process.returncode != 0 or match is None:
+    if process.returncode != 0 or "particle-steps/s" not in out:
         sys.exit(f"{binary} failed (exit {process.returncode}): {err.strip() or out.strip()}")
-    return float(match.group(1))
+    return bench_rate(out)
 
 
 def main():
@@ -48,7 +44,7 @@ def main():
     args = parser.parse_args()
     if os.cpu_count() is None or os.cpu_count() < 2:
         sys.exit("side_by_side.py needs two cores")
-    case = os.path.join(ROOT, CASES[args.case]) if args.case in CASES else args.case
+    case = str(case_file(args.case)) if args.case in SIZES else args.case
     if not os.path.isfile(case):
         sys.exit(f"no case file {case}")
     for binary in (args.first, args.second):

@@ -1,6 +1,7 @@
 // Software prefetches, of single lines and over whole address ranges, for
-// the force pass on large beds (contact_batch.h), where what a batch of
-// rows needs next lies farther ahead than the hardware's prefetchers look.
+// the force pass on large beds (contact_batch.h, and the set-aside shares
+// in contact_forces.cpp), where what it needs next lies farther ahead than
+// the hardware's prefetchers look.
 #pragma once
 
 #include <cstdint>

@@ -43,6 +43,12 @@ struct Entry {
   Slot slot;
 };
 
+// Along the Morton curve, a cell's particles in id order.
+template <int Dim>
+bool along_curve(const Entry<Dim>& a, const Entry<Dim>& b) {
+  return a.code < b.code || (a.code == b.code && a.id < b.id);
+}
+
 // Splits entries [begin, end), which lie in the cells [lo, hi] (inclusive),
 // into two halves by count, across the axis whose cut is smallest: the
 // area of the cross-section, twice over for an axis the box spans whole
@@ -53,9 +59,7 @@ template <int Dim>
 void bisect(const CellGrid<Dim>& grid, Entry<Dim>* begin, Entry<Dim>* end, typename CellGrid<Dim>::Cell lo,
             typename CellGrid<Dim>::Cell hi) {
   if (end - begin <= kLeafParticles) {
-    std::sort(begin, end, [](const Entry<Dim>& a, const Entry<Dim>& b) {
-      return a.code < b.code || (a.code == b.code && a.id < b.id);
-    });
+    std::sort(begin, end, along_curve<Dim>);
     return;
   }
   int axis = 0;
@@ -74,7 +78,7 @@ void bisect(const CellGrid<Dim>& grid, Entry<Dim>* begin, Entry<Dim>* end, typen
   Entry<Dim>* mid = begin + (end - begin) / 2;
   std::nth_element(begin, mid, end, [axis](const Entry<Dim>& a, const Entry<Dim>& b) {
     if (a.cell[axis] != b.cell[axis]) return a.cell[axis] < b.cell[axis];
-    return a.code < b.code || (a.code == b.code && a.id < b.id);
+    return along_curve(a, b);
   });
   auto left_hi = hi, right_lo = lo;
   left_hi[axis] = right_lo[axis] = mid->cell[axis];
