@@ -14,7 +14,7 @@ int ContactBlocks<Dim>::block_of(Slot s) const {
 namespace {
 
 // For rows sorted by their first slot: the first row of each block.
-std::vector<std::int32_t> row_begins(const std::vector<Slot>& first, const std::vector<Slot>& particle_begin) {
+std::vector<std::int32_t> row_begins(const Column<Slot>& first, const std::vector<Slot>& particle_begin) {
   std::vector<std::int32_t> begins(particle_begin.size());
   for (std::size_t b = 0; b < particle_begin.size(); ++b) {
     begins[b] =

@@ -19,6 +19,7 @@
 #endif
 
 #include "contact_table.h"
+#include "large_pages.h"
 
 namespace dem {
 
@@ -100,14 +101,14 @@ struct ContactBlocks {
   // Cross rows, by the block holding their first particle, ascending:
   // row cross_row[k] sets its second particle's share aside in deferred[cross_slot[k]].
   std::vector<std::int32_t> cross_begin;
-  std::vector<std::int32_t> cross_row;
-  std::vector<std::int32_t> cross_slot;
+  Column<std::int32_t> cross_row;
+  Column<std::int32_t> cross_slot;
   // The shares set aside, grouped by the block of the particle they go to
   // (deferred_begin), in row order within each group.
   std::vector<std::int32_t> deferred_begin;
-  std::vector<Slot> deferred_particle;
-  std::vector<Vec<Dim>> deferred_force;
-  std::vector<Spin<Dim>> deferred_moment;
+  Column<Slot> deferred_particle;
+  Column<Vec<Dim>> deferred_force;
+  Column<Spin<Dim>> deferred_moment;
   // The near rows: of the pair rows within the tolerance, those whose gap
   // was below a margin when last sorted out. The others cannot touch until
   // particles have moved that margin, so the batched force pass
@@ -115,13 +116,13 @@ struct ContactBlocks {
   // it computes, as apart rows carry no force and no history. Block b's
   // near rows, ascending, are near_rows[pair_begin[b] .. pair_begin[b] +
   // near_count[b]); `near_stale` asks the next pass to sort them out again.
-  std::vector<std::int32_t> near_rows;
+  Column<std::int32_t> near_rows;
   std::vector<std::int32_t> near_count;
   bool near_stale = true;
   // The pass's copies of the particles it reads (HotPlace), by slot; filled
   // at the start of each batched pass on large beds, empty otherwise.
-  std::vector<HotPlace<Dim>> hot_place;
-  std::vector<HotMotion<Dim>> hot_motion;
+  Column<HotPlace<Dim>> hot_place;
+  Column<HotMotion<Dim>> hot_motion;
   // Whether the law of motion wrote those copies this step, after the
   // particles moved and before anything reordered them: the pass then
   // reads them as they are instead of copying (motion.cpp).

@@ -27,8 +27,8 @@ const char* law_name(ContactLaw law) {
 bool is_hertz(ContactLaw law) { return law == ContactLaw::kHertzMindlin || law == ContactLaw::kHertzLinearTangential; }
 
 WorldLaws resolve_contact_laws(const std::vector<MaterialDef>& materials, const ContactParamTable& params,
-                               const std::vector<std::int32_t>& particle_materials,
-                               const std::vector<std::int32_t>& wall_materials) {
+                               std::span<const std::int32_t> particle_materials,
+                               std::span<const std::int32_t> wall_materials) {
   const auto count = static_cast<std::int32_t>(materials.size());
   std::vector<bool> particle_material(count, false), wall_material(count, false);
   for (std::int32_t m : particle_materials) particle_material[m] = true;

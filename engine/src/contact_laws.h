@@ -3,6 +3,7 @@
 // each once, not per contact. Which laws a world's materials resolve to.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "contact_params.h"
@@ -20,8 +21,8 @@ struct WorldLaws {
 // Hertz laws need the elastic constants of the particles' materials.
 // Throws DefinitionError naming the materials otherwise.
 WorldLaws resolve_contact_laws(const std::vector<MaterialDef>& materials, const ContactParamTable& params,
-                               const std::vector<std::int32_t>& particle_materials,
-                               const std::vector<std::int32_t>& wall_materials);
+                               std::span<const std::int32_t> particle_materials,
+                               std::span<const std::int32_t> wall_materials);
 
 bool is_hertz(ContactLaw law);
 

@@ -8,8 +8,9 @@ namespace dem {
 template <int Dim>
 void gather_rows(ContactRows<Dim>& rows, const std::vector<std::int32_t>& from, const std::vector<ContactKey>& keys) {
   rows.for_each_column([&](auto& column) {
-    using T = typename std::decay_t<decltype(column)>::value_type;
-    std::vector<T> moved(from.size(), fresh<T>());
+    using Array = std::decay_t<decltype(column)>;
+    using T = typename Array::value_type;
+    Array moved(from.size(), fresh<T>());
     for (std::size_t k = 0; k < from.size(); ++k) {
       if (from[k] >= 0) moved[k] = column[static_cast<std::size_t>(from[k])];
     }

@@ -13,6 +13,7 @@
 
 #include "dem/ids.h"
 #include "dem/snapshot.h"
+#include "large_pages.h"
 #include "particles.h"
 
 namespace dem {
@@ -66,19 +67,19 @@ struct ContactRows {
   // id and `second` the other's slot, so a row keeps its orientation (e_i
   // from first to second) when particles are re-sorted; a wall row's
   // `second` is the wall id. Rows are sorted by (first, second).
-  std::vector<Slot> first;
-  std::vector<std::int32_t> second;
+  Column<Slot> first;
+  Column<std::int32_t> second;
   // Hot: read and written at every force pass.
-  std::vector<std::uint8_t> flags;
-  std::vector<ShearForce<Dim>> shear;  // F_s: signed along t_i (2D) or a tangent-plane vector (3D)
+  Column<std::uint8_t> flags;
+  Column<ShearForce<Dim>> shear;  // F_s: signed along t_i (2D) or a tangent-plane vector (3D)
   // Optional, by law, shape and energy budget.
-  std::vector<double> normal_force;  // F_n as history, compressive positive
-  std::vector<MindlinRow<Dim>> mindlin;
-  std::vector<ContactSearch> search;
-  std::vector<DashpotWork<Dim>> dashpot;
-  std::vector<Spin<Dim>> rolling;  // the rolling spring's torque on the first body
+  Column<double> normal_force;  // F_n as history, compressive positive
+  Column<MindlinRow<Dim>> mindlin;
+  Column<ContactSearch> search;
+  Column<DashpotWork<Dim>> dashpot;
+  Column<Spin<Dim>> rolling;  // the rolling spring's torque on the first body
   // Cold: written when a contact forms.
-  std::vector<std::uint64_t> formed_cycle;
+  Column<std::uint64_t> formed_cycle;
 
   ContactColumns columns;
 

@@ -4,7 +4,8 @@
 // particles are re-sorted while an id stays what the user gave. `id` and
 // `slot` translate. Hot data (what every contact reads, what the law of
 // motion writes) is apart from cold data (shapes, ids). Written once over
-// the dimension.
+// the dimension. The arrays are Columns (large_pages.h): the long ones lie
+// on large pages.
 #pragma once
 
 #include <cstddef>
@@ -14,6 +15,7 @@
 #include "dem/definitions.h"
 #include "dem/ids.h"
 #include "dem/math.h"
+#include "large_pages.h"
 
 namespace dem {
 
@@ -26,26 +28,26 @@ using Slot = std::int32_t;  // index into the particle arrays
 template <int Dim>
 struct Particles {
   // Read by every contact of the force pass.
-  std::vector<Vec<Dim>> position;           // x_i at cycle N
-  std::vector<Vec<Dim>> velocity;           // x_dot_i at N - 1/2 (time-centred, eq. 22)
-  std::vector<Spin<Dim>> angular_velocity;  // at N - 1/2 (eq. 23)
-  std::vector<double> radius;               // bounding radius for shaped particles
-  std::vector<double> mass;
+  Column<Vec<Dim>> position;           // x_i at cycle N
+  Column<Vec<Dim>> velocity;           // x_dot_i at N - 1/2 (time-centred, eq. 22)
+  Column<Spin<Dim>> angular_velocity;  // at N - 1/2 (eq. 23)
+  Column<double> radius;               // bounding radius for shaped particles
+  Column<double> mass;
   // MaterialId values as plain indices: the force pass indexes the pair
   // table with them for every contact (ids.h: the types guard the API).
-  std::vector<std::int32_t> material;
+  Column<std::int32_t> material;
   // Written by the force pass (eqs. 20-21): the sums of the contact forces and moments.
-  std::vector<Vec<Dim>> force;
-  std::vector<Spin<Dim>> moment;
+  Column<Vec<Dim>> force;
+  Column<Spin<Dim>> moment;
   // Read and written by the law of motion only.
-  std::vector<double> inertia;               // about the centre; an ellipsoid's smallest principal moment
-  std::vector<Orientation<Dim>> rotation;    // accumulated angle (2D) or unit quaternion (3D) (eq. 23a)
-  std::vector<double> previous_force;        // |sum F| of the last cycle (Randall 4.38)
-  std::vector<Vec<Dim>> reference_position;  // where the particle was at the last contact-table rebuild
+  Column<double> inertia;               // about the centre; an ellipsoid's smallest principal moment
+  Column<Orientation<Dim>> rotation;    // accumulated angle (2D) or unit quaternion (3D) (eq. 23a)
+  Column<double> previous_force;        // |sum F| of the last cycle (Randall 4.38)
+  Column<Vec<Dim>> reference_position;  // where the particle was at the last contact-table rebuild
   // Cold.
-  std::vector<ShapeDefT<Dim>> shape;    // superquadric or ellipsoid worlds only (empty otherwise)
-  std::vector<Vec3> principal_inertia;  // ellipsoid worlds only: about the body's own axes
-  std::vector<ParticleId> id;           // the particle in each slot
+  Column<ShapeDefT<Dim>> shape;    // superquadric or ellipsoid worlds only (empty otherwise)
+  Column<Vec3> principal_inertia;  // ellipsoid worlds only: about the body's own axes
+  std::vector<ParticleId> id;      // the particle in each slot
 
   // The slot of each particle id (indexed by id, not by slot); -1 for an
   // id whose particle was removed. Ids are given once, in definition order,
@@ -114,10 +116,10 @@ struct Particles {
 };
 
 // Reorders every per-slot array: new slot k holds what slot order[k] held.
-template <typename T>
-void gather(std::vector<T>& values, const std::vector<Slot>& order) {
+template <typename T, typename Allocator>
+void gather(std::vector<T, Allocator>& values, const std::vector<Slot>& order) {
   if (values.empty()) return;
-  std::vector<T> moved;
+  std::vector<T, Allocator> moved;
   moved.reserve(order.size());
   for (Slot from : order) moved.push_back(values[static_cast<std::size_t>(from)]);
   values.swap(moved);

@@ -18,7 +18,7 @@ namespace {
 
 Particles<2> particles_at(const std::vector<Vec2>& positions) {
   Particles<2> p;
-  p.position = positions;
+  p.position.assign(positions.begin(), positions.end());
   return p;
 }
 

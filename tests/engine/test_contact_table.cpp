@@ -66,11 +66,11 @@ TEST(ContactBlocks, CrossRowsAreSetAsideInRowOrderForTheirBlock) {
   EXPECT_EQ(blocks.pair_begin, (std::vector<std::int32_t>{0, 3, 5, 7, 9}));
   EXPECT_EQ(blocks.wall_begin, (std::vector<std::int32_t>{0, 1, 1, 2, 2}));
   // Rows crossing blocks: 1 (0 -> 4), 2 (1 -> 2), 4 (3 -> 0), 5 (4 -> 2), 8 (7 -> 5).
-  EXPECT_EQ(blocks.cross_row, (std::vector<std::int32_t>{1, 2, 4, 5, 8}));
+  EXPECT_EQ(blocks.cross_row, (Column<std::int32_t>{1, 2, 4, 5, 8}));
   EXPECT_EQ(blocks.deferred_begin, (std::vector<std::int32_t>{0, 1, 3, 5, 5}));
   // Block 1 (particles 2, 3) receives rows 2 and 5, block 2 rows 1 and 8, in that order.
-  EXPECT_EQ(blocks.deferred_particle, (std::vector<Slot>{0, 2, 2, 4, 5}));
-  EXPECT_EQ(blocks.cross_slot, (std::vector<std::int32_t>{3, 1, 0, 2, 4}));
+  EXPECT_EQ(blocks.deferred_particle, (Column<Slot>{0, 2, 2, 4, 5}));
+  EXPECT_EQ(blocks.cross_slot, (Column<std::int32_t>{3, 1, 0, 2, 4}));
 }
 
 // Blocks come in powers of two, the nearest to particles / block size, so
