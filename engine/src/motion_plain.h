@@ -80,10 +80,12 @@ void move_plain_block(Particles<Dim>& p, const Vec<Dim>& gravity, const Periodic
   // does not without giving up NaN and signed-zero semantics.
   std::int64_t max_travel_bits = 0, max_speed_bits = 0;
   // Chunks of 128 particles while the particles stay in the shared cache
-  // between steps; of 32 on larger beds, whose arrays come from memory
+  // between steps; of 16 on larger beds, whose arrays come from memory
   // (plate benchmark, one thread, motion phase against 128: at 10k 32 was
-  // 1.105, at 100k 0.557; docs/PERFORMANCE.md, item 14).
-  constexpr std::int64_t kChunk = 128, kLargeBedChunk = 32, kLargeBed = 32768;
+  // 1.105, at 100k 0.557; docs/PERFORMANCE.md, item 14). With the arrays
+  // on large pages (large_pages.h), 16 against 32 at 100k: the motion
+  // phase 0.78-0.85, the whole 1.018 side by side; 8 and 64 were slower.
+  constexpr std::int64_t kChunk = 128, kLargeBedChunk = 16, kLargeBed = 32768;
   const std::int64_t chunk = static_cast<std::int64_t>(p.size()) > kLargeBed ? kLargeBedChunk : kChunk;
   alignas(64) double cosine[kChunk], ax[kChunk], ay[kChunk], az[kChunk], angle2[kChunk];
   for (std::int64_t c0 = begin; c0 < end; c0 += chunk) {
