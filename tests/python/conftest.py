@@ -74,16 +74,20 @@ def out(tmp_path):
     return path
 
 
-def until_samples_flow(client, telemetry, kind=dem.PlateForces):
-    """Runs 10 cycles at a time until a sample of ``kind`` arrives: the
-    server's writer has then matched this reader too (discovery goes both
-    ways, and a reader can match before the writer does). The cycle count
-    reached."""
+def until_samples_flow(client, telemetry, kinds=(dem.PlateForces,)):
+    """Runs 10 cycles at a time until a sample of each of ``kinds`` arrives
+    for the cycle reached: the server's writers of those topics have then
+    matched this reader too (discovery goes both ways, a reader can match
+    before the writer does, and each topic's writer matches on its own).
+    The cycle count reached."""
     assert telemetry.wait_for_publisher()
     for _ in range(50):
         cycle = client.cycle(10).state.cycle
+        waiting = set(kinds)
         for sample in telemetry.samples(timeout=0.2):
-            if isinstance(sample, kind) and sample.cycle == cycle:
+            if sample.cycle == cycle:
+                waiting.discard(type(sample))
+            if not waiting:
                 telemetry.drain()
                 return cycle
     raise AssertionError("no telemetry arrived in 50 tries")

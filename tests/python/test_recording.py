@@ -107,7 +107,7 @@ def test_a_cases_region_measures_are_recorded_as_the_server_published_them(serve
     client.load_case(dem.paths.cases_dir().parent / "tests" / "io" / "data" / "biaxial.case.txtpb")
     recorder = DemctlRecord(key, tmp_path / "regions.mcap")
     with client.subscribe(plate_forces=False, contact_stats=False, region_measures=True) as telemetry:
-        start = until_samples_flow(client, telemetry, kind=dem.RegionTelemetry)
+        start = until_samples_flow(client, telemetry, kinds=(dem.RegionTelemetry,))
         client.cycle(200)
         received = {}
         for sample in telemetry.samples(timeout=2.0):

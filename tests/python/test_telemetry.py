@@ -16,7 +16,7 @@ def test_iterating_over_the_telemetry_of_a_run(serve):
     client.load_case(case_file("nine_disc_damped"))
     client.set_wall_velocity("top", (0, -12))
     with client.subscribe(status=True) as telemetry:
-        start = until_samples_flow(client, telemetry)
+        start = until_samples_flow(client, telemetry, kinds=(dem.PlateForces, dem.ContactStats))
         run = client.start_cycle(200)
         plates, stats, states = [], [], []
         for sample in telemetry.samples(timeout=1.0):
@@ -112,7 +112,7 @@ def test_the_measures_of_a_cases_regions(serve):
     client = serve("telemetry_regions", telemetry_cycles=10)
     client.load_case(dem.paths.cases_dir().parent / "tests" / "io" / "data" / "biaxial.case.txtpb")
     with client.subscribe(plate_forces=False, contact_stats=False, region_measures=True) as telemetry:
-        cycle = until_samples_flow(client, telemetry, kind=dem.RegionTelemetry)
+        cycle = until_samples_flow(client, telemetry, kinds=(dem.RegionTelemetry,))
         client.cycle(2000)
         last = None
         for sample in telemetry.samples(timeout=1.0):
