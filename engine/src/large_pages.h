@@ -15,7 +15,7 @@
 #pragma once
 
 #include <cstddef>
-#include <new>
+#include <memory>
 #include <vector>
 
 namespace dem {
@@ -56,33 +56,22 @@ struct LargePageAllocator {
   template <typename U>
   LargePageAllocator(const LargePageAllocator<U>&) noexcept {}
 
+  // Short arrays come from std::allocator, so that they lie as they would
+  // in a plain vector. (The vector keeps n within max_size, so n * sizeof(T)
+  // does not overflow.)
   T* allocate(std::size_t n) {
-    if (n > max_size()) throw std::bad_array_new_length();
-    const std::size_t bytes = n * sizeof(T);
-    if (!kMapLongArrays || bytes < kLargeArray) {  // as std::allocator does, so that short arrays lie as they would
-      if constexpr (alignof(T) > __STDCPP_DEFAULT_NEW_ALIGNMENT__) {
-        return static_cast<T*>(::operator new (bytes, std::align_val_t{alignof(T)}));
-      } else {
-        return static_cast<T*>(::operator new(bytes));
-      }
-    }
-    return static_cast<T*>(map_large_pages(bytes));
+    if (!is_long(n)) return std::allocator<T>{}.allocate(n);
+    return static_cast<T*>(map_large_pages(n * sizeof(T)));
   }
   void deallocate(T* memory, std::size_t n) noexcept {
-    const std::size_t bytes = n * sizeof(T);
-    if (!kMapLongArrays || bytes < kLargeArray) {
-      if constexpr (alignof(T) > __STDCPP_DEFAULT_NEW_ALIGNMENT__) {
-        ::operator delete (memory, std::align_val_t{alignof(T)});
-      } else {
-        ::operator delete(memory);
-      }
-    } else {
-      unmap_large_pages(memory, bytes);
-    }
+    if (!is_long(n)) return std::allocator<T>{}.deallocate(memory, n);
+    unmap_large_pages(memory, n * sizeof(T));
   }
-  static constexpr std::size_t max_size() noexcept { return (std::size_t{1} << 47) / sizeof(T); }
 
   friend bool operator==(const LargePageAllocator&, const LargePageAllocator&) = default;
+
+ private:
+  static bool is_long(std::size_t n) { return kMapLongArrays && n * sizeof(T) >= kLargeArray; }
 };
 
 // One array of the engine's state, by particle slot or by contact row.
