@@ -15,6 +15,7 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 
@@ -22,6 +23,10 @@
 #include "contact_blocks.h"
 #include "contact_row.h"
 #include "fetch_ahead.h"
+
+#if defined(__AVX512F__) && defined(__AVX512VL__)
+#include <immintrin.h>
+#endif
 
 namespace dem {
 
@@ -242,7 +247,43 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
         batch_touch[i] = d2 < reach * reach ? 1.0 : 0.0;
         batch_near[i] = d2 < (reach + margin) * (reach + margin) ? 1.0 : 0.0;
       }
-      for (int i = 0; i < n; ++i) {
+      int i = 0;
+#if defined(__AVX512F__) && defined(__AVX512VL__)
+      // Eight rows at a time, the touching rows' columns packed by compress
+      // instructions: the same bits as the loop below, in a tenth of its
+      // instructions.
+      for (; i + 8 <= n; i += 8) {
+        const __mmask8 touch = _mm512_cmp_pd_mask(_mm512_load_pd(batch_touch + i), _mm512_setzero_pd(), _CMP_NEQ_OQ);
+        unsigned touched = 0;  // the rows that touched at the last pass, a bit each
+        for (int k = 0; k < 8; ++k) touched |= static_cast<unsigned>(row_flags[batch_row[i + k]] & kTouching) << k;
+        for (unsigned apart = touched & ~static_cast<unsigned>(touch) & 0xffu; apart != 0; apart &= apart - 1) {
+          separate(rows, batch_row[i + std::countr_zero(apart)]);
+        }
+        const auto pack = [&](const double* from, double* to) {
+          _mm512_storeu_pd(to + count, _mm512_maskz_compress_pd(touch, _mm512_load_pd(from + i)));
+        };
+        const auto pack_slots = [&](const std::int32_t* from, std::int32_t* to, __mmask8 mask, int at) {
+          const __m256i slots = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(from + i));
+          _mm256_storeu_si256(reinterpret_cast<__m256i*>(to + at), _mm256_maskz_compress_epi32(mask, slots));
+        };
+        for (int c = 0; c < 3; ++c) pack(separation[c], dx[c]);
+        pack(batch_distance2, distance2);
+        pack(radius1, rx);
+        pack(radius2, ry);
+        _mm512_storeu_pd(was_touching + count,
+                         _mm512_maskz_compress_pd(touch, _mm512_maskz_mov_pd(touched, _mm512_set1_pd(1.0))));
+        pack_slots(batch_row, row, touch, count);
+        pack_slots(batch_first, first_of, touch, count);
+        pack_slots(batch_second, second_of, touch, count);
+        count += std::popcount(static_cast<unsigned>(touch));
+        if (sort_out) {  // (kept <= k: the list is rewritten behind the reading)
+          const __mmask8 within = _mm512_cmp_pd_mask(_mm512_load_pd(batch_near + i), _mm512_setzero_pd(), _CMP_NEQ_OQ);
+          pack_slots(batch_row, near, within, kept);
+          kept += std::popcount(static_cast<unsigned>(within));
+        }
+      }
+#endif
+      for (; i < n; ++i) {
         const std::int32_t r = batch_row[i];
         for (int c = 0; c < 3; ++c) dx[c][count] = separation[c][i];
         distance2[count] = batch_distance2[i];
@@ -251,8 +292,10 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
         second_of[count] = batch_second[i];
         rx[count] = radius1[i];
         ry[count] = radius2[i];
+        const bool touched = (row_flags[r] & kTouching) != 0;
+        was_touching[count] = touched ? 1.0 : 0.0;
         const bool touch = batch_touch[i] != 0.0;
-        if ((row_flags[r] & kTouching) & !touch) separate(rows, r);
+        if (touched & !touch) separate(rows, r);
         count += touch;
         if (sort_out) {  // (kept <= k: the list is rewritten behind the reading)
           near[kept] = r;
@@ -320,7 +363,7 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
         shear[0][j] = row_shear[r];
       }
       if constexpr (Law::kNormalHistory) normal_force[j] = row_normal_force[r];
-      was_touching[j] = (row_flags[r] & kTouching) != 0 ? 1.0 : 0.0;
+      if constexpr (Dim == 2) was_touching[j] = (row_flags[r] & kTouching) != 0 ? 1.0 : 0.0;
     }
     // 2. The contact law on the packed rows (Cundall & Strack eqs. 9-19).
     for (int j = 0; j < count; ++j) {
