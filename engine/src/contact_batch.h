@@ -229,11 +229,16 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
           window_end = window_to;
         }
       }
-      gather_columns<kPlaceStride>(place_column, batch_first, n, place1[0], place1[1], place1[2]);
-      gather_columns<kPlaceStride>(place_column, batch_second, n, place2[0], place2[1], place2[2]);
-      for (int i = 0; i < n; ++i) {
-        radius1[i] = radius_column[kRadiusStride * batch_first[i]];
-        radius2[i] = radius_column[kRadiusStride * batch_second[i]];
+      if constexpr (kHot) {  // a record's position and radius side by side
+        gather_columns<kPlaceStride>(place_column, batch_first, n, place1[0], place1[1], place1[2], radius1);
+        gather_columns<kPlaceStride>(place_column, batch_second, n, place2[0], place2[1], place2[2], radius2);
+      } else {
+        gather_columns<kPlaceStride>(place_column, batch_first, n, place1[0], place1[1], place1[2]);
+        gather_columns<kPlaceStride>(place_column, batch_second, n, place2[0], place2[1], place2[2]);
+        for (int i = 0; i < n; ++i) {
+          radius1[i] = radius_column[kRadiusStride * batch_first[i]];
+          radius2[i] = radius_column[kRadiusStride * batch_second[i]];
+        }
       }
       for (int i = 0; i < n; ++i) {
         Vec3 d;
@@ -340,8 +345,13 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
     }
     // Gather what the law needs of each packed row's two particles.
     if constexpr (Dim == 3) {
-      gather_columns<kMotionStride>(velocity_column, first_of, count, v1[0], v1[1], v1[2]);
-      gather_columns<kMotionStride>(velocity_column, second_of, count, v2[0], v2[1], v2[2]);
+      if constexpr (kHot) {  // a record's velocity and mass side by side
+        gather_columns<kMotionStride>(velocity_column, first_of, count, v1[0], v1[1], v1[2], mx);
+        gather_columns<kMotionStride>(velocity_column, second_of, count, v2[0], v2[1], v2[2], my);
+      } else {
+        gather_columns<kMotionStride>(velocity_column, first_of, count, v1[0], v1[1], v1[2]);
+        gather_columns<kMotionStride>(velocity_column, second_of, count, v2[0], v2[1], v2[2]);
+      }
       gather_columns<kMotionStride>(spin_column, first_of, count, w1[0], w1[1], w1[2]);
       gather_columns<kMotionStride>(spin_column, second_of, count, w2[0], w2[1], w2[2]);
       gather_columns<3>(row_shear->data(), row, count, shear[0], shear[1], shear[2]);
@@ -349,8 +359,10 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
     for (int j = 0; j < count; ++j) {
       const std::int32_t r = row[j];
       const Slot x = first_of[j], y = second_of[j];
-      mx[j] = mass_of(x);
-      my[j] = mass_of(y);
+      if constexpr (Dim == 2 || !kHot) {
+        mx[j] = mass_of(x);
+        my[j] = mass_of(y);
+      }
       if constexpr (Dim == 2) {
         rx[j] = radius_of(x);
         ry[j] = radius_of(y);
