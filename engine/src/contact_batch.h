@@ -36,16 +36,12 @@ namespace dem {
 template <typename Shape>
 constexpr bool kBatchableShape = Shape::round;
 
-// Beyond this many particles the arrays the pass reads no longer fit the
-// core's own cache (about 150 bytes a particle against 1 MiB of L2), and
-// a row's second particle, which lies anywhere ahead of the first in
-// memory, is fetched some rows early so that its misses overlap. Below it
-// the prefetches are pure overhead (5 % more instructions).
-inline constexpr std::int64_t kPrefetchParticles = 32768;
-
-// kHot: the particles are read from the pass's side-by-side copies
-// (HotPlace, HotMotion in contact_blocks.h), filled beforehand by
-// copy_hot_particles (contact_blocks.h); otherwise from the particle arrays.
+// kPrefetch: a large bed's (kPrefetchParticles, contact_blocks.h): a row's
+// second particle, which lies anywhere ahead of the first in memory, is
+// fetched some rows early so that its misses overlap. kHot: the particles
+// are read from the pass's side-by-side copies (HotPlace, HotMotion in
+// contact_blocks.h), filled beforehand by the law of motion or by
+// copy_hot_particles; otherwise from the particle arrays.
 template <typename Law, int Dim, bool kPrefetch, bool kHot = kPrefetch>
 void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows,
                         ContactBlocks<Dim>& blocks, int b) {

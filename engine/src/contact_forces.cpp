@@ -195,10 +195,10 @@ void frame_ellipsoids(const Particles<Dim>& p, std::vector<EllipsoidFrame>& fram
   if constexpr (Dim == 3) ellipsoid_frames_of(p, frames.data(), begin, end);
 }
 
-template <typename Law, int Dim, bool kPrefetch>
+template <typename Law, int Dim, bool kPrefetch, bool kHot>
 void batched_pair_rows(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows, ContactBlocks<Dim>& blocks,
                        int b, ContactEnergy&, WallSum<Dim>*) {
-  batched_pair_block<Law, Dim, kPrefetch>(in, p, rows, blocks, b);
+  batched_pair_block<Law, Dim, kPrefetch, kHot>(in, p, rows, blocks, b);
 }
 
 template <typename Law, int Dim>
@@ -224,8 +224,13 @@ ContactEnergy run_pass(WorldState<Dim>& s, const StepContext& step) {
         pair_fn = &row_block<kPass, kEnergy, Law, Shape, PairShares<Dim>, Dim>;
         if constexpr (kPass == Pass::kAdvance && !kEnergy && kBatchableShape<Shape> && Law::kBatchable) {
           if (in.shared_params) {
-            hot = static_cast<std::int64_t>(s.particles.size()) > kPrefetchParticles;
-            pair_fn = hot ? &batched_pair_rows<Law, Dim, true> : &batched_pair_rows<Law, Dim, false>;
+            const bool large = static_cast<std::int64_t>(s.particles.size()) > kPrefetchParticles;
+            hot = large || Dim == 3;  // (contact_blocks.h, HotPlace)
+            if (large) {
+              pair_fn = &batched_pair_rows<Law, Dim, true, true>;
+            } else {
+              pair_fn = hot ? &batched_pair_rows<Law, Dim, false, true> : &batched_pair_rows<Law, Dim, false, false>;
+            }
           }
         }
       });

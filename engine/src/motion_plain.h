@@ -48,6 +48,7 @@ void move_plain_block(Particles<Dim>& p, const Vec<Dim>& gravity, const Periodic
                       MotionStep& step, HotPlace<Dim>* hot_place = nullptr, HotMotion<Dim>* hot_motion = nullptr) {
   constexpr int D = Dim;
   constexpr int S = Dim == 3 ? 3 : 1;  // components of a spin
+  const bool stream = static_cast<std::int64_t>(p.size()) > kPrefetchParticles;
   double* __restrict x = p.position.data()->data();
   double* __restrict v = p.velocity.data()->data();
   const double* __restrict f = p.force.data()->data();
@@ -193,10 +194,18 @@ void move_plain_block(Particles<Dim>& p, const Vec<Dim>& gravity, const Periodic
         angle[i] += w1 * dt;
       }
     }
-    // The force pass's side-by-side copies, while the chunk is in the core's cache.
-    if (hot_place != nullptr) stream_hot_particles(p, hot_place, hot_motion, c0, c0 + n);
+    // The force pass's side-by-side copies, while the chunk is in the core's
+    // cache: streamed to memory on large beds; on small ones they stay in
+    // the caches until the pass reads them.
+    if (hot_place != nullptr) {
+      if (stream) {
+        stream_hot_particles(p, hot_place, hot_motion, c0, c0 + n);
+      } else {
+        copy_hot_particles(p, hot_place, hot_motion, c0, c0 + n);
+      }
+    }
   }
-  if (hot_place != nullptr) finish_streaming();
+  if (stream && hot_place != nullptr) finish_streaming();
   step.max_travel = std::sqrt(std::bit_cast<double>(max_travel_bits));
   step.max_speed = std::sqrt(std::bit_cast<double>(max_speed_bits));
 }

@@ -204,9 +204,9 @@ TEST(World3, BatchedWallRowsGiveTheSameBitsAsTheGeneralRows) {
   testing::expect_batched_wall_rows_match_the_general_rows<World3>(plain_def, 2000);
 }
 
-// Past kPrefetchParticles (contact_batch.h) the batched pass reads the
-// particles from side-by-side copies that both threads fill before the
-// rows: one and two threads must still give the same state.
+// Past kPrefetchParticles (contact_blocks.h) the batched pass fetches ahead
+// and the law of motion streams the side-by-side copies that the pass reads:
+// one and two threads must still give the same state.
 TEST(World3, LargeBedsGiveTheSameStateHashForOneAndTwoThreads) {
   WorldDef3 serial_def = spheres_in_a_box(9, 1, 405);  // a column
   // Spheres a little larger than the lattice's spacing: every neighbour
