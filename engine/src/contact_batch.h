@@ -224,6 +224,10 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
           }
           window_end = window_to;
         }
+        // The crossing rows' list, which step 3 reads a few entries a batch:
+        // too sparse for the hardware to fetch ahead, and each of its lines
+        // missed on the way to a branch.
+        if (cross + 32 < cross_end) fetch_line<Keep::kOnce>(cross_row + cross + 32);
       }
       if constexpr (kHot) {  // a record's position and radius side by side
         gather_columns<kPlaceStride>(place_column, batch_first, n, place1[0], place1[1], place1[2], radius1);
