@@ -41,64 +41,29 @@ DEM_INLINE void set_column_entry(double (&columns)[3][N], int j, const Spin<Dim>
 
 // out_x[j], out_y[j], out_z[j] = the three doubles at base + kStride *
 // slot[j], for j in [0, count): a column of 3-vectors (kStride 3) or of
-// records that begin with one (the pass's side-by-side copies).
-template <int kStride>
+// records that begin with one (the pass's side-by-side copies). With
+// kLanes 4 (records of four doubles or more), out_w[j] = the fourth: the
+// side-by-side copies hold a radius or a mass there (contact_blocks.h),
+// which so comes with the vector at the cost of one shuffle and one store.
+template <int kStride, int kLanes = 3>
 void gather_columns(const double* base, const std::int32_t* slot, int count, double* out_x, double* out_y,
-                    double* out_z) {
+                    double* out_z, double* out_w = nullptr) {
+  static_assert(kLanes == 3 || (kLanes == 4 && kStride >= 4));
   int j = 0;
 #if defined(__AVX512F__) && defined(__AVX512VL__)
-  // Lanes of two 4-wide halves [x0 y0 z0 - x1 y1 z1 -]: first the x and y of
-  // four rows, then their z.
-  const __m512i xy = _mm512_setr_epi64(0, 4, 8, 12, 1, 5, 9, 13);
-  const __m512i zz = _mm512_setr_epi64(2, 6, 10, 14, 2, 6, 10, 14);
-  const __m512i low = _mm512_setr_epi64(0, 1, 2, 3, 8, 9, 10, 11);
-  const __m512i high = _mm512_setr_epi64(4, 5, 6, 7, 12, 13, 14, 15);
-  auto pair = [&](int a) {
-    const __m256d first = _mm256_maskz_loadu_pd(0x7, base + kStride * static_cast<std::int64_t>(slot[a]));
-    const __m256d second = _mm256_maskz_loadu_pd(0x7, base + kStride * static_cast<std::int64_t>(slot[a + 1]));
-    // (The masked form: the plain one's undefined upper half trips GCC 12's
-    // maybe-uninitialized warning.)
-    return _mm512_maskz_insertf64x4(0xff, _mm512_castpd256_pd512(first), second, 1);
-  };
-  for (; j + 8 <= count; j += 8) {
-    const __m512d r01 = pair(j), r23 = pair(j + 2), r45 = pair(j + 4), r67 = pair(j + 6);
-    const __m512d xy03 = _mm512_permutex2var_pd(r01, xy, r23);  // x0 x1 x2 x3 y0 y1 y2 y3
-    const __m512d z03 = _mm512_permutex2var_pd(r01, zz, r23);   // z0 z1 z2 z3 (twice)
-    const __m512d xy47 = _mm512_permutex2var_pd(r45, xy, r67);
-    const __m512d z47 = _mm512_permutex2var_pd(r45, zz, r67);
-    _mm512_storeu_pd(out_x + j, _mm512_permutex2var_pd(xy03, low, xy47));
-    _mm512_storeu_pd(out_y + j, _mm512_permutex2var_pd(xy03, high, xy47));
-    _mm512_storeu_pd(out_z + j, _mm512_permutex2var_pd(z03, low, z47));
-  }
-#endif
-  for (; j < count; ++j) {
-    const double* v = base + kStride * static_cast<std::int64_t>(slot[j]);
-    out_x[j] = v[0];
-    out_y[j] = v[1];
-    out_z[j] = v[2];
-  }
-}
-
-// The same for records of four doubles or more (kStride >= 4): the first
-// four of each, as four columns. The fourth lane of the force pass's
-// side-by-side copies is a radius or a mass (contact_blocks.h), which so
-// comes with the vector at the cost of one shuffle and one store.
-template <int kStride>
-void gather_columns(const double* base, const std::int32_t* slot, int count, double* out_x, double* out_y,
-                    double* out_z, double* out_w) {
-  static_assert(kStride >= 4);
-  int j = 0;
-#if defined(__AVX512F__) && defined(__AVX512VL__)
-  // Lanes of two 4-wide halves [x0 y0 z0 w0 x1 y1 z1 w1]: first the x and y
-  // of four rows, then their z and w.
+  // Lanes of two 4-wide halves [x0 y0 z0 w0 x1 y1 z1 w1] (w zero with three
+  // lanes): first the x and y of four rows, then their z and w.
   const __m512i xy = _mm512_setr_epi64(0, 4, 8, 12, 1, 5, 9, 13);
   const __m512i zw = _mm512_setr_epi64(2, 6, 10, 14, 3, 7, 11, 15);
   const __m512i low = _mm512_setr_epi64(0, 1, 2, 3, 8, 9, 10, 11);
   const __m512i high = _mm512_setr_epi64(4, 5, 6, 7, 12, 13, 14, 15);
+  constexpr __mmask8 kRead = kLanes == 4 ? 0xf : 0x7;  // a 3-lane masked load reads nothing past the vector
   auto pair = [&](int a) {
-    const __m256d first = _mm256_loadu_pd(base + kStride * static_cast<std::int64_t>(slot[a]));
-    const __m256d second = _mm256_loadu_pd(base + kStride * static_cast<std::int64_t>(slot[a + 1]));
-    return _mm512_insertf64x4(_mm512_castpd256_pd512(first), second, 1);
+    const __m256d first = _mm256_maskz_loadu_pd(kRead, base + kStride * static_cast<std::int64_t>(slot[a]));
+    const __m256d second = _mm256_maskz_loadu_pd(kRead, base + kStride * static_cast<std::int64_t>(slot[a + 1]));
+    // (The masked insert: the plain one's undefined upper half trips GCC
+    // 12's maybe-uninitialized warning.)
+    return _mm512_maskz_insertf64x4(0xff, _mm512_castpd256_pd512(first), second, 1);
   };
   for (; j + 8 <= count; j += 8) {
     const __m512d r01 = pair(j), r23 = pair(j + 2), r45 = pair(j + 4), r67 = pair(j + 6);
@@ -109,7 +74,7 @@ void gather_columns(const double* base, const std::int32_t* slot, int count, dou
     _mm512_storeu_pd(out_x + j, _mm512_permutex2var_pd(xy03, low, xy47));
     _mm512_storeu_pd(out_y + j, _mm512_permutex2var_pd(xy03, high, xy47));
     _mm512_storeu_pd(out_z + j, _mm512_permutex2var_pd(zw03, low, zw47));
-    _mm512_storeu_pd(out_w + j, _mm512_permutex2var_pd(zw03, high, zw47));
+    if constexpr (kLanes == 4) _mm512_storeu_pd(out_w + j, _mm512_permutex2var_pd(zw03, high, zw47));
   }
 #endif
   for (; j < count; ++j) {
@@ -117,7 +82,7 @@ void gather_columns(const double* base, const std::int32_t* slot, int count, dou
     out_x[j] = v[0];
     out_y[j] = v[1];
     out_z[j] = v[2];
-    out_w[j] = v[3];
+    if constexpr (kLanes == 4) out_w[j] = v[3];
   }
 }
 

@@ -130,12 +130,13 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
       return mass[i];
   };
   // The 3D pass gathers by columns (batch_columns.h): each quantity's
-  // first component and the stride between particles, in doubles.
+  // first component and the stride between particles, in doubles; from
+  // the copies, four lanes (the radius after the position, the mass after
+  // the velocity).
   constexpr int kPlaceStride = kHot ? sizeof(HotPlace<Dim>) / sizeof(double) : Dim;
-  constexpr int kRadiusStride = kHot ? kPlaceStride : 1;
+  constexpr int kLanes = kHot ? 4 : 3;
   constexpr int kMotionStride = kHot ? sizeof(HotMotion<Dim>) / sizeof(double) : Dim;
   const double* place_column = kHot ? reinterpret_cast<const double*>(hot_place) : position->data();
-  const double* radius_column = kHot ? place_column + Dim : radius;
   const double* velocity_column = kHot ? reinterpret_cast<const double*>(hot_motion) : velocity->data();
   const double* spin_column = kHot ? velocity_column + offsetof(HotMotion<Dim>, angular_velocity) / sizeof(double)
                                    : reinterpret_cast<const double*>(angular_velocity);
@@ -229,15 +230,12 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
         // missed on the way to a branch.
         if (cross + 32 < cross_end) fetch_line<Keep::kOnce>(cross_row + cross + 32);
       }
-      if constexpr (kHot) {  // a record's position and radius side by side
-        gather_columns<kPlaceStride>(place_column, batch_first, n, place1[0], place1[1], place1[2], radius1);
-        gather_columns<kPlaceStride>(place_column, batch_second, n, place2[0], place2[1], place2[2], radius2);
-      } else {
-        gather_columns<kPlaceStride>(place_column, batch_first, n, place1[0], place1[1], place1[2]);
-        gather_columns<kPlaceStride>(place_column, batch_second, n, place2[0], place2[1], place2[2]);
+      gather_columns<kPlaceStride, kLanes>(place_column, batch_first, n, place1[0], place1[1], place1[2], radius1);
+      gather_columns<kPlaceStride, kLanes>(place_column, batch_second, n, place2[0], place2[1], place2[2], radius2);
+      if constexpr (!kHot) {
         for (int i = 0; i < n; ++i) {
-          radius1[i] = radius_column[kRadiusStride * batch_first[i]];
-          radius2[i] = radius_column[kRadiusStride * batch_second[i]];
+          radius1[i] = radius[batch_first[i]];
+          radius2[i] = radius[batch_second[i]];
         }
       }
       for (int i = 0; i < n; ++i) {
@@ -345,13 +343,9 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
     }
     // Gather what the law needs of each packed row's two particles.
     if constexpr (Dim == 3) {
-      if constexpr (kHot) {  // a record's velocity and mass side by side
-        gather_columns<kMotionStride>(velocity_column, first_of, count, v1[0], v1[1], v1[2], mx);
-        gather_columns<kMotionStride>(velocity_column, second_of, count, v2[0], v2[1], v2[2], my);
-      } else {
-        gather_columns<kMotionStride>(velocity_column, first_of, count, v1[0], v1[1], v1[2]);
-        gather_columns<kMotionStride>(velocity_column, second_of, count, v2[0], v2[1], v2[2]);
-      }
+      // (Without the copies the masses are read below.)
+      gather_columns<kMotionStride, kLanes>(velocity_column, first_of, count, v1[0], v1[1], v1[2], mx);
+      gather_columns<kMotionStride, kLanes>(velocity_column, second_of, count, v2[0], v2[1], v2[2], my);
       gather_columns<kMotionStride>(spin_column, first_of, count, w1[0], w1[1], w1[2]);
       gather_columns<kMotionStride>(spin_column, second_of, count, w2[0], w2[1], w2[2]);
       gather_columns<3>(row_shear->data(), row, count, shear[0], shear[1], shear[2]);
