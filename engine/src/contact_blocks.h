@@ -53,10 +53,40 @@ struct alignas(64) HotMotion {
 
 // Slots [begin, end) of the particles into the side-by-side copies: by the
 // force pass, or by the law of motion while each particle's new values
-// are still in the core's cache (motion.cpp, motion_plain.h).
-template <int Dim>
+// are still in the core's cache (motion.cpp, motion_plain.h). In 3D with
+// AVX each record is written whole, four lanes at a time. kStream (the law
+// of motion on large beds): with streaming stores, which go to memory
+// without first reading in the lines they fill, where a plain store reads
+// each line it writes (96 bytes a particle more); the pass fetches the
+// records ahead when it needs them (contact_batch.h). Call
+// finish_streaming before another thread reads them.
+template <bool kStream = false, int Dim>
 void copy_hot_particles(const Particles<Dim>& p, HotPlace<Dim>* place, HotMotion<Dim>* motion, std::int64_t begin,
                         std::int64_t end) {
+#if defined(__AVX__)
+  if constexpr (Dim == 3) {
+    static_assert(sizeof(HotPlace<3>) == 32 && offsetof(HotPlace<3>, radius) == 24);
+    static_assert(sizeof(HotMotion<3>) == 64 && offsetof(HotMotion<3>, mass) == 24 &&
+                  offsetof(HotMotion<3>, angular_velocity) == 32);
+    const auto put = [](double* to, __m256d value) {
+      if constexpr (kStream) {
+        _mm256_stream_pd(to, value);
+      } else {
+        _mm256_store_pd(to, value);
+      }
+    };
+    for (std::int64_t i = begin; i < end; ++i) {
+      const Vec3& x = p.position[i];
+      const Vec3& v = p.velocity[i];
+      const Vec3& w = p.angular_velocity[i];
+      double* record = reinterpret_cast<double*>(&motion[i]);
+      put(reinterpret_cast<double*>(&place[i]), _mm256_setr_pd(x[0], x[1], x[2], p.radius[i]));
+      put(record, _mm256_setr_pd(v[0], v[1], v[2], p.mass[i]));
+      put(record + 4, _mm256_setr_pd(w[0], w[1], w[2], 0.0));
+    }
+    return;
+  }
+#endif
   for (std::int64_t i = begin; i < end; ++i) {
     place[i].position = p.position[i];
     place[i].radius = p.radius[i];
@@ -64,35 +94,6 @@ void copy_hot_particles(const Particles<Dim>& p, HotPlace<Dim>* place, HotMotion
     motion[i].mass = p.mass[i];
     motion[i].angular_velocity = p.angular_velocity[i];
   }
-}
-
-// The same for the law of motion on large beds, in 3D written with
-// streaming stores: they go to memory without first reading in the lines
-// they fill, where a plain store reads each line it writes (96 bytes a
-// particle more). The pass fetches the records ahead when it needs them
-// (contact_batch.h). Call finish_streaming before another thread reads
-// them.
-template <int Dim>
-void stream_hot_particles(const Particles<Dim>& p, HotPlace<Dim>* place, HotMotion<Dim>* motion, std::int64_t begin,
-                          std::int64_t end) {
-#if defined(__AVX__)
-  if constexpr (Dim == 3) {
-    static_assert(sizeof(HotPlace<3>) == 32 && offsetof(HotPlace<3>, radius) == 24);
-    static_assert(sizeof(HotMotion<3>) == 64 && offsetof(HotMotion<3>, mass) == 24 &&
-                  offsetof(HotMotion<3>, angular_velocity) == 32);
-    for (std::int64_t i = begin; i < end; ++i) {
-      const Vec3& x = p.position[i];
-      const Vec3& v = p.velocity[i];
-      const Vec3& w = p.angular_velocity[i];
-      double* record = reinterpret_cast<double*>(&motion[i]);
-      _mm256_stream_pd(reinterpret_cast<double*>(&place[i]), _mm256_setr_pd(x[0], x[1], x[2], p.radius[i]));
-      _mm256_stream_pd(record, _mm256_setr_pd(v[0], v[1], v[2], p.mass[i]));
-      _mm256_stream_pd(record + 4, _mm256_setr_pd(w[0], w[1], w[2], 0.0));
-    }
-    return;
-  }
-#endif
-  copy_hot_particles(p, place, motion, begin, end);
 }
 
 // Orders the streaming stores before whatever follows (another thread's

@@ -199,7 +199,7 @@ void move_plain_block(Particles<Dim>& p, const Vec<Dim>& gravity, const Periodic
     // the caches until the pass reads them.
     if (hot_place != nullptr) {
       if (stream) {
-        stream_hot_particles(p, hot_place, hot_motion, c0, c0 + n);
+        copy_hot_particles<true>(p, hot_place, hot_motion, c0, c0 + n);
       } else {
         copy_hot_particles(p, hot_place, hot_motion, c0, c0 + n);
       }
