@@ -253,8 +253,8 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
       int i = 0;
 #if defined(__AVX512F__) && defined(__AVX512VL__)
       // Eight rows at a time, the touching rows' columns packed by compress
-      // instructions: the same bits as the loop below, in a tenth of its
-      // instructions.
+      // instructions: the same bits as the loop below, which copies each
+      // number of each row on its own (docs/PERFORMANCE.md, item 26).
       for (; i + 8 <= n; i += 8) {
         const __mmask8 touch = _mm512_cmp_pd_mask(_mm512_load_pd(batch_touch + i), _mm512_setzero_pd(), _CMP_NEQ_OQ);
         unsigned touched = 0;  // the rows that touched at the last pass, a bit each
