@@ -273,8 +273,9 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
         pack(batch_distance2, distance2);
         pack(radius1, rx);
         pack(radius2, ry);
-        _mm512_storeu_pd(was_touching + count,
-                         _mm512_maskz_compress_pd(touch, _mm512_maskz_mov_pd(touched, _mm512_set1_pd(1.0))));
+        _mm512_storeu_pd(
+            was_touching + count,
+            _mm512_maskz_compress_pd(touch, _mm512_maskz_mov_pd(static_cast<__mmask8>(touched), _mm512_set1_pd(1.0))));
         pack_slots(batch_row, row, touch, count);
         pack_slots(batch_first, first_of, touch, count);
         pack_slots(batch_second, second_of, touch, count);
@@ -330,10 +331,12 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
         row[count] = r;
         first_of[count] = x;
         second_of[count] = y;
+        const bool touched = (row_flags[r] & kTouching) != 0;
+        was_touching[count] = touched ? 1.0 : 0.0;
         const bool touch = d2 < reach * reach;
         // Whether a row touches follows no pattern: no branch on it, only on
         // the rare row that has just stopped touching.
-        if ((row_flags[r] & kTouching) & !touch) separate(rows, r);
+        if (touched & !touch) separate(rows, r);
         count += touch;
         if (sort_out) {  // (kept <= k: the list is rewritten behind the reading)
           near[kept] = r;
@@ -369,7 +372,6 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
         shear[0][j] = row_shear[r];
       }
       if constexpr (Law::kNormalHistory) normal_force[j] = row_normal_force[r];
-      if constexpr (Dim == 2) was_touching[j] = (row_flags[r] & kTouching) != 0 ? 1.0 : 0.0;
     }
     // 2. The contact law on the packed rows (Cundall & Strack eqs. 9-19).
     for (int j = 0; j < count; ++j) {
