@@ -5,7 +5,7 @@
 //   dem_validate restitution --out DIR      (Miyata et al. 2002, eq. 17)
 //   dem_validate mindlin-loading --out DIR  (Randall 1989, 5.2)
 //   dem_validate box-settle --out DIR       (3D settling: weight on the floor, energy budget)
-//   dem_validate verification --case FILE --out DIR          (Cundall & Strack 1979, Tables 1-3: stages A and B)
+//   dem_validate verification --out DIR [--seeds S,...]      (Cundall & Strack 1979, Tables 1-3: stages A and B)
 //   dem_validate randall-compression --case FILE --out DIR   (Randall 1989, 6.4.3: 100 kPa)
 //   dem_validate randall-shear --case FILE --out DIR         (Randall 1989, 6.5.2: constant-volume shear)
 //   dem_validate hopper --case FILE --out DIR [--runs 45:10,30:10,...]  (Randall 1989, 6.2: discharge rates)
@@ -16,9 +16,11 @@
 //                                           (Miyata et al. 2002, 3.2-3.3: plate loading, Figs. 26-37)
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -47,6 +49,12 @@ void report_nine_disc(const dem::validation::CompressionReport& c, const dem::va
               100.0 * (c.undamped_mean / feq - 1.0), c.undamped_amplitude / feq);
   std::printf("  loading speed 0.12 vs 0.04: amplitude %.4f vs %.4f F_eq (Fig. 7)\n", c.undamped_amplitude / feq,
               c.slow_amplitude / feq);
+  const dem::validation::Fig7Curves& b = c.fig7b;
+  std::printf(
+      "  Fig. 7(b), k = 1.5e8, loading speed 0.36 vs 0.12: mean %.6e vs %.6e (%+.3f%%, %+.3f%% of F_eq), amplitude "
+      "%.4f vs %.4f F_eq, mean periods %.2f and %.2f cycles\n",
+      b.fast_mean, b.slow_mean, 100.0 * (b.fast_mean / feq - 1.0), 100.0 * (b.slow_mean / feq - 1.0),
+      b.fast_amplitude / feq, b.slow_amplitude / feq, b.fast_period, b.slow_period);
   std::printf(
       "  undamped: the slow run against the fast one superposed (linearity): largest difference %.2e F_eq; "
       "mean periods %.2f and %.2f cycles; amplitude over the first and second half of the hold %.4f, %.4f\n",
@@ -101,11 +109,16 @@ int main(int argc, char** argv) {
   }
   box->add_option("--cases", cases, "directory holding cases/validation")->check(CLI::ExistingDirectory);
   std::filesystem::path verification_case;
+  std::vector<std::uint64_t> verification_seeds;
   auto* verification = app.add_subcommand(
       "verification", "Cundall & Strack (1979) verification assembly, Tables 1-3: stages A and B (cases/ball)");
-  verification->add_option("--case", verification_case, "a cases/ball/verification_assembly*.case.txtpb file")
-      ->required()
+  verification
+      ->add_option("--case", verification_case,
+                   "one cases/ball/verification_assembly*.case.txtpb file alone (default: Tables 1-3)")
       ->check(CLI::ExistingFile);
+  verification->add_option("--cases", cases, "directory holding the cases/ball case files")
+      ->check(CLI::ExistingDirectory);
+  verification->add_option("--seeds", verification_seeds, "packing seeds (default: the cases' own)")->delimiter(',');
   verification->add_option("--out", out, "directory for verification.csv (stages A and B, wall by wall)")->required();
   std::filesystem::path randall_case;
   auto* randall_compression = app.add_subcommand(
@@ -183,10 +196,29 @@ int main(int argc, char** argv) {
     if (*rolling_to_rest) verdict = dem::validation::report_rolling_to_rest(out);
     if (*repose) verdict = dem::validation::report_angle_of_repose(out, rolling_frictions);
     if (*verification) {
-      const dem::validation::VerificationRun run = dem::validation::run_verification(verification_case);
-      dem::validation::print_verification(stdout, run);
-      dem::validation::write_verification_csv(out, run);
-      verdict = dem::validation::judge_verification(run);
+      std::vector<dem::validation::VerificationRun> runs;
+      if (!verification_case.empty()) {
+        const std::vector<std::uint64_t> seeds =
+            verification_seeds.empty() ? std::vector<std::uint64_t>{0} : verification_seeds;
+        for (const std::uint64_t seed : seeds) {
+          runs.push_back(dem::validation::run_verification(
+              verification_case, verification_seeds.empty() ? std::nullopt : std::optional<std::uint64_t>(seed)));
+          dem::validation::print_verification(stdout, runs.back());
+          verdict.add(dem::validation::judge_verification(runs.back()));
+        }
+      } else {
+        const auto packings = dem::validation::run_verification_tables(cases / "ball", verification_seeds);
+        for (const auto& p : packings) {
+          for (const auto& run : p.tables) {
+            dem::validation::print_verification(stdout, run);
+            verdict.add(dem::validation::judge_verification(run));
+            runs.push_back(run);
+          }
+        }
+        dem::validation::print_verification_tables(stdout, packings);
+        verdict.add(dem::validation::judge_verification_tables(packings));
+      }
+      dem::validation::write_verification_csv(out, runs);
     }
     if (*miyata) {
       const dem::validation::MiyataRun run = dem::validation::run_miyata_compression(miyata_case, out);
