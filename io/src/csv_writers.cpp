@@ -127,7 +127,8 @@ AssemblyCsv::AssemblyCsv(const std::filesystem::path& directory, const TableSize
     : file_(
           directory, "assembly.csv",
           "cycle,time,kinetic_energy,out_of_balance,max_contact_force,contacts,sliding_contacts,time_step_ratio,"
-          "gravity_work,wall_work,strain_energy,contact_damping,friction,global_damping,local_damping,energy_residual",
+          "elastic_energy,kinetic_to_elastic,unbalanced_force,sliding_fraction,mean_stress,deformation_rate,"
+          "inertial_number,gravity_work,wall_work,strain_energy,contact_damping,friction,global_damping,local_damping,energy_residual",
           resume) {}
 
 template <int Dim>
@@ -137,6 +138,9 @@ AssemblyMeasures AssemblyCsv::write(const BasicWorld<Dim>& world) {
   if (world.energy_budget()) {
     file_.write_row(world.cycle_count(), world.time(), measures.kinetic_energy, measures.out_of_balance,
                     measures.max_contact_force, measures.contacts, measures.sliding_contacts, measures.time_step_ratio,
+                    measures.elastic_energy, measures.kinetic_to_elastic, measures.unbalanced_force,
+                    measures.sliding_fraction, measures.mean_stress, measures.deformation_rate,
+                    measures.inertial_number,
                     e.gravity_work, e.wall_work, e.strain, e.contact_damping, e.friction, e.global_damping,
                     e.local_damping, e.residual());
   } else {
@@ -145,6 +149,9 @@ AssemblyMeasures AssemblyCsv::write(const BasicWorld<Dim>& world) {
     const std::string_view none;
     file_.write_row(world.cycle_count(), world.time(), measures.kinetic_energy, measures.out_of_balance,
                     measures.max_contact_force, measures.contacts, measures.sliding_contacts, measures.time_step_ratio,
+                    measures.elastic_energy, measures.kinetic_to_elastic, measures.unbalanced_force,
+                    measures.sliding_fraction, measures.mean_stress, measures.deformation_rate,
+                    measures.inertial_number,
                     none, none, none, none, none, none, none, none);
   }
   file_.flush();
