@@ -1,11 +1,10 @@
 #include "quasi_static.h"
 
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <limits>
 #include <numbers>
-
-#include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
 
 #include "contact_forces.h"
 

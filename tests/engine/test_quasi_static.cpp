@@ -133,8 +133,8 @@ TEST(QuasiStatic, SettlingStopsOnTheRelativeMeasures) {
   const AssemblyMeasures settled = world.assembly_measures();
   std::printf("falling: KE/elastic %.3g, unbalanced %.3g, I %.3g; settled after %llu cycles: %.3g, %.3g, %.3g\n",
               falling.kinetic_to_elastic, falling.unbalanced_force, falling.inertial_number,
-              static_cast<unsigned long long>(result.cycles_run), settled.kinetic_to_elastic,
-              settled.unbalanced_force, settled.inertial_number);
+              static_cast<unsigned long long>(result.cycles_run), settled.kinetic_to_elastic, settled.unbalanced_force,
+              settled.inertial_number);
   EXPECT_GT(falling.unbalanced_force, 0.1);
   EXPECT_GT(falling.kinetic_to_elastic, 1.0);
   ASSERT_TRUE(result.condition_met);

@@ -118,11 +118,29 @@ TEST_F(CsvWriters, AssemblyRoundTripsEveryDigit) {
   assembly.write(world_);
   const auto rows = read_csv(directory_ / "assembly.csv");
   ASSERT_EQ(rows.size(), 2u);
-  EXPECT_EQ(rows[0], (Row{"cycle", "time", "kinetic_energy", "out_of_balance", "max_contact_force", "contacts",
-                          "sliding_contacts", "time_step_ratio", "elastic_energy", "kinetic_to_elastic",
-                          "unbalanced_force", "sliding_fraction", "mean_stress", "deformation_rate", "inertial_number",
-                          "gravity_work", "wall_work", "strain_energy", "contact_damping", "friction", "global_damping",
-                          "local_damping", "energy_residual"}));
+  EXPECT_EQ(rows[0], (Row{"cycle",
+                          "time",
+                          "kinetic_energy",
+                          "out_of_balance",
+                          "max_contact_force",
+                          "contacts",
+                          "sliding_contacts",
+                          "time_step_ratio",
+                          "elastic_energy",
+                          "kinetic_to_elastic",
+                          "unbalanced_force",
+                          "sliding_fraction",
+                          "mean_stress",
+                          "deformation_rate",
+                          "inertial_number",
+                          "gravity_work",
+                          "wall_work",
+                          "strain_energy",
+                          "contact_damping",
+                          "friction",
+                          "global_damping",
+                          "local_damping",
+                          "energy_residual"}));
   const AssemblyMeasures measures = world_.assembly_measures();
   EXPECT_EQ(number(rows[1][1]), world_.time());
   EXPECT_EQ(number(rows[1][2]), measures.kinetic_energy);
