@@ -7,7 +7,6 @@
 #include <fstream>
 #include <numbers>
 #include <numeric>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -48,19 +47,6 @@ WorldDef row_of_discs() {
   def.fixed_time_step = 1e-4;
   def.threads = 1;
   return def;
-}
-
-// A CSV file's rows, split at commas (the tables here quote nothing).
-std::vector<std::vector<std::string>> table(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::vector<std::vector<std::string>> rows;
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> row;
-    std::istringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, ',');) row.push_back(cell);
-    rows.push_back(row);
-  }
-  return rows;
 }
 
 dem::analysis::CompressionSettings settings() {
@@ -342,8 +328,8 @@ TEST(CompressionAnalysis, WritesTheWholeAssemblyAtTheContactSnapshots) {
     load.cycles = 1700;
     run_stage(world, load, 10, [&](const World& w) { return record_compression(analysis, csv, w, 1), true; });
   }
-  const auto particles = table(directory / "particles_at_stress.csv");
-  const auto contacts = table(directory / "contacts_at_stress.csv");
+  const auto particles = test::read_csv(directory / "particles_at_stress.csv");
+  const auto contacts = test::read_csv(directory / "contacts_at_stress.csv");
   ASSERT_EQ(particles[0].size(), 4u + 12);
   EXPECT_EQ(particles[0][0] + "," + particles[0][1] + "," + particles[0][2] + "," + particles[0][3] + "," +
                 particles[0][4] + "," + particles[0][11] + "," + particles[0][15],
@@ -440,7 +426,7 @@ TEST(CompressionAnalysis3d, EllipsoidsUnderAPlate) {
   // The whole assembly at both: four ellipsoids with their quaternions and
   // semi-axes, and their contacts (none between them, four on each plate at
   // 500 Pa).
-  const auto particles = table(directory / "particles_at_stress.csv");
+  const auto particles = test::read_csv(directory / "particles_at_stress.csv");
   ASSERT_EQ(particles.size(), 1u + 2 * 4);
   ASSERT_EQ(particles[0].size(), 4u + 19);  // the snapshot's four, then particles.csv's
   EXPECT_EQ(particles[0][0] + "," + particles[0][3] + "," + particles[0][4] + "," + particles[0][15],
@@ -449,7 +435,7 @@ TEST(CompressionAnalysis3d, EllipsoidsUnderAPlate) {
   EXPECT_EQ(particles.back()[1], "500");
   EXPECT_EQ(std::stoull(particles.back()[2]), analysis.snapshots()[1].sample.cycle);
   EXPECT_EQ(particles.back()[20] + "," + particles.back()[21] + "," + particles.back()[22], "0.1,0.07,0.05");
-  const auto contacts = table(directory / "contacts_at_stress.csv");
+  const auto contacts = test::read_csv(directory / "contacts_at_stress.csv");
   int on_top = 0;
   for (std::size_t r = 1; r < contacts.size(); ++r) {
     EXPECT_EQ(contacts[r][5], "wall");

@@ -136,36 +136,44 @@ def _draw_quasi_static(axes, compression, measures):
         ax.legend(fontsize="x-small", loc="upper right")
 
 
-def plot_contact_ratio(run, *, png=None):
-    """Fig. 29: the loading plate's contacts over the bottom plate's."""
+def _against_stress(run):
+    """A figure against the loading plate's stress with the states shaded:
+    (figure, axes, compression.csv, the states)."""
     compression = run.table("compression.csv")
     states = run.states()
     figure = new_figure((7.5, 5))
     ax = figure.add_subplot()
     _shade_states(ax, states, compression, lambda rows: rows["stress"] / 1e3)
+    return figure, ax, compression, states
+
+
+def _label_against_stress(ax, run, number, title, ylabel, legend):
+    ax.set_xlabel("vertical stress on the loading plate, kPa")
+    ax.set_ylabel(ylabel)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize="small", loc=legend)
+    ax.set_title(seed_title(number, title, run), fontsize="medium")
+
+
+def plot_contact_ratio(run, *, png=None):
+    """Fig. 29: the loading plate's contacts over the bottom plate's."""
+    figure, ax, compression, _ = _against_stress(run)
     touching = compression["bottom_contacts"] > 0
     ax.plot(compression["stress"][touching] / 1e3, compression["contact_ratio"][touching], color="black",
             linewidth=1.2, label="loading / bottom plate contacts")
-    ax.set_xlabel("vertical stress on the loading plate, kPa")
-    ax.set_ylabel("normalised contact points on the loading plate")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize="small", loc="lower right")
-    ax.set_title(seed_title(29, "normalised contact points on the loading plate", run), fontsize="medium")
+    _label_against_stress(ax, run, 29, "normalised contact points on the loading plate",
+                          "normalised contact points on the loading plate", "lower right")
     return finish(figure, png)
 
 
 def plot_plate_contacts(run, *, png=None):
     """Fig. 33: the contacts on both plates against the stress, and each
     state's least-squares rate (compression_states.csv's contact_rate)."""
-    compression = run.table("compression.csv")
-    states = run.states()
     try:
         loading, bottom = run.plate_names()
     except MissingInput:  # compression.csv does not name them
         loading, bottom = "loading plate", "bottom plate"
-    figure = new_figure((7.5, 5))
-    ax = figure.add_subplot()
-    _shade_states(ax, states, compression, lambda rows: rows["stress"] / 1e3)
+    figure, ax, compression, states = _against_stress(run)
     stress = compression["stress"] / 1e3
     ax.plot(stress, compression["loading_contacts"], color="black", linewidth=1.2, label=f"{loading} (loading)")
     ax.plot(stress, compression["bottom_contacts"], color="0.5", linewidth=1.2, label=f"{bottom} (bottom)")
@@ -177,11 +185,8 @@ def plot_plate_contacts(run, *, png=None):
         line = rows["loading_contacts"].mean() + rate * (s - s.mean())
         ax.plot(s / 1e3, line, "--", color=STATE_COLOURS[name], linewidth=1.5,
                 label=f"{name}: {1e5 * rate:.2g} contacts per 100 kPa")
-    ax.set_xlabel("vertical stress on the loading plate, kPa")
-    ax.set_ylabel("contact points")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize="small", loc="center right")
-    ax.set_title(seed_title(33, "evolution of the number of contact points", run), fontsize="medium")
+    _label_against_stress(ax, run, 33, "evolution of the number of contact points", "contact points",
+                          "center right")
     return finish(figure, png)
 
 
