@@ -92,9 +92,9 @@ def plot_bending_moment(run, *, trials=10000, seed=2002, png=None):
         estimates = {name: monte_carlo_ratios(snapshots, span, width, density=name, trials=trials, seed=seed)
                      for name in ("measured", "q-model", "mueth", "equal")}
         drawn = np.concatenate([estimates[name] for name in ("measured", "q-model", "mueth")])
-        low = 0.95 * min(1.0, np.percentile(drawn, 0.5), measured.min())
-        high = 1.05 * max(np.percentile(drawn, 99.5), measured.max())
-        bins = np.linspace(low, high, 60)
+        left = 0.95 * min(1.0, np.percentile(drawn, 0.5), measured.min())
+        right = 1.05 * max(np.percentile(drawn, 99.5), measured.max())
+        bins = np.linspace(left, right, 60)
         ax.hist(estimates["measured"], bins=bins, density=True, color="tab:blue", alpha=0.5,
                 label=f"measured P(f): mean {estimates['measured'].mean():.2f}, "
                       f"95 % below {np.percentile(estimates['measured'], 95):.2f}")
@@ -109,7 +109,7 @@ def plot_bending_moment(run, *, trials=10000, seed=2002, png=None):
             ax.axvline(value, color="tab:red", linewidth=1.2, alpha=0.8)
         ax.plot([], [], color="tab:red", label=f"the {measured.size} measured snapshots: mean {measured.mean():.2f}")
         ax.axvline(1.0, color="black", linestyle="--", linewidth=1.2, label="uniform reaction (design code): 1")
-        ax.set_xlim(low, high)
+        ax.set_xlim(left, right)
         ax.set_xlabel("largest bending moment M_max / (q L²/8)")
         ax.set_ylabel("probability density")
         ax.grid(True, alpha=0.3)
