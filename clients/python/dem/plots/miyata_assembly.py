@@ -55,6 +55,10 @@ class Assembly:
             self.rotations = np.column_stack([p[f"rotation_{c}"] for c in "wxyz"])
             self.shapes = np.column_stack([p["a1"], p["a2"], p["a3"]])
         self.contacts = select(contacts, contacts["snapshot"] == self.index)
+        try:
+            self.plates = run.plate_names()
+        except MissingInput:  # every wall a contact names
+            self.plates = None
 
     def thickness(self):
         """The particles' mean smallest semi-axis (a disc's radius), m: it
@@ -99,12 +103,13 @@ class Assembly:
         return array
 
     def plate_levels(self):
-        """{plate name: its height}, from the contact points on it."""
+        """{plate name: its height}, from the contact points on it (the
+        loading and bottom plates only, when the run names them)."""
         c = self.contacts
         vertical = "y" if self.dimension == 2 else "z"
         walls = c["second_kind"] == "wall"
-        return {str(name): float(np.mean(c[vertical][walls & (c["second"] == name)]))
-                for name in dict.fromkeys(c["second"][walls])}
+        names = [str(n) for n in dict.fromkeys(c["second"][walls]) if self.plates is None or n in self.plates]
+        return {name: float(np.mean(c[vertical][walls & (c["second"] == name)])) for name in names}
 
 
 def assembly_snapshots(run):
@@ -246,9 +251,8 @@ def plot_force_networks(run, *, slab=None, png=None):
     figure, axes = _panel_axes(assemblies, slab)
     for ax, assembly in zip(axes, assemblies):
         axes_drawn, inside, view = _view(assembly, slab)
-        ax.add_collection(PatchCollection(_outlines(assembly, drawing_order(assembly, inside), axes_drawn),
-                                          facecolor="none",
-                                          edgecolor="0.6", linewidth=0.5))
+        outlines = _outlines(assembly, drawing_order(assembly, inside), axes_drawn)
+        ax.add_collection(PatchCollection(outlines, facecolor="none", edgecolor="0.6", linewidth=0.5))
         contacts = assembly.contact_array()
         if view is not None and contacts.size:
             contacts = contacts[np.abs(contacts["point"][:, 1] - view[0]) <= view[1]]
