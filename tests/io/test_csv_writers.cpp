@@ -19,21 +19,8 @@ namespace {
 
 using ::testing::HasSubstr;
 
-using Row = std::vector<std::string>;
-
-// A CSV file as rows of fields; nothing these tests write needs quotes.
-std::vector<Row> read_csv(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::vector<Row> rows;
-  for (std::string line; std::getline(in, line);) {
-    Row row;
-    std::istringstream fields(line);
-    for (std::string field; std::getline(fields, field, ',');) row.push_back(field);
-    if (!line.empty() && line.back() == ',') row.emplace_back();  // getline drops a last empty field
-    rows.push_back(row);
-  }
-  return rows;
-}
+using test::read_csv;
+using test::Row;
 
 double number(const std::string& field) {
   double value = 0;
