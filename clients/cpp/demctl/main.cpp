@@ -239,6 +239,9 @@ int main(int argc, char** argv) {
   } catch (const std::invalid_argument& error) {
     std::cerr << "demctl: " << error.what() << '\n';
     return demctl::kBadArguments;
+  } catch (const dem::client::LocalFileError& error) {
+    std::cerr << "demctl: " << error.what() << '\n';
+    return demctl::kBadArguments;
   } catch (const dem::client::NoSuchServer& error) {
     std::cerr << "demctl: " << error.what() << '\n';
     return demctl::kNoSuchServer;

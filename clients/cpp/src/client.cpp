@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <atomic>
-#include <fstream>
 #include <iterator>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
+#include "dem/client/local_file.h"
 #include "dem/dds/discovery.h"
 #include "dem/protocol/qos.h"
 #include "dem/protocol/topics.h"
@@ -100,7 +100,7 @@ void Client::connect() {
   const std::string where = "server \"" + options_.server + "\" on DDS domain " + std::to_string(options_.domain);
   // The server's durable status says it is there.
   const auto status = wait_for_status([](const protocol::Status&) { return true; }, remaining());
-  if (!status) throw NoSuchServer("no " + where + " within " + seconds(options_.timeout));
+  if (!status) throw NoSuchServer("no " + where + " within " + seconds(options_.timeout) + "; " + others_seen());
   if (status->state == protocol::ServerState::kShutdown) throw NoSuchServer(where + " is shutting down");
   // One round trip: the server has then matched this client both ways, so
   // no later command or reply is lost to discovery. A ping sent before the
@@ -119,6 +119,17 @@ void Client::connect() {
     }
   }
   throw NoSuchServer(where + " was found but did not answer within " + seconds(options_.timeout));
+}
+
+// What this participant has discovered meanwhile, for a name given wrong
+// or not at all: the servers it can see on the domain, by name.
+std::string Client::others_seen() const {
+  const std::set<std::string> names = server_names(dds::PublicationMonitor(participant_).alive());
+  const std::string domain = "DDS domain " + std::to_string(options_.domain);
+  if (names.empty()) return "no server is on " + domain + " (another --domain, or not started yet?)";
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+  return "servers on " + domain + ": " + list + " (name one with --server NAME or $DEM_SERVER)";
 }
 
 // --- receiving -----------------------------------------------------------
@@ -242,10 +253,7 @@ bool Client::server_alive() const { return status_reader_.matched_writers() > 0;
 // --- one call per command --------------------------------------------------
 
 protocol::Reply Client::load_case_file(const std::filesystem::path& local_file) {
-  std::ifstream in(local_file, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + local_file.string());
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return load_case_text(std::move(text), local_file.string());
+  return load_case_text(read_local_file(local_file), local_file.string());
 }
 
 protocol::Reply Client::load_case_text(std::string text, std::string source_name) {

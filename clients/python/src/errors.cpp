@@ -38,6 +38,8 @@ void bind_errors(py::module_&) {
                                           kind ? std::string(protocol::to_string(*kind)) : "unknown", py::cast(reply)));
     } catch (const client::NoSuchServer& error) {
       raise("NoSuchServer", py::make_tuple(error.what()));
+    } catch (const client::LocalFileError& error) {
+      PyErr_SetString(PyExc_OSError, error.what());
     } catch (const client::ReplyTimeout& error) {
       raise("ReplyTimeout", py::make_tuple(error.what()));
     } catch (const dds::DdsError& error) {

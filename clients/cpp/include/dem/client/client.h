@@ -112,6 +112,7 @@ class Client {
   void take_replies();
   void take_status();
   void connect();
+  std::string others_seen() const;  // the servers discovery found, for a NoSuchServer
 
   ConnectOptions options_;
   dds::Participant participant_;

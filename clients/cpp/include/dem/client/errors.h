@@ -21,6 +21,13 @@ class ReplyTimeout : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A file on this machine that a command was to send could not be read
+// (missing, a directory, no permission); what() names it and why.
+class LocalFileError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // The server answered with an error status; what() is its message.
 class ServerError : public std::runtime_error {
  public:
