@@ -15,9 +15,16 @@ case's stages run through the service (dem.programme); the seeds' figures
         contacts = press.contacts(wall="top")
 """
 
-from . import _build_info, cases, errors
-from ._client import (CONTACT_DTYPE, ContactStats, PlateForces, RegionMeasures, RegionTelemetry, Reply, Status,
-                      WallForce)
+from . import _build_info
+
+try:
+    from . import cases, errors
+    from ._client import (CONTACT_DTYPE, ContactStats, PlateForces, RegionMeasures, RegionTelemetry, Reply, Status,
+                          WallForce)
+except ModuleNotFoundError as missing:
+    from ._interpreter import dependency_hint
+
+    raise ImportError(dependency_hint(missing)) from missing
 from .client import Client, list_servers
 from .errors import (CaseFileError, DdsError, DemError, NoSuchServer, ProgrammeError, ReplyTimeout,
                      ServerError)
