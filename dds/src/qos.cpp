@@ -59,6 +59,11 @@ Qos& Qos::transient_local(std::int32_t late_joiner_depth) {
                               DDS_LENGTH_UNLIMITED, DDS_LENGTH_UNLIMITED);
   return *this;
 }
+Qos& Qos::user_data(std::string_view data) {
+  dds_qset_userdata(qos_, data.data(), data.size());
+  return *this;
+}
+
 Qos& Qos::resource_limits(std::int32_t max_samples, std::int32_t max_instances, std::int32_t max_samples_per_instance) {
   dds_qset_resource_limits(qos_, max_samples, max_instances, max_samples_per_instance);
   return *this;

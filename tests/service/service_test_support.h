@@ -22,7 +22,8 @@ using namespace std::chrono_literals;
 
 // One domain id per test, distinct across the whole suite by construction.
 // The shell tests (CMakeLists.txt) use 118 and 119; the container test
-// (tests/container) 150 to 153; the Python tests (tests/python) 160 to 179.
+// (tests/container) 150 to 153, the one from source 154 to 157; the Python
+// tests (tests/python) 160 to 179.
 enum Domain : std::uint32_t {
   kDdsTypedRoundTrip = 40,
   kDdsWaitSet,

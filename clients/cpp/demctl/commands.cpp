@@ -199,6 +199,9 @@ dem::client::ConnectOptions connect_options(const Global& global) {
   options.dds_config = global.dds_config;
   options.timeout = milliseconds(global.timeout);
   options.reply_timeout = std::max(milliseconds(global.timeout), std::chrono::milliseconds(60s));
+  // A server whose interface is an older form, or whose telemetry this
+  // demctl cannot read, is said on stderr (commands work: it answered).
+  options.on_interface_note = [](const std::string& note) { std::cerr << "demctl: note: " << note << '\n'; };
   return options;
 }
 

@@ -26,8 +26,8 @@ except ModuleNotFoundError as missing:
 
     raise ImportError(dependency_hint(missing)) from missing
 from .client import Client, list_servers
-from .errors import (CaseFileError, DdsError, DemError, NoSuchServer, ProgrammeError, ReplyTimeout,
-                     ServerError)
+from .errors import (CaseFileError, DdsError, DemError, InterfaceMismatch, NoSuchServer, ProgrammeError,
+                     ReplyTimeout, ServerError)
 from .paths import use_loopback
 from .programme import run_programme
 from .server_process import ServerProcess
@@ -43,6 +43,7 @@ __all__ = [
     "ContactStats",
     "DdsError",
     "DemError",
+    "InterfaceMismatch",
     "NoSuchServer",
     "PlateForces",
     "ProgrammeError",

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <string_view>
 
 namespace dem::dds {
 
@@ -34,6 +35,9 @@ class Qos {
   // unless said: this sets both.
   Qos& transient_local(std::int32_t late_joiner_depth = 1);
   Qos& resource_limits(std::int32_t max_samples, std::int32_t max_instances, std::int32_t max_samples_per_instance);
+  // USER_DATA: bytes discovery hands to every peer with the endpoint (ROS 2
+  // puts its type hash there, "typehash=RIHS01_...;").
+  Qos& user_data(std::string_view data);
 
   const dds_qos_t* get() const { return qos_; }
 
