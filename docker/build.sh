@@ -25,7 +25,10 @@ tags=(--tag "${DEM_IMAGE:-dem:$version}")
 format=()
 [ "$engine" = podman ] && format=(--format docker)
 context="$root"
-package=()
+# Named even when it is the Dockerfile's default: buildah (podman 4.3) skips
+# the stages it finds unused before it applies an ARG's default, and then
+# takes `FROM ${DEM_PACKAGE}` for an image of that name.
+package=(--build-arg DEM_PACKAGE=build)
 if [ "${1:-}" = --deb ]; then
   deb="$(realpath "$2")"
   shift 2
