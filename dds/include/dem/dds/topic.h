@@ -56,7 +56,7 @@ class Writer {
  public:
   Writer(const Participant& participant, const Topic<T>& topic, const Qos& qos)
       : topic_name_(topic.name()),
-        entity_(check(dds_create_writer(participant.handle(), topic.handle(), qos.get(), nullptr),
+        entity_(check(dds_create_writer(participant.handle(), topic.handle(), endpoint_qos<T>(qos).get(), nullptr),
                       "creating a writer for " + topic_name_)) {}
 
   // False when the writer's history stayed full for the QoS's max blocking
@@ -109,7 +109,7 @@ class Reader {
  public:
   Reader(const Participant& participant, const Topic<T>& topic, const Qos& qos)
       : topic_name_(topic.name()),
-        entity_(check(dds_create_reader(participant.handle(), topic.handle(), qos.get(), nullptr),
+        entity_(check(dds_create_reader(participant.handle(), topic.handle(), endpoint_qos<T>(qos).get(), nullptr),
                       "creating a reader for " + topic_name_)) {}
 
   // Removes up to `max` samples from the reader's history and returns those
