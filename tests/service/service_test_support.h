@@ -96,9 +96,18 @@ enum ReliabilityDomain : std::uint32_t {
   kLastReliabilityDomain
 };
 static_assert(kLastReliabilityDomain <= 142, "the reliability tests' domains are 127-141");
-// Two servers of one name started at the same instant: 210 and 211 (212 is
-// free; 142 to 209 belong to other tests, CMakeLists.txt).
+// Two servers of one name started at the same instant: 210 and 211 (142 to
+// 209 belong to other tests, CMakeLists.txt; the discovery probe 208).
 enum NameContestDomain : std::uint32_t { kOwnershipSimultaneousServers = 210, kOwnershipSimultaneousPrograms };
+// The reliability tests of issue 37: 212 to 219.
+enum ReliabilityRoundTwoDomain : std::uint32_t {
+  kFilesNoReadDirectory = 212,
+  kFilesHiddenContent,
+  kGuardsTypeInformation,
+  kLimitsDeepPipeline,
+  kLastRoundTwoDomain
+};
+static_assert(kLastRoundTwoDomain <= 220, "issue 37's tests take 212-219 (the Python tests 220 on)");
 
 std::filesystem::path case_file(const std::string& name);  // cases/ball/<name>.case.txtpb
 std::string read_text(const std::filesystem::path& path);
