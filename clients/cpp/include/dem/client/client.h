@@ -41,6 +41,12 @@ struct ConnectOptions {
   std::chrono::milliseconds timeout = 5s;         // to find the server
   std::chrono::milliseconds reply_timeout = 60s;  // default wait for a reply (not for cycle, which waits as asked)
   std::string client_id;                          // empty: "<host>-<pid>-<n>"
+  // Requests sent and not yet answered, at most: send() waits for a reply
+  // beyond them. The server keeps its last 256 replies for every client
+  // together (protocol/src/qos.cpp), so four clients at this bound never
+  // have a reply pushed out before it was delivered (docs/RELIABILITY.md,
+  // "No lost reply").
+  std::size_t max_outstanding = 64;
 };
 
 class Client {
@@ -58,10 +64,15 @@ class Client {
   const dds::Participant& participant() const { return participant_; }
 
   // Addresses a command (server, client id, a new request id, stamp) and
-  // sends it; returns its request id.
+  // sends it; returns its request id. With max_outstanding requests
+  // unanswered it first waits for a reply (stop and shutdown do not wait),
+  // up to reply_timeout, then throws ReplyTimeout.
   std::uint64_t send(protocol::Command command);
-  // The complete reply to a request (chunks joined); nothing on timeout.
+  // The complete reply to a request (chunks joined); nothing on timeout,
+  // when the request stops counting as unanswered.
   std::optional<protocol::Reply> await(std::uint64_t request_id, std::chrono::milliseconds timeout);
+  // Requests sent whose reply has not come (nor been given up on).
+  std::size_t outstanding() const;
   // send and await. Throws ReplyTimeout, and ServerError for any status
   // but OK (and CANCELLED when `cancelled_is_ok`).
   protocol::Reply call(protocol::Command command, std::optional<std::chrono::milliseconds> timeout = std::nullopt,
@@ -130,6 +141,7 @@ class Client {
   mutable std::condition_variable changed_;
   std::map<std::uint64_t, protocol::Reply> partial_;   // replies whose last chunk has not come
   std::map<std::uint64_t, protocol::Reply> complete_;  // replies nobody has awaited yet
+  std::set<std::uint64_t> outstanding_;                // requests sent, their reply not complete
   std::optional<protocol::Status> status_;
   std::uint64_t next_request_ = 1;
   bool stopping_ = false;
