@@ -60,7 +60,7 @@ Client::Client(ConnectOptions options)
       reply_topic_(participant_, protocol::topic_name(options_.server, TopicKind::kReply)),
       status_topic_(participant_, protocol::topic_name(options_.server, TopicKind::kStatus)),
       command_writer_(participant_, command_topic_, protocol::command_qos()),
-      reply_reader_(participant_, reply_topic_, protocol::reply_qos()),
+      reply_reader_(participant_, reply_topic_, protocol::reply_reader_qos()),
       status_reader_(participant_, status_topic_, protocol::status_qos()),
       reply_data_(reply_reader_.handle()),
       status_data_(status_reader_.handle()),
@@ -118,7 +118,12 @@ void Client::connect() {
       return std::any_of(pings.begin(), pings.end(), [&](std::uint64_t id) { return complete_.count(id) > 0; });
     });
     if (answered) {
-      for (const std::uint64_t id : pings) complete_.erase(id);
+      // The pings sent before the server's reader matched were lost: they
+      // wait for no reply.
+      for (const std::uint64_t id : pings) {
+        complete_.erase(id);
+        outstanding_.erase(id);
+      }
       lock.unlock();
       for (const protocol::PeerVerdict& verdict : judge_server(false)) {
         interface_notes_.push_back(verdict.text);
@@ -209,6 +214,7 @@ void Client::take_replies() {
       if (auto found = partial_.find(id); found != partial_.end() && found->second.last) {
         complete_[id] = std::move(found->second);
         partial_.erase(found);
+        outstanding_.erase(id);
       }
     }
   }
@@ -235,19 +241,42 @@ protocol::Command Client::command(CommandKind kind) {
 
 std::uint64_t Client::send(protocol::Command command) {
   {
-    std::lock_guard lock(mutex_);
+    std::unique_lock lock(mutex_);
+    // A bounded pipeline: the server's replies to this client never outrun
+    // what its reply history keeps for it (ConnectOptions::max_outstanding).
+    const auto kind = protocol::command_kind(command.kind);
+    const bool control = kind == CommandKind::kStop || kind == CommandKind::kShutdown;
+    if (!control && !changed_.wait_for(lock, options_.reply_timeout, [&] {
+          return outstanding_.size() < std::max<std::size_t>(options_.max_outstanding, 1);
+        })) {
+      throw ReplyTimeout(std::to_string(outstanding_.size()) + " requests to server \"" + options_.server +
+                         "\" still unanswered after " + seconds(options_.reply_timeout) +
+                         " (at most " + std::to_string(options_.max_outstanding) + " may be outstanding)");
+    }
     command.request_id = next_request_++;
+    outstanding_.insert(command.request_id);
   }
   command.server = options_.server;
   command.client_id = options_.client_id;
   command.stamp = protocol::now_stamp();
-  command_writer_.write(command);
+  try {
+    command_writer_.write(command);
+  } catch (...) {
+    std::lock_guard lock(mutex_);
+    outstanding_.erase(command.request_id);
+    changed_.notify_all();
+    throw;
+  }
   return command.request_id;
 }
 
 std::optional<protocol::Reply> Client::await(std::uint64_t request_id, std::chrono::milliseconds timeout) {
   std::unique_lock lock(mutex_);
-  if (!changed_.wait_for(lock, timeout, [&] { return complete_.count(request_id) > 0; })) return std::nullopt;
+  if (!changed_.wait_for(lock, timeout, [&] { return complete_.count(request_id) > 0; })) {
+    outstanding_.erase(request_id);  // given up on: it no longer holds a place
+    changed_.notify_all();
+    return std::nullopt;
+  }
   protocol::Reply reply = std::move(complete_.at(request_id));
   complete_.erase(request_id);
   return reply;
@@ -268,6 +297,11 @@ protocol::Reply Client::call(protocol::Command command, std::optional<std::chron
     throw ServerError(std::move(*reply));
   }
   return std::move(*reply);
+}
+
+std::size_t Client::outstanding() const {
+  std::lock_guard lock(mutex_);
+  return outstanding_.size();
 }
 
 protocol::Status Client::status() const {

@@ -12,6 +12,9 @@ namespace dem::protocol {
 
 dds::Qos command_qos();
 dds::Qos reply_qos();
+// A client keeps every reply it received until its thread takes it: a
+// burst never overwrites one in the reader (docs/RELIABILITY.md).
+dds::Qos reply_reader_qos();
 dds::Qos status_qos();
 dds::Qos telemetry_writer_qos();
 // Readers keep a generous history so a monitor that falls behind for a

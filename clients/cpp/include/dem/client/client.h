@@ -44,6 +44,12 @@ struct ConnectOptions {
   std::string client_id;                          // empty: "<host>-<pid>-<n>"
   // Called at connection with each of interface_notes() (a program tells its user).
   std::function<void(const std::string&)> on_interface_note;
+  // Requests sent and not yet answered, at most: send() waits for a reply
+  // beyond them. The server keeps its last 256 replies for every client
+  // together (protocol/src/qos.cpp), so four clients at this bound never
+  // have a reply pushed out before it was delivered (docs/RELIABILITY.md,
+  // "No lost reply").
+  std::size_t max_outstanding = 64;
 };
 
 class Client {
@@ -67,10 +73,15 @@ class Client {
   const std::vector<std::string>& interface_notes() const { return interface_notes_; }
 
   // Addresses a command (server, client id, a new request id, stamp) and
-  // sends it; returns its request id.
+  // sends it; returns its request id. With max_outstanding requests
+  // unanswered it first waits for a reply (stop and shutdown do not wait),
+  // up to reply_timeout, then throws ReplyTimeout.
   std::uint64_t send(protocol::Command command);
-  // The complete reply to a request (chunks joined); nothing on timeout.
+  // The complete reply to a request (chunks joined); nothing on timeout,
+  // when the request stops counting as unanswered.
   std::optional<protocol::Reply> await(std::uint64_t request_id, std::chrono::milliseconds timeout);
+  // Requests sent whose reply has not come (nor been given up on).
+  std::size_t outstanding() const;
   // send and await. Throws ReplyTimeout, and ServerError for any status
   // but OK (and CANCELLED when `cancelled_is_ok`).
   protocol::Reply call(protocol::Command command, std::optional<std::chrono::milliseconds> timeout = std::nullopt,
@@ -145,6 +156,7 @@ class Client {
   mutable std::condition_variable changed_;
   std::map<std::uint64_t, protocol::Reply> partial_;   // replies whose last chunk has not come
   std::map<std::uint64_t, protocol::Reply> complete_;  // replies nobody has awaited yet
+  std::set<std::uint64_t> outstanding_;                // requests sent, their reply not complete
   std::optional<protocol::Status> status_;
   std::uint64_t next_request_ = 1;
   bool stopping_ = false;
