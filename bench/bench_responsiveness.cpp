@@ -12,7 +12,11 @@
 // (median, p99, max), each kind's time on the server, the engine's
 // cycles per second without and with the load, and the server's resident
 // memory every 10 s. Figures are printed, not asserted.
-//   bench_responsiveness [--seconds 60] [--baseline 15] [--rate 1000]
+// With --flood, clients B, C and D instead query the contacts on a wall as
+// fast as the client library lets them (each with its 64 requests in
+// flight, client::ConnectOptions::max_outstanding): the load of issue 37,
+// where get_state's p99 beside them was 35.7 ms.
+//   bench_responsiveness [--seconds 60] [--baseline 15] [--rate 1000] [--flood]
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -125,6 +129,9 @@ int main(int argc, char** argv) {
   app.add_option("--seconds", seconds, "how long the load lasts")->capture_default_str();
   app.add_option("--baseline", baseline, "seconds of the run without commands, first")->capture_default_str();
   app.add_option("--rate", rate, "commands a second, all clients together")->capture_default_str();
+  bool flood = false, stalled = true;
+  app.add_flag("!--no-stalled-monitor", stalled, "leave out the monitor stopped with SIGSTOP");
+  app.add_flag("--flood", flood, "clients B, C and D query contacts without pause instead of at the rate");
   CLI11_PARSE(app, argc, argv);
 
   const pid_t server = spawn({DEM_SERVER_PROGRAM, "--name", "responsive", "--domain", std::to_string(kDomain),
@@ -136,7 +143,11 @@ int main(int argc, char** argv) {
   const pid_t monitor = spawn({DEM_DEMCTL_PROGRAM, "--server", "responsive", "--domain", std::to_string(kDomain),
                                "monitor", "--csv", "/dev/null"});
   std::this_thread::sleep_for(2s);
-  ::kill(monitor, SIGSTOP);  // a subscriber that takes nothing from here on
+  if (stalled) {
+    ::kill(monitor, SIGSTOP);  // a subscriber that takes nothing from here on
+  } else {
+    ::kill(monitor, SIGKILL);
+  }
 
   dem::client::Client watcher(connect_options());
   std::printf("server pid %d; RSS %.1f MiB after loading\n", server, rss_mib(server));
@@ -207,9 +218,20 @@ int main(int argc, char** argv) {
       });
       auto next = Clock::now();
       for (int i = 0; !done; ++i) {
+        dem::protocol::Command command;
+        if (flood) {  // as fast as replies come: send waits while 64 are unanswered
+          command.kind = static_cast<std::uint8_t>(dem::protocol::CommandKind::kQueryContacts);
+          command.query.wall_set = true;
+          command.query.wall = "bottom";
+          const std::uint64_t id = client.send(command);
+          std::lock_guard lock(mutex);
+          outstanding.push_back(id);
+          std::lock_guard count(results.mutex);
+          ++results.sent;
+          continue;
+        }
         next += std::chrono::duration_cast<Clock::duration>(per_client);
         std::this_thread::sleep_until(next);
-        dem::protocol::Command command;
         switch ((i + c) % 10) {
           case 0:
           case 1:

@@ -435,7 +435,9 @@ class Converter {
         throw CaseError(error.what());
       }
     }
-    std::vector<ParticleDefT<Dim>> particles = read_particle_file<Dim>(path);
+    // A server reads it for a client, who may not read it: its errors quote nothing of it.
+    std::vector<ParticleDefT<Dim>> particles =
+        read_particle_file<Dim>(path, source_.files ? Excerpts::kHidden : Excerpts::kShown);
     const MaterialId material = materials_.at(file.material());
     const Vec<Dim> offset = to_vec<Dim>(file.offset());
     for (ParticleDefT<Dim>& particle : particles) {

@@ -38,16 +38,47 @@ std::string expand_tabs(std::string_view line) {
   return expanded;
 }
 
+// The parser's message without the file's text it quotes: protobuf's
+// messages quote it in double quotes ("no field named \"root\""), after a
+// colon ("got: root", "Couldn't parse integer: 12x") or in parentheses
+// ("Integer out of range (99999999999)"), so those give way.
+std::string without_quotes(std::string_view message) {
+  std::string out;
+  bool quoted = false;
+  for (const char c : message) {
+    if (c == '"') {
+      if (!quoted) out += "\"...\"";
+      quoted = !quoted;
+    } else if (quoted) {
+      continue;
+    } else if (c == ':' || c == '(') {
+      break;
+    } else {
+      out += c;
+    }
+  }
+  while (!out.empty() && (out.back() == ' ' || out.back() == '.')) out.pop_back();
+  if (out.ends_with(", got")) out.resize(out.size() - 5);
+  return out;
+}
+
 // Turns the parser's zero-based positions into "NAME:LINE:COLUMN: message"
-// and shows the line with a caret under the column, as compilers do.
+// and shows the line with a caret under the column, as compilers do (with
+// Excerpts::kHidden, neither the line nor the text the message quotes).
 class ErrorCollector : public google::protobuf::io::ErrorCollector {
  public:
-  ErrorCollector(std::string_view text, std::string source_name) : text_(text), source_name_(std::move(source_name)) {}
+  ErrorCollector(std::string_view text, std::string source_name, Excerpts excerpts)
+      : text_(text), source_name_(std::move(source_name)), excerpts_(excerpts) {}
 
   void AddError(int line, google::protobuf::io::ColumnNumber column, const std::string& message) override {
     std::string problem = source_name_;
     if (line >= 0) {
       problem += ':' + std::to_string(line + 1) + ':' + std::to_string(column + 1);
+    }
+    if (excerpts_ == Excerpts::kHidden) {
+      problems_.push_back(problem + ": " + without_quotes(message) +
+                          " (the server does not show the content of its files)");
+      return;
     }
     problem += ": " + message;
     // The tokenizer's text for the end of the input is empty: "got: ".
@@ -66,14 +97,15 @@ class ErrorCollector : public google::protobuf::io::ErrorCollector {
  private:
   std::string_view text_;
   std::string source_name_;
+  Excerpts excerpts_;
   std::vector<std::string> problems_;
 };
 
 }  // namespace
 
-LoadedCase parse_case_text(std::string_view text, std::string source_name) {
+LoadedCase parse_case_text(std::string_view text, std::string source_name, Excerpts excerpts) {
   auto locations = std::make_shared<google::protobuf::TextFormat::ParseInfoTree>();
-  ErrorCollector errors(text, source_name);
+  ErrorCollector errors(text, source_name, excerpts);
   google::protobuf::TextFormat::Parser parser;
   parser.RecordErrorsTo(&errors);
   parser.WriteLocationsTo(locations.get());
@@ -89,7 +121,7 @@ LoadedCase parse_case_text(std::string_view text, std::string source_name) {
   return loaded;
 }
 
-LoadedCase load_case_file(const std::filesystem::path& path) {
+LoadedCase load_case_file(const std::filesystem::path& path, Excerpts excerpts) {
   const std::string name = path.string();
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) {
@@ -100,7 +132,7 @@ LoadedCase load_case_file(const std::filesystem::path& path) {
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw CaseError(name + ": cannot read the case file: " + std::strerror(errno));
-  LoadedCase loaded = parse_case_text(text.str(), name);
+  LoadedCase loaded = parse_case_text(text.str(), name, excerpts);
   loaded.source.directory = path.parent_path();
   return loaded;
 }

@@ -57,7 +57,8 @@ std::optional<double> parse_number(std::string_view text) {
 template <int Dim>
 class ParticleTextParser {
  public:
-  explicit ParticleTextParser(std::string source_name) : name_(std::move(source_name)) {}
+  ParticleTextParser(std::string source_name, Excerpts excerpts)
+      : name_(std::move(source_name)), shown_(excerpts == Excerpts::kShown) {}
 
   std::vector<ParticleDefT<Dim>> run(std::string_view text) {
     int line_number = 0;
@@ -108,13 +109,14 @@ class ParticleTextParser {
       const std::string column = "column " + std::to_string(i + 1) + " (" + column_name(i) + "): ";
       const std::optional<double> value = parse_number(fields[i]);
       if (!value) {
-        problem(where + column + '"' + std::string(fields[i]) + "\" is not a number");
+        problem(where + column + (shown_ ? '"' + std::string(fields[i]) + "\" is" : std::string("is")) +
+                " not a number");
         ok = false;
       } else if (!std::isfinite(*value)) {
-        problem(where + column + "must be a finite number (got " + format_number(*value) + ')');
+        problem(where + column + "must be a finite number" + got(*value));
         ok = false;
       } else if (i == Dim && *value <= 0) {
-        problem(where + column + "the radius must be > 0 (got " + format_number(*value) + ')');
+        problem(where + column + "the radius must be > 0" + got(*value));
         ok = false;
       } else {
         values[static_cast<Eigen::Index>(i)] = *value;
@@ -130,7 +132,10 @@ class ParticleTextParser {
   void check_header(const std::string& where, const std::string& header) {
     header_seen_ = true;
     if (header == columns_of(Dim)) return;
-    if (header == columns_of(5 - Dim)) {
+    if (!shown_) {
+      problem(where + "the header does not name the columns " + columns_of(Dim) + " (the case is " +
+              std::to_string(Dim) + "D)");
+    } else if (header == columns_of(5 - Dim)) {
       problem(where + "the header " + header + " is that of a " + std::to_string(5 - Dim) + "D file; the case is " +
               std::to_string(Dim) + "D (columns " + columns_of(Dim) + ")");
     } else {
@@ -145,8 +150,11 @@ class ParticleTextParser {
   }
 
   void problem(std::string text) { problems_.push_back(std::move(text)); }
+  // A value read from the file, where its text may be shown.
+  std::string got(double value) const { return shown_ ? " (got " + format_number(value) + ')' : std::string(); }
 
   std::string name_;
+  bool shown_;
   bool header_seen_ = false;
   std::vector<ParticleDefT<Dim>> particles_;
   std::vector<std::string> problems_;
@@ -155,12 +163,13 @@ class ParticleTextParser {
 }  // namespace
 
 template <int Dim>
-std::vector<ParticleDefT<Dim>> parse_particle_text(std::string_view text, const std::string& source_name) {
-  return ParticleTextParser<Dim>(source_name).run(text);
+std::vector<ParticleDefT<Dim>> parse_particle_text(std::string_view text, const std::string& source_name,
+                                                   Excerpts excerpts) {
+  return ParticleTextParser<Dim>(source_name, excerpts).run(text);
 }
 
 template <int Dim>
-std::vector<ParticleDefT<Dim>> read_particle_file(const std::filesystem::path& path) {
+std::vector<ParticleDefT<Dim>> read_particle_file(const std::filesystem::path& path, Excerpts excerpts) {
   const std::string name = path.string();
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) {
@@ -171,12 +180,12 @@ std::vector<ParticleDefT<Dim>> read_particle_file(const std::filesystem::path& p
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw CaseError(name + ": cannot read the particle file: " + std::strerror(errno));
-  return parse_particle_text<Dim>(text.str(), name);
+  return parse_particle_text<Dim>(text.str(), name, excerpts);
 }
 
-template std::vector<ParticleDefT<2>> read_particle_file<2>(const std::filesystem::path&);
-template std::vector<ParticleDefT<3>> read_particle_file<3>(const std::filesystem::path&);
-template std::vector<ParticleDefT<2>> parse_particle_text<2>(std::string_view, const std::string&);
-template std::vector<ParticleDefT<3>> parse_particle_text<3>(std::string_view, const std::string&);
+template std::vector<ParticleDefT<2>> read_particle_file<2>(const std::filesystem::path&, Excerpts);
+template std::vector<ParticleDefT<3>> read_particle_file<3>(const std::filesystem::path&, Excerpts);
+template std::vector<ParticleDefT<2>> parse_particle_text<2>(std::string_view, const std::string&, Excerpts);
+template std::vector<ParticleDefT<3>> parse_particle_text<3>(std::string_view, const std::string&, Excerpts);
 
 }  // namespace dem::io

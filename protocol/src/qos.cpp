@@ -13,19 +13,41 @@ dds::Qos command_qos() { return dds::Qos().reliable(1s).keep_all().volatile_dura
 // topic. Keeping all of them until every reader acknowledged would let one
 // client that stops reading (a process stopped in a debugger, SIGSTOP)
 // block every write - every other client's replies and the engine with
-// them. So the writer keeps the last 256: a stalled reader loses what falls
-// out (it was not reading), the others read on, a burst of 256 replies
-// included (a repair of a lost packet comes from this history). The
-// ReplySender paces a reply of many chunks (reply_sender.cpp); a stalled
-// reader holds at most 256 samples of the server's memory.
+// them: Cyclone 0.10 has no resource limits for a writer's history, and
+// it never drops an unresponsive reader, so KEEP_ALL would throttle the
+// writer until its max blocking time and then fail every write. So the
+// writer keeps the last 256, and each client has at most 64 requests
+// unanswered (client::ConnectOptions::max_outstanding): a reply leaves the
+// history only after 256 newer ones, which four clients at the bound
+// cannot have asked for before it was delivered - none is lost to a live
+// client, however many requests it has in the pipeline; a stalled reader
+// loses what falls out (it was not reading), the others read on (a repair
+// of a lost packet comes from this history). The ReplySender paces a reply
+// of many chunks (reply_sender.cpp); a stalled reader holds at most 256
+// samples of the server's memory.
 constexpr int kReplyHistory = 256;
 dds::Qos reply_qos() { return dds::Qos().reliable(5s).keep_last(kReplyHistory).volatile_durability(); }
+
+dds::Qos reply_reader_qos() { return dds::Qos().reliable(5s).keep_all().volatile_durability(); }
 
 // The current state, replayed to late joiners: one sample, durable.
 dds::Qos status_qos() { return dds::Qos().reliable(0ns).keep_last(1).transient_local(); }
 
-dds::Qos telemetry_writer_qos() { return dds::Qos().reliable(0ns).keep_last(16).volatile_durability(); }
+// Telemetry is a run's recent history, as a ROS 2 latched topic with a
+// depth: the writer keeps its last 256 samples and hands them to a reader
+// that joins later (transient-local), so a monitor, a recording or a
+// dashboard started beside a run begins at its start - at the telemetry
+// interval the demo uses, 256 samples are 256,000 cycles - or, on a long
+// run, at its last 256 samples. Keep-last, so a write never waits for a
+// reader: a stalled one holds at most the 256 samples (a few hundred kB at
+// most) and costs the others nothing (DDS.md).
+constexpr int kTelemetryHistory = 256;
+dds::Qos telemetry_writer_qos() {
+  return dds::Qos().reliable(0ns).keep_last(kTelemetryHistory).transient_local(kTelemetryHistory);
+}
 
-dds::Qos telemetry_reader_qos() { return dds::Qos().reliable(1s).keep_last(1024).volatile_durability(); }
+// Transient-local to be given the writer's history; a reader's own 1024
+// samples leave room for a monitor that falls behind for a while.
+dds::Qos telemetry_reader_qos() { return dds::Qos().reliable(1s).keep_last(1024).transient_local(); }
 
 }  // namespace dem::protocol

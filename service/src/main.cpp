@@ -136,7 +136,7 @@ int main(int argc, char** argv) {
           ->envname("DEM_VTK_INTERVAL");
   app.add_option("--read-dir", options.read_directories,
                  "a directory load_case may read cases (and cases their particle files) from; repeat for more "
-                 "(default: the current directory; the --case file's directory is always allowed)")
+                 "(default: none - clients send their cases; the --case file's own load reads its directory)")
       ->envname("DEM_READ_DIRS")
       ->delimiter(':');
   double name_wait = 12.0;

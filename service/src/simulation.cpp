@@ -58,9 +58,7 @@ Simulation::Simulation(std::optional<int> threads, io::ResourceLimits limits, st
                        std::shared_ptr<const io::FileAccess> files)
     : threads_(threads),
       limits_(limits),
-      files_(files ? std::move(files)
-                   : std::make_shared<const io::FileAccess>(
-                         std::vector<std::filesystem::path>{std::filesystem::current_path()})),
+      files_(files ? std::move(files) : std::make_shared<const io::FileAccess>(std::vector<std::filesystem::path>{})),
       max_query_contacts_(max_query_contacts) {}
 
 std::string Simulation::install(Prepared prepared) {
@@ -85,13 +83,19 @@ Simulation::Prepared Simulation::Preparer::prepare_case(const protocol::LoadCase
     io::LoadedCase loaded;
     if (!args.path.empty()) {
       source = args.path;
+      if (files_->roots().empty()) {
+        throw CommandError(ReplyStatus::kRefused,
+                           "load_case by a path on the server is off: this server reads no files for clients. Start "
+                           "dem_server with --read-dir DIR (repeatable) to let it read cases, and the particle files "
+                           "they name, from DIR; or send the case itself (demctl load FILE sends the file's text)");
+      }
       std::filesystem::path path;
       try {
         path = files_->readable(args.path);
       } catch (const io::FileAccessError& error) {
         throw CommandError(ReplyStatus::kNotFound, "no case file on the server: " + std::string(error.what()));
       }
-      loaded = io::load_case_file(path);
+      loaded = io::load_case_file(path, io::Excerpts::kHidden);
       loaded.source.name = args.path;
     } else if (!args.text.empty()) {
       source = args.source_name.empty() ? "<text>" : args.source_name;

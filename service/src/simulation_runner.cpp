@@ -19,10 +19,19 @@ namespace {
 // the shutdown flag again (a shutdown request also wakes it at once).
 constexpr std::chrono::milliseconds kIdleWait{200};
 
+// What clients may have the server read: the --read-dir directories, and
+// nothing without them (not the directory it was started in, which may be
+// "/": RELIABILITY.md, Files).
 std::shared_ptr<const io::FileAccess> read_access(const ServerOptions& options) {
+  return std::make_shared<const io::FileAccess>(options.read_directories);
+}
+
+// The initial case's own load also reads its directory (its particle
+// files), which the operator named by starting the server with it.
+std::shared_ptr<const io::FileAccess> initial_case_access(const ServerOptions& options,
+                                                          const std::filesystem::path& path) {
   std::vector<std::filesystem::path> roots = options.read_directories;
-  if (roots.empty()) roots.push_back(std::filesystem::current_path());
-  if (options.initial_case) roots.push_back(std::filesystem::absolute(*options.initial_case).parent_path());
+  roots.push_back(std::filesystem::absolute(path).parent_path());
   return std::make_shared<const io::FileAccess>(roots);
 }
 
@@ -44,7 +53,7 @@ SimulationRunner::SimulationRunner(const ServerOptions& options, CommandQueue& q
 void SimulationRunner::load_initial_case(const std::filesystem::path& path, bool resume) {
   protocol::LoadCaseArgs args;
   args.path = path.string();
-  Simulation::Prepared prepared = simulation_.prepare_case(args);
+  Simulation::Prepared prepared = simulation_.preparer().reading(initial_case_access(options_, path)).prepare_case(args);
   if (options_.run_programme && prepared.programme.stage_count() == 0) {
     throw CommandError(ReplyStatus::kInvalidCase,
                        path.string() + ": the case defines no stages, so --run-and-exit has nothing to run");

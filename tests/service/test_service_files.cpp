@@ -73,6 +73,58 @@ TEST(Files, CasesAndParticleFilesAreReadOnlyFromTheAllowedDirectories) {
   EXPECT_EQ(client.get_state().state.case_name, "nine_disc_damped");  // untouched
 }
 
+// Without --read-dir a server reads no file a client names - not the
+// directory it was started in, which may be "/" (issue 37) - and says how
+// to allow it.
+TEST(Files, WithoutAReadDirectoryServerSideLoadsAreRefusedSayingHowToAllowThem) {
+  service::ServerOptions options = server_options("noreads", kFilesNoReadDirectory);
+  options.read_directories.clear();
+  InProcessServer server(options);
+  client::Client client(connect_options("noreads", kFilesNoReadDirectory));
+  for (const std::string& path : {std::string("/etc/passwd"), case_file("nine_disc_damped").string()}) {
+    const protocol::Reply reply = load_path(client, path);
+    EXPECT_EQ(reply.status, ReplyStatus::kRefused) << path;
+    EXPECT_NE(reply.message.find("Start dem_server with --read-dir DIR"), std::string::npos) << reply.message;
+    EXPECT_EQ(reply.message.find("root:"), std::string::npos) << reply.message;
+  }
+  EXPECT_TRUE(client.load_case_file(case_file("nine_disc_damped")).ok());  // a case sent as text still loads
+}
+
+// A file in a read directory that is no case, or a particle file that is
+// no table, is named with its line and column - never with its text: it
+// may be a secret kept beside the cases.
+TEST(Files, AServerSideFileThatDoesNotParseIsNamedByLineAndColumnWithoutItsText) {
+  const fs::path allowed = output_directory("files_hidden") / "allowed";
+  fs::create_directories(allowed);
+  std::ofstream(allowed / "secret.txt") << "root:x:0:0:root:/root:/bin/bash\n";
+  std::ofstream(allowed / "number.case.txtpb") << "name: \"n\"\nmaterial { density: 99999999999999999999999999999999999999x }\n";
+  std::ofstream(allowed / "bed.csv") << "x,y,r\n1,2,0.5\n3,the-secret-field,0.5\n";
+  service::ServerOptions options = server_options("hidden", kFilesHiddenContent);
+  options.read_directories = {allowed};
+  InProcessServer server(options);
+  client::Client client(connect_options("hidden", kFilesHiddenContent));
+
+  protocol::Reply reply = load_path(client, (allowed / "secret.txt").string());
+  EXPECT_EQ(reply.status, ReplyStatus::kInvalidCase);
+  EXPECT_NE(reply.message.find("secret.txt:1:"), std::string::npos) << reply.message;
+  for (const std::string leak : {"root", "bash", "x:0"}) {
+    EXPECT_EQ(reply.message.find(leak), std::string::npos) << reply.message;
+  }
+  reply = load_path(client, (allowed / "number.case.txtpb").string());
+  EXPECT_EQ(reply.status, ReplyStatus::kInvalidCase);
+  EXPECT_NE(reply.message.find("number.case.txtpb:2:"), std::string::npos) << reply.message;
+  EXPECT_EQ(reply.message.find("9999"), std::string::npos) << reply.message;
+
+  protocol::Command text;
+  text.kind = static_cast<std::uint8_t>(CommandKind::kLoadCase);
+  text.load_case.text = read_text(case_file("nine_disc_damped")) + "\nparticles { csv_file { path: \"" +
+                        (allowed / "bed.csv").string() + "\" material: \"disc\" } }\n";
+  reply = reply_to(client, text);
+  EXPECT_EQ(reply.status, ReplyStatus::kInvalidCase);
+  EXPECT_NE(reply.message.find("bed.csv:3: column 2 (y): is not a number"), std::string::npos) << reply.message;
+  EXPECT_EQ(reply.message.find("the-secret"), std::string::npos) << reply.message;
+}
+
 TEST(Files, SnapshotsAreNotWrittenOrReadThroughLinks) {
   service::ServerOptions options = server_options("links", kFilesSnapshotLinks);
   const fs::path outside = output_directory("files_links_outside");

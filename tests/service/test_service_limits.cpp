@@ -176,5 +176,44 @@ TEST(Limits, AStalledClientDoesNotHoldUpTheOthersReplies) {
   EXPECT_LT(slowest, 1.0);  // a write waiting for the stalled reader would take 5 s
 }
 
+// 20,000 requests in one client's pipeline, none awaited until all are
+// sent: the client library lets at most max_outstanding of them be
+// unanswered at once (send waits for replies beyond), so the server's
+// reply history never drops one before it was delivered. Before, the
+// server logged 20,001 replies and the client missed 715 (issue 37).
+TEST(Limits, TwentyThousandRequestsInOnePipelineEachGetTheirReply) {
+  InProcessServer server(server_options("pipeline", kLimitsDeepPipeline));
+  client::Client client(connect_options("pipeline", kLimitsDeepPipeline));
+  client.load_case_file(case_file("nine_disc_damped"));
+  const std::uint64_t running = client.start_cycle(1'000'000'000);  // answered between chunks of cycles
+  constexpr int kRequests = 20'000;
+  std::vector<std::uint64_t> requests;
+  requests.reserve(kRequests);
+  std::size_t most_outstanding = 0;
+  for (int i = 0; i < kRequests; ++i) {
+    protocol::Command c = command(i % 2 == 0 ? CommandKind::kGetState : CommandKind::kSetWallVelocity);
+    c.wall_velocity.wall = "top";
+    requests.push_back(client.send(c));
+    most_outstanding = std::max(most_outstanding, client.outstanding());
+  }
+  int ok = 0, busy = 0, missing = 0;
+  for (const std::uint64_t request : requests) {
+    const std::optional<protocol::Reply> reply = client.await(request, 30s);
+    if (!reply) {
+      ++missing;
+      continue;
+    }
+    ok += reply->ok() ? 1 : 0;
+    busy += reply->status == ReplyStatus::kBusy ? 1 : 0;
+  }
+  std::printf("%d requests: %d ok, %d busy, %d without a reply; at most %zu outstanding\n", kRequests, ok, busy,
+              missing, most_outstanding);
+  EXPECT_EQ(missing, 0);
+  EXPECT_EQ(ok, kRequests);
+  EXPECT_LE(most_outstanding, client.options().max_outstanding);
+  EXPECT_TRUE(client.stop().ok());
+  ASSERT_TRUE(client.await(running, 30s));
+}
+
 }  // namespace
 }  // namespace dem::test

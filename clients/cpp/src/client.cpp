@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <atomic>
-#include <fstream>
 #include <iterator>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
+#include "dem/client/local_file.h"
 #include "dem/dds/discovery.h"
 #include "dem/protocol/qos.h"
 #include "dem/protocol/topics.h"
@@ -55,11 +55,12 @@ ConnectOptions checked(ConnectOptions options) {
 Client::Client(ConnectOptions options)
     : options_(checked(std::move(options))),
       participant_(options_.domain, options_.dds_config),
+      interface_watch_(participant_, protocol::topics_of(options_.server), "this client"),
       command_topic_(participant_, protocol::topic_name(options_.server, TopicKind::kCommand)),
       reply_topic_(participant_, protocol::topic_name(options_.server, TopicKind::kReply)),
       status_topic_(participant_, protocol::topic_name(options_.server, TopicKind::kStatus)),
       command_writer_(participant_, command_topic_, protocol::command_qos()),
-      reply_reader_(participant_, reply_topic_, protocol::reply_qos()),
+      reply_reader_(participant_, reply_topic_, protocol::reply_reader_qos()),
       status_reader_(participant_, status_topic_, protocol::status_qos()),
       reply_data_(reply_reader_.handle()),
       status_data_(status_reader_.handle()),
@@ -100,7 +101,10 @@ void Client::connect() {
   const std::string where = "server \"" + options_.server + "\" on DDS domain " + std::to_string(options_.domain);
   // The server's durable status says it is there.
   const auto status = wait_for_status([](const protocol::Status&) { return true; }, remaining());
-  if (!status) throw NoSuchServer("no " + where + " within " + seconds(options_.timeout));
+  if (!status) {
+    judge_server(true);  // a server there whose status this client cannot read
+    throw NoSuchServer("no " + where + " within " + seconds(options_.timeout) + "; " + others_seen());
+  }
   if (status->state == protocol::ServerState::kShutdown) throw NoSuchServer(where + " is shutting down");
   // One round trip: the server has then matched this client both ways, so
   // no later command or reply is lost to discovery. A ping sent before the
@@ -114,11 +118,57 @@ void Client::connect() {
       return std::any_of(pings.begin(), pings.end(), [&](std::uint64_t id) { return complete_.count(id) > 0; });
     });
     if (answered) {
-      for (const std::uint64_t id : pings) complete_.erase(id);
+      // The pings sent before the server's reader matched were lost: they
+      // wait for no reply.
+      for (const std::uint64_t id : pings) {
+        complete_.erase(id);
+        outstanding_.erase(id);
+      }
+      lock.unlock();
+      for (const protocol::PeerVerdict& verdict : judge_server(false)) {
+        interface_notes_.push_back(verdict.text);
+        if (options_.on_interface_note) options_.on_interface_note(verdict.text);
+      }
       return;
     }
   }
+  judge_server(true);  // its commands or replies of a form this client's cannot read
   throw NoSuchServer(where + " was found but did not answer within " + seconds(options_.timeout));
+}
+
+std::vector<protocol::PeerVerdict> Client::judge_server(bool fatal) {
+  using Kind = protocol::PeerVerdict::Kind;
+  const std::string command_topic = protocol::topic_name(options_.server, TopicKind::kCommand);
+  std::vector<protocol::PeerVerdict> verdicts;
+  std::string fatal_text;
+  for (protocol::PeerVerdict& verdict : interface_watch_.check()) {
+    // The server's endpoints: the command topic's reader, every other topic's
+    // writers (other clients read those and write commands).
+    const bool servers = verdict.peer.writer != (verdict.peer.topic_name == command_topic);
+    if (!servers) continue;
+    const bool crossing = verdict.peer.topic_name == command_topic ||
+                          verdict.peer.topic_name == protocol::topic_name(options_.server, TopicKind::kReply) ||
+                          verdict.peer.topic_name == protocol::topic_name(options_.server, TopicKind::kStatus);
+    if (fatal && crossing && verdict.kind != Kind::kOlderCompatible) {
+      fatal_text += (fatal_text.empty() ? "" : "; ") + verdict.text;
+    }
+    verdicts.push_back(std::move(verdict));
+  }
+  if (!fatal_text.empty()) {
+    throw InterfaceMismatch("server \"" + options_.server + "\" cannot meet this client: " + fatal_text);
+  }
+  return verdicts;
+}
+
+// What this participant has discovered meanwhile, for a name given wrong
+// or not at all: the servers it can see on the domain, by name.
+std::string Client::others_seen() const {
+  const std::set<std::string> names = server_names(dds::PublicationMonitor(participant_).alive());
+  const std::string domain = "DDS domain " + std::to_string(options_.domain);
+  if (names.empty()) return "no server is on " + domain + " (another --domain, or not started yet?)";
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+  return "servers on " + domain + ": " + list + " (name one with --server NAME or $DEM_SERVER)";
 }
 
 // --- receiving -----------------------------------------------------------
@@ -164,6 +214,7 @@ void Client::take_replies() {
       if (auto found = partial_.find(id); found != partial_.end() && found->second.last) {
         complete_[id] = std::move(found->second);
         partial_.erase(found);
+        outstanding_.erase(id);
       }
     }
   }
@@ -190,19 +241,42 @@ protocol::Command Client::command(CommandKind kind) {
 
 std::uint64_t Client::send(protocol::Command command) {
   {
-    std::lock_guard lock(mutex_);
+    std::unique_lock lock(mutex_);
+    // A bounded pipeline: the server's replies to this client never outrun
+    // what its reply history keeps for it (ConnectOptions::max_outstanding).
+    const auto kind = protocol::command_kind(command.kind);
+    const bool control = kind == CommandKind::kStop || kind == CommandKind::kShutdown;
+    if (!control && !changed_.wait_for(lock, options_.reply_timeout, [&] {
+          return outstanding_.size() < std::max<std::size_t>(options_.max_outstanding, 1);
+        })) {
+      throw ReplyTimeout(std::to_string(outstanding_.size()) + " requests to server \"" + options_.server +
+                         "\" still unanswered after " + seconds(options_.reply_timeout) +
+                         " (at most " + std::to_string(options_.max_outstanding) + " may be outstanding)");
+    }
     command.request_id = next_request_++;
+    outstanding_.insert(command.request_id);
   }
   command.server = options_.server;
   command.client_id = options_.client_id;
   command.stamp = protocol::now_stamp();
-  command_writer_.write(command);
+  try {
+    command_writer_.write(command);
+  } catch (...) {
+    std::lock_guard lock(mutex_);
+    outstanding_.erase(command.request_id);
+    changed_.notify_all();
+    throw;
+  }
   return command.request_id;
 }
 
 std::optional<protocol::Reply> Client::await(std::uint64_t request_id, std::chrono::milliseconds timeout) {
   std::unique_lock lock(mutex_);
-  if (!changed_.wait_for(lock, timeout, [&] { return complete_.count(request_id) > 0; })) return std::nullopt;
+  if (!changed_.wait_for(lock, timeout, [&] { return complete_.count(request_id) > 0; })) {
+    outstanding_.erase(request_id);  // given up on: it no longer holds a place
+    changed_.notify_all();
+    return std::nullopt;
+  }
   protocol::Reply reply = std::move(complete_.at(request_id));
   complete_.erase(request_id);
   return reply;
@@ -225,6 +299,11 @@ protocol::Reply Client::call(protocol::Command command, std::optional<std::chron
   return std::move(*reply);
 }
 
+std::size_t Client::outstanding() const {
+  std::lock_guard lock(mutex_);
+  return outstanding_.size();
+}
+
 protocol::Status Client::status() const {
   std::lock_guard lock(mutex_);
   return status_.value_or(protocol::Status{});
@@ -242,10 +321,7 @@ bool Client::server_alive() const { return status_reader_.matched_writers() > 0;
 // --- one call per command --------------------------------------------------
 
 protocol::Reply Client::load_case_file(const std::filesystem::path& local_file) {
-  std::ifstream in(local_file, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + local_file.string());
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return load_case_text(std::move(text), local_file.string());
+  return load_case_text(read_local_file(local_file), local_file.string());
 }
 
 protocol::Reply Client::load_case_text(std::string text, std::string source_name) {

@@ -13,24 +13,28 @@
 
 #include "dem/definitions.h"
 #include "dem/io/case_error.h"
+#include "dem/io/case_loader.h"
 
 namespace dem::io {
 
 // Positions and radii; material, velocities and the rest keep their
 // defaults for the caller to set. Throws CaseError naming the file when it
 // cannot be read, and "FILE:LINE: message" for each malformed line (the
-// first few of them, then how many more there are).
+// first few of them, then how many more there are); with Excerpts::kHidden
+// (a server reading for a client) the messages quote nothing of the file.
 template <int Dim>
-std::vector<ParticleDefT<Dim>> read_particle_file(const std::filesystem::path& path);
+std::vector<ParticleDefT<Dim>> read_particle_file(const std::filesystem::path& path,
+                                                  Excerpts excerpts = Excerpts::kShown);
 
 // As read_particle_file, for text already in memory; source_name stands in
 // for the file name in messages.
 template <int Dim>
-std::vector<ParticleDefT<Dim>> parse_particle_text(std::string_view text, const std::string& source_name);
+std::vector<ParticleDefT<Dim>> parse_particle_text(std::string_view text, const std::string& source_name,
+                                                   Excerpts excerpts = Excerpts::kShown);
 
-extern template std::vector<ParticleDefT<2>> read_particle_file<2>(const std::filesystem::path&);
-extern template std::vector<ParticleDefT<3>> read_particle_file<3>(const std::filesystem::path&);
-extern template std::vector<ParticleDefT<2>> parse_particle_text<2>(std::string_view, const std::string&);
-extern template std::vector<ParticleDefT<3>> parse_particle_text<3>(std::string_view, const std::string&);
+extern template std::vector<ParticleDefT<2>> read_particle_file<2>(const std::filesystem::path&, Excerpts);
+extern template std::vector<ParticleDefT<3>> read_particle_file<3>(const std::filesystem::path&, Excerpts);
+extern template std::vector<ParticleDefT<2>> parse_particle_text<2>(std::string_view, const std::string&, Excerpts);
+extern template std::vector<ParticleDefT<3>> parse_particle_text<3>(std::string_view, const std::string&, Excerpts);
 
 }  // namespace dem::io

@@ -25,8 +25,9 @@ struct ServerOptions {
   std::filesystem::path output_directory = "out/dem_server";  // CSV tables and snapshots
   std::optional<std::filesystem::path> initial_case;          // loaded at start
   // Where load_case may read a case by its path, and cases their particle
-  // files (io/file_access.h: after "..", links and all); empty: the
-  // current directory. The initial case's directory is always added.
+  // files (io/file_access.h: after "..", links and all); empty: nowhere
+  // (load_case by path is refused, saying how to allow it). The initial
+  // case's own load reads its directory too.
   std::vector<std::filesystem::path> read_directories;
   std::optional<int> threads;  // engine threads; overrides the case's
   // Cycles between the ParaView files of the programmes it runs; when set,

@@ -28,7 +28,7 @@ namespace dem::service {
 class Simulation {
  public:
   // `files`: where a case named by its path, and the particle files cases
-  // name, may be read from (null: the current directory).
+  // name, may be read from (null: nowhere).
   explicit Simulation(std::optional<int> threads = std::nullopt, io::ResourceLimits limits = io::machine_limits(),
                       std::uint64_t max_query_contacts = CommandLimits{}.max_query_contacts,
                       std::shared_ptr<const io::FileAccess> files = nullptr);
@@ -65,9 +65,10 @@ class Simulation {
         : limits_(limits), files_(std::move(files)) {}
     // A case (2D or 3D) from a file the server reads, text or serialized
     // bytes, within the resource limits. INVALID_CASE names the file, line
-    // and field of each problem; NOT_FOUND when the file is missing or
-    // outside the directories the server reads (the same answer: whether a
-    // file exists outside them is not said).
+    // and field of each problem (a file's syntax errors its line and column
+    // only, not its text); NOT_FOUND when the file is missing or outside the
+    // directories the server reads (the same answer: whether a file exists
+    // outside them is not said); REFUSED when it reads no files at all.
     Prepared prepare_case(const protocol::LoadCaseArgs& args) const;
     // A framed, serialized dem.proto.Snapshot of either dimension, within
     // the resource limits; INVALID_SNAPSHOT when it is not one or is
@@ -78,6 +79,12 @@ class Simulation {
     Preparer stopped_by(std::function<bool()> stopped) const {
       Preparer copy = *this;
       copy.limits_.stop_packing = std::move(stopped);
+      return copy;
+    }
+    // The same preparer, reading files through `files` instead.
+    Preparer reading(std::shared_ptr<const io::FileAccess> files) const {
+      Preparer copy = *this;
+      copy.files_ = std::move(files);
       return copy;
     }
 
