@@ -143,12 +143,14 @@ int main(int argc, char** argv) {
   miyata->add_option("--case", miyata_options.case_file, "the case file (it must set output.compression)")
       ->required()
       ->check(CLI::ExistingFile);
-  miyata->add_option("--runs", miyata_options.runs,
-                     "judge these finished runs of the case (directories of dem_run, dem_server or a sweep's "
-                     "tasks) instead of running it")
+  miyata
+      ->add_option("--runs", miyata_options.runs,
+                   "judge these finished runs of the case (directories of dem_run, dem_server or a sweep's "
+                   "tasks) instead of running it")
       ->check(CLI::ExistingDirectory);
-  auto* miyata_surfaces = app.add_subcommand(
-      "miyata-surfaces", "Miyata et al. (2002) 3.2: the four samples of Table 1 (CS, CR, SS, SR) over packings: "
+  auto* miyata_surfaces =
+      app.add_subcommand("miyata-surfaces",
+                         "Miyata et al. (2002) 3.2: the four samples of Table 1 (CS, CR, SS, SR) over packings: "
                          "circles release stress, rectangles never; rough surfaces have fewer plate contacts");
   bool reduced = false;
   miyata_surfaces->add_flag("--reduced", reduced, "the _reduced cases (4 m wide) instead of the full ones");

@@ -47,7 +47,8 @@ Verdict miyata_surfaces_command(const std::filesystem::path& cases, bool reduced
   std::vector<std::vector<MiyataPacking>> samples;
   Verdict verdict;
   for (const char* name : {"cs", "cr", "ss", "sr"}) {
-    const std::filesystem::path file = cases / "miyata" / (std::string(name) + (reduced ? "_reduced" : "") + ".case.txtpb");
+    const std::filesystem::path file =
+        cases / "miyata" / (std::string(name) + (reduced ? "_reduced" : "") + ".case.txtpb");
     const MiyataCase spec = read_miyata_case(file);
     MiyataOptions each = options;
     each.runs.clear();

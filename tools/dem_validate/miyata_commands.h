@@ -13,12 +13,12 @@ namespace dem::validation {
 
 struct MiyataOptions {
   std::filesystem::path case_file;
-  std::filesystem::path out;                    // runs here go to out (one packing) or out/packing_<seed>
-  int packings = 1;                             // the case's seed, then 1, 2, ...
-  std::vector<std::uint64_t> seeds;             // instead of packings
-  std::vector<std::filesystem::path> runs;      // finished runs to judge instead of running
-  int jobs = 1;                                 // runs at a time
-  int threads = 1;                              // each run's
+  std::filesystem::path out;                // runs here go to out (one packing) or out/packing_<seed>
+  int packings = 1;                         // the case's seed, then 1, 2, ...
+  std::vector<std::uint64_t> seeds;         // instead of packings
+  std::vector<std::filesystem::path> runs;  // finished runs to judge instead of running
+  int jobs = 1;                             // runs at a time
+  int threads = 1;                          // each run's
 };
 
 // miyata-compression: with one packing, judge_miyata's verdict; with more,

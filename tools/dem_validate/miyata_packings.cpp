@@ -44,8 +44,7 @@ std::vector<std::uint64_t> packing_seeds(std::uint64_t case_seed, int count) {
   return seeds;
 }
 
-std::vector<MiyataPacking> run_miyata_packings(const std::filesystem::path& case_file,
-                                               const std::filesystem::path& out,
+std::vector<MiyataPacking> run_miyata_packings(const std::filesystem::path& case_file, const std::filesystem::path& out,
                                                const std::vector<std::uint64_t>& seeds, int jobs, int threads) {
   std::vector<MiyataPacking> packings(seeds.size());
   std::vector<std::exception_ptr> errors(seeds.size());
@@ -119,22 +118,20 @@ Verdict judge_over_packings(const std::vector<MiyataPacking>& packings, int need
 
 void print_packings_table(std::FILE* out, const MiyataCase& spec, const std::vector<MiyataPacking>& packings) {
   std::fprintf(out, "%s over %zu packings:\n", spec.name.c_str(), packings.size());
-  std::fprintf(out,
-               "  %-22s %9s %8s %9s %11s %13s %11s %12s %16s\n", "packing", "kPa", "R2 final", "softness",
+  std::fprintf(out, "  %-22s %9s %8s %9s %11s %13s %11s %12s %16s\n", "packing", "kPa", "R2 final", "softness",
                "contacts", "drops t / f", "final drop", "tail rate", "Fig.30 40/30/30");
   for (const MiyataPacking& p : packings) {
     const MiyataFigures& f = p.figures;
     std::fprintf(out, "  %-22s %9.0f %8.4f %9.1f %5d / %-5d %6d / %-6d %10.1f%% %7.2f+-%-4.2f %5.1f/%4.1f/%4.1f%s\n",
-                 p.label.c_str(), f.final_stress / 1e3, f.final_r_squared, f.initial_softness,
-                 f.final_loading_contacts, f.final_bottom_contacts, f.transition_drops, f.final_drops,
-                 100 * f.largest_final_drop, f.decay_rate[0], f.decay_rate_error[0], 100 * f.initial_load_share,
-                 100 * f.transition_load_share, 100 * f.final_load_share, p.verdict.passed() ? "" : "  (a check fails)");
+                 p.label.c_str(), f.final_stress / 1e3, f.final_r_squared, f.initial_softness, f.final_loading_contacts,
+                 f.final_bottom_contacts, f.transition_drops, f.final_drops, 100 * f.largest_final_drop,
+                 f.decay_rate[0], f.decay_rate_error[0], 100 * f.initial_load_share, 100 * f.transition_load_share,
+                 100 * f.final_load_share, p.verdict.passed() ? "" : "  (a check fails)");
   }
 }
 
 Verdict judge_miyata_surfaces(const std::vector<MiyataPacking>& cs, const std::vector<MiyataPacking>& cr,
-                              const std::vector<MiyataPacking>& ss, const std::vector<MiyataPacking>& sr,
-                              int needed) {
+                              const std::vector<MiyataPacking>& ss, const std::vector<MiyataPacking>& sr, int needed) {
   Verdict verdict;
   const auto of = [](int count, std::size_t all) {
     return std::to_string(count) + " of " + std::to_string(all) + " packings";

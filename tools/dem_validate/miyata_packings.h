@@ -21,7 +21,7 @@ struct MiyataPacking {
   std::string label;  // "packing seed 3", or the directory read
   std::filesystem::path directory;
   MiyataFigures figures;
-  Verdict verdict;  // judge_miyata's
+  Verdict verdict;       // judge_miyata's
   double seconds = 0.0;  // 0 when read, not run
   int particles = 0;
 };
@@ -31,8 +31,7 @@ std::vector<std::uint64_t> packing_seeds(std::uint64_t case_seed, int count);
 
 // Runs the case once per seed, `jobs` runs at a time (each on `threads`
 // threads), into out/packing_<seed>/, each with its miyata_summary.csv.
-std::vector<MiyataPacking> run_miyata_packings(const std::filesystem::path& case_file,
-                                               const std::filesystem::path& out,
+std::vector<MiyataPacking> run_miyata_packings(const std::filesystem::path& case_file, const std::filesystem::path& out,
                                                const std::vector<std::uint64_t>& seeds, int jobs, int threads);
 
 // Finished runs of the case, from their tables.
@@ -55,7 +54,6 @@ void print_packings_table(std::FILE* out, const MiyataCase& spec, const std::vec
 // rough surfaces have fewer loading plate contacts than the smooth ones
 // at the transition and the final bound (medians over the packings).
 Verdict judge_miyata_surfaces(const std::vector<MiyataPacking>& cs, const std::vector<MiyataPacking>& cr,
-                              const std::vector<MiyataPacking>& ss, const std::vector<MiyataPacking>& sr,
-                              int needed);
+                              const std::vector<MiyataPacking>& ss, const std::vector<MiyataPacking>& sr, int needed);
 
 }  // namespace dem::validation
