@@ -1,8 +1,11 @@
 #include "probe_participant.h"
 
+// ddsi_typelib.h needs ddsi_xqos.h's QoS types, so the order is not alphabetical
+// clang-format off
 #include <dds/dds.h>
+#include <dds/ddsi/ddsi_xqos.h>
 #include <dds/ddsi/ddsi_typelib.h>
-#include <dds/ddsi/ddsi_xqos.h>  // before ddsi_typelib.h, which needs its QoS types
+// clang-format on
 #include <unistd.h>
 
 #include <array>
