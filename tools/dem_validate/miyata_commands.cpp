@@ -40,7 +40,7 @@ Verdict miyata_compression_command(const MiyataOptions& options) {
   const std::vector<MiyataPacking> packings = packings_of(options, options.case_file, options.out, spec);
   print_each(packings);
   print_packings_table(stdout, spec, packings);
-  return judge_over_packings(packings, most_of(packings.size()));
+  return judge_miyata_over_packings(spec, packings);
 }
 
 Verdict miyata_surfaces_command(const std::filesystem::path& cases, bool reduced, const MiyataOptions& options) {
@@ -56,7 +56,7 @@ Verdict miyata_surfaces_command(const std::filesystem::path& cases, bool reduced
     print_each(samples.back());
     print_packings_table(stdout, spec, samples.back());
     std::printf("\n");
-    Verdict over = judge_over_packings(samples.back(), most_of(samples.back().size()));
+    Verdict over = judge_miyata_over_packings(spec, samples.back());
     over.print(stdout, spec.name + " over packings");
     std::printf("\n");
     verdict.add(over);

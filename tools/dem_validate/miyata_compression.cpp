@@ -323,36 +323,60 @@ void write_miyata_summary(const std::filesystem::path& directory, const MiyataRu
       f.final_drops, f.largest_final_drop);
 }
 
-Verdict judge_miyata(const MiyataCase& spec, const MiyataFigures& f) {
+Verdict judge_miyata_loading(const MiyataCase& spec, const MiyataFigures& f) {
   Verdict verdict;
-  const bool solid = spec.dimension == 3;
   if (spec.target_stress > 0.0) verdict.at_least("stress reached, Pa", f.final_stress, spec.target_stress);
-  // Figs. 26 and 32: a large settlement at low stress, then stiffer, then
-  // almost linear - and in 3D without giving way ("behave as a continuum").
+  // Figs. 26 and 32: a large settlement at low stress, then stiffer.
   verdict.above("final stiffness / initial stiffness", f.initial_softness, 4.0);
-  const double straight = solid ? 0.95 : spec.rough ? 0.85 : 0.99;
-  verdict.above(kFinalRSquaredCheck, f.final_r_squared, straight);
-  if (solid) verdict.below("largest stress release in the final state", f.largest_final_drop, kCollapse);
+  return verdict;
+}
+
+Verdict judge_miyata_plate_contacts(const MiyataCase&, const MiyataFigures& f) {
+  Verdict verdict;
   // Figs. 29 and 33: the plate's contacts rise quickly, then more slowly,
   // then more slowly still.
   verdict.above("contacts per kPa, initial state over transition", f.initial_contact_rate, f.transition_contact_rate);
   verdict.above("contacts per kPa, transition state over final", f.transition_contact_rate, f.final_contact_rate);
   verdict.above("contacts on the loading plate at the end", f.final_loading_contacts, 4);
-  if (!solid) {
-    // Fig. 30: the contacts formed in the initial and transition states
-    // carry over 70 % of the load, the final state's 20 % or less; with
-    // rectangles the initial state's over 50 % and the final's under 15 %.
-    verdict.above("Fig. 30: load on the first 70 % of the plate's contacts",
-                  f.initial_load_share + f.transition_load_share, 0.7);
-    verdict.at_most("Fig. 30: load on the last 30 %", f.final_load_share, 0.2);
-    if (!spec.circles) {
-      verdict.above("Fig. 30 (rectangles): load on the first 40 %", f.initial_load_share, 0.5);
-      verdict.below("Fig. 30 (rectangles): load on the last 30 %", f.final_load_share, 0.15);
-    }
+  return verdict;
+}
+
+Verdict judge_miyata_final_state(const MiyataCase& spec, const MiyataFigures& f) {
+  Verdict verdict;
+  const bool solid = spec.dimension == 3;
+  // Figs. 26 and 32: almost linear - and in 3D without giving way
+  // ("behave as a continuum").
+  const double straight = solid ? 0.95 : spec.rough ? 0.85 : 0.99;
+  verdict.above("final state's R²", f.final_r_squared, straight);
+  if (solid) verdict.below("largest stress release in the final state", f.largest_final_drop, kCollapse);
+  return verdict;
+}
+
+Verdict judge_miyata_load_shares(const MiyataCase& spec, const MiyataFigures& f) {
+  Verdict verdict;
+  if (spec.dimension == 3) return verdict;
+  // Fig. 30: the contacts formed in the initial and transition states
+  // carry over 70 % of the load, the final state's 20 % or less; with
+  // rectangles the initial state's over 50 % and the final's under 15 %.
+  verdict.above("Fig. 30: load on the first 70 % of the plate's contacts", f.initial_load_share + f.transition_load_share,
+                0.7);
+  verdict.at_most("Fig. 30: load on the last 30 %", f.final_load_share, 0.2);
+  if (!spec.circles) {
+    verdict.above("Fig. 30 (rectangles): load on the first 40 %", f.initial_load_share, 0.5);
+    verdict.below("Fig. 30 (rectangles): load on the last 30 %", f.final_load_share, 0.15);
   }
-  if (!solid || !f.force_distribution) return verdict;
+  return verdict;
+}
+
+namespace {
+const char* plate_name(std::size_t plate) { return plate == 0 ? "loading plate" : "bottom plate"; }
+}  // namespace
+
+Verdict judge_miyata_force_tail(const MiyataCase& spec, const MiyataFigures& f) {
+  Verdict verdict;
+  if (spec.dimension != 3 || !f.force_distribution) return verdict;
   for (std::size_t plate = 0; plate < 2; ++plate) {
-    const std::string name = plate == 0 ? "loading plate" : "bottom plate";
+    const std::string name = plate_name(plate);
     // Fig. 35: an exponential tail above f = 1 whose rate, within twice its
     // standard error, reaches the seed's curves: Mueth's 1.39 to the
     // q-model's 1.89.
@@ -360,11 +384,30 @@ Verdict judge_miyata(const MiyataCase& spec, const MiyataFigures& f) {
                      f.decay_rate[plate] + 2.0 * f.decay_rate_error[plate], kMuethDecayRate);
     verdict.at_most(name + ": the tail's decay rate - 2 standard errors, against the q-model's 1.89",
                     f.decay_rate[plate] - 2.0 * f.decay_rate_error[plate], kQModelDecayRate);
+  }
+  return verdict;
+}
+
+Verdict judge_miyata_force_classes(const MiyataCase& spec, const MiyataFigures& f) {
+  Verdict verdict;
+  if (spec.dimension != 3 || !f.force_distribution) return verdict;
+  for (std::size_t plate = 0; plate < 2; ++plate) {
+    const std::string name = plate_name(plate);
     // Fig. 37: small forces (f < 0.5) carry the smallest part of the load.
     const auto& load = f.load_by_force_class[plate];
     verdict.above(name + ": load on 0.5 <= f < 2 over the load on f < 0.5", load[1], load[0]);
     verdict.above(name + ": load on f >= 2 over the load on f < 0.5", load[2], load[0]);
   }
+  return verdict;
+}
+
+Verdict judge_miyata(const MiyataCase& spec, const MiyataFigures& f) {
+  Verdict verdict = judge_miyata_loading(spec, f);
+  verdict.add(judge_miyata_plate_contacts(spec, f));
+  verdict.add(judge_miyata_final_state(spec, f));
+  verdict.add(judge_miyata_load_shares(spec, f));
+  verdict.add(judge_miyata_force_tail(spec, f));
+  verdict.add(judge_miyata_force_classes(spec, f));
   return verdict;
 }
 

@@ -128,21 +128,29 @@ MiyataFigures miyata_figures(const MiyataCase& spec, const std::filesystem::path
 void print_miyata_report(std::FILE* out, const std::string& title, const MiyataFigures& figures);
 
 // What the seed's text states of one sample (3.2(3), 3.3(2); docs/VALIDATION.md
-// lists the bounds): the plate reaches its stress; the initial state is
-// over four times softer than the final one, which is straight (R² above
-// 0.99 for a smooth 2D surface, 0.85 for a rough one, 0.95 in 3D) and, in
-// 3D, gives way nowhere by more than kCollapse of its stress; the loading
-// plate gains contacts fastest in the initial state and slowest in the
-// final one (Figs. 29, 33); in 2D the contacts formed first carry most of
-// the load (Fig. 30); in 3D each plate's force tail above f = 1 decays at a
-// rate whose interval reaches the seed's curves (Fig. 35) and small forces
-// carry the least of the load (Fig. 37).
+// lists the bounds), in parts, so that a reduced sample can be judged on
+// what its size can show. judge_miyata is all of them.
 inline constexpr double kCollapse = 0.1;
 inline constexpr double kMuethDecayRate = 1.39;   // eq. (61) above f = 1 (force_tail.csv)
 inline constexpr double kQModelDecayRate = 1.89;  // eq. (62), N = 3
+// Figs. 26, 32: the plate reaches its stress; the initial state is over
+// four times softer than the final one.
+Verdict judge_miyata_loading(const MiyataCase& spec, const MiyataFigures& figures);
+// Figs. 29, 33: the loading plate gains contacts fastest in the initial
+// state and slowest in the final one.
+Verdict judge_miyata_plate_contacts(const MiyataCase& spec, const MiyataFigures& figures);
+// Figs. 26, 32: the final state is straight (R² above 0.99 for a smooth 2D
+// surface, 0.85 for a rough one, 0.95 in 3D) and, in 3D, gives way nowhere
+// by more than kCollapse of its stress ("behave as a continuum").
+Verdict judge_miyata_final_state(const MiyataCase& spec, const MiyataFigures& figures);
+// Fig. 30 (2D): the contacts formed first carry most of the load.
+Verdict judge_miyata_load_shares(const MiyataCase& spec, const MiyataFigures& figures);
+// Fig. 35 (3D): each plate's force tail above f = 1 decays at a rate whose
+// interval reaches the seed's curves.
+Verdict judge_miyata_force_tail(const MiyataCase& spec, const MiyataFigures& figures);
+// Fig. 37 (3D): small forces carry the least of the load.
+Verdict judge_miyata_force_classes(const MiyataCase& spec, const MiyataFigures& figures);
 Verdict judge_miyata(const MiyataCase& spec, const MiyataFigures& figures);
-// The name of judge_miyata's check on the final state's R².
-inline constexpr const char* kFinalRSquaredCheck = "final state's R²";
 // One row of the figures, miyata_summary.csv, in `directory`.
 void write_miyata_summary(const std::filesystem::path& directory, const MiyataRun& run, const MiyataFigures& f);
 

@@ -93,11 +93,13 @@ std::vector<MiyataPacking> read_miyata_packings(const MiyataCase& spec,
 
 int most_of(std::size_t packings) { return static_cast<int>(std::ceil(0.8 * static_cast<double>(packings))); }
 
-Verdict judge_over_packings(const std::vector<MiyataPacking>& packings, int needed) {
+Verdict judge_over_packings(const MiyataCase& spec, const std::vector<MiyataPacking>& packings, int needed,
+                            MiyataJudge judge) {
   std::vector<std::string> names;
   std::map<std::string, std::vector<std::string>> failed;
   for (const MiyataPacking& p : packings) {
-    for (const Check& check : p.verdict.checks()) {
+    const Verdict verdict = judge(spec, p.figures);
+    for (const Check& check : verdict.checks()) {
       if (std::find(names.begin(), names.end(), check.name) == names.end()) names.push_back(check.name);
       if (!check.passed) failed[check.name].push_back(p.label);
     }
@@ -113,6 +115,46 @@ Verdict judge_over_packings(const std::vector<MiyataPacking>& packings, int need
     }
     verdict.expect(name + ", over packings", held >= needed, detail);
   }
+  return verdict;
+}
+
+namespace {
+
+// Everything judge_miyata asks but Fig. 30's percentages.
+Verdict judge_miyata_events(const MiyataCase& spec, const MiyataFigures& f) {
+  Verdict verdict = judge_miyata_loading(spec, f);
+  verdict.add(judge_miyata_plate_contacts(spec, f));
+  verdict.add(judge_miyata_final_state(spec, f));
+  verdict.add(judge_miyata_force_tail(spec, f));
+  verdict.add(judge_miyata_force_classes(spec, f));
+  return verdict;
+}
+
+// Fig. 30 of the typical packing: each share the median over the packings.
+Verdict judge_median_load_shares(const MiyataCase& spec, const std::vector<MiyataPacking>& packings) {
+  std::vector<double> first, first_two, last;
+  for (const MiyataPacking& p : packings) {
+    first.push_back(p.figures.initial_load_share);
+    first_two.push_back(p.figures.initial_load_share + p.figures.transition_load_share);
+    last.push_back(p.figures.final_load_share);
+  }
+  MiyataFigures typical;
+  typical.initial_load_share = median(first);
+  typical.transition_load_share = median(first_two) - typical.initial_load_share;
+  typical.final_load_share = median(last);
+  const Verdict shares = judge_miyata_load_shares(spec, typical);
+  Verdict verdict;
+  for (const Check& check : shares.checks()) {
+    verdict.expect(check.name + ", median over packings", check.passed, check.detail);
+  }
+  return verdict;
+}
+
+}  // namespace
+
+Verdict judge_miyata_over_packings(const MiyataCase& spec, const std::vector<MiyataPacking>& packings) {
+  Verdict verdict = judge_over_packings(spec, packings, most_of(packings.size()), judge_miyata_events);
+  verdict.add(judge_median_load_shares(spec, packings));
   return verdict;
 }
 

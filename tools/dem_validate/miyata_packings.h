@@ -41,9 +41,18 @@ std::vector<MiyataPacking> read_miyata_packings(const MiyataCase& spec,
 // The packings needed for "most": four of five, 80 % rounded up.
 int most_of(std::size_t packings);
 
-// Every check of judge_miyata holds in at least `needed` packings; each
-// line says in how many it held and which it failed.
-Verdict judge_over_packings(const std::vector<MiyataPacking>& packings, int needed);
+// Every check of `judge` holds in at least `needed` packings; each line
+// says in how many it held and which it failed.
+using MiyataJudge = Verdict (*)(const MiyataCase&, const MiyataFigures&);
+Verdict judge_over_packings(const MiyataCase& spec, const std::vector<MiyataPacking>& packings, int needed,
+                            MiyataJudge judge);
+
+// The seed's statements judged over packings: what it says happens (the
+// curve's states, the contact rates, a straight final state, Fig. 35's
+// tail, Fig. 37's shares) must happen in most packings; Fig. 30's
+// percentages, numbers read off one sample, are compared as the typical
+// packing's: the medians of the shares over the packings.
+Verdict judge_miyata_over_packings(const MiyataCase& spec, const std::vector<MiyataPacking>& packings);
 
 // One line per packing: the figures the seed speaks of.
 void print_packings_table(std::FILE* out, const MiyataCase& spec, const std::vector<MiyataPacking>& packings);
