@@ -37,6 +37,7 @@ CsvTable CsvTable::read(const std::filesystem::path& file) {
                           " fields where the header has " + std::to_string(table.header_.size()));
     }
     table.rows_.push_back(std::move(fields));
+    table.lines_.push_back(number);
   }
   return table;
 }
@@ -60,7 +61,7 @@ double CsvTable::number(std::size_t row, std::string_view column) const {
   char* end = nullptr;
   const double value = std::strtod(field.c_str(), &end);
   if (field.empty() || end != field.c_str() + field.size()) {
-    throw CsvTableError(file_.string() + ":" + std::to_string(row + 2) + ": column " + std::string(column) +
+    throw CsvTableError(file_.string() + ":" + std::to_string(lines_.at(row)) + ": column " + std::string(column) +
                         " is not a number (\"" + field + "\")");
   }
   return value;

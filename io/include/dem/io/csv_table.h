@@ -39,6 +39,7 @@ class CsvTable {
   std::filesystem::path file_;
   std::vector<std::string> header_;
   std::vector<std::vector<std::string>> rows_;
+  std::vector<std::size_t> lines_;  // each row's line in the file, for errors
 };
 
 }  // namespace dem::io
