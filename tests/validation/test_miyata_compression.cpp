@@ -99,8 +99,8 @@ TEST(MiyataCompression, EllipsoidsReducedOverPackings) {
     verdict.add(judge_miyata_force_classes(spec, figures));
     return verdict;
   };
-  const Verdict verdict = judge_over_packings(read_miyata_case(case_file("ellipsoids_reduced")), packings,
-                                              most_of(packings.size()), judge);
+  const Verdict verdict =
+      judge_over_packings(read_miyata_case(case_file("ellipsoids_reduced")), packings, most_of(packings.size()), judge);
   verdict.print(stdout, "over packings");
   EXPECT_TRUE(verdict.passed()) << verdict;
 }

@@ -150,6 +150,8 @@ Verdict judge_miyata_load_shares(const MiyataCase& spec, const MiyataFigures& fi
 Verdict judge_miyata_force_tail(const MiyataCase& spec, const MiyataFigures& figures);
 // Fig. 37 (3D): small forces carry the least of the load.
 Verdict judge_miyata_force_classes(const MiyataCase& spec, const MiyataFigures& figures);
+// All of them but Fig. 30's percentages: what the seed says happens.
+Verdict judge_miyata_events(const MiyataCase& spec, const MiyataFigures& figures);
 Verdict judge_miyata(const MiyataCase& spec, const MiyataFigures& figures);
 // One row of the figures, miyata_summary.csv, in `directory`.
 void write_miyata_summary(const std::filesystem::path& directory, const MiyataRun& run, const MiyataFigures& f);

@@ -120,16 +120,6 @@ Verdict judge_over_packings(const MiyataCase& spec, const std::vector<MiyataPack
 
 namespace {
 
-// Everything judge_miyata asks but Fig. 30's percentages.
-Verdict judge_miyata_events(const MiyataCase& spec, const MiyataFigures& f) {
-  Verdict verdict = judge_miyata_loading(spec, f);
-  verdict.add(judge_miyata_plate_contacts(spec, f));
-  verdict.add(judge_miyata_final_state(spec, f));
-  verdict.add(judge_miyata_force_tail(spec, f));
-  verdict.add(judge_miyata_force_classes(spec, f));
-  return verdict;
-}
-
 // Fig. 30 of the typical packing: each share the median over the packings.
 Verdict judge_median_load_shares(const MiyataCase& spec, const std::vector<MiyataPacking>& packings) {
   std::vector<double> first, first_two, last;
