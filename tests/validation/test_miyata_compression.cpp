@@ -77,8 +77,7 @@ TEST(MiyataCompression, FullCircularSamplesOverPackings) {
     const Verdict verdict = judge_miyata_over_packings(read_miyata_case(case_file(name)), packings);
     verdict.print(stdout, std::string(name) + " over packings");
     EXPECT_TRUE(verdict.passed()) << name << ": " << verdict;
-    int releasing = 0;
-    for (const MiyataPacking& p : packings) releasing += p.figures.transition_drops + p.figures.final_drops > 0;
+    const int releasing = releasing_packings(packings);
     std::printf("%s: %d of %zu packings release stress after the initial state\n", name, releasing, packings.size());
     EXPECT_GE(releasing, most_of(packings.size())) << name;
   }

@@ -17,14 +17,6 @@ double median(std::vector<double> values) {
   return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-// Packings with a stress release after the initial state (a drop in the
-// transition or the final state).
-int releasing(const std::vector<MiyataPacking>& packings) {
-  return static_cast<int>(std::count_if(packings.begin(), packings.end(), [](const MiyataPacking& p) {
-    return p.figures.transition_drops + p.figures.final_drops > 0;
-  }));
-}
-
 double median_contacts(const std::vector<MiyataPacking>& packings, bool at_final) {
   std::vector<double> values;
   for (const MiyataPacking& p : packings) {
@@ -89,6 +81,12 @@ std::vector<MiyataPacking> read_miyata_packings(const MiyataCase& spec,
     packings.push_back(std::move(p));
   }
   return packings;
+}
+
+int releasing_packings(const std::vector<MiyataPacking>& packings) {
+  return static_cast<int>(std::count_if(packings.begin(), packings.end(), [](const MiyataPacking& p) {
+    return p.figures.transition_drops + p.figures.final_drops > 0;
+  }));
 }
 
 int most_of(std::size_t packings) { return static_cast<int>(std::ceil(0.8 * static_cast<double>(packings))); }
@@ -172,12 +170,12 @@ Verdict judge_miyata_surfaces(const std::vector<MiyataPacking>& cs, const std::v
   // of circular particles ... There is no stress release for samples of
   // rectangular particles."
   for (const auto& [name, packings] : {std::pair{"CS", &cs}, std::pair{"CR", &cr}}) {
-    const int count = releasing(*packings);
+    const int count = releasing_packings(*packings);
     verdict.expect(std::string(name) + " (circles) releases stress after the initial state", count >= needed,
                    of(count, packings->size()) + ", at least " + std::to_string(needed) + " needed");
   }
   for (const auto& [name, packings] : {std::pair{"SS", &ss}, std::pair{"SR", &sr}}) {
-    const int count = releasing(*packings);
+    const int count = releasing_packings(*packings);
     const int allowed = static_cast<int>(packings->size()) - needed;
     verdict.expect(std::string(name) + " (rectangles) releases no stress after the initial state", count <= allowed,
                    of(count, packings->size()) + " release, at most " + std::to_string(allowed) + " allowed");

@@ -38,6 +38,10 @@ std::vector<MiyataPacking> run_miyata_packings(const std::filesystem::path& case
 std::vector<MiyataPacking> read_miyata_packings(const MiyataCase& spec,
                                                 const std::vector<std::filesystem::path>& directories);
 
+// The packings with a stress release after the initial state (a drop in
+// the transition or the final state).
+int releasing_packings(const std::vector<MiyataPacking>& packings);
+
 // The packings needed for "most": four of five, 80 % rounded up.
 int most_of(std::size_t packings);
 
