@@ -169,9 +169,9 @@ def test_a_field_appended_to_telemetry_needs_a_version_and_is_judged(tmp_path):
         (idl / path.name).write_text(path.read_text())
     telemetry = idl / "telemetry.idl"
     text = telemetry.read_text()
-    end = "double out_of_balance;      // largest particle resultant / largest contact force\n"
+    end = "double inertial_number;     // deformation rate x diameter / sqrt(mean_stress / density)\n"
     assert end in text
-    telemetry.write_text(text.replace(end, end + "        double inertial_number;\n"))
+    telemetry.write_text(text.replace(end, end + "        double coordination_without_rattlers;\n"))
     history = tmp_path / "history.json"
     history.write_text((SOURCE / "idl" / "interface_history.json").read_text())
     package = tmp_path / "package.xml"
@@ -193,10 +193,10 @@ def test_a_field_appended_to_telemetry_needs_a_version_and_is_judged(tmp_path):
     assert generate("--cpp-interface", header, "--history", history, "--package-xml", package,
                     idl_dir=idl).returncode == 0
     forms = [line for line in header.read_text().splitlines() if '"0.1.0' in line or '"0.2.0' in line]
-    stats = [line for line in forms if "ContactStats_" in line and '"0.1.0 as of 0308f76 to 911c994, 0.2.0"' in line]
-    assert stats and stats[0].endswith('"lacks inertial_number", true, false},'), forms
-    reply = [line for line in forms if "Reply_" in line and "0.2.0" in line]
-    assert reply and reply[0].endswith('"lacks stats.inertial_number", false, false},'), forms
+    stats = [line for line in forms if "ContactStats_" in line and '"0.2.0"' in line]
+    assert stats and stats[0].endswith('"lacks coordination_without_rattlers", true, false},'), forms
+    reply = [line for line in forms if "Reply_" in line and '"0.2.0"' in line]
+    assert reply and reply[0].endswith('"lacks stats.coordination_without_rattlers", false, false},'), forms
 
 
 def test_dds_md_lists_every_messages_fields(tmp_path):

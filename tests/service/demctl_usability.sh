@@ -63,6 +63,7 @@ expect 0 "monitor --wall top --wall bottom" "${d[@]}" monitor -n 2 --wall top --
 expect 0 "monitor --wall bottom --wall top" "${d[@]}" monitor -n 2 --wall bottom --wall top --csv "$out/b.csv"
 columns="cycle,time,bottom_stress,bottom_settlement,top_stress,top_settlement,contacts,coordination_number"
 columns+=",sliding_fraction,mean_normal_force,max_normal_force,kinetic_energy,out_of_balance"
+columns+=",kinetic_to_elastic,unbalanced_force,inertial_number,elastic_energy,mean_stress"
 for file in a b; do
   header=$(head -1 "$out/$file.csv")
   [ "$header" = "$columns" ] || { : >"$out/last.out"; echo "$header" >"$out/last.err"; fail "$file.csv's columns"; }

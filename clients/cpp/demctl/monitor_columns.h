@@ -38,6 +38,16 @@ inline constexpr std::array kStatisticsColumns{
                      [](const ContactStats& s) { return s.kinetic_energy; }},
     StatisticsColumn{"out_of_balance", nullptr, 0, nullptr, 1.0,
                      [](const ContactStats& s) { return s.out_of_balance; }},
+    // The quasi-static measures (docs/CASES.md): how far the sample is
+    // from the equilibrium a slow test assumes.
+    StatisticsColumn{"kinetic_to_elastic", "KE/elastic", 10, "%*.2g", 1.0,
+                     [](const ContactStats& s) { return s.kinetic_to_elastic; }},
+    StatisticsColumn{"unbalanced_force", "unbalanced", 10, "%*.2g", 1.0,
+                     [](const ContactStats& s) { return s.unbalanced_force; }},
+    StatisticsColumn{"inertial_number", "I", 8, "%*.2g", 1.0, [](const ContactStats& s) { return s.inertial_number; }},
+    StatisticsColumn{"elastic_energy", nullptr, 0, nullptr, 1.0,
+                     [](const ContactStats& s) { return s.elastic_energy; }},
+    StatisticsColumn{"mean_stress", nullptr, 0, nullptr, 1.0, [](const ContactStats& s) { return s.mean_stress; }},
 };
 
 }  // namespace demctl

@@ -250,8 +250,8 @@ std::uint64_t Client::send(protocol::Command command) {
           return outstanding_.size() < std::max<std::size_t>(options_.max_outstanding, 1);
         })) {
       throw ReplyTimeout(std::to_string(outstanding_.size()) + " requests to server \"" + options_.server +
-                         "\" still unanswered after " + seconds(options_.reply_timeout) +
-                         " (at most " + std::to_string(options_.max_outstanding) + " may be outstanding)");
+                         "\" still unanswered after " + seconds(options_.reply_timeout) + " (at most " +
+                         std::to_string(options_.max_outstanding) + " may be outstanding)");
     }
     command.request_id = next_request_++;
     outstanding_.insert(command.request_id);

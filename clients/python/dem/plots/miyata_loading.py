@@ -18,21 +18,11 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
+from .quasi_static import QUASI_STATIC, draw_quasi_static_panels
 from .figure import finish
 from .miyata_run import STATES, MissingInput, select
 
 STATE_COLOURS = {"initial": "tab:blue", "transition": "tab:orange", "final": "tab:green"}
-
-# The quasi-static measures of assembly.csv (docs/CASES.md "Quasi-static
-# measures"): the column, its label, log scale, and the reference line with
-# what it marks.
-QUASI_STATIC = (
-    ("kinetic_to_elastic", "kinetic / elastic\nenergy", True, 1.0, "1: motion holds as much as the springs"),
-    ("unbalanced_force", "unbalanced force\n(mean |ΣF| / mean F)", True, 1e-2, "1e-2"),
-    ("sliding_fraction", "sliding fraction", False, 0.25, "25 %: Randall's largest"),
-    ("inertial_number", "inertial number I", True, 1e-3, "1e-3: quasi-static below (GDR MiDi)"),
-)
-
 
 def new_figure(size):
     figure = Figure(figsize=size, dpi=100, layout="constrained")
@@ -119,21 +109,8 @@ def _draw_quasi_static(axes, compression, measures):
     cycles = measures["cycle"].astype(int)
     rows = np.array([c in settlement_at for c in cycles])
     x = np.array([settlement_at[c] for c in cycles[rows]])
-    for ax, (column, label, log, reference, meaning) in zip(axes, QUASI_STATIC):
-        if column not in measures:
-            ax.text(0.5, 0.5, f"assembly.csv has no {column} (an older dem)", transform=ax.transAxes,
-                    ha="center", va="center")
-            ax.set_ylabel(label, fontsize="small")
-            continue
-        y = measures[column][rows]
-        shown = np.isfinite(y) & ((y > 0) if log else np.ones_like(y, dtype=bool))
-        ax.plot(x[shown], y[shown], color="tab:purple", linewidth=0.9)
-        ax.axhline(reference, color="0.3", linestyle=":", linewidth=1, label=meaning)
-        if log:
-            ax.set_yscale("log")
-        ax.set_ylabel(label, fontsize="small")
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize="x-small", loc="upper right")
+    draw_quasi_static_panels(axes, x, {column: measures[column][rows] for column, *_ in QUASI_STATIC
+                                       if column in measures})
 
 
 def _against_stress(run):

@@ -25,10 +25,10 @@ class Topic {
  public:
   Topic(const Participant& participant, std::string name)
       : name_(std::move(name)),
-        entity_((protect_type_information(*TypeSupport<T>::descriptor()),
-                 check(dds_create_topic(participant.handle(), TypeSupport<T>::descriptor(), name_.c_str(), nullptr,
-                                        nullptr),
-                       "creating topic " + name_))) {}
+        entity_((
+            protect_type_information(*TypeSupport<T>::descriptor()),
+            check(dds_create_topic(participant.handle(), TypeSupport<T>::descriptor(), name_.c_str(), nullptr, nullptr),
+                  "creating topic " + name_))) {}
 
   dds_entity_t handle() const { return entity_.handle(); }
   const std::string& name() const { return name_; }
