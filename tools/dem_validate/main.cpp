@@ -6,8 +6,8 @@
 //   dem_validate mindlin-loading --out DIR  (Randall 1989, 5.2)
 //   dem_validate box-settle --out DIR       (3D settling: weight on the floor, energy budget)
 //   dem_validate verification --out DIR [--seeds S,...]      (Cundall & Strack 1979, Tables 1-3: stages A and B)
-//   dem_validate randall-compression --case FILE --out DIR   (Randall 1989, 6.4.3: 100 kPa)
-//   dem_validate randall-shear --case FILE --out DIR         (Randall 1989, 6.5.2: constant-volume shear)
+//   dem_validate randall-compression --case FILE --out DIR [--seeds S,...]  (Randall 1989, 6.4.3: 100 kPa)
+//   dem_validate randall-shear --case FILE --out DIR [--seeds S,...]        (6.5.2: constant-volume shear)
 //   dem_validate hopper --case FILE --out DIR [--runs 45:10,30:10,...]  (Randall 1989, 6.2: discharge rates)
 //   dem_validate deposition --case FILE --out DIR             (Randall 1989, 6.3: pluvial deposition)
 //   dem_validate rolling-to-rest --out DIR  (rolling resistance: a ball stops where the closed form says)
@@ -123,6 +123,7 @@ int main(int argc, char** argv) {
   verification->add_option("--seeds", verification_seeds, "packing seeds (default: the cases' own)")->delimiter(',');
   verification->add_option("--out", out, "directory for verification.csv (stages A and B, wall by wall)")->required();
   std::filesystem::path randall_case;
+  std::vector<std::uint64_t> randall_seeds;
   auto* randall_compression = app.add_subcommand(
       "randall-compression", "Randall (1989) 6.4.3: a cases/randall assembly compressed to 100 kPa, then friction");
   auto* randall_shear =
@@ -130,6 +131,9 @@ int main(int argc, char** argv) {
   for (auto* sub : {randall_compression, randall_shear}) {
     sub->add_option("--case", randall_case, "a cases/randall case file")->required()->check(CLI::ExistingFile);
     sub->add_option("--out", out, "directory for randall.csv, roses.csv, obliquity.csv and the snapshots")->required();
+    sub->add_option("--seeds", randall_seeds,
+                    "packing seeds: one run each (in OUT/packing_SEED/), the median packing judged")
+        ->delimiter(',');
   }
   std::filesystem::path hopper_case;
   std::vector<std::string> hopper_runs = {"45:10", "30:10", "15:10", "30:5", "30:14"};
@@ -191,11 +195,7 @@ int main(int argc, char** argv) {
     if (*mindlin) verdict = dem::validation::report_mindlin_loading(out);
     if (*box) verdict = dem::validation::report_box_settle(cases / "validation" / "box_settle.case.txtpb", out);
     if (*randall_compression || *randall_shear) {
-      const dem::validation::RandallRun run =
-          dem::validation::run_randall(randall_case, static_cast<bool>(*randall_shear), out);
-      dem::validation::print_randall(stdout, run);
-      verdict = dem::validation::judge_randall_compression(run);
-      if (*randall_shear) verdict.add(dem::validation::judge_randall_shear(run));
+      verdict = dem::validation::report_randall(randall_case, static_cast<bool>(*randall_shear), out, randall_seeds);
     }
     if (*hopper) {
       std::vector<dem::validation::HopperRun> runs;

@@ -10,6 +10,7 @@
 #include "dem/io/case_loader.h"
 #include "dem/io/csv_file.h"
 #include "dem/programme.h"
+#include "packing_seed.h"
 
 namespace dem::validation {
 
@@ -87,14 +88,12 @@ constexpr double kVerificationRatioTolerance = 0.12;
 VerificationRun run_verification(const std::filesystem::path& case_file, std::optional<std::uint64_t> packing_seed) {
   const auto start = std::chrono::steady_clock::now();
   io::LoadedCase loaded = io::load_case_file(case_file);
-  bool reseeded = false;
-  for (proto::ParticleSource& source : *loaded.message.mutable_particles()) {
-    if (!source.has_random_packing()) continue;
-    if (packing_seed) source.mutable_random_packing()->set_seed(*packing_seed);
-    packing_seed = source.random_packing().seed();
-    reseeded = true;
-  }
-  if (!reseeded) throw std::runtime_error(case_file.string() + ": the verification case has no random_packing");
+  const bool has_packing = std::ranges::any_of(loaded.message.particles(), [](const proto::ParticleSource& source) {
+    return source.has_random_packing();
+  });
+  if (!has_packing) throw std::runtime_error(case_file.string() + ": the verification case has no random_packing");
+  if (packing_seed) reseed_packings(loaded.message, *packing_seed);
+  packing_seed = first_packing_seed(loaded.message);
   const io::CaseDefinition def = io::convert_case(loaded.message, loaded.source);
   VerificationRun run;
   run.name = def.name;
