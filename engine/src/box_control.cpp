@@ -92,20 +92,50 @@ BoxMeasureT<Dim> measure_box(const Walls<Dim>& walls, const BoxControlT<Dim>& bo
   return m;
 }
 
+namespace {
+
+// Each axis's walls' speed towards each other for the next step: strain
+// rates, and servos on the stresses of the last force pass.
 template <int Dim>
-void set_box_velocities(const Walls<Dim>& walls, const BoxControlT<Dim>& box, std::vector<Vec<Dim>>& velocity) {
-  const Vec<Dim> extent = box_extent(walls, box);
+Vec<Dim> inward_speeds(const Walls<Dim>& walls, const BoxControlT<Dim>& box, const Vec<Dim>& extent) {
   const Vec<Dim> stress = box_stress(walls, box, extent);
   const Vec<Dim> target = box_targets(box, stress);
+  Vec<Dim> inwards;
   for (int i = 0; i < Dim; ++i) {
     const BoxAxisDef& a = box.axes[static_cast<std::size_t>(i)];
-    // Each wall's speed towards the other.
-    const double inwards = a.control == AxisControl::kStrainRate
-                               ? 0.5 * a.strain_rate * extent[i]
-                               : std::clamp(box.gain * (target[i] - stress[i]), -box.max_speed, box.max_speed);
-    velocity[a.lower.index()] = inwards * unit<Dim>(i);
-    velocity[a.upper.index()] = -inwards * unit<Dim>(i);
+    inwards[i] = a.control == AxisControl::kStrainRate
+                     ? 0.5 * a.strain_rate * extent[i]
+                     : std::clamp(box.gain * (target[i] - stress[i]), -box.max_speed, box.max_speed);
   }
+  return inwards;
+}
+
+}  // namespace
+
+template <int Dim>
+void set_box_velocities(const Walls<Dim>& walls, const BoxControlT<Dim>& box, std::vector<Vec<Dim>>& velocity) {
+  const Vec<Dim> inwards = inward_speeds(walls, box, box_extent(walls, box));
+  for (int i = 0; i < Dim; ++i) {
+    const BoxAxisDef& a = box.axes[static_cast<std::size_t>(i)];
+    velocity[a.lower.index()] = inwards[i] * unit<Dim>(i);
+    velocity[a.upper.index()] = -inwards[i] * unit<Dim>(i);
+  }
+}
+
+template <int Dim>
+ContinuumFieldT<Dim> box_continuum(const Walls<Dim>& walls, const BoxControlT<Dim>& box) {
+  const Vec<Dim> extent = box_extent(walls, box);
+  const Vec<Dim> inwards = inward_speeds(walls, box, extent);
+  ContinuumFieldT<Dim> field;
+  for (int i = 0; i < Dim; ++i) {
+    const BoxAxisDef& a = box.axes[static_cast<std::size_t>(i)];
+    // The box's walls close at 2 inwards over its extent: the velocity
+    // gradient along the axis, extension positive (Randall's e_ii), and
+    // the field is still halfway between them, where they both move.
+    field.rate[i] = extent[i] > 0.0 ? -2.0 * inwards[i] / extent[i] : 0.0;
+    field.centre[i] = 0.5 * (walls.def[a.lower.index()].point[i] + walls.def[a.upper.index()].point[i]);
+  }
+  return field;
 }
 
 template <int Dim>
@@ -162,6 +192,15 @@ void check_box_control(const BoxControlT<Dim>& box, const std::vector<WallDefT<D
         "box control: reference_extent must be >= 0");
 }
 
+template <int Dim>
+void check_box_continuum(const BoxControlT<Dim>& box, const PeriodicDefT<Dim>& periodic) {
+  check(!box.continuum || !periodic.any(), "box control: continuum is not available with periodic boundaries");
+}
+
+template ContinuumFieldT<2> box_continuum(const Walls<2>&, const BoxControlT<2>&);
+template ContinuumFieldT<3> box_continuum(const Walls<3>&, const BoxControlT<3>&);
+template void check_box_continuum(const BoxControlT<2>&, const PeriodicDefT<2>&);
+template void check_box_continuum(const BoxControlT<3>&, const PeriodicDefT<3>&);
 template Vec2 box_extent(const Walls<2>&, const BoxControlT<2>&);
 template Vec3 box_extent(const Walls<3>&, const BoxControlT<3>&);
 template BoxMeasureT<2> measure_box(const Walls<2>&, const BoxControlT<2>&);

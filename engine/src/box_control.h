@@ -19,6 +19,12 @@ BoxMeasureT<Dim> measure_box(const Walls<Dim>& walls, const BoxControlT<Dim>& bo
 template <int Dim>
 void set_box_velocities(const Walls<Dim>& walls, const BoxControlT<Dim>& box, std::vector<Vec<Dim>>& velocity);
 
+// The continuum field of a box with `continuum` for the next step (Randall
+// 4.5.2, eqs. 4.43-4.44): each axis's rate from the speed its walls are
+// given (set_box_velocities), about the box's centre.
+template <int Dim>
+ContinuumFieldT<Dim> box_continuum(const Walls<Dim>& walls, const BoxControlT<Dim>& box);
+
 // The distance between each axis's two walls, m.
 template <int Dim>
 Vec<Dim> box_extent(const Walls<Dim>& walls, const BoxControlT<Dim>& box);
@@ -29,5 +35,10 @@ Vec<Dim> box_extent(const Walls<Dim>& walls, const BoxControlT<Dim>& box);
 // axes to follow or to set).
 template <int Dim>
 void check_box_control(const BoxControlT<Dim>& box, const std::vector<WallDefT<Dim>>& walls);
+
+// A continuum field carries the particles across the box: a periodic cell,
+// which does not deform, has none (DefinitionError).
+template <int Dim>
+void check_box_continuum(const BoxControlT<Dim>& box, const PeriodicDefT<Dim>& periodic);
 
 }  // namespace dem

@@ -41,7 +41,7 @@ AssemblyMeasures measure_assembly(const WorldState<Dim>& s) {
   for (std::size_t i = 0; i < p.size(); ++i) {
     m.kinetic_energy +=
         0.5 * p.mass[i] * p.velocity[i].squaredNorm() + 0.5 * p.spin_energy_product(i, p.angular_velocity[i]);
-    const double resultant = (p.force[i] + p.mass[i] * s.gravity).norm();
+    const double resultant = (p.force[i] + p.mass[i] * body_acceleration(s, p.position[i])).norm();
     max_resultant = std::max(max_resultant, resultant);
     resultants += resultant;
   }

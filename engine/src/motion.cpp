@@ -68,6 +68,7 @@ MotionStep& operator+=(MotionStep& a, const MotionStep& b) {
   a.gravity_work += b.gravity_work;
   a.global_damping += b.global_damping;
   a.local_damping += b.local_damping;
+  a.continuum_work += b.continuum_work;
   a.time_step_ratio = std::max(a.time_step_ratio, b.time_step_ratio);
   return a;
 }
@@ -96,6 +97,10 @@ struct MotionConstants {
   double alpha, alpha_rotation, keep, scale, keep_rotation, scale_rotation;
   double local, local_rotation;  // Miyata eq. 33
   bool wraps;
+  // Randall's fields (kField blocks only): the centripetal gravity, and the
+  // continuum field before and in this step (zero rates when there is none).
+  CentripetalGravityT<Dim> centripetal;
+  ContinuumFieldT<Dim> continuum_before, continuum;
 };
 
 template <int Dim>
@@ -118,14 +123,17 @@ MotionConstants<Dim> motion_constants(const MotionInputs<Dim>& in) {
   c.scale = 1.0 / (1.0 + 0.5 * c.alpha * dt);
   c.keep_rotation = 1.0 - 0.5 * c.alpha_rotation * dt;
   c.scale_rotation = 1.0 / (1.0 + 0.5 * c.alpha_rotation * dt);
+  if (in.centripetal != nullptr) c.centripetal = *in.centripetal;
+  if (in.continuum_before != nullptr) c.continuum_before = *in.continuum_before;
+  if (in.continuum != nullptr) c.continuum = *in.continuum;
   return c;
 }
 
 // The law of motion over particles [begin, end) for one kind of world:
-// local damping, an ellipsoid's inertia tensor and the energy budget are
-// chosen at compile time, so the common step (round particles, no budget)
-// carries none of them.
-template <int Dim, bool kLocal, bool kTensor, bool kEnergy>
+// local damping, an ellipsoid's inertia tensor, the energy budget and
+// Randall's fields (kField) are chosen at compile time, so the common step
+// (round particles, no budget) carries none of them.
+template <int Dim, bool kLocal, bool kTensor, bool kEnergy, bool kField>
 void move_block(Particles<Dim>& p, const MotionConstants<Dim> c, std::int64_t begin, std::int64_t end,
                 MotionStep& step) {
   Vec<Dim>* __restrict position = p.position.data();
@@ -142,8 +150,20 @@ void move_block(Particles<Dim>& p, const MotionConstants<Dim> c, std::int64_t be
   for (std::int64_t i = begin; i < end; ++i) {
     const double m = mass[i];
     // Body force m g added to the force sum (Cundall & Strack, Motion).
-    const Vec<Dim> resultant = force[i] + m * c.gravity;
-    const Vec<Dim> v0 = velocity[i];
+    Vec<Dim> body = c.gravity;
+    // The particle's own velocity and the continuum field's at its place
+    // (Randall eqs. 4.43-4.44): the velocity of the last step carries the
+    // field of the last step, where the particle stood then.
+    Vec<Dim> field_before = Vec<Dim>::Zero(), field = Vec<Dim>::Zero();
+    if constexpr (kField) {
+      body += c.centripetal.at(position[i]);
+      field_before = c.continuum_before.velocity(Vec<Dim>(position[i] - velocity[i] * dt));
+      field = c.continuum.velocity(position[i]);
+    }
+    const Vec<Dim> resultant = force[i] + m * body;
+    const Vec<Dim> velocity_before = velocity[i];
+    Vec<Dim> v0 = velocity_before;
+    if constexpr (kField) v0 -= field_before;
     const Spin<Dim> w0 = angular_velocity[i];
     Vec<Dim> local_force = Vec<Dim>::Zero();
     Spin<Dim> local_moment = Space<Dim>::zero_spin();
@@ -152,6 +172,9 @@ void move_block(Particles<Dim>& p, const MotionConstants<Dim> c, std::int64_t be
       local_moment = local_damping(moment[i], w0, c.local_rotation);
     }
     const Vec<Dim> v1 = (v0 * c.keep + (resultant + local_force) * (dt / m)) * c.scale;  // eq. 35
+    // The particle moves with its own velocity and the field's (eq. 4.41).
+    Vec<Dim> moved = v1;
+    if constexpr (kField) moved += field;
     Spin<Dim> spin_rate;
     if constexpr (kTensor) {
       spin_rate = angular_acceleration(rotation[i], p.principal_inertia[i], moment[i] + local_moment, w0);
@@ -159,10 +182,10 @@ void move_block(Particles<Dim>& p, const MotionConstants<Dim> c, std::int64_t be
       spin_rate = (moment[i] + local_moment) * (1.0 / inertia[i]);
     }
     const Spin<Dim> w1 = (w0 * c.keep_rotation + spin_rate * dt) * c.scale_rotation;  // eq. 36
-    velocity[i] = v1;
+    velocity[i] = moved;
     angular_velocity[i] = w1;
-    max_speed2 = std::max(max_speed2, v1.squaredNorm());
-    Vec<Dim> x = position[i] + v1 * dt;  // eq. 22a
+    max_speed2 = std::max(max_speed2, moved.squaredNorm());
+    Vec<Dim> x = position[i] + moved * dt;  // eq. 22a
     if (c.wraps) c.cell.wrap_step(x);
     position[i] = x;
     turn(rotation[i], w1, dt);  // eq. 23a
@@ -170,30 +193,40 @@ void move_block(Particles<Dim>& p, const MotionConstants<Dim> c, std::int64_t be
 
     if constexpr (kEnergy) {
       // Energy over the step, at the mid-step velocity the scheme is centred on.
+      // The damping acts on the particle's own velocity v; under a
+      // continuum field the particle's velocity is v + f, and what the
+      // kinetic energy gains besides the forces' work and the damping's
+      // loss, m (v + f)_mid . (f1 - f0) - alpha m v_mid . f_mid dt, is the
+      // field's work.
       const Vec<Dim> v_mid = 0.5 * (v0 + v1);
       const Spin<Dim> w_mid = 0.5 * (w0 + w1);
-      step.gravity_work += m * c.gravity.dot(v1) * dt;
+      step.gravity_work += m * body.dot(moved) * dt;
       step.global_damping +=
           (c.alpha * m * v_mid.squaredNorm() + c.alpha_rotation * p.spin_energy_product(i, w_mid)) * dt;
-      step.local_damping -= (local_force.dot(v_mid) + dot(local_moment, w_mid)) * dt;
+      const Vec<Dim> moved_mid = 0.5 * (velocity_before + moved);
+      step.local_damping -= (local_force.dot(moved_mid) + dot(local_moment, w_mid)) * dt;
+      if constexpr (kField) {
+        step.continuum_work +=
+            m * (moved_mid.dot(field - field_before) - c.alpha * v_mid.dot(0.5 * (field + field_before)) * dt);
+      }
     }
   }
   step.max_travel = std::sqrt(max_travel2);
   step.max_speed = std::sqrt(max_speed2);
 }
 
-template <int Dim, bool kLocal, bool kTensor, bool kEnergy>
+template <int Dim, bool kLocal, bool kTensor, bool kEnergy, bool kField>
 MotionStep move_particles(Particles<Dim>& p, const MotionInputs<Dim>& in) {
   const MotionConstants<Dim> c = motion_constants(in);
   const auto partials = for_blocks<MotionStep>(
       static_cast<std::int64_t>(p.size()), in.threads, [&](std::int64_t begin, std::int64_t end, MotionStep& step) {
-        if constexpr (!kLocal && !kTensor && !kEnergy) {
+        if constexpr (!kLocal && !kTensor && !kEnergy && !kField) {
           move_plain_block(p, c.gravity, c.cell, c.dt, c.keep, c.scale, c.keep_rotation, c.scale_rotation, begin, end,
                            step, in.hot_place, in.hot_motion);
         } else {
-          move_block<Dim, kLocal, kTensor, kEnergy>(p, c, begin, end, step);
+          move_block<Dim, kLocal, kTensor, kEnergy, kField>(p, c, begin, end, step);
         }
-        if (in.hot_place != nullptr && (kLocal || kTensor || kEnergy)) {
+        if (in.hot_place != nullptr && (kLocal || kTensor || kEnergy || kField)) {
           copy_hot_particles(p, in.hot_place, in.hot_motion, begin, end);
         }
       });
@@ -228,15 +261,23 @@ template <int Dim>
 MotionStep integrate_motion(Particles<Dim>& p, const MotionInputs<Dim>& in) {
   const bool local = in.damping.local_alpha > 0.0 || in.damping.local_alpha_rotation.value_or(0.0) > 0.0;
   const bool tensor = Dim == 3 && !p.principal_inertia.empty();
+  const bool field = in.centripetal != nullptr || in.continuum_before != nullptr || in.continuum != nullptr;
   MotionStep step;
-  auto run = [&]<bool kLocal, bool kTensor, bool kEnergy>() {
-    step = move_particles < Dim, kLocal, kTensor && Dim == 3, kEnergy > (p, in);
+  auto run = [&]<bool kLocal, bool kTensor, bool kEnergy, bool kField>() {
+    step = move_particles < Dim, kLocal, kTensor && Dim == 3, kEnergy, kField > (p, in);
+  };
+  auto with_field = [&]<bool kLocal, bool kTensor, bool kEnergy>() {
+    if (field) {
+      run.template operator()<kLocal, kTensor, kEnergy, true>();
+    } else {
+      run.template operator()<kLocal, kTensor, kEnergy, false>();
+    }
   };
   auto with_energy = [&]<bool kLocal, bool kTensor>() {
     if (in.energy_budget) {
-      run.template operator()<kLocal, kTensor, true>();
+      with_field.template operator()<kLocal, kTensor, true>();
     } else {
-      run.template operator()<kLocal, kTensor, false>();
+      with_field.template operator()<kLocal, kTensor, false>();
     }
   };
   auto with_tensor = [&]<bool kLocal>() {

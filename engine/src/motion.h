@@ -17,6 +17,7 @@ struct MotionStep {
   double gravity_work = 0.0;     // J (energy budget only)
   double global_damping = 0.0;   // J dissipated (energy budget only)
   double local_damping = 0.0;    // J dissipated (energy budget only)
+  double continuum_work = 0.0;   // J done by a box's continuum field (energy budget only)
   double time_step_ratio = 0.0;  // dt over the smallest particle-wise critical step (Randall 4.35-4.40)
 };
 
@@ -36,13 +37,22 @@ struct MotionInputs {
   // core's cache here, where the pass would read them back from memory.
   HotPlace<Dim>* hot_place = nullptr;
   HotMotion<Dim>* hot_motion = nullptr;
+  // Randall's centripetal gravity field (6.4.2), or null.
+  const CentripetalGravityT<Dim>* centripetal = nullptr;
+  // A box's continuum field (Randall 4.5.2): the one the velocities carry
+  // from the last step, and this step's; null when none.
+  const ContinuumFieldT<Dim>* continuum_before = nullptr;
+  const ContinuumFieldT<Dim>* continuum = nullptr;
 };
 
 // Time-centred central differences (Cundall & Strack eqs. 35-36, then
-// 22a-23a) with the body force, global damping (eq. 34; Miyata eq. 32) and
+// 22a-23a) with the body forces, global damping (eq. 34; Miyata eq. 32) and
 // local non-viscous damping (Miyata eq. 33). Positions that leave a
 // periodic cell enter it on the other side. Ellipsoids turn by Euler's
-// equations with their inertia tensor.
+// equations with their inertia tensor. Under a continuum field (Randall
+// 4.5.2) a particle's velocity is its own, integrated and damped as above,
+// plus the field's at its place (eqs. 4.43-4.44), and it moves with both
+// (eq. 4.41).
 template <int Dim>
 MotionStep integrate_motion(Particles<Dim>& particles, const MotionInputs<Dim>& inputs);
 

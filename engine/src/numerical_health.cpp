@@ -105,7 +105,7 @@ StepHealth HealthMonitorT<Dim>::assess(const BasicWorld<Dim>& world) {
   }
   const EnergyBudget& e = measures.energy;
   // A world without the energy budget books no work (gravity's, the
-  // walls', the dampers'): its residual would count every joule gravity
+  // walls', a continuum field's, the dampers'): its residual would count every joule gravity
   // puts in as created. Its blow-ups are caught by the other checks.
   if (world.energy_budget() && !referenced_ && health.cycle > 0) {
     created_at_start_ = health::created_energy(e);
@@ -114,7 +114,8 @@ StepHealth HealthMonitorT<Dim>::assess(const BasicWorld<Dim>& world) {
   }
   const double created = referenced_ ? health::created_energy(e) - created_at_start_ : 0.0;
   const double in_play =
-      std::abs(e.initial_kinetic) + std::abs(e.gravity_work) + std::abs(e.wall_work) + held_at_start_;
+      std::abs(e.initial_kinetic) + std::abs(e.gravity_work) + std::abs(e.wall_work) + std::abs(e.continuum_work) +
+      held_at_start_;
   most_in_play_ = std::max(most_in_play_, in_play);
   const bool beyond = referenced_ && created > round_off_ && created > limits_.max_energy_growth * most_in_play_;
   if (!beyond) suspect_created_ = 0.0;

@@ -165,7 +165,8 @@ std::vector<ParticleDefT<Dim>> generate_random_packing(const RandomPackingDefT<D
     if ((span.array() < 0.0).any()) {
       throw DefinitionError("random packing: radius " + std::to_string(size.radius) + " does not fit in the box");
     }
-    for (int k = 0; k < size.count; ++k) {
+    bool full = false;
+    for (int k = 0; k < size.count && !full; ++k) {
       bool done = false;
       for (int attempt = 0; attempt < def.max_attempts && !done; ++attempt) {
         if (++attempts % kStopPoll == 0 && def.stopped && def.stopped()) {
@@ -189,7 +190,9 @@ std::vector<ParticleDefT<Dim>> generate_random_packing(const RandomPackingDefT<D
         placed.push_back(p);
         done = true;
       }
-      if (!done) {
+      if (!done && def.next_size_when_full) {
+        full = true;  // Randall 4.4: on with the next smaller size
+      } else if (!done) {
         throw DefinitionError("random packing: no free place for particle " + std::to_string(k + 1) + " of " +
                               std::to_string(size.count) + " with radius " + std::to_string(size.radius) + " after " +
                               std::to_string(def.max_attempts) + " attempts; enlarge the box or reduce the count");

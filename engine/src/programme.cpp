@@ -1,6 +1,7 @@
 #include "dem/programme.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -64,13 +65,20 @@ bool stop_conditions_hold(const BasicWorld<Dim>& world, const StopConditions& un
       (!world.box_control() || world.box_measure().deviator_strain < *until.deviator_strain_above)) {
     return false;
   }
+  if (until.region_out_of_balance_below) {
+    const auto* region = std::get_if<RegionT<Dim>>(&until.region_out_of_balance_below->region);
+    assert(region != nullptr && "a region of another dimension than the world's");
+    const double ratio = world.out_of_balance(*region);
+    if (!(ratio > 0.0 && ratio < until.region_out_of_balance_below->value)) return false;
+  }
   return true;
 }
 
 bool has_stop_condition(const StopConditions& until) {
   return until.kinetic_energy_below || until.out_of_balance_below || until.kinetic_to_elastic_below ||
          until.unbalanced_force_below || until.servo_tolerance || until.wall_stress_above ||
-         until.wall_settlement_above || until.deviator_strain_above;
+         until.wall_settlement_above || until.deviator_strain_above ||
+         until.region_out_of_balance_below;
 }
 
 template bool stop_conditions_hold<2>(const BasicWorld<2>&, const StopConditions&);
@@ -118,6 +126,7 @@ void start_stage(BasicWorld<Dim>& world, const StageDefT<Dim>& stage) {
   for (const auto& [wall, motion] : stage.wall_motions) world.set_wall_motion(wall, motion);
   if (stage.box_control) world.set_box_control(stage.box_control);
   if (stage.damping) world.set_damping(*stage.damping);
+  if (stage.body_force) world.set_body_force(*stage.body_force);
   if (stage.time_step) {
     if (stage.time_step->fixed > 0.0) {
       world.set_fixed_time_step(stage.time_step->fixed);
@@ -190,6 +199,7 @@ StageDefT<Dim> stage_remainder(StageDefT<Dim> stage, std::uint64_t done) {
   stage.box_control.reset();
   stage.release_box_control = false;
   stage.damping.reset();
+  stage.body_force.reset();
   stage.time_step.reset();
   stage.frictions.clear();
   stage.cycles -= std::min(done, stage.cycles);

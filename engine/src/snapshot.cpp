@@ -156,6 +156,7 @@ WorldSnapshotT<Dim> save_snapshot(const WorldState<Dim>& s) {
   def.contact_models = s.contact_models;
   def.damping = s.damping;
   def.gravity = s.gravity;
+  def.centripetal_gravity = s.centripetal_gravity;
   def.planar_particle = s.planar_particle;
   def.periodic = s.periodic_def;
   def.contact_tolerance = s.contact_tolerance;
@@ -222,6 +223,7 @@ WorldSnapshotT<Dim> save_snapshot(const WorldState<Dim>& s) {
   snap.time = s.time;
   snap.time_step = s.time_step;
   snap.critical_time_step = s.critical_time_step;
+  snap.continuum = s.continuum;
   return snap;
 }
 
@@ -260,6 +262,7 @@ void restore_snapshot(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) {
   s.time = snap.time;
   s.time_step = snap.time_step;
   s.critical_time_step = snap.critical_time_step;
+  s.continuum = snap.continuum;
   restore_contact_table(s, snap);
 }
 

@@ -75,6 +75,16 @@ std::uint64_t hash_state(const WorldState<Dim>& s) {
     h.add(w.direction);
     if (w.removed) h.add(w.removed);  // only then, so the hash of a world without removed walls is as it was
   }
+  // The fields that move the particles besides the forces, only when set,
+  // so the hash of a world without them is as it was.
+  if (s.centripetal_gravity) {
+    h.add(s.centripetal_gravity->centre);
+    h.add(s.centripetal_gravity->acceleration);
+  }
+  if (s.continuum) {
+    h.add(s.continuum->rate);
+    h.add(s.continuum->centre);
+  }
   return h.value();
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "box_control.h"
 #include "broad_phase.h"
 #include "contact_forces.h"
 #include "dem/error.h"
@@ -48,10 +49,16 @@ template <int Dim>
 void particle_motion(WorldState<Dim>& s, const StepContext& step) {
   // The pass's copies, when it keeps them (large beds) at this size.
   const bool hot = s.blocks.hot_place.size() == s.particles.size() && !s.particles.position.empty();
+  // The continuum field of a box (Randall 4.5.2) this step, from the
+  // speeds its walls are given next: the particles move with it too.
+  std::optional<ContinuumFieldT<Dim>> continuum;
+  if (s.walls.box && s.walls.box->continuum) continuum = box_continuum(s.walls, *s.walls.box);
   const MotionStep motion = integrate_motion(
       s.particles, MotionInputs<Dim>{s.periodic, s.gravity, s.damping, step.dt, step.threads, step.energy_budget,
                                      step.keep_force, step.check_step, hot ? s.blocks.hot_place.data() : nullptr,
-                                     hot ? s.blocks.hot_motion.data() : nullptr});
+                                     hot ? s.blocks.hot_motion.data() : nullptr, s.centripetal_gravity ? &*s.centripetal_gravity : nullptr,
+                                     s.continuum ? &*s.continuum : nullptr, continuum ? &*continuum : nullptr});
+  s.continuum = continuum;
   s.blocks.hot_fresh = hot;
   s.particle_travel = motion.max_travel;
   s.near_slack -= 2.0 * motion.max_speed * step.dt;
@@ -59,6 +66,7 @@ void particle_motion(WorldState<Dim>& s, const StepContext& step) {
   s.energy.gravity_work += motion.gravity_work;
   s.energy.global_damping += motion.global_damping;
   s.energy.local_damping += motion.local_damping;
+  s.energy.continuum_work += motion.continuum_work;
   if (step.check_step) s.time_step_ratio = motion.time_step_ratio;
 }
 
@@ -339,6 +347,16 @@ Vec<Dim> BasicWorld<Dim>::gravity() const {
 template <int Dim>
 void BasicWorld<Dim>::set_gravity(const Vec<Dim>& gravity) {
   state_->gravity = gravity;
+}
+template <int Dim>
+const std::optional<CentripetalGravityT<Dim>>& BasicWorld<Dim>::centripetal_gravity() const {
+  return state_->centripetal_gravity;
+}
+template <int Dim>
+void BasicWorld<Dim>::set_body_force(const BodyForceT<Dim>& body_force) {
+  check_body_force(body_force.gravity, body_force.centripetal);
+  state_->gravity = body_force.gravity;
+  state_->centripetal_gravity = body_force.centripetal;
 }
 template <int Dim>
 int BasicWorld<Dim>::threads() const {

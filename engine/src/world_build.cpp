@@ -131,6 +131,7 @@ void build_world(WorldState<Dim>& s, const WorldDefT<Dim>& def) {
   s.contact_models = def.contact_models;
   s.damping = def.damping;
   s.gravity = def.gravity;
+  s.centripetal_gravity = def.centripetal_gravity;
   s.planar_particle = def.planar_particle;
   s.energy_budget = def.energy_budget;
   s.threads = resolve_threads(def.threads);
@@ -150,6 +151,7 @@ void build_world(WorldState<Dim>& s, const WorldDefT<Dim>& def) {
   s.walls.depth = s.depth;
   if (def.box_control) {
     check_box_control(*def.box_control, def.walls);
+    check_box_continuum(*def.box_control, def.periodic);
     s.walls.box = def.box_control;
     if (!(s.walls.box->reference_extent.array() > 0.0).all()) {
       s.walls.box->reference_extent = box_extent(s.walls, *s.walls.box);

@@ -141,6 +141,7 @@ void BasicWorld<Dim>::set_box_control(const std::optional<BoxControlT<Dim>>& con
     return;
   }
   check_box_control(*control, s.walls.def);
+  check_box_continuum(*control, s.periodic_def);
   BoxControlT<Dim> box = *control;
   if (!(box.reference_extent.array() > 0.0).all()) box.reference_extent = box_extent(s.walls, box);
   s.walls.box = box;

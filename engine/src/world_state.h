@@ -39,6 +39,10 @@ struct WorldState {
   ContactLaw wall_law = ContactLaw::kLinear;  // the law of every particle-wall contact
   DampingDef damping;
   Vec<Dim> gravity = Vec<Dim>::Zero();
+  std::optional<CentripetalGravityT<Dim>> centripetal_gravity;  // Randall 6.4.2
+  // The continuum field a box laid over the particles in the last step
+  // (BoxControlT::continuum), which their velocities carry.
+  std::optional<ContinuumFieldT<Dim>> continuum;
   PlanarParticle planar_particle = PlanarParticle::kDisc;
   double depth = 1.0;  // out-of-plane depth that turns 2D wall forces into stresses (3D: unused)
   double time_step = 0.0;
@@ -72,6 +76,14 @@ struct WorldState {
   double tangential_work = 0.0;  // done on the tangential springs; friction = this - what they hold
   double time_step_ratio = 0.0;
 };
+
+// The body force per unit mass on a particle at x: gravity and Randall's
+// centripetal field (the law of motion adds the same, motion.cpp).
+template <int Dim>
+Vec<Dim> body_acceleration(const WorldState<Dim>& state, const Vec<Dim>& x) {
+  if (!state.centripetal_gravity) return state.gravity;
+  return state.gravity + state.centripetal_gravity->at(x);
+}
 
 // Particles per force-pass block, about (plan_blocks rounds the number of
 // blocks to a power of two; contact_blocks.h): large for round

@@ -132,6 +132,7 @@ void validate_world(const WorldDefT<Dim>& def) {
   check(def.fixed_time_step >= 0.0, "world: fixed_time_step must be >= 0");
   check(def.contact_tolerance >= 0.0, "world: contact_tolerance must be >= 0");
   check_damping(def.damping);
+  check_body_force(def.gravity, def.centripetal_gravity);
 }
 
 template void validate_world(const WorldDefT<2>&);
@@ -160,6 +161,17 @@ void check_wall_motion(const WallMotionT<Dim>& motion, WallId wall) {
 }
 template void check_wall_motion(const WallMotionT<2>&, WallId);
 template void check_wall_motion(const WallMotionT<3>&, WallId);
+
+template <int Dim>
+void check_body_force(const Vec<Dim>& gravity, const std::optional<CentripetalGravityT<Dim>>& centripetal) {
+  check(gravity.allFinite(), "world: gravity must be finite");
+  if (!centripetal) return;
+  check(centripetal->centre.allFinite(), "centripetal gravity: centre must be finite");
+  check(centripetal->acceleration >= 0.0 && std::isfinite(centripetal->acceleration),
+        "centripetal gravity: acceleration must be >= 0");
+}
+template void check_body_force(const Vec2&, const std::optional<CentripetalGravityT<2>>&);
+template void check_body_force(const Vec3&, const std::optional<CentripetalGravityT<3>>&);
 
 void check_time_step_fraction(double fraction) {
   check(fraction > 0.0 && fraction <= 1.0, "time_step_fraction must be in (0, 1]");

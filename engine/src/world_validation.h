@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 
 #include "dem/definitions.h"
@@ -34,5 +35,9 @@ void check_wall_motion(const WallMotionT<Dim>& motion, WallId wall);
 void check_time_step_fraction(double fraction);
 void check_fixed_time_step(double seconds);
 void check_friction(MaterialId material, std::size_t materials, double friction);
+// The body forces a world or a stage sets: finite gravity; a centripetal
+// field with a finite centre and an acceleration >= 0.
+template <int Dim>
+void check_body_force(const Vec<Dim>& gravity, const std::optional<CentripetalGravityT<Dim>>& centripetal);
 
 }  // namespace dem

@@ -105,7 +105,12 @@ TrimDef to_trim(const proto::Trim& trim) {
   return def;
 }
 
-StopConditions to_stop_conditions(const proto::Until& until, const WallIndex& walls) {
+MeasurementRegion to_region(const proto::MeasurementRegion& r);
+
+// A stage's stop conditions; a region is one of the case's output regions
+// (validation checked the names), in the case's dimension.
+template <int Dim>
+StopConditions to_stop_conditions(const proto::Until& until, const WallIndex& walls, const proto::Output& output) {
   StopConditions def;
   if (until.has_kinetic_energy_below()) def.kinetic_energy_below = until.kinetic_energy_below();
   if (until.has_out_of_balance_below()) def.out_of_balance_below = until.out_of_balance_below();
@@ -121,6 +126,13 @@ StopConditions to_stop_conditions(const proto::Until& until, const WallIndex& wa
         WallThreshold{walls.at(until.wall_settlement_above().wall()), until.wall_settlement_above().value()};
   }
   if (until.has_deviator_strain_above()) def.deviator_strain_above = until.deviator_strain_above();
+  if (until.has_region_out_of_balance_below()) {
+    const proto::RegionThreshold& threshold = until.region_out_of_balance_below();
+    for (const proto::MeasurementRegion& region : output.region()) {
+      if (region.name() != threshold.region()) continue;
+      def.region_out_of_balance_below = RegionThreshold{region_for<Dim>(to_region(region)), threshold.value()};
+    }
+  }
   def.min_cycles = until.min_cycles();
   if (until.check_interval() > 0) def.check_interval = until.check_interval();
   return def;
@@ -160,7 +172,19 @@ BoxControlT<Dim> to_box_control(const proto::BoxControl& box, const WallIndex& w
   }
   def.gain = box.gain();
   def.max_speed = box.max_speed();
+  def.continuum = box.continuum();
   return def;
+}
+
+template <int Dim>
+CentripetalGravityT<Dim> to_centripetal(const proto::CentripetalGravity& field) {
+  return {to_vec<Dim>(field.centre()), field.acceleration()};
+}
+
+template <int Dim>
+BodyForceT<Dim> to_body_force(const proto::BodyForce& body) {
+  if (!body.has_centripetal()) return {to_vec<Dim>(body.gravity()), std::nullopt};
+  return {to_vec<Dim>(body.gravity()), to_centripetal<Dim>(body.centripetal())};
 }
 
 MeasurementRegion to_region(const proto::MeasurementRegion& r) {
@@ -239,6 +263,9 @@ class Converter {
     add_walls(def.world);
     def.world.damping = to_damping(case_.damping());
     def.world.gravity = to_vec<Dim>(case_.gravity());
+    if (case_.has_centripetal_gravity()) {
+      def.world.centripetal_gravity = to_centripetal<Dim>(case_.centripetal_gravity());
+    }
     if (case_.has_periodic()) {
       const proto::Periodic& p = case_.periodic();
       def.world.periodic.axes[0] = p.x();
@@ -414,6 +441,7 @@ class Converter {
       def.sizes.push_back({size.radius(), static_cast<int>(size.count()), to_shape<Dim>(size)});
     }
     def.seed = packing.seed();
+    def.next_size_when_full = packing.next_size_when_full();
     // Unset, the engine's default - but no more than the limit allows: a
     // limit below the default (a small server, the fuzz targets) bounds the
     // work of a packing that nearly cannot fit whether or not the case asks.
@@ -507,6 +535,7 @@ class Converter {
         def.wall_motions.emplace_back(walls_.at(command.wall()), to_motion<Dim>(command.motion()));
       }
       if (stage.has_damping()) def.damping = to_damping(stage.damping());
+      if (stage.has_body_force()) def.body_force = to_body_force<Dim>(stage.body_force());
       if (stage.has_time_step()) {
         const proto::TimeStep& step = stage.time_step();
         def.time_step = step.fixed() > 0 ? TimeStepSetting{0.0, step.fixed()} : TimeStepSetting{step.fraction(), 0.0};
@@ -522,7 +551,7 @@ class Converter {
       if (stage.has_box_control()) def.box_control = to_box_control<Dim>(stage.box_control(), walls_);
       def.release_box_control = stage.release_box_control();
       def.cycles = stage.cycles();
-      if (stage.has_until()) def.until = to_stop_conditions(stage.until(), walls_);
+      if (stage.has_until()) def.until = to_stop_conditions<Dim>(stage.until(), walls_, case_.output());
       stages.push_back(def);
     }
   }

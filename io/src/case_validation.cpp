@@ -48,6 +48,7 @@ class CaseChecker {
     check_periodic();
     check_time_step();
     vector("gravity", case_.gravity());
+    if (case_.has_centripetal_gravity()) check_centripetal("centripetal_gravity", case_.centripetal_gravity());
     if (case_.has_box_control()) check_box_control("box_control", case_.box_control());
     check_stages();
     check_output();
@@ -600,6 +601,12 @@ class CaseChecker {
         problems_.add(path + ".release_box_control", "a stage sets box_control or releases it, not both");
       }
       if (stage.has_damping()) check_damping(path + ".damping", stage.damping());
+      if (stage.has_body_force()) {
+        vector(path + ".body_force.gravity", stage.body_force().gravity());
+        if (stage.body_force().has_centripetal()) {
+          check_centripetal(path + ".body_force.centripetal", stage.body_force().centripetal());
+        }
+      }
       if (stage.has_time_step()) check_time_step(path + ".time_step", stage.time_step(), true);
       for (int j = 0; j < stage.friction_size(); ++j) {
         const std::string friction = indexed(path + ".friction", j);
@@ -674,6 +681,11 @@ class CaseChecker {
         }
         break;
     }
+    if (box.continuum() && case_.has_periodic()) {
+      problems_.add(path + ".continuum",
+                    "a continuum field carries the particles across a deforming box; a periodic cell does not "
+                    "deform (leave periodic out or continuum false)");
+    }
     if (box.path_case() != proto::BoxControl::PATH_NOT_SET) {
       if (path_axes == 0) {
         problems_.add(path, "sets a stress path, but no axis follows it; set stress_path: true on an axis");
@@ -699,6 +711,12 @@ class CaseChecker {
     }
   }
 
+  // Randall's centripetal gravity field (6.4.2).
+  void check_centripetal(const std::string& path, const proto::CentripetalGravity& field) {
+    vector(path + ".centre", field.centre());
+    problems_.non_negative(path + ".acceleration", field.acceleration());
+  }
+
   void check_threshold(const std::string& path, const proto::WallThreshold& threshold) {
     find_wall(problems_, walls_, path + ".wall", threshold.wall());
     problems_.finite(path + ".value", threshold.value());
@@ -709,11 +727,26 @@ class CaseChecker {
     const std::string path = stage_path + ".until";
     if (!until.has_kinetic_energy_below() && !until.has_out_of_balance_below() &&
         !until.has_kinetic_to_elastic_below() && !until.has_unbalanced_force_below() && !until.has_servo_tolerance() &&
-        !until.has_wall_stress_above() && !until.has_wall_settlement_above() && !until.has_deviator_strain_above()) {
+        !until.has_wall_stress_above() && !until.has_wall_settlement_above() && !until.has_deviator_strain_above() &&
+        !until.has_region_out_of_balance_below()) {
       problems_.add(path,
                     "sets no stop condition; set kinetic_energy_below, out_of_balance_below, "
                     "kinetic_to_elastic_below, unbalanced_force_below, servo_tolerance, wall_stress_above, "
-                    "wall_settlement_above or deviator_strain_above, or leave until out");
+                    "wall_settlement_above, deviator_strain_above or region_out_of_balance_below, or leave until "
+                    "out");
+    }
+    if (until.has_region_out_of_balance_below()) {
+      const proto::RegionThreshold& threshold = until.region_out_of_balance_below();
+      const std::string region_path = path + ".region_out_of_balance_below";
+      const auto& regions = case_.output().region();
+      if (std::ranges::none_of(regions, [&](const auto& r) { return r.name() == threshold.region(); })) {
+        std::string names;
+        for (const proto::MeasurementRegion& r : regions) names += (names.empty() ? "" : ", ") + in_quotes(r.name());
+        problems_.add(region_path + ".region", "names no output.region (" +
+                                                   (names.empty() ? std::string("the case defines none") : names) +
+                                                   "; got " + in_quotes(threshold.region()) + ")");
+      }
+      problems_.positive(region_path + ".value", threshold.value());
     }
     if (until.has_deviator_strain_above()) {
       problems_.positive(path + ".deviator_strain_above", until.deviator_strain_above());

@@ -1,6 +1,7 @@
 // Particle generators: lattices and seeded random non-overlapping packings.
 #include <gtest/gtest.h>
 
+#include <numbers>
 #include <string>
 
 #include "dem/error.h"
@@ -136,6 +137,42 @@ TEST(Packing, ImpossiblePackingIsAnErrorNamingTheSize) {
   } catch (const DefinitionError& e) {
     EXPECT_NE(std::string(e.what()).find("radius 1"), std::string::npos) << e.what();
   }
+}
+
+// Randall's (1989, 4.4) dense generation: a size that finds no more room
+// ends, and the generator "would now move on to the next smaller particle
+// size and attempt to generate all those". A box that cannot hold the
+// counts fills densely instead of failing: fewer of the large sizes, the
+// small ones in the gaps.
+TEST(Packing, DenseGenerationMovesOnToTheNextSmallerSize) {
+  RandomPackingDef def;
+  def.max = {20.0, 20.0};
+  def.sizes = {{1.0, 200}, {0.6, 400}, {0.35, 800}};
+  def.max_attempts = 20000;
+  def.seed = 1989;
+  EXPECT_THROW(generate_random_packing(def), DefinitionError);
+  def.next_size_when_full = true;
+  const auto p = generate_random_packing(def);
+  int count[3] = {0, 0, 0};
+  double solid = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    count[p[i].radius == 1.0 ? 0 : p[i].radius == 0.6 ? 1 : 2] += 1;
+    solid += std::numbers::pi * p[i].radius * p[i].radius;
+    EXPECT_GE(p[i].position.minCoeff() - p[i].radius, 0.0);
+    EXPECT_LE(p[i].position.maxCoeff() + p[i].radius, 20.0);
+    for (std::size_t j = i + 1; j < p.size(); ++j) {
+      ASSERT_GE((p[i].position - p[j].position).norm(), p[i].radius + p[j].radius) << i << " " << j;
+    }
+  }
+  std::printf("dense generation in a 20 x 20 box: %d of 200 r = 1, %d of 400 r = 0.6, %d of 800 r = 0.35; "
+              "solid fraction %.3f\n",
+              count[0], count[1], count[2], solid / 400.0);
+  EXPECT_LT(count[0], 200);  // the box could not hold them all
+  EXPECT_GT(count[1], 0);    // and the smaller sizes filled the gaps
+  EXPECT_GT(count[2], 0);
+  // Random sequential addition of one size jams near 0.55 of the plane;
+  // the smaller sizes in the gaps take it well past.
+  EXPECT_GT(solid / 400.0, 0.6);
 }
 
 }  // namespace

@@ -5,12 +5,14 @@
 #include "dem/error.h"
 #include "dem/packing.h"
 #include "dem/world.h"
+#include "exact_continuation.h"
 #include "model_builders.h"
 #include "snapshot_worlds.h"
 
 namespace dem {
 namespace {
 
+using testing::expect_exact_continuation;
 using testing::settling_box;
 
 TEST(Snapshot, ContinuationIsBitIdentical) {
@@ -30,40 +32,6 @@ TEST(Snapshot, ContinuationIsBitIdentical) {
               static_cast<unsigned long long>(restored.state_hash()), original.contacts().size());
   EXPECT_GT(original.contacts().size(), 100u);
   EXPECT_EQ(restored.state_hash(), original.state_hash());
-}
-
-// Runs a world, restores its snapshot and runs both on past several
-// rebuilds of the contact table: every history (shear springs, Mindlin
-// reversal points, dashpot work, where each contact search ended) must
-// carry over for the states to stay equal bit for bit. The same world on
-// two threads must agree too.
-template <int Dim>
-void expect_exact_continuation(WorldDefT<Dim> def, int before, int after, const char* what) {
-  def.threads = 1;
-  BasicWorld<Dim> original(def);
-  def.threads = 2;
-  BasicWorld<Dim> parallel(def);
-  parallel.cycle(before + after);
-  original.cycle(before);
-  BasicWorld<Dim> restored(original.snapshot());
-  EXPECT_EQ(restored.state_hash(), original.state_hash());
-  const std::uint64_t rebuilds_before = restored.profile().contact_rebuilds;
-  original.cycle(after);
-  restored.cycle(after);
-  const EnergyBudget a = original.assembly_measures().energy, b = restored.assembly_measures().energy;
-  const std::uint64_t rebuilds = restored.profile().contact_rebuilds - rebuilds_before;
-  std::printf(
-      "%s after %d + %d cycles (%llu table rebuilds): %zu contacts, original %016llx, restored %016llx, damping %.9e "
-      "vs %.9e J\n",
-      what, before, after, static_cast<unsigned long long>(rebuilds), original.contacts().size(),
-      static_cast<unsigned long long>(original.state_hash()), static_cast<unsigned long long>(restored.state_hash()),
-      a.contact_damping, b.contact_damping);
-  EXPECT_GT(original.contacts().size(), 20u);
-  EXPECT_EQ(restored.state_hash(), original.state_hash());
-  EXPECT_EQ(parallel.state_hash(), original.state_hash());
-  EXPECT_EQ(a.contact_damping, b.contact_damping);
-  EXPECT_EQ(a.friction, b.friction);
-  EXPECT_GT(rebuilds, 0u);
 }
 
 ContactModelDef hertz(ContactLaw law) {

@@ -335,6 +335,45 @@ TEST(CaseConversion2d, ABiaxialBoxItsStagesAndItsRegions) {
   EXPECT_TRUE(world.box_control().has_value());
 }
 
+// Randall's preparation (1989): dense generation (4.4), a box whose field
+// carries the particles (4.5.2), the centripetal field of 6.4.2 from the
+// start and switched by stages, and quasi-equilibrium judged in a region.
+TEST(CaseConversion2d, RandallsPreparationControls) {
+  LoadedCase loaded = load_case_file(test::data_path("biaxial.case.txtpb"));
+  proto::Case& c = loaded.message;
+  c.mutable_particles(0)->mutable_random_packing()->set_next_size_when_full(true);
+  c.mutable_box_control()->set_continuum(true);
+  c.mutable_centripetal_gravity()->mutable_centre()->set_x(0.035);
+  c.mutable_centripetal_gravity()->mutable_centre()->set_y(0.03);
+  c.mutable_centripetal_gravity()->set_acceleration(20);
+  c.mutable_stage(0)->mutable_body_force()->mutable_gravity()->set_y(-9.81);
+  proto::RegionThreshold& quiet = *c.mutable_stage(1)->mutable_until()->mutable_region_out_of_balance_below();
+  quiet.set_region("circle");
+  quiet.set_value(0.1);
+  const CaseDefinition def = convert_case(c, loaded.source);
+  ASSERT_TRUE(def.world.box_control.has_value());
+  EXPECT_TRUE(def.world.box_control->continuum);
+  ASSERT_TRUE(def.world.centripetal_gravity.has_value());
+  EXPECT_EQ(def.world.centripetal_gravity->centre, Vec2(0.035, 0.03));
+  EXPECT_EQ(def.world.centripetal_gravity->acceleration, 20.0);
+  // The stage's body force replaces both: gravity set, the field gone.
+  ASSERT_TRUE(def.stages[0].body_force.has_value());
+  EXPECT_EQ(def.stages[0].body_force->gravity, Vec2(0.0, -9.81));
+  EXPECT_FALSE(def.stages[0].body_force->centripetal.has_value());
+  EXPECT_FALSE(def.stages[1].body_force.has_value());
+  ASSERT_TRUE(def.stages[1].until.region_out_of_balance_below.has_value());
+  const auto& threshold = *def.stages[1].until.region_out_of_balance_below;
+  const auto* circle = std::get_if<RegionT<2>>(&threshold.region);
+  ASSERT_NE(circle, nullptr);
+  EXPECT_EQ(circle->name, "circle");
+  EXPECT_EQ(circle->shape, RegionShape::kBall);
+  EXPECT_EQ(circle->radius, 0.02);
+  EXPECT_EQ(threshold.value, 0.1);
+  const World world(def.world);
+  EXPECT_TRUE(world.box_control()->continuum);
+  EXPECT_EQ(world.centripetal_gravity()->acceleration, 20.0);
+}
+
 TEST_F(CaseConversion, AStageRemovesAWallAndReleasesTheBox) {
   case_.mutable_stage(2)->add_remove_wall("top");
   case_.mutable_stage(2)->set_release_box_control(true);

@@ -595,6 +595,40 @@ const Mistake kMistakes[] = {
      "stage[0].until.deviator_strain_above: no box control is set during this stage (box_control)"},
     {"RemoveUnknownWall", [](auto& c) { c.mutable_stage(1)->add_remove_wall("orifice"); },
      "stage[1].remove_wall[0]: unknown wall \"orifice\""},
+
+    // Randall's preparation (1989, 4.4-4.5.2, 6.4.2)
+    {"BoxContinuumInAPeriodicCell",
+     [](auto& c) {
+       box_control(c).set_continuum(true);
+       c.mutable_periodic()->set_x(true);
+       c.mutable_periodic()->mutable_max()->set_x(1);
+     },
+     "box_control.continuum: a continuum field carries the particles across a deforming box; a periodic cell does "
+     "not deform (leave periodic out or continuum false)"},
+    {"NegativeCentripetalGravity", [](auto& c) { c.mutable_centripetal_gravity()->set_acceleration(-1); },
+     "centripetal_gravity.acceleration: must be >= 0 (got -1)"},
+    {"CentripetalCentreNotFinite",
+     [](auto& c) { c.mutable_centripetal_gravity()->mutable_centre()->set_x(kInfinity); },
+     "centripetal_gravity.centre.x: must be a finite number (got inf)"},
+    {"StageBodyForceNegative",
+     [](auto& c) { c.mutable_stage(1)->mutable_body_force()->mutable_centripetal()->set_acceleration(-2); },
+     "stage[1].body_force.centripetal.acceleration: must be >= 0 (got -2)"},
+    {"StageGravityNotFinite",
+     [](auto& c) { c.mutable_stage(1)->mutable_body_force()->mutable_gravity()->set_y(kInfinity); },
+     "stage[1].body_force.gravity.y: must be a finite number (got inf)"},
+    {"UntilOutOfBalanceInAnUnknownRegion",
+     [](auto& c) {
+       region(c).set_whole(true);
+       until(c, 0).mutable_region_out_of_balance_below()->set_region("centre");
+       until(c, 0).mutable_region_out_of_balance_below()->set_value(0.1);
+     },
+     "stage[0].until.region_out_of_balance_below.region: names no output.region (\"core\"; got \"centre\")"},
+    {"UntilOutOfBalanceInARegionWithoutValue",
+     [](auto& c) {
+       region(c).set_whole(true);
+       until(c, 0).mutable_region_out_of_balance_below()->set_region("core");
+     },
+     "stage[0].until.region_out_of_balance_below.value: must be > 0 (got 0)"},
 };
 
 INSTANTIATE_TEST_SUITE_P(CaseValidation, CaseMistake, ::testing::ValuesIn(kMistakes),

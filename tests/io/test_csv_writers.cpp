@@ -93,11 +93,11 @@ TEST_F(CsvWriters, AssemblyLeavesTheEnergyColumnsEmptyWithoutABudget) {
   assembly.write(world);
   const auto rows = read_csv(directory_ / "assembly.csv");
   ASSERT_EQ(rows.size(), 2u);
-  ASSERT_EQ(rows[1].size(), 23u);
+  ASSERT_EQ(rows[1].size(), 24u);
   EXPECT_EQ(number(rows[1][2]), world.assembly_measures().kinetic_energy);
   // The quasi-static measures are written with or without a budget.
   EXPECT_EQ(number(rows[1][8]), world.assembly_measures().elastic_energy);
-  for (std::size_t column = 15; column < 23; ++column) EXPECT_EQ(rows[1][column], "") << rows[0][column];
+  for (std::size_t column = 15; column < 24; ++column) EXPECT_EQ(rows[1][column], "") << rows[0][column];
 }
 
 TEST_F(CsvWriters, AssemblyRoundTripsEveryDigit) {
@@ -122,6 +122,7 @@ TEST_F(CsvWriters, AssemblyRoundTripsEveryDigit) {
                           "inertial_number",
                           "gravity_work",
                           "wall_work",
+                          "continuum_work",
                           "strain_energy",
                           "contact_damping",
                           "friction",
@@ -143,8 +144,9 @@ TEST_F(CsvWriters, AssemblyRoundTripsEveryDigit) {
   EXPECT_EQ(number(rows[1][13]), measures.deformation_rate);
   EXPECT_EQ(number(rows[1][14]), measures.inertial_number);
   EXPECT_EQ(number(rows[1][15]), measures.energy.gravity_work);
-  EXPECT_EQ(number(rows[1][18]), measures.energy.contact_damping);
-  EXPECT_EQ(number(rows[1][22]), measures.energy.residual());
+  EXPECT_EQ(number(rows[1][17]), measures.energy.continuum_work);
+  EXPECT_EQ(number(rows[1][19]), measures.energy.contact_damping);
+  EXPECT_EQ(number(rows[1][23]), measures.energy.residual());
 }
 
 TEST_F(CsvWriters, ProbesReportTouchingAndApartPairs) {

@@ -1,8 +1,8 @@
 // Cundall & Strack (1979) verification test (Figs. 10-13, Tables 1-3): the
-// photoelastic assembly brought by four servo walls to F_H/F_V = 0.4
-// (stage A) and then to stage B (F_V up 4.348 %, F_H down as much), with
+// photoelastic assembly loaded as the seed's numerical test was, by moving
+// its walls - translated inward to stage A, then moved on to stage B - with
 // Table 1's springs and friction, Table 2's k_s = k_n and Table 3's tan phi
-// of 0.40 and 0.08. The checks are dem_validate's
+// of 0.40 and 0.08, on three packings. The checks are dem_validate's
 // (tools/dem_validate/verification.cpp); everything is printed.
 #include <gtest/gtest.h>
 
@@ -11,17 +11,22 @@
 namespace dem::validation {
 namespace {
 
-void run_table(const char* file) {
-  const VerificationRun run = run_verification(std::filesystem::path(DEM_CASES_DIR "/ball") / file);
-  print_verification(stdout, run);
-  const Verdict verdict = judge_verification(run);
-  verdict.print(stdout, run.name);
+// Table 3's ratios above Table 1's on every packing and by the seed's
+// margin, each table near its Table, the eccentricities of the seed's size.
+TEST(Verification, Tables1To3ByWallDisplacement) {
+  const auto packings = run_verification_tables(DEM_CASES_DIR "/ball", {1979, 1, 2});
+  Verdict verdict;
+  for (const VerificationTables& p : packings) {
+    for (const VerificationRun& run : p.tables) {
+      print_verification(stdout, run);
+      verdict.add(judge_verification(run));
+    }
+  }
+  print_verification_tables(stdout, packings);
+  verdict.add(judge_verification_tables(packings));
+  verdict.print(stdout, "verification");
   EXPECT_TRUE(verdict.passed()) << verdict;
 }
-
-TEST(Verification, Table1StagesAAndB) { run_table("verification_assembly.case.txtpb"); }
-TEST(Verification, Table2ShearStiffnessEqualToNormal) { run_table("verification_assembly_table2.case.txtpb"); }
-TEST(Verification, Table3LowerFriction) { run_table("verification_assembly_table3.case.txtpb"); }
 
 }  // namespace
 }  // namespace dem::validation

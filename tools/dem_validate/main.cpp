@@ -5,9 +5,9 @@
 //   dem_validate restitution --out DIR      (Miyata et al. 2002, eq. 17)
 //   dem_validate mindlin-loading --out DIR  (Randall 1989, 5.2)
 //   dem_validate box-settle --out DIR       (3D settling: weight on the floor, energy budget)
-//   dem_validate verification --case FILE --out DIR          (Cundall & Strack 1979, Tables 1-3: stages A and B)
-//   dem_validate randall-compression --case FILE --out DIR   (Randall 1989, 6.4.3: 100 kPa)
-//   dem_validate randall-shear --case FILE --out DIR         (Randall 1989, 6.5.2: constant-volume shear)
+//   dem_validate verification --out DIR [--seeds S,...]      (Cundall & Strack 1979, Tables 1-3: stages A and B)
+//   dem_validate randall-compression --case FILE --out DIR [--seeds S,...]  (Randall 1989, 6.4.3: 100 kPa)
+//   dem_validate randall-shear --case FILE --out DIR [--seeds S,...]        (6.5.2: constant-volume shear)
 //   dem_validate hopper --case FILE --out DIR [--runs 45:10,30:10,...]  (Randall 1989, 6.2: discharge rates)
 //   dem_validate deposition --case FILE --out DIR             (Randall 1989, 6.3: pluvial deposition)
 //   dem_validate rolling-to-rest --out DIR  (rolling resistance: a ball stops where the closed form says)
@@ -18,9 +18,11 @@
 //                                           (Miyata et al. 2002, 3.2: CS, CR, SS and SR compared)
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -49,6 +51,12 @@ void report_nine_disc(const dem::validation::CompressionReport& c, const dem::va
               100.0 * (c.undamped_mean / feq - 1.0), c.undamped_amplitude / feq);
   std::printf("  loading speed 0.12 vs 0.04: amplitude %.4f vs %.4f F_eq (Fig. 7)\n", c.undamped_amplitude / feq,
               c.slow_amplitude / feq);
+  const dem::validation::Fig7Curves& b = c.fig7b;
+  std::printf(
+      "  Fig. 7(b), k = 1.5e8, loading speed 0.36 vs 0.12: mean %.6e vs %.6e (%+.3f%%, %+.3f%% of F_eq), amplitude "
+      "%.4f vs %.4f F_eq, mean periods %.2f and %.2f cycles\n",
+      b.fast_mean, b.slow_mean, 100.0 * (b.fast_mean / feq - 1.0), 100.0 * (b.slow_mean / feq - 1.0),
+      b.fast_amplitude / feq, b.slow_amplitude / feq, b.fast_period, b.slow_period);
   std::printf(
       "  undamped: the slow run against the fast one superposed (linearity): largest difference %.2e F_eq; "
       "mean periods %.2f and %.2f cycles; amplitude over the first and second half of the hold %.4f, %.4f\n",
@@ -103,13 +111,19 @@ int main(int argc, char** argv) {
   }
   box->add_option("--cases", cases, "directory holding cases/validation")->check(CLI::ExistingDirectory);
   std::filesystem::path verification_case;
+  std::vector<std::uint64_t> verification_seeds;
   auto* verification = app.add_subcommand(
       "verification", "Cundall & Strack (1979) verification assembly, Tables 1-3: stages A and B (cases/ball)");
-  verification->add_option("--case", verification_case, "a cases/ball/verification_assembly*.case.txtpb file")
-      ->required()
+  verification
+      ->add_option("--case", verification_case,
+                   "one cases/ball/verification_assembly*.case.txtpb file alone (default: Tables 1-3)")
       ->check(CLI::ExistingFile);
+  verification->add_option("--cases", cases, "directory holding the cases/ball case files")
+      ->check(CLI::ExistingDirectory);
+  verification->add_option("--seeds", verification_seeds, "packing seeds (default: the cases' own)")->delimiter(',');
   verification->add_option("--out", out, "directory for verification.csv (stages A and B, wall by wall)")->required();
   std::filesystem::path randall_case;
+  std::vector<std::uint64_t> randall_seeds;
   auto* randall_compression = app.add_subcommand(
       "randall-compression", "Randall (1989) 6.4.3: a cases/randall assembly compressed to 100 kPa, then friction");
   auto* randall_shear =
@@ -117,6 +131,9 @@ int main(int argc, char** argv) {
   for (auto* sub : {randall_compression, randall_shear}) {
     sub->add_option("--case", randall_case, "a cases/randall case file")->required()->check(CLI::ExistingFile);
     sub->add_option("--out", out, "directory for randall.csv, roses.csv, obliquity.csv and the snapshots")->required();
+    sub->add_option("--seeds", randall_seeds,
+                    "packing seeds: one run each (in OUT/packing_SEED/), the median packing judged")
+        ->delimiter(',');
   }
   std::filesystem::path hopper_case;
   std::vector<std::string> hopper_runs = {"45:10", "30:10", "15:10", "30:5", "30:14"};
@@ -178,11 +195,7 @@ int main(int argc, char** argv) {
     if (*mindlin) verdict = dem::validation::report_mindlin_loading(out);
     if (*box) verdict = dem::validation::report_box_settle(cases / "validation" / "box_settle.case.txtpb", out);
     if (*randall_compression || *randall_shear) {
-      const dem::validation::RandallRun run =
-          dem::validation::run_randall(randall_case, static_cast<bool>(*randall_shear), out);
-      dem::validation::print_randall(stdout, run);
-      verdict = dem::validation::judge_randall_compression(run);
-      if (*randall_shear) verdict.add(dem::validation::judge_randall_shear(run));
+      verdict = dem::validation::report_randall(randall_case, static_cast<bool>(*randall_shear), out, randall_seeds);
     }
     if (*hopper) {
       std::vector<dem::validation::HopperRun> runs;
@@ -206,10 +219,29 @@ int main(int argc, char** argv) {
     if (*rolling_to_rest) verdict = dem::validation::report_rolling_to_rest(out);
     if (*repose) verdict = dem::validation::report_angle_of_repose(out, rolling_frictions);
     if (*verification) {
-      const dem::validation::VerificationRun run = dem::validation::run_verification(verification_case);
-      dem::validation::print_verification(stdout, run);
-      dem::validation::write_verification_csv(out, run);
-      verdict = dem::validation::judge_verification(run);
+      std::vector<dem::validation::VerificationRun> runs;
+      if (!verification_case.empty()) {
+        const std::vector<std::uint64_t> seeds =
+            verification_seeds.empty() ? std::vector<std::uint64_t>{0} : verification_seeds;
+        for (const std::uint64_t seed : seeds) {
+          runs.push_back(dem::validation::run_verification(
+              verification_case, verification_seeds.empty() ? std::nullopt : std::optional<std::uint64_t>(seed)));
+          dem::validation::print_verification(stdout, runs.back());
+          verdict.add(dem::validation::judge_verification(runs.back()));
+        }
+      } else {
+        const auto packings = dem::validation::run_verification_tables(cases / "ball", verification_seeds);
+        for (const auto& p : packings) {
+          for (const auto& run : p.tables) {
+            dem::validation::print_verification(stdout, run);
+            verdict.add(dem::validation::judge_verification(run));
+            runs.push_back(run);
+          }
+        }
+        dem::validation::print_verification_tables(stdout, packings);
+        verdict.add(dem::validation::judge_verification_tables(packings));
+      }
+      dem::validation::write_verification_csv(out, runs);
     }
     if (*miyata || *miyata_surfaces) {
       if (out.empty() && miyata_options.runs.empty()) throw std::runtime_error("--out is required to run a case");

@@ -16,6 +16,7 @@
 #include "dem/io/csv_table.h"
 #include "dem/programme.h"
 #include "dem/world.h"
+#include "packing_seed.h"
 
 namespace dem::validation {
 
@@ -58,13 +59,6 @@ io::AnyCaseDefinition convert_with_compression(const io::LoadedCase& loaded) {
         "is missing; the compression check needs output { compression { loading_plate: ... bottom_plate: ... } }"));
   }
   return any;
-}
-
-std::uint64_t first_packing_seed(const proto::Case& message) {
-  for (const proto::ParticleSource& source : message.particles()) {
-    if (source.has_random_packing()) return source.random_packing().seed();
-  }
-  return 0;
 }
 
 // The run in the case's dimension: 2D (3.2) or 3D (3.3).
@@ -170,11 +164,7 @@ MiyataCase read_miyata_case(const std::filesystem::path& case_file) {
 MiyataRun run_miyata_compression(const std::filesystem::path& case_file, const std::filesystem::path& out,
                                  std::optional<std::uint64_t> packing_seed, std::optional<int> threads) {
   io::LoadedCase loaded = io::load_case_file(case_file);
-  if (packing_seed) {
-    for (proto::ParticleSource& source : *loaded.message.mutable_particles()) {
-      if (source.has_random_packing()) source.mutable_random_packing()->set_seed(*packing_seed);
-    }
-  }
+  if (packing_seed) reseed_packings(loaded.message, *packing_seed);
   const io::AnyCaseDefinition any = convert_with_compression(loaded);
   MiyataRun run;
   run.spec = std::visit([](const auto& def) { return describe(def); }, any);

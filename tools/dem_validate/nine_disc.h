@@ -20,6 +20,14 @@ struct ContactHistory {
 // Runs a case whose output names a probe "C" and records C at every cycle.
 ContactHistory follow_contact_c(const std::filesystem::path& case_file);
 
+// Two undamped loadings at different speeds after their loading ends.
+struct Fig7Curves {
+  ContactHistory fast, slow;
+  double fast_mean = 0.0, slow_mean = 0.0;
+  double fast_amplitude = 0.0, slow_amplitude = 0.0;
+  double fast_period = 0.0, slow_period = 0.0;  // cycles
+};
+
 // Undistorted compression (Figs. 6-7).
 struct CompressionReport {
   ContactHistory undamped, contact_damping, global_damping, damped, slow;
@@ -44,6 +52,11 @@ struct CompressionReport {
   // half of the hold, over F_eq.
   double early_amplitude = 0.0;
   double late_amplitude = 0.0;
+  // Fig. 7(b): springs nine times softer (k_n = k_s = 1.5e8), the walls in
+  // nine times as far at 0.36 and 0.12 per cycle, so that the equilibrium
+  // force is Fig. 7(a)'s; undamped. Their means and amplitudes after
+  // loading and their mean periods.
+  Fig7Curves fig7b;
 };
 
 // The undamped amplitude at contact C after the fast loading (walls in by
@@ -74,7 +87,7 @@ DistortionReport run_distortion(const std::filesystem::path& cases_dir);
 Verdict judge_nine_disc(const CompressionReport& compression, const DistortionReport& distortion);
 
 // Writes nine_disc.csv (cycle and the normal force at C for each compression
-// variant) and nine_disc_distortion.csv (cycle, F_n and F_s for each distortion variant).
+// variant, Fig. 7(b)'s two among them) and nine_disc_distortion.csv (cycle, F_n and F_s for each distortion variant).
 void write_nine_disc_csv(const CompressionReport& compression, const DistortionReport& distortion,
                          const std::filesystem::path& out_dir);
 

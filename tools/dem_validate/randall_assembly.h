@@ -31,8 +31,30 @@ struct ShearSample {
   std::vector<analysis::RegionMeasures> regions;  // the case's regions, in order
 };
 
+// What Randall measured on one of his two assemblies (6.4.3, 6.5.2,
+// Fig. 6.24), which a run is judged against.
+struct RandallFigures {
+  std::string assembly;          // "graded" or "uniform"
+  double porosity = 0.0;         // "14% and 16%" (6.5.2)
+  double coordination = 0.0;     // 3.57 graded, 3.15 uniform (6.4.3)
+  double force_ratio = 0.0;      // F_max / F_mean: 0.59/0.123, 0.53/0.143 N (6.4.3)
+  double peak_sin_phi = 0.0;     // "around 0.36", "approximately 0.3" (Fig. 6.24)
+  // The deviator strains between which sin(phi) reaches its peak (95 % of
+  // its largest value): graded "by 0.05%" read as by 0.1 %, a factor of two;
+  // uniform "just after 0.1%" as between 0.1 and 0.2 %.
+  double peak_strain_low = 0.0;
+  double peak_strain_high = 0.0;
+  double tangential_share = 0.0; // of the deviator: "14% for the graded and 15% for the uniform"
+};
+
+// Randall's figures for the assembly a case stands for, by its name
+// ("randall_graded..." or "randall_uniform..."); throws for any other.
+RandallFigures randall_figures(const std::string& case_name);
+
 struct RandallRun {
   std::string name;
+  RandallFigures figures;
+  std::uint64_t packing_seed = 0;
   int particles = 0;
   std::uint64_t cycles = 0;
   double seconds = 0.0;
@@ -50,26 +72,82 @@ struct RandallRun {
   std::vector<analysis::Bin> early_sliding_rose, late_sliding_rose;  // at 0.005 % and 0.2 % (Figs. 6.38-6.41)
 };
 
-// Runs the case's stages up to "friction", and "shear" too when `shear`;
-// with `out`, writes the figures' CSV files there (randall.csv, roses.csv,
-// obliquity.csv, the contacts and particles at 100 kPa and at 0.1 %
-// deviator strain, velocities at 0.005 %).
+// Runs the case's stages up to "friction", and "shear" too when `shear`,
+// on its own packing or on `packing_seed`'s; with `out`, writes the
+// figures' CSV files there (randall.csv, roses.csv, obliquity.csv, the
+// contacts and particles at 100 kPa and at 0.1 % deviator strain,
+// velocities at 0.005 %).
 RandallRun run_randall(const std::filesystem::path& case_file, bool shear,
-                       const std::optional<std::filesystem::path>& out = std::nullopt);
+                       const std::optional<std::filesystem::path>& out = std::nullopt,
+                       std::optional<std::uint64_t> packing_seed = std::nullopt);
 
 void print_randall(std::FILE* out, const RandallRun& run);
 
+// The figures a run is judged on, in its first region (a measurement
+// circle well inside the walls): of one packing, or the median of each
+// over several.
+struct RandallMeasured {
+  std::string label;        // "packing seed 1989", "median of 3"
+  bool compressed = false;  // compression and friction stages settled (in every packing)
+  double box_stress = 0.0;  // Pa, the walls' mean at rest
+  double interior_stress = 0.0;  // Pa, the region's mean stress at rest
+  double out_of_balance = 0.0;   // Delta F / F at rest
+  double anisotropy = 0.0;       // Phi_1 - Phi_2 at rest
+  double sliding_at_rest = 0.0;
+  double porosity = 0.0;
+  double coordination = 0.0;
+  double mechanical_coordination = 0.0;  // without rattlers
+  double force_ratio = 0.0;              // F_max / F_mean
+  bool sheared = false;
+  double largest_out_of_balance = 0.0;  // during the shear
+  double peak_sin_phi = 0.0;
+  double peak_strain = 0.0;       // the first strain within 5 % of the peak
+  double tangential_share = 0.0;  // of the deviator there
+  double largest_sliding = 0.0;
+  double induced_anisotropy = 0.0;  // Phi_yy - Phi_xx gained in the shear
+  double mean_stress_gain = 0.0;    // the region's mean stress at the end over at the start
+};
+
+RandallMeasured measure_randall(const RandallRun& run);
+// Each figure's median over the packings (compressed when all were).
+RandallMeasured median_of(const std::vector<RandallMeasured>& packings);
+// One line per packing, then the medians.
+void print_packings(std::FILE* out, const std::vector<RandallMeasured>& packings);
+
+// How near a run must come to Randall's figures. The full assemblies are
+// judged with the defaults; a reduced one (a circle of some 90 spheres)
+// with `reduced()`: what a small sample scatters more.
+struct RandallTolerances {
+  double porosity = 0.01;          // absolute: "within 1 point"
+  double coordination = 0.15;      // absolute
+  double force_ratio = 0.25;       // relative: a largest force of one sample
+  double interior_stress = 0.1;    // relative, against the walls' 100 kPa
+  double peak_sin_phi = 0.04;      // absolute
+  double tangential_share = 0.05;  // absolute
+  double sliding_bound = 0.25;     // "never more than 25% of contacts are sliding"
+  static RandallTolerances reduced();
+};
+
 // What the thesis determines at 100 kPa (6.4.3): quasi-equilibrium, a
-// near-circular rose, hardly any sliding contacts after friction is added;
-// its coordination numbers (3.15 uniform, 3.57 graded) and F_max / F_mean
-// (3.7, 4.8) are compared in the printout.
-Verdict judge_randall_compression(const RandallRun& run);
+// near-circular rose, hardly any sliding contacts after friction is added,
+// the interior at the walls' stress, and his porosity, coordination and
+// F_max / F_mean for the assembly; and the theory's isostatic coordination
+// of a frictionless jammed packing.
+Verdict judge_randall_compression(const RandallMeasured& measured, const RandallFigures& figures,
+                                  const RandallTolerances& tolerances = {});
 // And in the constant-volume shear (6.5.2): quasi-static, sin(phi) rising
-// steeply to about 0.3 (most of it by 0.1 % strain), the tangential
-// forces' share of the deviator small, never more than a quarter of the
-// contacts sliding, the anisotropy growing, the isotropic stress building.
-// `sliding_bound`: Randall's 25 %; a reduced assembly's small circle
-// fluctuates more.
-Verdict judge_randall_shear(const RandallRun& run, double sliding_bound = 0.25);
+// steeply to Randall's peak by his strain, the tangential forces' share of
+// the deviator his, never more than a quarter of the contacts sliding, the
+// anisotropy growing, the isotropic stress building.
+Verdict judge_randall_shear(const RandallMeasured& measured, const RandallFigures& figures,
+                            const RandallTolerances& tolerances = {});
+
+// Runs the case on each seed (its own packing when `seeds` is empty), into
+// out/packing_<seed>/ when there are several, prints each run and the
+// packings' table, and judges the median packing against Randall's
+// figures.
+Verdict report_randall(const std::filesystem::path& case_file, bool shear,
+                       const std::optional<std::filesystem::path>& out, const std::vector<std::uint64_t>& seeds,
+                       const RandallTolerances& tolerances = {});
 
 }  // namespace dem::validation

@@ -1,16 +1,18 @@
 #!/usr/bin/python3
 """Cundall & Strack's (1979) verification test through the service: the
 photoelastic disc assembly (cases/ball/verification_assembly.case.txtpb,
-197 discs) compressed by four servo-controlled walls to F_V on the top and
-bottom and F_H = 0.4 F_V on the sides, then left to come to rest - the case's
-own stages, run through dem_server (dem.run_programme) while the walls'
-stress against settlement is plotted live from the telemetry. Writes to --out:
+197 discs) consolidated by four servo-controlled walls to the photoelastic
+test's forces, then loaded as the seed's numerical test was, by moving its
+walls - inward to stage A, on to stage B, each held while the assembly
+comes to rest - the case's own stages, run through dem_server
+(dem.run_programme) while the walls' stress against settlement is plotted
+live from the telemetry. Writes to --out (the state at the end: stage B):
 
   stress_settlement.csv   every wall's settlement, normal stress and contacts at each telemetry sample
   stress_settlement.png   the live plot, refreshed as the run goes on (--show: in a window too)
   wall_forces.csv         Table 1: each wall's force components, normal force, contacts; F_H/F_V
   contacts.csv            every contact at the end
-  fig11_force_chains.png  the contact forces at rest (cf. Fig. 11)
+  fig11_force_chains.png  the contact forces at stage B (cf. Fig. 11(b))
 """
 
 import csv
@@ -51,7 +53,7 @@ def main():
         with client.subscribe(contact_stats=False) as telemetry:
             telemetry.wait_for_publisher()
             with LiveStressSettlement(telemetry, png=args.out / "stress_settlement.png", show=args.show,
-                                      title="verification assembly: servo-controlled walls") as live:
+                                      title="verification assembly: consolidated, then walls moved") as live:
                 for outcome in dem.run_programme(client, case, on_wait=live.update):
                     say(f'stage {outcome.index} "{outcome.name}": {outcome.cycles_run} cycles'
                         f'{", its conditions met" if outcome.condition_met else ", its cycle cap reached"}')
@@ -72,11 +74,11 @@ def main():
         writer.writerow(["F_H/F_V", repr(horizontal / vertical), "", "", "", ""])
     write_contacts(args.out / "contacts.csv", contacts)
     plot_force_chains(state, contacts, png=args.out / "fig11_force_chains.png",
-                      title=f"verification assembly at rest, F_H/F_V = {horizontal / vertical:.2f} (cf. Fig. 11)")
+                      title=f"verification assembly, stage B, F_H/F_V = {horizontal / vertical:.2f} (cf. Fig. 11(b))")
     for w in reply.plates.walls:
         say(f"{w.name:13s} F1 {w.force[0]:+.4e}  F2 {w.force[1]:+.4e}  contacts {w.contacts}")
-    say(f"F_H/F_V = {horizontal / vertical:.3f} at cycle {reply.plates.cycle} "
-        f"(Table 1: 0.39-0.43); {reply.stats.contacts} contacts")
+    say(f"stage B: F_H/F_V = {horizontal / vertical:.3f} at cycle {reply.plates.cycle} "
+        f"(Table 1: 0.40; docs/VALIDATION.md); {reply.stats.contacts} contacts")
     say(f"wrote {args.out}: stress_settlement.csv/.png, wall_forces.csv, contacts.csv, fig11_force_chains.png "
         f"({clock})")
     return 0

@@ -250,6 +250,51 @@ struct BoxControlT {
   // The box's extents when the control was set: its strains count from
   // there. Left at zero, BasicWorld::set_box_control fills them in.
   Vec<Dim> reference_extent = Vec<Dim>::Zero();
+  // The particles follow the box's deformation too (Randall 1989, 4.5.2,
+  // eqs. 4.41-4.44, after Cundall 1988): each moves with the homogeneous
+  // velocity field of the box's axis rates about the box's centre, added
+  // to its own velocity, which the law of motion integrates from its
+  // forces (and damps) as a perturbation of that field; the contacts see
+  // the field's relative velocity e_ij z_j. The walls carry the same rates
+  // (Randall's "boundary strain rate tensor of equal magnitude"). Not with
+  // periodic boundaries.
+  bool continuum = false;
+};
+
+// The continuum field a box with `continuum` laid over the particles in
+// the last step: the velocity rate_i (x_i - centre_i) along each axis (a
+// velocity gradient in the box's axes, extension positive; Randall's
+// e_ij, eqs. 4.43-4.44), about the box's centre.
+template <int Dim>
+struct ContinuumFieldT {
+  Vec<Dim> rate = Vec<Dim>::Zero();    // 1/s
+  Vec<Dim> centre = Vec<Dim>::Zero();  // m
+  Vec<Dim> velocity(const Vec<Dim>& x) const { return rate.cwiseProduct(x - centre); }
+};
+
+// A centripetal gravity field (Randall 1989, 6.4.2: "a centripetal gravity
+// field ... all the particles would travel together towards the centre"):
+// every particle is pulled towards `centre` at `acceleration`, however far
+// it is (and not at all at the centre itself). A body force like gravity:
+// its work is booked with gravity's.
+template <int Dim>
+struct CentripetalGravityT {
+  Vec<Dim> centre = Vec<Dim>::Zero();  // m
+  double acceleration = 0.0;           // m/s^2, >= 0
+  // The acceleration of a particle at x.
+  Vec<Dim> at(const Vec<Dim>& x) const {
+    const Vec<Dim> inwards = centre - x;
+    const double distance = inwards.norm();
+    return distance > 0.0 ? Vec<Dim>(inwards * (acceleration / distance)) : Vec<Dim>::Zero();
+  }
+};
+
+// The body forces per unit mass a stage sets (gravity and the centripetal
+// field, either or both).
+template <int Dim>
+struct BodyForceT {
+  Vec<Dim> gravity = Vec<Dim>::Zero();  // m/s^2
+  std::optional<CentripetalGravityT<Dim>> centripetal;
 };
 
 // Periodic boundaries (Miyata et al. 2002; Cundall's periodic cell): along
@@ -284,6 +329,7 @@ struct WorldDefT {
   std::optional<BoxControlT<Dim>> box_control;  // element-test control of a box of the walls
   DampingDef damping;
   Vec<Dim> gravity = Vec<Dim>::Zero();  // m/s^2, body force per unit mass
+  std::optional<CentripetalGravityT<Dim>> centripetal_gravity;  // Randall 6.4.2; none when absent
   // 2D only: discs or spheres in the plane (3D particles are spheres).
   PlanarParticle planar_particle = PlanarParticle::kDisc;
   // The time step is time_step_fraction times the critical step 2 sqrt(m/k)
@@ -313,6 +359,10 @@ using PeriodicDef = PeriodicDefT<2>;
 using PeriodicDef3 = PeriodicDefT<3>;
 using BoxControl = BoxControlT<2>;
 using BoxControl3 = BoxControlT<3>;
+using CentripetalGravity = CentripetalGravityT<2>;
+using CentripetalGravity3 = CentripetalGravityT<3>;
+using BodyForce = BodyForceT<2>;
+using BodyForce3 = BodyForceT<3>;
 
 // A definition with one "default" material and a default contact model for
 // every pair, for programs that build worlds in code. Case conversion starts

@@ -45,14 +45,18 @@ struct WallMeasureT {
 };
 
 // Where the energy went since the world was built, J (per unit depth for 2D
-// discs). What came in (the initial kinetic energy, the work of gravity and
-// of moving walls) equals what is held (kinetic and elastic strain energy)
+// discs). What came in (the initial kinetic energy, the work of the body
+// forces - gravity and a centripetal field - of moving walls and of a box's
+// continuum field) equals what is held (kinetic and elastic strain energy)
 // plus what was dissipated, up to the residual, which measures the
 // integration and contact-law errors.
 struct EnergyBudget {
   double initial_kinetic = 0.0;
-  double gravity_work = 0.0;
+  double gravity_work = 0.0;     // work of the body forces: gravity and a centripetal field
   double wall_work = 0.0;        // work of the walls' motion on the particles
+  // Work of a box's continuum field (BoxControlT::continuum, Randall 4.5.2)
+  // on the particles it carries.
+  double continuum_work = 0.0;
   double kinetic = 0.0;          // translation + rotation, at the last half step
   double strain = 0.0;           // elastic energy held in the contact springs now
   double contact_damping = 0.0;  // dissipated by contact dashpots
@@ -61,7 +65,7 @@ struct EnergyBudget {
   double local_damping = 0.0;    // dissipated by local non-viscous damping
   double removed = 0.0;          // held by particles and contacts when they were removed
   double residual() const {
-    return initial_kinetic + gravity_work + wall_work -
+    return initial_kinetic + gravity_work + wall_work + continuum_work -
            (kinetic + strain + contact_damping + friction + global_damping + local_damping + removed);
   }
 };

@@ -43,7 +43,11 @@ struct SizeClassT {
 // overlapping; superquadrics are turned at random (seeded) angles and
 // ellipsoids to random orientations, uniform over all rotations. A
 // particle that finds no free place after max_attempts tries is an error
-// (DefinitionError) naming its size class.
+// (DefinitionError) naming its size class - or, with next_size_when_full,
+// the end of its class: the generator "would now move on to the next
+// smaller particle size and attempt to generate all those" (Randall 1989,
+// 4.4), which fills a small box densely, the counts becoming the most of
+// each size.
 template <int Dim>
 struct RandomPackingDefT {
   MaterialId material{0};
@@ -52,6 +56,7 @@ struct RandomPackingDefT {
   std::vector<SizeClassT<Dim>> sizes;
   std::uint64_t seed = 1;
   int max_attempts = 100000;
+  bool next_size_when_full = false;  // Randall 4.4's dense generation
   // Asked every few thousand attempts, when set: true ends the packing
   // with a DefinitionError. A caller that gave up on it (dem_server
   // abandoning a load) ends the work too, instead of letting it run on.

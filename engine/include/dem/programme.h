@@ -8,9 +8,11 @@
 #include <string>
 #include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "dem/definitions.h"
+#include "dem/region.h"
 #include "dem/world.h"
 
 namespace dem {
@@ -18,6 +20,13 @@ namespace dem {
 // A threshold on one wall.
 struct WallThreshold {
   WallId wall = kInvalidId;
+  double value = 0.0;
+};
+
+// A threshold on a measure of a region, in the world's dimension (the
+// other alternative is never held).
+struct RegionThreshold {
+  std::variant<RegionT<2>, RegionT<3>> region;
   double value = 0.0;
 };
 
@@ -45,6 +54,9 @@ struct StopConditions {
   std::optional<double> deviator_strain_above;
   std::optional<WallThreshold> wall_stress_above;      // Pa: normal force over wall_area
   std::optional<WallThreshold> wall_settlement_above;  // m: wall_settlement
+  // Delta F / F over the particles in a region (BasicWorld::out_of_balance):
+  // Randall's quasi-equilibrium, judged inside his measurement circles.
+  std::optional<RegionThreshold> region_out_of_balance_below;
   std::uint64_t min_cycles = 0;
   std::uint64_t check_interval = 10;
 };
@@ -86,8 +98,8 @@ template <int Dim>
 struct StageDefT {
   std::string name;
   // Done when the stage starts, in this order: trim, place a wall, remove
-  // walls, then the wall motions, the box control, damping, time step and
-  // friction.
+  // walls, then the wall motions, the box control, damping, body forces,
+  // time step and friction.
   std::optional<TrimDef> trim;
   std::optional<PlaceWallDef> place_wall;
   std::vector<WallId> remove_walls;                               // taken out when the stage starts
@@ -97,6 +109,7 @@ struct StageDefT {
   std::optional<BoxControlT<Dim>> box_control;
   bool release_box_control = false;
   std::optional<DampingDef> damping;                     // applied when the stage starts
+  std::optional<BodyForceT<Dim>> body_force;             // gravity and a centripetal field from this stage on
   std::optional<TimeStepSetting> time_step;              // from this stage on
   std::vector<std::pair<MaterialId, double>> frictions;  // materials' friction from this stage on
   std::uint64_t cycles = 0;                              // the stage's length, or its cap when conditions are set

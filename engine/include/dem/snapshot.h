@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <type_traits>
 #include <vector>
 
@@ -288,6 +289,10 @@ struct WorldSnapshotT {
   double time = 0.0;
   double time_step = 0.0;           // s, as in use (not re-estimated on restore)
   double critical_time_step = 0.0;  // s
+  // The continuum field a box laid over the particles in the last step
+  // (BoxControlT::continuum): the particles' velocities carry it, and the
+  // next step takes it out again before it integrates their own.
+  std::optional<ContinuumFieldT<Dim>> continuum;
 };
 
 // The id of the k-th particle of def.particles.

@@ -70,7 +70,8 @@ struct SnapshotFields<EnergyBudget> {
                       DEM_FIELD(EnergyBudget, wall_work), DEM_FIELD(EnergyBudget, kinetic),
                       DEM_FIELD(EnergyBudget, strain), DEM_FIELD(EnergyBudget, contact_damping),
                       DEM_FIELD(EnergyBudget, friction), DEM_FIELD(EnergyBudget, global_damping),
-                      DEM_FIELD(EnergyBudget, local_damping), DEM_FIELD(EnergyBudget, removed));
+                      DEM_FIELD(EnergyBudget, local_damping), DEM_FIELD(EnergyBudget, removed),
+                      DEM_FIELD(EnergyBudget, continuum_work));
 };
 template <>
 struct SnapshotFields<ServoDef> {
@@ -133,7 +134,17 @@ struct SnapshotFields<BoxControlT<Dim>> {
   using Box = BoxControlT<Dim>;
   static constexpr auto list =
       std::make_tuple(DEM_FIELD(Box, axes), DEM_FIELD(Box, path), DEM_FIELD(Box, path_value), DEM_FIELD(Box, gain),
-                      DEM_FIELD(Box, max_speed), DEM_FIELD(Box, reference_extent));
+                      DEM_FIELD(Box, max_speed), DEM_FIELD(Box, reference_extent), DEM_FIELD(Box, continuum));
+};
+template <int Dim>
+struct SnapshotFields<ContinuumFieldT<Dim>> {
+  using Continuum = ContinuumFieldT<Dim>;
+  static constexpr auto list = std::make_tuple(DEM_FIELD(Continuum, rate), DEM_FIELD(Continuum, centre));
+};
+template <int Dim>
+struct SnapshotFields<CentripetalGravityT<Dim>> {
+  using Centripetal = CentripetalGravityT<Dim>;
+  static constexpr auto list = std::make_tuple(DEM_FIELD(Centripetal, centre), DEM_FIELD(Centripetal, acceleration));
 };
 template <int Dim>
 struct SnapshotFields<WorldDefT<Dim>> {
@@ -141,7 +152,7 @@ struct SnapshotFields<WorldDefT<Dim>> {
   static constexpr auto list = std::make_tuple(
       DEM_FIELD(Def, materials), DEM_FIELD(Def, contact_models), DEM_FIELD(Def, particles), DEM_FIELD(Def, walls),
       DEM_FIELD(Def, periodic), DEM_FIELD(Def, box_control), DEM_FIELD(Def, damping), DEM_FIELD(Def, gravity),
-      DEM_FIELD(Def, planar_particle), DEM_FIELD(Def, time_step_fraction), DEM_FIELD(Def, fixed_time_step),
+      DEM_FIELD(Def, centripetal_gravity), DEM_FIELD(Def, planar_particle), DEM_FIELD(Def, time_step_fraction), DEM_FIELD(Def, fixed_time_step),
       DEM_FIELD(Def, contact_tolerance), DEM_FIELD(Def, threads), DEM_FIELD(Def, energy_budget));
 };
 template <int Dim>
@@ -162,7 +173,7 @@ struct SnapshotFields<WorldSnapshotT<Dim>> {
       DEM_FIELD(State, particle_order), DEM_FIELD(State, particle_ids), DEM_FIELD(State, particle_id_count),
       DEM_FIELD(State, sorted_cycle), DEM_FIELD(State, energy), DEM_FIELD(State, tangential_work),
       DEM_FIELD(State, cycle), DEM_FIELD(State, time), DEM_FIELD(State, time_step),
-      DEM_FIELD(State, critical_time_step));
+      DEM_FIELD(State, critical_time_step), DEM_FIELD(State, continuum));
 };
 
 #undef DEM_FIELD
@@ -207,6 +218,10 @@ DEM_SNAPSHOT_FIELDS_COMPLETE(PeriodicDefT<2>);
 DEM_SNAPSHOT_FIELDS_COMPLETE(PeriodicDefT<3>);
 DEM_SNAPSHOT_FIELDS_COMPLETE(BoxControlT<2>);
 DEM_SNAPSHOT_FIELDS_COMPLETE(BoxControlT<3>);
+DEM_SNAPSHOT_FIELDS_COMPLETE(ContinuumFieldT<2>);
+DEM_SNAPSHOT_FIELDS_COMPLETE(ContinuumFieldT<3>);
+DEM_SNAPSHOT_FIELDS_COMPLETE(CentripetalGravityT<2>);
+DEM_SNAPSHOT_FIELDS_COMPLETE(CentripetalGravityT<3>);
 DEM_SNAPSHOT_FIELDS_COMPLETE(WorldDefT<2>);
 DEM_SNAPSHOT_FIELDS_COMPLETE(WorldDefT<3>);
 DEM_SNAPSHOT_FIELDS_COMPLETE(WallSnapshotT<2>);

@@ -16,6 +16,7 @@
 #include "dem/definitions.h"
 #include "dem/measures.h"
 #include "dem/profile.h"
+#include "dem/region.h"
 #include "dem/snapshot.h"
 
 namespace dem {
@@ -178,6 +179,13 @@ class BasicWorld {
 
   std::vector<Measure> wall_measures() const;
   AssemblyMeasures assembly_measures() const;
+  // Cundall & Strack's out-of-balance ratio Delta F / F (Table 1, note 2)
+  // over the particles whose centres lie in the region: the largest
+  // resultant on one of them (body forces included) over the largest force
+  // of their contacts; 0 without contacts. Randall's quasi-equilibrium
+  // (6.4.2-6.5.2) is judged in his measurement circles, away from the
+  // boundary.
+  double out_of_balance(const RegionT<Dim>& region) const;
   std::vector<Record> contacts() const;  // touching contacts only
   // The touching contacts of one wall, as contacts() reports them: a pass
   // over that wall's rows alone.
@@ -196,6 +204,12 @@ class BasicWorld {
   void set_damping(const DampingDef& damping);
   Vec<Dim> gravity() const;
   void set_gravity(const Vec<Dim>& gravity);
+  // Randall's centripetal gravity field (6.4.2), or none.
+  const std::optional<CentripetalGravityT<Dim>>& centripetal_gravity() const;
+  // The body forces from now on: gravity and the centripetal field (none
+  // when the optional is empty). Throws DefinitionError for a field that
+  // is not finite or pulls outwards, changing nothing.
+  void set_body_force(const BodyForceT<Dim>& body_force);
 
   // Time spent in each phase of the cycle since the world was built.
   const StepProfile& profile() const;

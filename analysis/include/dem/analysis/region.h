@@ -1,31 +1,18 @@
-// A region of an assembly in which its state is measured (Randall 1989, 4.6;
-// his measurement circles, 6.4.2 and 6.5.2): the whole assembly, an
-// axis-aligned box, or a ball (a circle in 2D, a sphere in 3D).
+// The regions the analysis measures (Randall 1989, 4.6): the engine's
+// (dem/region.h), and the box a region's volume is clipped against.
 #pragma once
 
-#include <string>
-
 #include "dem/math.h"
+#include "dem/region.h"
 
 namespace dem::analysis {
 
-enum class RegionShape {
-  kWhole,  // every particle; its volume is the box the particles span (or the periodic cell along a periodic axis)
-  kBox,    // min <= x <= max along every axis
-  kBall,   // |x - centre| <= radius
-};
-
-template <int Dim>
-struct RegionT {
-  std::string name;  // labels the rows written for it; unique among a run's regions
-  RegionShape shape = RegionShape::kWhole;
-  Vec<Dim> min = Vec<Dim>::Zero();     // m, kBox
-  Vec<Dim> max = Vec<Dim>::Zero();     // m, kBox
-  Vec<Dim> centre = Vec<Dim>::Zero();  // m, kBall
-  double radius = 0.0;                 // m, kBall
-
-  bool contains(const Vec<Dim>& x) const;
-};
+using dem::check_region;
+using dem::Region;
+using dem::Region3;
+using dem::region_measure;
+using dem::RegionShape;
+using dem::RegionT;
 
 // An axis-aligned box: what a kWhole region becomes once the particles
 // are known, and what the solid-volume integrals clip against.
@@ -34,18 +21,5 @@ struct Box {
   Vec<Dim> min, max;
   double measure() const { return (max - min).prod(); }  // area (2D) or volume (3D)
 };
-
-// Throws DefinitionError naming the region and the field when it makes no
-// sense: an empty name, a box whose max is not above its min along an axis,
-// a ball with a radius that is not > 0, coordinates that are not finite.
-template <int Dim>
-void check_region(const RegionT<Dim>& region);
-
-// The region's area (2D) or volume (3D); kWhole has none of its own (0).
-template <int Dim>
-double region_measure(const RegionT<Dim>& region);
-
-using Region = RegionT<2>;
-using Region3 = RegionT<3>;
 
 }  // namespace dem::analysis

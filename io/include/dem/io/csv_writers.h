@@ -26,10 +26,11 @@
 //                 particles.csv.)
 //   assembly.csv  cycle,time,kinetic_energy,out_of_balance,max_contact_force,
 //                 contacts,sliding_contacts,time_step_ratio,gravity_work,
-//                 wall_work,strain_energy,contact_damping,friction,
-//                 global_damping,local_damping,energy_residual
+//                 wall_work,continuum_work,strain_energy,contact_damping,
+//                 friction,global_damping,local_damping,energy_residual
 //                 the energy budget since the start (J; dem/measures.h):
-//                 initial kinetic + gravity_work + wall_work = kinetic +
+//                 initial kinetic + gravity_work (body forces) + wall_work +
+//                 continuum_work (a box's continuum field) = kinetic +
 //                 strain + the dissipated terms + energy_residual;
 //                 time_step_ratio is Randall's particle-wise check (> 0.3: too large)
 //   probes.csv    cycle,time,probe,normal_force,shear_force,touching

@@ -1,11 +1,11 @@
-#include "dem/analysis/region.h"
+#include "dem/region.h"
 
 #include <cmath>
 #include <numbers>
 
 #include "dem/error.h"
 
-namespace dem::analysis {
+namespace dem {
 
 namespace {
 
@@ -78,4 +78,4 @@ template void check_region(const RegionT<3>&);
 template double region_measure(const RegionT<2>&);
 template double region_measure(const RegionT<3>&);
 
-}  // namespace dem::analysis
+}  // namespace dem
