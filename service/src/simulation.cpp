@@ -151,6 +151,12 @@ Simulation::Prepared Simulation::Preparer::prepare_snapshot(std::string_view byt
   }
 }
 
+void Simulation::drop() {
+  world_.reset();
+  programme_ = CaseProgramme();
+  digest_.clear();
+}
+
 std::string Simulation::snapshot_bytes() const { return service::snapshot_bytes(world(), snapshot_info()); }
 
 WallId Simulation::find_wall(const std::string& name, std::int32_t id) const {

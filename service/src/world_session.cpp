@@ -99,7 +99,12 @@ class WorldSessionT final : public WorldSession {
 
   void restore(const AnyWorldSnapshot& state) override {
     const int threads = world_.threads();
-    world_ = BasicWorld<Dim>(std::get<WorldSnapshotT<Dim>>(state));
+    // The world it replaces goes first: a restore after memory ran out
+    // needs no more than the world it puts back. If building it fails, the
+    // session is left without a world, for the caller to drop.
+    const WorldSnapshotT<Dim>& snapshot = std::get<WorldSnapshotT<Dim>>(state);
+    { const BasicWorld<Dim> replaced = std::move(world_); }
+    world_ = BasicWorld<Dim>(snapshot);
     world_.set_threads(threads);
     health_ = HealthMonitorT<Dim>(world_);
   }

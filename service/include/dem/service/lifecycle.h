@@ -35,6 +35,7 @@ enum class Transition {
   kStartRun,  // a cycle, run_until or programme begins
   kEndRun,    // it completed or was stopped
   kFailRun,   // it failed (the engine threw, the world is unhealthy, an output failed)
+  kLoseWorld,  // after a failure, the world could not be kept (no memory to restore it): idle
   kShutDown,  // the server stops
 };
 

@@ -94,7 +94,10 @@ class WorldSession {
   virtual void set_threads(int threads) = 0;
   // Replaces the world by a state of its dimension (std::bad_variant_access
   // for the other); its threads stay and the health monitor starts afresh
-  // from it.
+  // from it. The old world is freed first, so going back to a state needs
+  // no more memory than that state; if building the new one throws
+  // (std::bad_alloc), the session is left without a world and must be
+  // dropped (Simulation::drop).
   virtual void restore(const AnyWorldSnapshot& state) = 0;
 
   // Stepping: a stage of the engine's on this session's world, its start
