@@ -1,6 +1,9 @@
 # What `cmake --install` puts where (GNU layout under the prefix), the
 # package configuration other CMake projects find with find_package(dem),
-# and the Debian package CPack builds from the same rules (docs/INSTALL.md):
+# and the Debian packages CPack builds from the same rules (docs/INSTALL.md):
+# the component `runtime` is the package dem (programs, Python client,
+# data, documents), `development` the package dem-dev (libraries,
+# headers, CMake configuration):
 #   bin/                      dem_run, dem_validate, dem_vtk, dem_server, demctl
 #   lib/, include/dem/        the libraries (dem::engine, dem::analysis, dem::io, dem::client, ...) and their headers
 #   lib/cmake/dem/            demConfig.cmake, demTargets.cmake
@@ -13,7 +16,7 @@ include(CMakePackageConfigHelpers)
 # --- programs -----------------------------------------------------------
 foreach(program dem_run dem_validate dem_vtk dem_server demctl)
   if(TARGET ${program})
-    install(TARGETS ${program} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+    install(TARGETS ${program} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
   endif()
 endforeach()
 
@@ -46,6 +49,9 @@ while(exported_libraries)
       "$<BUILD_INTERFACE:${include_dir}>" "$<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>")
   endif()
   list(APPEND export_targets ${target})
+  # The headers are C++20: a program built against them gets the standard
+  # from the targets it links, not from settings of its own.
+  target_compile_features(${target} INTERFACE cxx_std_20)
 endwhile()
 if(DEM_USES_DDS)
   # The messages' C++ types are generated from the IDL into the build tree.
@@ -66,39 +72,60 @@ if(DEM_USES_DDS)
   set_property(TARGET dem_idl_dds PROPERTY INTERFACE_LINK_LIBRARIES CycloneDDS::ddsc)
 endif()
 install(TARGETS ${export_targets} EXPORT demTargets
-  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
-  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(DIRECTORY engine/include/ analysis/include/ io/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY engine/include/ analysis/include/ io/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+        COMPONENT development)
 install(FILES ${PROJECT_BINARY_DIR}/idl/dem/case.pb.h ${PROJECT_BINARY_DIR}/idl/dem/snapshot.pb.h
               ${PROJECT_BINARY_DIR}/generated/version/dem/version.h
-        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/dem)
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/dem COMPONENT development)
 if(DEM_USES_DDS)
   install(DIRECTORY dds/include/ protocol/include/ ${PROJECT_BINARY_DIR}/protocol/generated/include/
-          DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+          DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT development)
   if(TARGET dem_client)
-    install(DIRECTORY clients/cpp/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+    install(DIRECTORY clients/cpp/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT development)
   endif()
 endif()
 set(config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/dem)
-install(EXPORT demTargets NAMESPACE dem:: DESTINATION ${config_dir})
+install(EXPORT demTargets NAMESPACE dem:: DESTINATION ${config_dir} COMPONENT development)
 configure_package_config_file(cmake/demConfig.cmake.in ${PROJECT_BINARY_DIR}/demConfig.cmake
   INSTALL_DESTINATION ${config_dir})
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/demConfigVersion.cmake COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/demConfig.cmake ${PROJECT_BINARY_DIR}/demConfigVersion.cmake
-        DESTINATION ${config_dir})
+        DESTINATION ${config_dir} COMPONENT development)
 
 # --- data and documents --------------------------------------------------
-install(DIRECTORY cases config DESTINATION ${CMAKE_INSTALL_DATADIR}/dem)
-install(FILES tools/paraview/force_chains.py DESTINATION ${CMAKE_INSTALL_DATADIR}/dem/paraview)
+install(DIRECTORY cases config DESTINATION ${CMAKE_INSTALL_DATADIR}/dem COMPONENT runtime)
+install(FILES tools/paraview/force_chains.py DESTINATION ${CMAKE_INSTALL_DATADIR}/dem/paraview COMPONENT runtime)
 # Sweeps (docs/SWEEPS.md): the task script dem.sweep copies into each sweep, and a
 # one-machine Slurm cluster; the DDS configuration for hosts of a real network (DDS.md).
 install(PROGRAMS scripts/slurm/dem_sweep_task.sh scripts/slurm/local_cluster.sh
-        DESTINATION ${CMAKE_INSTALL_DATADIR}/dem/scripts/slurm)
-install(PROGRAMS scripts/dds_network_config.sh DESTINATION ${CMAKE_INSTALL_DATADIR}/dem/scripts)
-install(DIRECTORY ros2/dem_interfaces DESTINATION ${CMAKE_INSTALL_DATADIR}/dem/ros2)
-install(FILES README.md LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
-install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR})
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/dem/scripts/slurm COMPONENT runtime)
+install(PROGRAMS scripts/dds_network_config.sh DESTINATION ${CMAKE_INSTALL_DATADIR}/dem/scripts COMPONENT runtime)
+install(DIRECTORY ros2/dem_interfaces DESTINATION ${CMAKE_INSTALL_DATADIR}/dem/ros2 COMPONENT runtime)
+install(FILES README.md LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime)
+install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime)
+# Debian's copyright file (machine-readable format 1.0), in each package's
+# /usr/share/doc/<package>/, from LICENSE.
+file(READ ${PROJECT_SOURCE_DIR}/LICENSE license_text)
+string(REGEX MATCH "Copyright \\(c\\) [^\n]*" copyright_line "${license_text}")
+string(REGEX REPLACE "^Copyright \\(c\\) " "" copyright_holders "${copyright_line}")
+string(REGEX REPLACE "^MIT License\n\n[^\n]*\n\n" "" license_body "${license_text}")
+string(REGEX REPLACE "\n\n" "\n.\n" license_body "${license_body}")
+string(REGEX REPLACE "\n" "\n " license_body "${license_body}")
+string(REGEX REPLACE " $" "" license_body "${license_body}")
+file(WRITE ${PROJECT_BINARY_DIR}/copyright
+"Format: https://www.debian.org/doc/packaging-manuals/copyright-format/1.0/
+Upstream-Name: dem
+Upstream-Contact: dem maintainers <dem@example.org>
+
+Files: *
+Copyright: ${copyright_holders}
+License: Expat
+ ${license_body}")
+install(FILES ${PROJECT_BINARY_DIR}/copyright DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/dem COMPONENT runtime)
+install(FILES ${PROJECT_BINARY_DIR}/copyright DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/dem-dev COMPONENT development)
 
 # --- the Python client -------------------------------------------------
 # The package as the build assembled it, except where-things-are: the
@@ -113,18 +140,23 @@ if(TARGET dem_python)
 import pathlib as _pathlib
 _PREFIX = _pathlib.Path(__file__).resolve().parents[4]
 VERSION = \"${PROJECT_VERSION}\"
+PYTHON = \"/usr/bin/python3\"
+PYTHON_VERSION = \"${DEM_PYTHON_VERSION}\"
 SERVER_PROGRAM = str(_PREFIX / \"${CMAKE_INSTALL_BINDIR}\" / \"dem_server\")
 DEMCTL_PROGRAM = str(_PREFIX / \"${CMAKE_INSTALL_BINDIR}\" / \"demctl\")
 RUN_PROGRAM = str(_PREFIX / \"${CMAKE_INSTALL_BINDIR}\" / \"dem_run\")
 LOOPBACK_CONFIG = str(_PREFIX / \"${CMAKE_INSTALL_DATADIR}\" / \"dem\" / \"config\" / \"cyclonedds-loopback.xml\")
 SOURCE_DIR = str(_PREFIX / \"${CMAKE_INSTALL_DATADIR}\" / \"dem\")
 ")
-  install(DIRECTORY ${DEM_PYTHON_PATH}/dem DESTINATION ${python_dir}
+  install(DIRECTORY ${DEM_PYTHON_PATH}/dem DESTINATION ${python_dir} COMPONENT runtime
     PATTERN "_build_info.py" EXCLUDE PATTERN "__pycache__" EXCLUDE)
-  install(FILES ${PROJECT_BINARY_DIR}/install/_build_info.py DESTINATION ${python_dir}/dem)
+  install(FILES ${PROJECT_BINARY_DIR}/install/_build_info.py DESTINATION ${python_dir}/dem COMPONENT runtime)
 endif()
 
-# --- the Debian package ---------------------------------------------------
+# --- the Debian packages -------------------------------------------------
+# dem: the programs, the Python client, the cases, the documents (what
+# the image installs); dem-dev: what find_package(dem) needs, with the
+# Debian -dev packages its configuration finds (demConfig.cmake.in).
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME dem)
 set(CPACK_PACKAGE_VENDOR "the dem contributors")
@@ -136,13 +168,27 @@ shapes); dem_server runs them as a service over Cyclone DDS, driven by demctl, t
 Python client (package dem); dem_vtk writes ParaView files.")
 set(CPACK_RESOURCE_FILE_LICENSE ${PROJECT_SOURCE_DIR}/LICENSE)
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+set(CPACK_DEB_COMPONENT_INSTALL ON)
+set(CPACK_COMPONENTS_ALL runtime development)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME dem)
+set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_NAME dem-dev)
+set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_SECTION libdevel)
+set(CPACK_COMPONENT_DEVELOPMENT_DESCRIPTION
+  "dem's libraries, headers and CMake configuration for find_package(dem): dem::engine, dem::analysis, dem::io, \
+dem::dds, dem::protocol, dem::client (C++20).")
 # The shared libraries the programs and the extension link (Cyclone DDS,
 # Protocol Buffers, spdlog, OpenMP, ...) from dpkg-shlibdeps; the Python
 # client's own imports by hand.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "python3 (>= 3.11), python3-numpy, python3-protobuf")
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_DEPENDS "python3 (>= 3.11), python3-numpy, python3-protobuf")
 # The plots, and the bridge's web server and charts (python3 -m dem.bridge).
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "python3-matplotlib, python3-websockets, libjs-chart.js")
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "python3-matplotlib, python3-websockets, libjs-chart.js")
+# demConfig.cmake's find_dependency calls: Eigen3, Protobuf (and the
+# headers protoc made for its version), OpenSSL, CycloneDDS; OpenMP comes
+# with the compiler (g++'s libgomp).
+set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_DEPENDS
+  "dem (= ${PROJECT_VERSION}), libeigen3-dev (>= 3.4), libprotobuf-dev, libssl-dev, cyclonedds-dev")
+set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_RECOMMENDS "cmake (>= 3.25), g++ (>= 4:12)")
 include(CPack)

@@ -11,13 +11,25 @@
 # dashboard page and the Foxglove WebSocket protocol; at the end the curve
 # is drawn as a PNG, and ParaView (pvpython, headless) draws the compressed
 # sample with its force chains from the server's ParaView files.
+# It installs and builds only what it runs (scripts/build.sh --for demo:
+# dem_server, demctl, the Python client; pvpython) and prints how long
+# each part took.
 # Outputs go to out/demo/ (or the directory given as $1). Another case:
 #   DEM_DEMO_CASE=cases/miyata/ss_reduced.case.txtpb bash scripts/demo.sh
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+source "$root/scripts/lib/timing.sh"
 out="$(mkdir -p "${1:-$root/out}/demo" && cd "${1:-$root/out}/demo" && pwd)"
 case_file="$(realpath "${DEM_DEMO_CASE:-$root/cases/miyata/cs.case.txtpb}")"
-bash "$root/scripts/build.sh"
+demo_start=$(clock)
+parts=()
+# A part's name and how long it took, for the summary at the end.
+took() { parts+=("$(printf '  %-44s %s' "$1" "$(since "$2")")"); }
+
+printf '== the packages and the build: dem_server, demctl, the Python client\n'
+start=$(clock)
+bash "$root/scripts/build.sh" --for demo
+took "packages and build" "$start"
 
 # Loopback only: 127.0.0.1, multicast off, peers on localhost.
 export CYCLONEDDS_URI="file://$root/config/cyclonedds-loopback.xml"
@@ -35,6 +47,7 @@ trap cleanup EXIT
 step() { printf '\n== %s\n' "$*"; }
 
 rm -rf "$out" && mkdir -p "$out"
+start=$(clock)
 step "the live dashboard: python3 -m dem.bridge on DDS domain $DEM_DOMAIN (log: $out/bridge.log)"
 # Port 0: any free port; the bridge prints the one it got.
 PYTHONPATH="$root/build/clients/python" /usr/bin/python3 -m dem.bridge --domain "$DEM_DOMAIN" \
@@ -69,17 +82,23 @@ record_pid=""
 kill "$bridge_pid" && wait "$bridge_pid" || true
 bridge_pid=""
 grep -E "stage|programme" "$out/dem_server.log" | sed 's/^\[[^]]*\] \[[^]]*\] \[[^]]*\] /  /'
+took "the run (dem_server, monitor, record, dashboard)" "$start"
 
 step "the stress-settlement curve"
+start=$(clock)
 PYTHONPATH="$root/build/clients/python" /usr/bin/python3 -m dem.plots stress-settlement \
   "$out/monitor.csv" "$out/stress_settlement.png" --wall top \
   --title "$(basename "$case_file" .case.txtpb): loading plate stress against settlement"
 
+took "the stress-settlement curve (matplotlib)" "$start"
+
 step "the force chains at the end (ParaView, headless)"
+start=$(clock)
 case_out="$(dirname "$(ls "$out"/*/particles.pvd | head -1)")"
 bash "$root/scripts/pvpython.sh" "$root/tools/paraview/force_chains.py" "$case_out" "$out/force_chains.png" \
   --title "$(basename "$case_file" .case.txtpb): contact normal forces at the end of loading" 2>"$out/pvpython.log" ||
   { echo "pvpython failed; its log:" >&2; tail -20 "$out/pvpython.log" >&2; exit 1; }
+took "the force chains (ParaView)" "$start"
 
 echo
 echo "Results in $out:"
@@ -93,3 +112,8 @@ echo "  */compression*.csv, plate_contacts.csv, force_distribution.csv, force_ta
 echo "    stress_drops.csv      the plate loading analyses (Miyata Figs. 26-37; docs/CASES.md)"
 echo "  */final.snapshot        the whole final state, for an exact restart (demctl snapshot load)"
 echo "  dem_server.log          the server's log"
+
+echo
+echo "How long each part took:"
+printf '%s\n' "${parts[@]}"
+printf '  %-44s %s\n' "the whole demo" "$(since "$demo_start")"

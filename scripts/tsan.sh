@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# ThreadSanitizer run of the service: builds dem_server, demctl and the
-# service tests with -fsanitize=thread in build-tsan/ (only what they need)
+# ThreadSanitizer run of the service: builds dem_server, demctl, the
+# discovery probe and the service tests with -fsanitize=thread in build-tsan/ (only what they need)
 # and runs the service tests there. A data race fails the run. Part of
 # scripts/test.sh.
 set -euo pipefail
@@ -11,7 +11,7 @@ bash "$root/scripts/install_deps.sh"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDEM_SANITIZE=thread \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1" \
   -DDEM_BUILD_TOOLS=OFF -DDEM_BUILD_BENCH=OFF -DDEM_BUILD_PYTHON=OFF >/dev/null
-cmake --build "$build" -j"$(nproc)" --target dem_service_tests dem_server demctl
+cmake --build "$build" -j"$(nproc)" --target dem_service_tests dem_server demctl dds_discovery_probe
 export CYCLONEDDS_URI="file://$root/config/cyclonedds-loopback.xml"
 export OMP_WAIT_POLICY=passive
 # ThreadSanitizer cannot see the barriers of libgomp, which is not

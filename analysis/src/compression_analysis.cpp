@@ -11,6 +11,9 @@ namespace dem::analysis {
 template <int Dim>
 CompressionAnalysisT<Dim>::CompressionAnalysisT(const CompressionSettings& settings) : settings_(settings) {
   for (double stress : settings_.contacts_at_stress) targets_.push_back({stress, false, true});
+  // Miyata Fig. 28: rotations from "the initial unloaded state", the
+  // loading's first sample (every stress is >= 0; contacts_at_stress > 0).
+  if (!settings_.contacts_at_stress.empty()) targets_.push_back({0.0, false, true});
   if (const auto& d = settings_.force_distribution) {
     // Evenly spread from stress_from to stress_to, both included.
     for (int k = 0; k < d->snapshots; ++k) {
@@ -59,6 +62,7 @@ std::vector<const PlateSnapshotT<Dim>*> CompressionAnalysisT<Dim>::add(const Bas
     snapshot.index = static_cast<int>(snapshots_.size());
     snapshot.target_stress = targets_[next_target_].stress;
     snapshot.for_distribution = targets_[next_target_].for_distribution;
+    snapshot.for_contacts = targets_[next_target_].for_contacts;
     snapshot.sample = sample;
     snapshot.loading = plate_contacts<Dim>(contacts, settings_.loading_plate);
     snapshot.bottom = plate_contacts<Dim>(contacts, settings_.bottom_plate);
@@ -116,7 +120,8 @@ void CompressionAnalysisT<Dim>::restore(CompressionStateT<Dim> state) {
     throw std::runtime_error("the plate loading analyses' state has more snapshots than targets");
   samples_ = std::move(state.samples);
   snapshots_ = std::move(state.snapshots);
-  next_target_ = snapshots_.size();  // a snapshot per target reached
+  next_target_ = snapshots_.size();  // a snapshot per target reached, in order
+  for (std::size_t k = 0; k < next_target_; ++k) snapshots_[k].for_contacts = targets_[k].for_contacts;
 }
 
 template class CompressionAnalysisT<2>;

@@ -134,7 +134,8 @@ void protect_type_information(const dds_topic_descriptor_t& descriptor) {
     std::uint32_t sz;
     std::uint8_t* data;
   } serialized{descriptor.type_information.sz, descriptor.type_information.data};
-  struct ddsi_typeinfo* typeinfo = ddsi_typeinfo_deser(reinterpret_cast<const struct ddsi_sertype_cdr_data*>(&serialized));
+  struct ddsi_typeinfo* typeinfo =
+      ddsi_typeinfo_deser(reinterpret_cast<const struct ddsi_sertype_cdr_data*>(&serialized));
   if (typeinfo == nullptr) return;
   std::lock_guard lock(own_mutex);
   const DDS_XTypes_TypeInformation& info = information_of(typeinfo);

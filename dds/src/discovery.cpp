@@ -23,30 +23,42 @@ Guid guid_of(const Participant& participant) {
   return to_guid(guid);
 }
 
-PublicationMonitor::PublicationMonitor(const Participant& participant)
-    : entity_(check(dds_create_reader(participant.handle(), DDS_BUILTIN_TOPIC_DCPSPUBLICATION, nullptr, nullptr),
-                    "creating a reader for DCPSPublication")) {}
+EndpointMonitor::EndpointMonitor(const Participant& participant, Kind kind)
+    : kind_(kind),
+      entity_(check(dds_create_reader(
+                        participant.handle(),
+                        kind == Kind::kWriters ? DDS_BUILTIN_TOPIC_DCPSPUBLICATION : DDS_BUILTIN_TOPIC_DCPSSUBSCRIPTION,
+                        nullptr, nullptr),
+                    kind == Kind::kWriters ? "creating a reader for DCPSPublication"
+                                           : "creating a reader for DCPSSubscription")) {}
 
-std::vector<Publication> PublicationMonitor::alive() const {
-  // read (not take): the built-in reader keeps one sample per writer, and
-  // an instance leaves the alive state when its writer goes away.
+std::vector<Endpoint> EndpointMonitor::alive() const {
+  // read (not take): the built-in reader keeps one sample per endpoint, and
+  // an instance leaves the alive state when its endpoint goes away.
   for (std::size_t capacity = 256;; capacity *= 4) {
     std::vector<void*> samples(capacity, nullptr);
     std::vector<dds_sample_info_t> infos(capacity);
     const auto count = check(
         dds_read_mask(entity_.handle(), samples.data(), infos.data(), capacity, static_cast<std::uint32_t>(capacity),
                       DDS_ANY_SAMPLE_STATE | DDS_ANY_VIEW_STATE | DDS_ALIVE_INSTANCE_STATE),
-        "reading DCPSPublication");
+        "reading discovery's endpoints");
     Loan loan(entity_.handle(), samples, count);
     if (static_cast<std::size_t>(count) == capacity) continue;  // there may be more: read again with room
-    std::vector<Publication> publications;
+    std::vector<Endpoint> endpoints;
     for (std::int32_t i = 0; i < count; ++i) {
       if (!infos[i].valid_data) continue;
       const auto* endpoint = static_cast<const dds_builtintopic_endpoint_t*>(samples[i]);
-      publications.push_back({endpoint->topic_name ? endpoint->topic_name : "",
-                              endpoint->type_name ? endpoint->type_name : "", to_guid(endpoint->participant_key)});
+      Endpoint e{endpoint->topic_name ? endpoint->topic_name : "", endpoint->type_name ? endpoint->type_name : "",
+                 to_guid(endpoint->participant_key), "", kind_ == Kind::kWriters};
+      void* data = nullptr;
+      std::size_t size = 0;
+      if (endpoint->qos && dds_qget_userdata(endpoint->qos, &data, &size) && data != nullptr) {
+        e.user_data.assign(static_cast<const char*>(data), size);
+        dds_free(data);
+      }
+      endpoints.push_back(std::move(e));
     }
-    return publications;
+    return endpoints;
   }
 }
 

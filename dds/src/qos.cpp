@@ -53,10 +53,17 @@ Qos& Qos::volatile_durability() {
   dds_qset_durability(qos_, DDS_DURABILITY_VOLATILE);
   return *this;
 }
-Qos& Qos::transient_local() {
+Qos& Qos::transient_local(std::int32_t late_joiner_depth) {
   dds_qset_durability(qos_, DDS_DURABILITY_TRANSIENT_LOCAL);
+  dds_qset_durability_service(qos_, 0, DDS_HISTORY_KEEP_LAST, late_joiner_depth, DDS_LENGTH_UNLIMITED,
+                              DDS_LENGTH_UNLIMITED, DDS_LENGTH_UNLIMITED);
   return *this;
 }
+Qos& Qos::user_data(std::string_view data) {
+  dds_qset_userdata(qos_, data.data(), data.size());
+  return *this;
+}
+
 Qos& Qos::resource_limits(std::int32_t max_samples, std::int32_t max_instances, std::int32_t max_samples_per_instance) {
   dds_qset_resource_limits(qos_, max_samples, max_instances, max_samples_per_instance);
   return *this;

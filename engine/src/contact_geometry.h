@@ -112,7 +112,8 @@ ContactGeometry<Dim> apart(const Particles<Dim>& p, Slot x, Slot y, const Vec<Di
 }
 
 // 2D superquadrics: the circles of curvature at the points that minimise
-// each other's potential (eqs. 34-42), warm-started from the last cycle.
+// each other's potential (eqs. 34-42), warm-started from the last cycle;
+// the force acts at the overlap's centroid (superquadric.h).
 struct SuperquadricShape {
   static constexpr bool round = false;
 
@@ -135,8 +136,8 @@ struct SuperquadricShape {
     g.overlap = c.overlap;
     g.normal = c.normal;
     g.point = c.point;
-    g.arm_first = c.first_point - cx;
-    g.arm_second = c.second_point - cy;
+    g.arm_first = c.point - cx;
+    g.arm_second = c.point - cy;
     g.effective_radius = c.radius_i * c.radius_j / (c.radius_i + c.radius_j);
     return g;
   }
@@ -150,8 +151,8 @@ struct SuperquadricShape {
     const double along = (s.point - wall.point).dot(wall.direction);
     g.overlap = along >= wall.h1 && along <= wall.h2 ? s.overlap : -1.0;
     g.normal = -towards_particles;
-    g.point = s.point + 0.5 * s.overlap * towards_particles;
-    g.arm_first = s.point - p.position[x];
+    g.point = s.centroid;
+    g.arm_first = s.centroid - p.position[x];
     g.effective_radius = s.radius;
     return g;
   }

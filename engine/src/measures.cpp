@@ -1,7 +1,9 @@
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "contact_forces.h"
+#include "quasi_static.h"
 #include "tangential.h"
 #include "world_state.h"
 
@@ -35,22 +37,27 @@ AssemblyMeasures measure_assembly(const WorldState<Dim>& s) {
   const Particles<Dim>& p = s.particles;
   AssemblyMeasures m;
   double max_resultant = 0.0;
+  double resultants = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     m.kinetic_energy +=
         0.5 * p.mass[i] * p.velocity[i].squaredNorm() + 0.5 * p.spin_energy_product(i, p.angular_velocity[i]);
-    max_resultant = std::max(max_resultant, (p.force[i] + p.mass[i] * s.gravity).norm());
+    const double resultant = (p.force[i] + p.mass[i] * s.gravity).norm();
+    max_resultant = std::max(max_resultant, resultant);
+    resultants += resultant;
   }
   Strain strain;
+  double contact_forces = 0.0;
   visit_touching_contacts<Dim>(s, [&](const ContactRecordT<Dim>& c) {
     ++m.contacts;
     if (c.second_particle != kInvalidId) ++m.particle_contacts;
     if (c.sliding) ++m.sliding_contacts;
-    m.max_contact_force = std::max(m.max_contact_force, std::hypot(c.normal_force, c.tangential_force.norm()));
+    const double contact_force = std::hypot(c.normal_force, c.tangential_force.norm());
+    m.max_contact_force = std::max(m.max_contact_force, contact_force);
+    contact_forces += contact_force;
     const Slot x = p.slot_of(c.first);
     const double smaller =
         c.second_particle != kInvalidId ? std::min(p.radius[x], p.radius[p.slot_of(c.second_particle)]) : p.radius[x];
     m.deepest_overlap = std::max(m.deepest_overlap, c.overlap / smaller);
-    if (!s.energy_budget) return;
     double effective_radius = p.radius[x];
     Strain held;
     if (c.second_particle != kInvalidId) {
@@ -74,6 +81,21 @@ AssemblyMeasures measure_assembly(const WorldState<Dim>& s) {
   // Cundall & Strack Table 1 note 2: largest force sum on any particle over
   // the largest contact force.
   if (m.max_contact_force > 0.0) m.out_of_balance = max_resultant / m.max_contact_force;
+  m.elastic_energy = m.energy.strain;
+  if (m.elastic_energy > 0.0) {
+    m.kinetic_to_elastic = m.kinetic_energy / m.elastic_energy;
+  } else if (m.kinetic_energy > 0.0) {
+    m.kinetic_to_elastic = std::numeric_limits<double>::infinity();
+  }
+  if (m.contacts > 0) {
+    m.sliding_fraction = static_cast<double>(m.sliding_contacts) / m.contacts;
+    if (contact_forces > 0.0) {
+      m.unbalanced_force = (resultants / static_cast<double>(p.size())) / (contact_forces / m.contacts);
+    }
+  }
+  m.mean_stress = mean_stress(s);
+  m.deformation_rate = deformation_rate(p, s.periodic);
+  m.inertial_number = inertial_number(m.deformation_rate, grain_scale(s), m.mean_stress);
   return m;
 }
 

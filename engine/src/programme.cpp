@@ -41,10 +41,17 @@ double wall_stress(const BasicWorld<Dim>& world, WallId wall) {
 
 template <int Dim>
 bool stop_conditions_hold(const BasicWorld<Dim>& world, const StopConditions& until) {
-  const bool needs_assembly = until.kinetic_energy_below || until.out_of_balance_below;
+  const bool needs_assembly = until.kinetic_energy_below || until.out_of_balance_below ||
+                              until.kinetic_to_elastic_below || until.unbalanced_force_below;
   const AssemblyMeasures a = needs_assembly ? world.assembly_measures() : AssemblyMeasures{};
   if (until.kinetic_energy_below && !(a.kinetic_energy < *until.kinetic_energy_below)) return false;
   if (until.out_of_balance_below && !(a.contacts > 0 && a.out_of_balance < *until.out_of_balance_below)) return false;
+  if (until.kinetic_to_elastic_below && !(a.contacts > 0 && a.kinetic_to_elastic < *until.kinetic_to_elastic_below)) {
+    return false;
+  }
+  if (until.unbalanced_force_below && !(a.contacts > 0 && a.unbalanced_force < *until.unbalanced_force_below)) {
+    return false;
+  }
   if (until.servo_tolerance && !servos_settled(world, *until.servo_tolerance)) return false;
   if (until.wall_stress_above && wall_stress(world, until.wall_stress_above->wall) < until.wall_stress_above->value) {
     return false;
@@ -61,7 +68,8 @@ bool stop_conditions_hold(const BasicWorld<Dim>& world, const StopConditions& un
 }
 
 bool has_stop_condition(const StopConditions& until) {
-  return until.kinetic_energy_below || until.out_of_balance_below || until.servo_tolerance || until.wall_stress_above ||
+  return until.kinetic_energy_below || until.out_of_balance_below || until.kinetic_to_elastic_below ||
+         until.unbalanced_force_below || until.servo_tolerance || until.wall_stress_above ||
          until.wall_settlement_above || until.deviator_strain_above;
 }
 

@@ -5,6 +5,10 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <optional>
+
+#include "superquadric_boundary.h"
+#include "superquadric_overlap.h"
 
 namespace dem {
 
@@ -17,34 +21,12 @@ Vec2 rotate(const Vec2& v, double angle) {
   return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
 }
 
-// A turn by a fixed angle, its cosine and sine taken once.
-struct Turn {
-  double c, s;
-  explicit Turn(double angle) : c(std::cos(angle)), s(std::sin(angle)) {}
-  Turn(double cosine, double sine) : c(cosine), s(sine) {}
-  Vec2 operator()(const Vec2& v) const { return {c * v.x() - s * v.y(), s * v.x() + c * v.y()}; }
-  Turn inverse() const { return {c, -s}; }
-  // This turn followed by the inverse of `other` (the angle difference).
-  Turn minus(const Turn& other) const { return {c * other.c + s * other.s, s * other.c - c * other.s}; }
-};
-
 // |t|^p with the sign of t. The exponents the shapes use most (2/n for
 // n = 4 and n = 2) have roots and products that cost far less than pow.
 double signed_power(double t, double p) {
   if (p == 0.5) return std::copysign(std::sqrt(std::abs(t)), t);
   if (p == 1.0) return t;
   return std::copysign(std::pow(std::abs(t), p), t);
-}
-
-// t^n for t >= 0, by products when n is 0, 2 or 4.
-double power(double t, double n) {
-  if (n == 4.0) {
-    const double t2 = t * t;
-    return t2 * t2;
-  }
-  if (n == 2.0) return t * t;
-  if (n == 0.0) return 1.0;
-  return std::pow(t, n);
 }
 
 // Brent's minimisation (Brent 1973, the golden section with parabolic
@@ -93,24 +75,6 @@ double brent_minimise(F f, double lo, double hi, double x, double tolerance) {
     }
   }
   return x;
-}
-
-// The boundary point in direction t from the centre, in the particle's
-// frame: p(t) = (a cos t, b sin t) / (|cos t|^n + |sin t|^n)^(1/n). It
-// traces the same boundary as eq. 35 but is smooth in t (eq. 35's
-// |cos|^(2/n) has an infinite slope where the long sides are flattest, the
-// likeliest place to touch), so Newton steps converge on it.
-Vec2 radial_point(const Superquadric& s, double c, double sn) {
-  const double w = power(std::abs(c), s.n) + power(std::abs(sn), s.n);
-  double scale;  // w^(-1/n)
-  if (s.n == 4.0) {
-    scale = 1.0 / std::sqrt(std::sqrt(w));
-  } else if (s.n == 2.0) {
-    scale = 1.0 / std::sqrt(w);
-  } else {
-    scale = std::pow(w, -1.0 / s.n);
-  }
-  return {s.a * c * scale, s.b * sn * scale};
 }
 
 // The Newton steps' three evaluations (at t and t +- h) side by side in
@@ -275,6 +239,9 @@ SuperquadricContact superquadric_contact(const PlacedSuperquadric& i, const Plac
   c.second_point = j.centre + turn_j(pj);
   c.normal = d > 0.0 ? Vec2(between / d) : Vec2(turn_i(ki.normal));
   c.point = ci + (ki.radius - 0.5 * c.overlap) * c.normal;
+  if (c.overlap > 0.0) {
+    if (const auto centroid = overlap_centroid(i, j, c, on_i.t, on_j.t)) c.point = *centroid;
+  }
   return c;
 }
 
@@ -290,7 +257,11 @@ SupportContact superquadric_line_contact(const PlacedSuperquadric& body, const V
   const double scale = std::pow(std::pow(px, s.n) + std::pow(py, s.n), 1.0 / s.n);
   const Vec2 local(std::copysign(s.a * px / scale, u.x()), std::copysign(s.b * py / scale, u.y()));
   const Vec2 point = body.centre + rotate(local, body.angle);
-  return {(point - on_line).dot(outward), point, superquadric_curvature(s, local).radius};
+  SupportContact contact{(point - on_line).dot(outward), point, superquadric_curvature(s, local).radius, point};
+  if (contact.overlap > 0.0) {
+    if (const auto centroid = line_overlap_centroid(body, on_line, outward, contact)) contact.centroid = *centroid;
+  }
+  return contact;
 }
 
 double superquadric_bounding_radius(const Superquadric& s) {

@@ -7,6 +7,19 @@
 // be trusted) and the point of j's
 // boundary that minimises i's; their circles of curvature (eqs. 38-41) then
 // overlap by rho_i + rho_j - |C_j - C_i| along the line C_i -> C_j (eq. 42).
+//
+// The force acts at the centroid of the region where the bodies overlap,
+// not at P_i and P_j: on a flat side (n > 2) the minimising points are not
+// unique - with n = 4 they run along the side as the cube root of a tilt,
+// so a point force there turns a pair lying side on side with a moment
+// whose stiffness grows without bound as the tilt vanishes, and the bodies
+// rock (two flat-lying particles pressed together by a plate lose force
+// in steps of 2-4 %). At the overlap's centroid a tilt theta moves the
+// force by theta L^2 / (12 delta) over a side overlapping along L: the
+// moment k theta L^2 / 12 of a linear spring spread over the side (Feng &
+// Owen 2004 take the same point for polygons). On a curved contact the
+// overlap is a thin lens about the line of centres of curvature, and its
+// centroid the halfway point of eq. 42 to second order in the overlap.
 #pragma once
 
 #include "dem/math.h"
@@ -54,7 +67,7 @@ Curvature superquadric_curvature(const Superquadric& s, const Vec2& local);
 struct SuperquadricContact {
   double overlap;  // delta_n = rho_i + rho_j - d; > 0 in contact
   Vec2 normal;     // from C_i towards C_j
-  Vec2 point;      // halfway through the overlap on the line of centres of curvature
+  Vec2 point;      // the centroid of the overlapping region: where the force acts
   double alpha_i, alpha_j;
   double radius_i, radius_j;       // the radii of curvature rho_i, rho_j
   Vec2 first_point, second_point;  // P_i and P_j in the plane
@@ -69,6 +82,9 @@ struct SupportContact {
   double overlap;  // > 0 when the body crosses the line
   Vec2 point;      // on the body's boundary
   double radius;   // its radius of curvature there
+  // The centroid of the body's part past the line (the support point, at
+  // no overlap): where the wall's force acts (the header's note).
+  Vec2 centroid;
 };
 SupportContact superquadric_line_contact(const PlacedSuperquadric& body, const Vec2& on_line, const Vec2& outward);
 

@@ -109,6 +109,8 @@ StopConditions to_stop_conditions(const proto::Until& until, const WallIndex& wa
   StopConditions def;
   if (until.has_kinetic_energy_below()) def.kinetic_energy_below = until.kinetic_energy_below();
   if (until.has_out_of_balance_below()) def.out_of_balance_below = until.out_of_balance_below();
+  if (until.has_kinetic_to_elastic_below()) def.kinetic_to_elastic_below = until.kinetic_to_elastic_below();
+  if (until.has_unbalanced_force_below()) def.unbalanced_force_below = until.unbalanced_force_below();
   if (until.has_servo_tolerance()) def.servo_tolerance = until.servo_tolerance();
   if (until.has_wall_stress_above()) {
     def.wall_stress_above =

@@ -707,11 +707,13 @@ class CaseChecker {
   void check_until(const std::string& stage_path, const proto::Stage& stage, bool any_servo) {
     const proto::Until& until = stage.until();
     const std::string path = stage_path + ".until";
-    if (!until.has_kinetic_energy_below() && !until.has_out_of_balance_below() && !until.has_servo_tolerance() &&
+    if (!until.has_kinetic_energy_below() && !until.has_out_of_balance_below() &&
+        !until.has_kinetic_to_elastic_below() && !until.has_unbalanced_force_below() && !until.has_servo_tolerance() &&
         !until.has_wall_stress_above() && !until.has_wall_settlement_above() && !until.has_deviator_strain_above()) {
       problems_.add(path,
-                    "sets no stop condition; set kinetic_energy_below, out_of_balance_below, servo_tolerance, "
-                    "wall_stress_above, wall_settlement_above or deviator_strain_above, or leave until out");
+                    "sets no stop condition; set kinetic_energy_below, out_of_balance_below, "
+                    "kinetic_to_elastic_below, unbalanced_force_below, servo_tolerance, wall_stress_above, "
+                    "wall_settlement_above or deviator_strain_above, or leave until out");
     }
     if (until.has_deviator_strain_above()) {
       problems_.positive(path + ".deviator_strain_above", until.deviator_strain_above());
@@ -728,6 +730,12 @@ class CaseChecker {
     }
     if (until.has_out_of_balance_below()) {
       problems_.positive(path + ".out_of_balance_below", until.out_of_balance_below());
+    }
+    if (until.has_kinetic_to_elastic_below()) {
+      problems_.positive(path + ".kinetic_to_elastic_below", until.kinetic_to_elastic_below());
+    }
+    if (until.has_unbalanced_force_below()) {
+      problems_.positive(path + ".unbalanced_force_below", until.unbalanced_force_below());
     }
     if (until.has_servo_tolerance() && problems_.positive(path + ".servo_tolerance", until.servo_tolerance()) &&
         !any_servo && !box_controlled_) {

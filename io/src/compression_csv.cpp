@@ -2,15 +2,22 @@
 
 #include <utility>
 
+#include "world_rows.h"
+
 namespace dem::io {
 namespace {
 
 constexpr const char* kSamplesHeader =
     "stage,cycle,time,settlement,stress,loading_contacts,bottom_stress,bottom_contacts,contact_ratio";
 constexpr const char* kContactsHeader2 =
-    "snapshot,target_stress,cycle,stress,plate,particle,x,y,normal_force,shear_force,f,formed_cycle,formed_in";
+    "snapshot,target_stress,cycle,stress,plate,particle,x,y,normal_force,shear_force,f,formed_cycle,formed_in,"
+    "for_contacts,for_distribution";
 constexpr const char* kContactsHeader3 =
-    "snapshot,target_stress,cycle,stress,plate,particle,x,y,z,normal_force,shear_force,f,formed_cycle,formed_in";
+    "snapshot,target_stress,cycle,stress,plate,particle,x,y,z,normal_force,shear_force,f,formed_cycle,formed_in,"
+    "for_contacts,for_distribution";
+// The snapshot's columns before those of particles.csv and contacts.csv
+// (world_rows.h) in particles_at_stress.csv and contacts_at_stress.csv.
+constexpr const char* kSnapshotColumns = "snapshot,target_stress,cycle,stress,";
 
 double mean_normal_force(const auto& contacts) {
   if (contacts.empty()) return 0.0;
@@ -28,8 +35,10 @@ CompressionCsvT<Dim>::CompressionCsvT(const std::filesystem::path& directory, st
       loading_plate_(std::move(loading_plate)),
       bottom_plate_(std::move(bottom_plate)),
       samples_(directory, "compression.csv", kSamplesHeader, resume),
-      contacts_(directory, "plate_contacts.csv", Dim == 2 ? kContactsHeader2 : kContactsHeader3, resume) {
-  files_ = {samples_.path(), contacts_.path()};
+      contacts_(directory, "plate_contacts.csv", Dim == 2 ? kContactsHeader2 : kContactsHeader3, resume),
+      particles_at_stress_(directory, "particles_at_stress.csv", kSnapshotColumns + particle_columns<Dim>(), resume),
+      contacts_at_stress_(directory, "contacts_at_stress.csv", kSnapshotColumns + contact_columns<Dim>(), resume) {
+  files_ = {samples_.path(), contacts_.path(), particles_at_stress_.path(), contacts_at_stress_.path()};
 }
 
 template <int Dim>
@@ -53,11 +62,11 @@ void CompressionCsvT<Dim>::write_plate_rows(const dem::analysis::PlateSnapshotT<
     if constexpr (Dim == 2) {
       contacts_.write_row(snapshot.index, snapshot.target_stress, snapshot.sample.cycle, snapshot.sample.stress, plate,
                           c.particle, c.point.x(), c.point.y(), c.normal_force, c.shear_force, f, c.formed_cycle,
-                          formed_in);
+                          formed_in, snapshot.for_contacts, snapshot.for_distribution);
     } else {
       contacts_.write_row(snapshot.index, snapshot.target_stress, snapshot.sample.cycle, snapshot.sample.stress, plate,
                           c.particle, c.point.x(), c.point.y(), c.point.z(), c.normal_force, c.shear_force, f,
-                          c.formed_cycle, formed_in);
+                          c.formed_cycle, formed_in, snapshot.for_contacts, snapshot.for_distribution);
     }
   }
 }
@@ -68,6 +77,20 @@ void CompressionCsvT<Dim>::write_snapshot(const dem::analysis::PlateSnapshotT<Di
   write_plate_rows(snapshot, loading_plate_, snapshot.loading, cycles);
   write_plate_rows(snapshot, bottom_plate_, snapshot.bottom, cycles);
   contacts_.flush();
+}
+
+template <int Dim>
+void CompressionCsvT<Dim>::write_assembly(const dem::analysis::PlateSnapshotT<Dim>& snapshot,
+                                          const BasicWorld<Dim>& world) {
+  std::string leading;
+  CsvFile::add_field(leading, snapshot.index);
+  CsvFile::add_field(leading, snapshot.target_stress);
+  CsvFile::add_field(leading, snapshot.sample.cycle);
+  CsvFile::add_field(leading, snapshot.sample.stress);
+  write_particle_rows(particles_at_stress_, world, leading);
+  write_contact_rows(contacts_at_stress_, world, leading);
+  particles_at_stress_.flush();
+  contacts_at_stress_.flush();
 }
 
 template <int Dim>
@@ -153,7 +176,11 @@ void record_compression(dem::analysis::CompressionAnalysisT<Dim>& analysis, Comp
   const dem::analysis::CompressionSettings& s = analysis.settings();
   const dem::analysis::StateCycles cycles =
       dem::analysis::state_cycles(analysis.samples(), s.transition_stress, s.final_stress);
-  for (const dem::analysis::PlateSnapshotT<Dim>* snapshot : taken) csv.write_snapshot(*snapshot, cycles);
+  for (const dem::analysis::PlateSnapshotT<Dim>* snapshot : taken) {
+    csv.write_snapshot(*snapshot, cycles);
+    // The world is at the snapshot's moment only now.
+    if (snapshot->for_contacts) csv.write_assembly(*snapshot, world);
+  }
 }
 
 template class CompressionCsvT<2>;

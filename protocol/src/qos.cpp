@@ -33,8 +33,21 @@ dds::Qos reply_reader_qos() { return dds::Qos().reliable(5s).keep_all().volatile
 // The current state, replayed to late joiners: one sample, durable.
 dds::Qos status_qos() { return dds::Qos().reliable(0ns).keep_last(1).transient_local(); }
 
-dds::Qos telemetry_writer_qos() { return dds::Qos().reliable(0ns).keep_last(16).volatile_durability(); }
+// Telemetry is a run's recent history, as a ROS 2 latched topic with a
+// depth: the writer keeps its last 256 samples and hands them to a reader
+// that joins later (transient-local), so a monitor, a recording or a
+// dashboard started beside a run begins at its start - at the telemetry
+// interval the demo uses, 256 samples are 256,000 cycles - or, on a long
+// run, at its last 256 samples. Keep-last, so a write never waits for a
+// reader: a stalled one holds at most the 256 samples (a few hundred kB at
+// most) and costs the others nothing (DDS.md).
+constexpr int kTelemetryHistory = 256;
+dds::Qos telemetry_writer_qos() {
+  return dds::Qos().reliable(0ns).keep_last(kTelemetryHistory).transient_local(kTelemetryHistory);
+}
 
-dds::Qos telemetry_reader_qos() { return dds::Qos().reliable(1s).keep_last(1024).volatile_durability(); }
+// Transient-local to be given the writer's history; a reader's own 1024
+// samples leave room for a monitor that falls behind for a while.
+dds::Qos telemetry_reader_qos() { return dds::Qos().reliable(1s).keep_last(1024).transient_local(); }
 
 }  // namespace dem::protocol

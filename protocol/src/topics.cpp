@@ -9,6 +9,8 @@ constexpr std::string_view kPrefix = "rt/dem/";
 constexpr std::string_view kStatusSuffix = "/status";
 }  // namespace
 
+std::string topics_of(std::string_view server) { return std::string(kPrefix) + std::string(server) + "/"; }
+
 std::string topic_name(std::string_view server, TopicKind kind) {
   std::string name(kPrefix);
   name += server;

@@ -103,6 +103,11 @@ protocol::ContactStats read_contact_stats(const BasicWorld<Dim>& world) {
   const AssemblyMeasures assembly = world.assembly_measures();
   s.kinetic_energy = assembly.kinetic_energy;
   s.out_of_balance = assembly.out_of_balance;
+  s.elastic_energy = assembly.elastic_energy;
+  s.kinetic_to_elastic = assembly.kinetic_to_elastic;
+  s.unbalanced_force = assembly.unbalanced_force;
+  s.mean_stress = assembly.mean_stress;
+  s.inertial_number = assembly.inertial_number;
   return s;
 }
 

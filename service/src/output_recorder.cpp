@@ -111,8 +111,7 @@ void OutputRecorder::fill(io::ResumePoint& point) {
   if (box3_) tables.push_back(&box3_->file());
   const auto add_compression = [&](auto& c) {
     if (!c) return;
-    tables.push_back(&c->csv.samples_file());
-    tables.push_back(&c->csv.contacts_file());
+    for (io::CsvFile* table : c->csv.tables()) tables.push_back(table);
     point.analysis = io::compression_state_text(c->analysis.state());
   };
   add_compression(compression2_);

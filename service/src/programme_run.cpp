@@ -26,6 +26,13 @@ std::uint64_t ProgrammeRun::next_stage(const WorldSession& world) {
   return stage_done_;
 }
 
+double ProgrammeRun::progress(double stage_fraction) const {
+  const std::size_t count = end_ - first_;
+  if (count == 0 || stage_ >= end_) return 1.0;
+  const double before = static_cast<double>(stage_ - first_);
+  return std::clamp((before + (stage_running() ? stage_fraction : 0.0)) / static_cast<double>(count), 0.0, 1.0);
+}
+
 StageResult ProgrammeRun::end_stage() {
   StageResult result = stepper_->result();
   result.cycles_run += stage_done_;

@@ -22,12 +22,24 @@ ServerOptions checked(ServerOptions options) {
   }
   return options;
 }
+
+// A peer that cannot meet the server is a warning; one that can (an older
+// form, or no hash to judge) is worth a line.
+void log_interface(const protocol::PeerVerdict& verdict) {
+  using Kind = protocol::PeerVerdict::Kind;
+  if (verdict.kind == Kind::kIncompatible || verdict.kind == Kind::kUnknownForm) {
+    spdlog::warn("{}", verdict.text);
+  } else {
+    spdlog::info("{}", verdict.text);
+  }
+}
 }  // namespace
 
 Server::Server(ServerOptions options)
     : options_(checked(std::move(options))),
       queue_(options_.queue_capacity),
       participant_(options_.domain, options_.dds_config),
+      interface_watch_(participant_, protocol::topics_of(options_.name), "this server", log_interface),
       name_claim_(participant_, options_.name, options_.name_discovery, options_.name_wait),
       telemetry_(participant_, options_.name),
       replies_(participant_, options_.name, options_.contact_chunk, options_.snapshot_chunk),

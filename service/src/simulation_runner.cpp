@@ -53,7 +53,8 @@ SimulationRunner::SimulationRunner(const ServerOptions& options, CommandQueue& q
 void SimulationRunner::load_initial_case(const std::filesystem::path& path, bool resume) {
   protocol::LoadCaseArgs args;
   args.path = path.string();
-  Simulation::Prepared prepared = simulation_.preparer().reading(initial_case_access(options_, path)).prepare_case(args);
+  Simulation::Prepared prepared =
+      simulation_.preparer().reading(initial_case_access(options_, path)).prepare_case(args);
   if (options_.run_programme && prepared.programme.stage_count() == 0) {
     throw CommandError(ReplyStatus::kInvalidCase,
                        path.string() + ": the case defines no stages, so --run-and-exit has nothing to run");

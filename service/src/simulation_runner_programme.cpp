@@ -26,6 +26,7 @@ void SimulationRunner::run_programme() {
     start_programme(point.stage, stages - point.stage, point.stage_cycles);
   } else {
     start_programme(0, stages);
+    record_programme_row();  // the series start where the programme does, as dem_run's
   }
   serve(true);
 }
@@ -48,6 +49,7 @@ void SimulationRunner::run_programme(ReceivedCommand& received) {
                                                      std::to_string(stages) + " of " + simulation_.case_name());
   }
   start_programme(first, args.stage_count == 0 ? stages - first : args.stage_count);
+  record_programme_row();
   programme_command_ = std::move(received);  // its one reply comes when the programme ends
   owner_left_logged_ = false;
 }
@@ -141,6 +143,10 @@ void SimulationRunner::end_stage() {
   record_programme_row();
   recorder_.record_stage(stage, simulation_.programme().stage_name(stage), result, world.cycle_count(), world.time());
   if (recorder_.failed()) programme_->fail("an output file could not be written (see the error above)");
+  // The state a stage ends in - its stop condition met, the last of a
+  // programme's - is telemetry whatever the schedule: monitors, dashboards
+  // and recordings end where the run does.
+  if (world.cycle_count() != last_telemetry_cycle_ || !telemetry_published_) publish_telemetry(false);
   spdlog::info("{}: {} cycles{}, to cycle {}", stage_label(stage), result.cycles_run,
                result.condition_met ? ", its stop condition met" : "", world.cycle_count());
 }

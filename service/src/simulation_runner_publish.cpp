@@ -51,11 +51,19 @@ protocol::Status SimulationRunner::status() const {
       s.command_client = programme_command_->command.client_id;
       s.command_request_id = programme_command_->command.request_id;
     }
-    s.command_cycles_done = programme_->done(simulation_.world());
-    s.command_cycles_total = programme_->total();
-    s.progress = s.command_cycles_total > 0
-                     ? static_cast<double>(s.command_cycles_done) / static_cast<double>(s.command_cycles_total)
-                     : 0.0;
+    const WorldSession& world = simulation_.world();
+    s.command_cycles_done = programme_->done(world);
+    s.command_cycles_total = programme_->total();  // every stage's cap: a bound, not a forecast
+    // The stages' own measures of how far they are (the cap of a stage
+    // that ends on a stress would put its end at a few per cent).
+    if (programme_->stage_running() && !programme_->over()) {
+      const StageProgress stage =
+          simulation_.programme().progress(programme_->stage(), programme_->stage_cycles(world.cycle_count()), world);
+      s.progress = programme_->progress(stage.fraction);
+      s.message = stage_label(programme_->stage()) + ": " + stage.text;
+    } else {
+      s.progress = programme_->progress(0.0);
+    }
   }
   return s;
 }
@@ -130,7 +138,7 @@ void SimulationRunner::refresh_cache(bool always) {
   awaiting_refresh_.clear();
 }
 
-void SimulationRunner::publish_telemetry() {
+void SimulationRunner::publish_telemetry(bool scheduled) {
   const WorldSession& world = simulation_.world();
   const Readout& now = readout();
   protocol::PlateForces plates = now.plates;
@@ -147,7 +155,7 @@ void SimulationRunner::publish_telemetry() {
   }
   // A one-shot run writes its rows at the case's output interval instead.
   if (!programme_) recorder_.record(world.view());
-  schedule_.published(world.cycle_count(), world.time());
+  if (scheduled) schedule_.published(world.cycle_count(), world.time());
   last_telemetry_cycle_ = world.cycle_count();
   telemetry_published_ = true;
 }

@@ -2,7 +2,12 @@
 # The container test (ctest label container), on podman as
 # ../shared/CONTAINERS.md describes it:
 #   1. sets podman up (scripts/container_setup.sh) and builds the image
-#      (docker/build.sh): labels, user, stop signal and HEALTHCHECK as built;
+#      (docker/build.sh) - from the Debian package of the host's build
+#      (cpack in BUILD_DIR, then docker/build.sh --deb), as a user's CI does
+#      with the package its build job made; with --from-source (label
+#      container_source) compiling the project in the image's build stage,
+#      as the README's image build does: labels, user, stop signal and
+#      HEALTHCHECK as built;
 #   2. starts dem_server in a container (host network, the repository's
 #      loopback configuration mounted and passed in, a host directory as
 #      /data) and drives it from demctl on the host: load, a loading stage
@@ -19,12 +24,15 @@
 #      profile's two servers addressed by name.
 # Prints how long each step took. Skips (exit 77) only where podman cannot
 # run: not root, podman not installable, or no container can start.
-#   container_test.sh SOURCE_DIR DEMCTL WORK_DIR DOMAIN   (uses DOMAIN to DOMAIN + 3)
+#   container_test.sh SOURCE_DIR BUILD_DIR DEMCTL WORK_DIR DOMAIN [--from-source]   (uses DOMAIN to DOMAIN + 3)
 set -euo pipefail
 root="$1"
-demctl="$2"
-work="$3"
-domain="$4"
+build_dir="$2"
+demctl="$3"
+work="$4"
+domain="$5"
+from_source=0
+[ "${6:-}" = --from-source ] && from_source=1
 
 start=$(date +%s)
 step() { printf '\n== [%4ss] %s\n' "$(($(date +%s) - start))" "$*"; }
@@ -81,6 +89,7 @@ fi
 # volumes are this run's own, removed at the end.
 tree_id=$(printf '%s' "$root" | md5sum | cut -c1-8)
 image="localhost/dem:ctest-$tree_id"
+[ $from_source = 0 ] || image+="-source"
 project="demctest_${tree_id}_$$"
 # shellcheck disable=SC2086  # $names: one container or volume per word
 cleanup() {
@@ -100,31 +109,47 @@ data_dir() {
   chown 10001:10001 "$1"
 }
 
-step "building $image (docker/build.sh; log in $work/build.log)"
 build_start=$(date +%s)
-# The images this tag and its build stage's tag name now: replaced by the
-# build, they are removed after it, so repeated runs do not pile up stale
-# layers (the build stage's are 1.6 GB). Tagging the build stage keeps its
-# layers, the packages and the compile, as the cache of the next run.
-image_id() { podman image inspect --format '{{.Id}}' "$1" 2>/dev/null || true; }
-stage_image="$image-build"
-previous=("$(image_id "$image")" "$(image_id "$stage_image")")
 # Each line of the build's log with the time it came, to see where the time goes.
 stamped() { while IFS= read -r line; do printf '%(%T)T %s\n' -1 "$line"; done; }
-# shellcheck disable=SC2086  # DEM_IMAGE_BUILD_OPTIONS: extra options, e.g. --no-cache
-if ! DEM_IMAGE="$image" bash "$root/docker/build.sh" --pull=never --network host ${DEM_IMAGE_BUILD_OPTIONS:-} 2>&1 |
-  stamped >"$work/build.log"; then  # pipefail: the build's own status
-  tail -n 60 "$work/build.log"
-  fail "the image did not build"
+image_id() { podman image inspect --format '{{.Id}}' "$1" 2>/dev/null || true; }
+if [ $from_source = 0 ]; then
+  step "packing the host's build (cpack in $build_dir; log in $work/cpack.log)"
+  (cd "$work" && cpack --config "$build_dir/CPackConfig.cmake" -B "$work/deb" >"$work/cpack.log" 2>&1) ||
+    { tail -n 30 "$work/cpack.log"; fail "cpack"; }
+  deb=$(ls "$work"/deb/dem_*_amd64.deb)
+  step "building $image from $(basename "$deb") (docker/build.sh --deb; log in $work/build.log)"
+  previous=("$(image_id "$image")")
+  # shellcheck disable=SC2086  # DEM_IMAGE_BUILD_OPTIONS: extra options, e.g. --no-cache
+  if ! DEM_IMAGE="$image" bash "$root/docker/build.sh" --deb "$deb" --pull=never --network host \
+    ${DEM_IMAGE_BUILD_OPTIONS:-} 2>&1 | stamped >"$work/build.log"; then  # pipefail: the build's own status
+    tail -n 60 "$work/build.log"
+    fail "the image did not build"
+  fi
+else
+  step "building $image from source (docker/build.sh; log in $work/build.log)"
+  # The images this tag and its build stage's tag name now: replaced by the
+  # build, they are removed after it, so repeated runs do not pile up stale
+  # layers (the build stage's are 1.6 GB). Tagging the build stage keeps its
+  # layers, the packages and the compile, as the cache of the next run.
+  stage_image="$image-build"
+  previous=("$(image_id "$image")" "$(image_id "$stage_image")")
+  # shellcheck disable=SC2086  # DEM_IMAGE_BUILD_OPTIONS: extra options, e.g. --no-cache
+  if ! DEM_IMAGE="$image" bash "$root/docker/build.sh" --pull=never --network host ${DEM_IMAGE_BUILD_OPTIONS:-} 2>&1 |
+    stamped >"$work/build.log"; then  # pipefail: the build's own status
+    tail -n 60 "$work/build.log"
+    fail "the image did not build"
+  fi
+  # The build stage's image: the last layer the log names ("--> ID" or
+  # "--> Using cache ID") before the stage that takes its package starts.
+  stage_id=$(awk '/ STEP 1\/[0-9]+: FROM .* AS package/{ print id; exit } / --> /{ id = $NF }' "$work/build.log")
+  [ -n "$stage_id" ] && podman tag "$stage_id" "$stage_image" 2>>"$work/podman.log" ||
+    fail "the build stage's image is not in $work/build.log"
 fi
-# The build stage's image: the last layer the log names ("--> ID" or
-# "--> Using cache ID") before the runtime stage starts.
-stage_id=$(awk '/\[2\/2\] STEP 1\//{ print id; exit } / --> /{ id = $NF }' "$work/build.log")
-[ -n "$stage_id" ] && podman tag "$stage_id" "$stage_image" 2>>"$work/podman.log" ||
-  fail "the build stage's image is not in $work/build.log"
 for id in "${previous[@]}"; do
-  [ -z "$id" ] || [ "$id" = "$(image_id "$image")" ] || [ "$id" = "$(image_id "$stage_image")" ] ||
-    podman rmi "$id" >/dev/null 2>>"$work/podman.log" || true
+  [ -n "$id" ] && [ "$id" != "$(image_id "$image")" ] || continue
+  [ -z "${stage_image:-}" ] || [ "$id" != "$(image_id "$stage_image")" ] || continue
+  podman rmi "$id" >/dev/null 2>>"$work/podman.log" || true
 done
 grep -E '^[0-9:]+ +(Hits|Misses):' "$work/build.log" | sed -E 's/^[0-9:]+ +/ccache /' || true
 size=$(podman image inspect --format '{{.Size}}' "$image")

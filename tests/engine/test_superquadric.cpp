@@ -116,5 +116,59 @@ TEST(Superquadric, WarmStartFindsTheSameContact) {
   EXPECT_NEAR(warm.overlap, fresh.overlap, 1e-9);
 }
 
+// The force acts at the overlap's centroid (superquadric.h): two flat sides
+// pressed delta together and tilted by theta move it by theta L^2 / (12
+// delta) towards the deeper end, L the length they overlap along - the
+// moment of a linear spring spread over the side, linear in the tilt. (At
+// P_i and P_j it moved as the cube root of the tilt: 2 cm at 1e-3 rad.)
+TEST(Superquadric, FlatSidesTiltedMoveTheForceLinearlyWithTheTilt) {
+  const Superquadric s{0.195, 0.0976, 4.0};
+  const double delta = 0.02;
+  const auto shift = [&](double tilt) {
+    const PlacedSuperquadric i{s, {0.0, 0.0}, 0.0}, j{s, {0.0, 2.0 * s.b - delta}, tilt};
+    return superquadric_contact(i, j, 0.0, 0.0, false).point.x();
+  };
+  // Where the sides overlap: 2 b (1 - (x/a)^4)^(1/4) > 2 b - delta.
+  const double length = 2.0 * s.a * std::pow(1.0 - std::pow(1.0 - 0.5 * delta / s.b, 4.0), 0.25);
+  for (const double tilt : {1e-4, 1e-3, 2e-3}) {
+    const double expected = -tilt * length * length / (12.0 * delta);  // j's left end dips: the force moves left
+    std::printf("tilt %.0e rad: the force moves %.3e m (theta L^2 / (12 delta) = %.3e m)\n", tilt, shift(tilt),
+                expected);
+    EXPECT_NEAR(shift(tilt), expected, 0.15 * std::abs(expected));
+    EXPECT_NEAR(shift(-tilt), -shift(tilt), 1e-9);
+  }
+  EXPECT_NEAR(shift(0.0), 0.0, 1e-12);
+  // Offset sideways, the overlap's middle.
+  const PlacedSuperquadric i{s, {0.0, 0.0}, 0.0}, j{s, {0.01, 2.0 * s.b - delta}, 0.0};
+  EXPECT_NEAR(superquadric_contact(i, j, 0.0, 0.0, false).point.x(), 0.005, 1e-6);
+}
+
+TEST(Superquadric, AFlatSideOnALineCarriesItsForceAtTheOverlapsCentroid) {
+  const Superquadric s{0.195, 0.0976, 4.0};
+  const double delta = 0.002;
+  const auto centroid = [&](double tilt) {
+    return superquadric_line_contact({s, {0.0, s.b - delta}, tilt}, {0.0, 0.0}, {0.0, -1.0}).centroid;
+  };
+  EXPECT_NEAR(centroid(0.0).x(), 0.0, 1e-12);
+  EXPECT_LT(centroid(0.0).y(), 0.0);  // below the line, inside the body's part past it
+  EXPECT_GT(centroid(0.0).y(), -delta);
+  // Tilted counter-clockwise the right end rises: the force moves left,
+  // linearly in the tilt.
+  const double small = centroid(1e-4).x(), large = centroid(1e-3).x();
+  EXPECT_LT(small, 0.0);
+  EXPECT_NEAR(large / small, 10.0, 1.0);
+}
+
+TEST(Superquadric, ACurvedContactsCentroidIsHalfwayThroughTheOverlap) {
+  // Discs: the lens is symmetric about the line of centres.
+  const PlacedSuperquadric i{{0.15, 0.15, 2.0}, {0.0, 0.0}, 0.3};
+  const PlacedSuperquadric j{{0.10, 0.10, 2.0}, {0.2, 0.1}, -1.1};
+  const SuperquadricContact c = superquadric_contact(i, j, 0.0, 0.0, false);
+  const double d = std::hypot(0.2, 0.1);
+  const Vec2 along = Vec2(0.2, 0.1) / d;
+  EXPECT_NEAR((c.point - (0.15 - 0.5 * c.overlap) * along).dot(Vec2(-along.y(), along.x())), 0.0, 1e-9);
+  EXPECT_NEAR(c.point.dot(along), 0.15 - 0.5 * c.overlap, 0.1 * c.overlap);
+}
+
 }  // namespace
 }  // namespace dem

@@ -7,7 +7,10 @@
 #   3. the installed Python package imports with its extension from the
 #      installed tree, reports the version and finds the installed programs;
 #   4. cpack makes dem_<version>_amd64.deb with the programs, the Python
-#      package, the data and the shared-library dependencies.
+#      package, the data and the shared-library dependencies, and
+#      dem-dev_<version>_amd64.deb with the libraries, headers and CMake
+#      configuration and the -dev packages that configuration needs; each
+#      with Debian's copyright file.
 #   install_test.sh SOURCE_DIR BUILD_DIR WORK_DIR VERSION
 set -euo pipefail
 source_dir="$1" build="$2" work="$3" version="$4"
@@ -61,4 +64,30 @@ for file in ./usr/bin/dem_server ./usr/bin/demctl ./usr/bin/dem_run ./usr/share/
   grep -q " $file\$" "$work/deb_contents.txt" || fail "the package lacks $file"
 done
 grep -q "./usr/lib/python3/dist-packages/dem/_client.cpython-.*\.so" "$work/deb_contents.txt" || fail "the package lacks dem._client"
+if grep -q "/usr/include/\|/cmake/dem/" "$work/deb_contents.txt"; then fail "dem holds dem-dev's files"; fi
 echo "ok: $(basename "$deb") ($(du -k "$deb" | cut -f1) kB)"
+dev="$work/deb/dem-dev_${version}_amd64.deb"
+[ -f "$dev" ] || fail "no $dev"
+dpkg-deb --info "$dev" >"$work/dev_info.txt"
+dpkg-deb --contents "$dev" >"$work/dev_contents.txt"
+# demConfig.cmake's find_dependency calls, and the runtime package of the same version.
+for dependency in "dem (= $version)" libeigen3-dev libprotobuf-dev libssl-dev cyclonedds-dev; do
+  grep -qF "$dependency" <(grep "Depends:" "$work/dev_info.txt") || fail "dem-dev does not depend on $dependency"
+done
+for file in ./usr/lib/cmake/dem/demConfig.cmake ./usr/include/dem/world.h ./usr/include/dem/client/client.h \
+    ./usr/lib/libdem_engine.a; do
+  grep -q " $file\$" "$work/dev_contents.txt" || fail "dem-dev lacks $file"
+done
+echo "ok: $(basename "$dev") ($(du -k "$dev" | cut -f1) kB): $(sed -n 's/^ Depends: //p' "$work/dev_info.txt")"
+# Debian's copyright file, machine-readable, in each package.
+for package in dem dem-dev; do
+  contents="$work/deb_contents.txt"
+  [ $package = dem ] || contents="$work/dev_contents.txt"
+  grep -q " ./usr/share/doc/$package/copyright\$" "$contents" || fail "$package has no /usr/share/doc/$package/copyright"
+done
+dpkg-deb --fsys-tarfile "$deb" | tar -xO ./usr/share/doc/dem/copyright >"$work/copyright"
+head -1 "$work/copyright" | grep -q "^Format: https://www.debian.org/doc/packaging-manuals/copyright-format/1.0/" ||
+  fail "the copyright file is not in Debian's format"
+grep -q "^License: Expat" "$work/copyright" && grep -q "^Copyright: .*the dem contributors" "$work/copyright" ||
+  fail "the copyright file names no licence or holder"
+echo "ok: /usr/share/doc/dem/copyright and /usr/share/doc/dem-dev/copyright (Expat)"

@@ -1,10 +1,12 @@
-// Shared by the io tests: the data directory and the valid case every
-// bad-input test starts from.
+// Shared by the io tests: the data directory, the valid case every
+// bad-input test starts from, and a reader of the CSV tables they write.
 #pragma once
 
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -43,6 +45,22 @@ inline std::filesystem::path fresh_directory(const std::string& name) {
       std::filesystem::temp_directory_path() / ("dem_io_tests_" + std::to_string(::getpid()) + "_" + name);
   std::filesystem::remove_all(directory);
   return directory;
+}
+
+using Row = std::vector<std::string>;
+
+// A CSV file as rows of fields; nothing the io tests write needs quotes.
+inline std::vector<Row> read_csv(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::vector<Row> rows;
+  for (std::string line; std::getline(in, line);) {
+    Row row;
+    std::istringstream fields(line);
+    for (std::string field; std::getline(fields, field, ',');) row.push_back(field);
+    if (!line.empty() && line.back() == ',') row.emplace_back();  // getline drops a last empty field
+    rows.push_back(row);
+  }
+  return rows;
 }
 
 }  // namespace dem::io::test

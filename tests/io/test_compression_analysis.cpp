@@ -166,19 +166,47 @@ TEST(LoadByFormationOrder, GroupsTheFirst40TheNext30AndTheLast30Percent) {
 TEST_F(CompressionAnalysisTest, SnapshotsAtTheirStresses) {
   run();
   const auto& snapshots = analysis_.snapshots();
-  // 500 Pa; 7000 to 8500 Pa in four, whose 8000 Pa serves the contacts too.
-  ASSERT_EQ(snapshots.size(), 5u);
-  EXPECT_EQ(taken_, (std::vector<int>{0, 1, 2, 3, 4}));
-  EXPECT_EQ(snapshots[0].target_stress, 500);
-  EXPECT_GE(snapshots[0].sample.stress, 500);
-  EXPECT_EQ(snapshots[0].loading.size(), 3u);
+  // The loading's start (target 0: the unloaded state of Fig. 28), 500 Pa;
+  // 7000 to 8500 Pa in four, whose 8000 Pa serves the contacts too.
+  ASSERT_EQ(snapshots.size(), 6u);
+  EXPECT_EQ(taken_, (std::vector<int>{0, 1, 2, 3, 4, 5}));
+  EXPECT_EQ(snapshots[0].target_stress, 0);
+  EXPECT_EQ(snapshots[0].sample.cycle, analysis_.samples().front().cycle);
+  EXPECT_EQ(snapshots[0].loading.size(), 0u);
   EXPECT_EQ(snapshots[0].bottom.size(), 5u);
-  EXPECT_FALSE(snapshots[0].for_distribution);
-  for (std::size_t k = 1; k < snapshots.size(); ++k) {
+  EXPECT_EQ(snapshots[1].target_stress, 500);
+  EXPECT_GE(snapshots[1].sample.stress, 500);
+  EXPECT_EQ(snapshots[1].loading.size(), 3u);
+  EXPECT_EQ(snapshots[1].bottom.size(), 5u);
+  EXPECT_FALSE(snapshots[1].for_distribution);
+  for (std::size_t k = 2; k < snapshots.size(); ++k) {
     EXPECT_GE(snapshots[k].sample.stress, snapshots[k].target_stress);
     EXPECT_EQ(snapshots[k].loading.size(), 5u);
   }
   EXPECT_EQ(std::count_if(snapshots.begin(), snapshots.end(), [](const auto& s) { return s.for_distribution; }), 4);
+  std::vector<double> for_contacts;
+  for (const PlateSnapshot& s : snapshots)
+    if (s.for_contacts) for_contacts.push_back(s.target_stress);
+  EXPECT_EQ(for_contacts, (std::vector<double>{0, 500, 8000}));
+}
+
+// Without contacts_at_stress there is no whole-assembly moment, and no
+// snapshot of the loading's start.
+TEST(CompressionAnalysis, NoStartSnapshotWithoutContactsAtStress) {
+  World world{row_of_discs()};
+  dem::analysis::CompressionSettings s = settings();
+  s.contacts_at_stress.clear();
+  dem::analysis::CompressionAnalysis analysis{s};
+  StageDef load;
+  load.place_wall = PlaceWallDef{WallId{1}, 0.01};
+  load.wall_motions = {{WallId{1}, WallMotion{{0.0, -0.1}, 0.0, {}}}};
+  load.cycles = 1700;
+  run_stage(world, load, 10, [&](const World& w) { return analysis.add(w, 1), true; });
+  ASSERT_EQ(analysis.snapshots().size(), 4u);
+  for (const dem::analysis::PlateSnapshotT<2>& snapshot : analysis.snapshots()) {
+    EXPECT_TRUE(snapshot.for_distribution);
+    EXPECT_FALSE(snapshot.for_contacts);
+  }
 }
 
 // A checkpoint keeps the analysis's state as text (dem/io/compression_state.h):
@@ -190,7 +218,7 @@ TEST_F(CompressionAnalysisTest, ItsStateComesBackFromACheckpointsText) {
   dem::analysis::CompressionAnalysis restored{settings()};
   restored.restore(dem::io::compression_state_from_text<2>(text));
   ASSERT_EQ(restored.samples().size(), analysis_.samples().size());
-  ASSERT_EQ(restored.snapshots().size(), 5u);
+  ASSERT_EQ(restored.snapshots().size(), 6u);
   for (std::size_t i = 0; i < analysis_.samples().size(); ++i) {
     const auto& a = restored.samples()[i];
     const auto& b = analysis_.samples()[i];
@@ -199,12 +227,13 @@ TEST_F(CompressionAnalysisTest, ItsStateComesBackFromACheckpointsText) {
                 a.bottom_stress == b.bottom_stress && a.bottom_contacts == b.bottom_contacts)
         << "sample " << i;
   }
-  for (std::size_t k = 0; k < 5; ++k) {
+  for (std::size_t k = 0; k < 6; ++k) {
     const PlateSnapshot& a = restored.snapshots()[k];
     const PlateSnapshot& b = analysis_.snapshots()[k];
     EXPECT_EQ(a.index, b.index);
     EXPECT_EQ(a.target_stress, b.target_stress);
     EXPECT_EQ(a.for_distribution, b.for_distribution);
+    EXPECT_EQ(a.for_contacts, b.for_contacts);
     ASSERT_EQ(a.loading.size(), b.loading.size());
     for (std::size_t c = 0; c < a.loading.size(); ++c) {
       EXPECT_EQ(a.loading[c].particle, b.loading[c].particle);
@@ -250,7 +279,7 @@ TEST_F(CompressionAnalysisTest, WritesTheFilesWithTheirColumns) {
     for (const dem::analysis::CompressionSample& s : analysis_.samples()) csv.write_sample(s);
     for (const PlateSnapshot& s : analysis_.snapshots()) csv.write_snapshot(s, {});
     csv.write_results(analysis_.results(world_));
-    EXPECT_EQ(csv.files().size(), 8u);
+    EXPECT_EQ(csv.files().size(), 10u);
   }
   const auto lines = [&](const std::string& name) {
     std::ifstream in(directory / name);
@@ -263,7 +292,13 @@ TEST_F(CompressionAnalysisTest, WritesTheFilesWithTheirColumns) {
   EXPECT_EQ(samples[0],
             "stage,cycle,time,settlement,stress,loading_contacts,bottom_stress,bottom_contacts,contact_ratio");
   EXPECT_EQ(samples.back().substr(samples.back().rfind(',') + 1), "1");  // 5 contacts on each plate
-  EXPECT_EQ(lines("plate_contacts.csv").size(), 1u + 3 + 5 + 4 * (5 + 5));
+  // The start (none on the loading plate, five on the bottom), 500 Pa, four more.
+  EXPECT_EQ(lines("plate_contacts.csv").size(), 1u + 5 + 3 + 5 + 4 * (5 + 5));
+  EXPECT_EQ(lines("plate_contacts.csv")[0],
+            "snapshot,target_stress,cycle,stress,plate,particle,x,y,normal_force,shear_force,f,formed_cycle,formed_in,"
+            "for_contacts,for_distribution");
+  // The start's bottom rows: a for_contacts snapshot, not the distribution's.
+  EXPECT_EQ(lines("plate_contacts.csv")[1].substr(lines("plate_contacts.csv")[1].size() - 4), ",1,0");
   EXPECT_EQ(lines("compression_states.csv").size(), 4u);
   EXPECT_EQ(lines("load_by_state.csv").size(), 7u);
   EXPECT_EQ(lines("load_by_formation.csv").size(), 7u);
@@ -273,6 +308,53 @@ TEST_F(CompressionAnalysisTest, WritesTheFilesWithTheirColumns) {
   EXPECT_EQ(lines("force_distribution.csv")[0],
             "plate,f_low,f_high,contacts,probability_density,load_share,load_density,q_model,mueth");
   EXPECT_EQ(lines("stress_drops.csv").size(), 1u);  // the stress only rises
+  std::filesystem::remove_all(directory);
+}
+
+// Figs. 27-28 need the whole assembly where the plates' contacts are
+// taken: record_compression writes every particle and contact at the
+// loading's start and at each contacts_at_stress snapshot, at the same
+// moment as plate_contacts.csv (the same plate forces, particle by
+// particle), with the columns of particles.csv and contacts.csv.
+TEST(CompressionAnalysis, WritesTheWholeAssemblyAtTheContactSnapshots) {
+  World world{row_of_discs()};
+  dem::analysis::CompressionAnalysis analysis{settings()};
+  const std::filesystem::path directory = test::fresh_directory("compression_assembly");
+  {
+    CompressionCsv csv(directory, "top", "bottom");
+    StageDef load;
+    load.place_wall = PlaceWallDef{WallId{1}, 0.01};
+    load.wall_motions = {{WallId{1}, WallMotion{{0.0, -0.1}, 0.0, {}}}};
+    load.cycles = 1700;
+    run_stage(world, load, 10, [&](const World& w) { return record_compression(analysis, csv, w, 1), true; });
+  }
+  const auto particles = test::read_csv(directory / "particles_at_stress.csv");
+  const auto contacts = test::read_csv(directory / "contacts_at_stress.csv");
+  ASSERT_EQ(particles[0].size(), 4u + 12);
+  EXPECT_EQ(particles[0][0] + "," + particles[0][1] + "," + particles[0][2] + "," + particles[0][3] + "," +
+                particles[0][4] + "," + particles[0][11] + "," + particles[0][15],
+            "snapshot,target_stress,cycle,stress,id,rotation,n");
+  EXPECT_EQ(contacts[0][4] + "," + contacts[0][5] + "," + contacts[0][12], "first,second_kind,normal_force");
+  // Five discs at each of the three for_contacts snapshots: 0, 500, 8000 Pa.
+  ASSERT_EQ(particles.size(), 1u + 3 * 5);
+  const std::vector<std::string> snapshots = {"0", "1", "4"};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const dem::analysis::PlateSnapshotT<2>& snapshot = analysis.snapshots()[std::stoul(snapshots[k])];
+    ASSERT_TRUE(snapshot.for_contacts);
+    const auto& row = particles[1 + 5 * k];
+    EXPECT_EQ(row[0], snapshots[k]);
+    EXPECT_EQ(std::stod(row[1]), snapshot.target_stress);
+    EXPECT_EQ(std::stoull(row[2]), snapshot.sample.cycle);
+    // The top plate's contacts in contacts_at_stress.csv are plate_contacts' at that moment.
+    std::vector<std::pair<std::string, std::string>> on_top;
+    for (const auto& c : contacts)
+      if (c[0] == snapshots[k] && c[5] == "wall" && c[6] == "top") on_top.emplace_back(c[4], c[12]);
+    ASSERT_EQ(on_top.size(), snapshot.loading.size()) << "snapshot " << snapshots[k];
+    for (std::size_t c = 0; c < on_top.size(); ++c) {
+      EXPECT_EQ(std::stoi(on_top[c].first), snapshot.loading[c].particle.value());
+      EXPECT_EQ(std::stod(on_top[c].second), snapshot.loading[c].normal_force);
+    }
+  }
   std::filesystem::remove_all(directory);
 }
 
@@ -331,16 +413,35 @@ TEST(CompressionAnalysis3d, EllipsoidsUnderAPlate) {
   EXPECT_GE(analysis.samples().back().stress, 1000);
   EXPECT_EQ(analysis.samples().back().loading_contacts, 4);
   EXPECT_EQ(analysis.samples().back().bottom_contacts, 4);
-  ASSERT_EQ(analysis.snapshots().size(), 1u);
+  ASSERT_EQ(analysis.snapshots().size(), 2u);  // the loading's start and 500 Pa
   const double plate_z = world.wall(WallId{1}).point.z();
-  for (const dem::analysis::PlateContactT<3>& c : analysis.snapshots()[0].loading)
+  for (const dem::analysis::PlateContactT<3>& c : analysis.snapshots()[1].loading)
     EXPECT_NEAR(c.point.z(), plate_z, 1e-3);
   std::ifstream in(directory / "plate_contacts.csv");
   std::string header;
   std::getline(in, header);
   EXPECT_EQ(header,
             "snapshot,target_stress,cycle,stress,plate,particle,x,y,z,normal_force,shear_force,f,formed_cycle,"
-            "formed_in");
+            "formed_in,for_contacts,for_distribution");
+  // The whole assembly at both: four ellipsoids with their quaternions and
+  // semi-axes, and their contacts (none between them, four on each plate at
+  // 500 Pa).
+  const auto particles = test::read_csv(directory / "particles_at_stress.csv");
+  ASSERT_EQ(particles.size(), 1u + 2 * 4);
+  ASSERT_EQ(particles[0].size(), 4u + 19);  // the snapshot's four, then particles.csv's
+  EXPECT_EQ(particles[0][0] + "," + particles[0][3] + "," + particles[0][4] + "," + particles[0][15],
+            "snapshot,stress,id,rotation_w");
+  EXPECT_EQ(particles.back()[0], "1");
+  EXPECT_EQ(particles.back()[1], "500");
+  EXPECT_EQ(std::stoull(particles.back()[2]), analysis.snapshots()[1].sample.cycle);
+  EXPECT_EQ(particles.back()[20] + "," + particles.back()[21] + "," + particles.back()[22], "0.1,0.07,0.05");
+  const auto contacts = test::read_csv(directory / "contacts_at_stress.csv");
+  int on_top = 0;
+  for (std::size_t r = 1; r < contacts.size(); ++r) {
+    EXPECT_EQ(contacts[r][5], "wall");
+    on_top += contacts[r][0] == "1" && contacts[r][6] == "top";
+  }
+  EXPECT_EQ(on_top, 4);
   std::filesystem::remove_all(directory);
 }
 

@@ -19,21 +19,8 @@ namespace {
 
 using ::testing::HasSubstr;
 
-using Row = std::vector<std::string>;
-
-// A CSV file as rows of fields; nothing these tests write needs quotes.
-std::vector<Row> read_csv(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::vector<Row> rows;
-  for (std::string line; std::getline(in, line);) {
-    Row row;
-    std::istringstream fields(line);
-    for (std::string field; std::getline(fields, field, ',');) row.push_back(field);
-    if (!line.empty() && line.back() == ',') row.emplace_back();  // getline drops a last empty field
-    rows.push_back(row);
-  }
-  return rows;
-}
+using test::read_csv;
+using test::Row;
 
 double number(const std::string& field) {
   double value = 0;
@@ -106,9 +93,11 @@ TEST_F(CsvWriters, AssemblyLeavesTheEnergyColumnsEmptyWithoutABudget) {
   assembly.write(world);
   const auto rows = read_csv(directory_ / "assembly.csv");
   ASSERT_EQ(rows.size(), 2u);
-  ASSERT_EQ(rows[1].size(), 16u);
+  ASSERT_EQ(rows[1].size(), 23u);
   EXPECT_EQ(number(rows[1][2]), world.assembly_measures().kinetic_energy);
-  for (std::size_t column = 8; column < 16; ++column) EXPECT_EQ(rows[1][column], "") << rows[0][column];
+  // The quasi-static measures are written with or without a budget.
+  EXPECT_EQ(number(rows[1][8]), world.assembly_measures().elastic_energy);
+  for (std::size_t column = 15; column < 23; ++column) EXPECT_EQ(rows[1][column], "") << rows[0][column];
 }
 
 TEST_F(CsvWriters, AssemblyRoundTripsEveryDigit) {
@@ -116,9 +105,29 @@ TEST_F(CsvWriters, AssemblyRoundTripsEveryDigit) {
   assembly.write(world_);
   const auto rows = read_csv(directory_ / "assembly.csv");
   ASSERT_EQ(rows.size(), 2u);
-  EXPECT_EQ(rows[0], (Row{"cycle", "time", "kinetic_energy", "out_of_balance", "max_contact_force", "contacts",
-                          "sliding_contacts", "time_step_ratio", "gravity_work", "wall_work", "strain_energy",
-                          "contact_damping", "friction", "global_damping", "local_damping", "energy_residual"}));
+  EXPECT_EQ(rows[0], (Row{"cycle",
+                          "time",
+                          "kinetic_energy",
+                          "out_of_balance",
+                          "max_contact_force",
+                          "contacts",
+                          "sliding_contacts",
+                          "time_step_ratio",
+                          "elastic_energy",
+                          "kinetic_to_elastic",
+                          "unbalanced_force",
+                          "sliding_fraction",
+                          "mean_stress",
+                          "deformation_rate",
+                          "inertial_number",
+                          "gravity_work",
+                          "wall_work",
+                          "strain_energy",
+                          "contact_damping",
+                          "friction",
+                          "global_damping",
+                          "local_damping",
+                          "energy_residual"}));
   const AssemblyMeasures measures = world_.assembly_measures();
   EXPECT_EQ(number(rows[1][1]), world_.time());
   EXPECT_EQ(number(rows[1][2]), measures.kinetic_energy);
@@ -126,9 +135,16 @@ TEST_F(CsvWriters, AssemblyRoundTripsEveryDigit) {
   EXPECT_EQ(number(rows[1][4]), measures.max_contact_force);
   EXPECT_EQ(rows[1][5], std::to_string(measures.contacts));
   EXPECT_EQ(rows[1][5], "3");
-  EXPECT_EQ(number(rows[1][8]), measures.energy.gravity_work);
-  EXPECT_EQ(number(rows[1][11]), measures.energy.contact_damping);
-  EXPECT_EQ(number(rows[1][15]), measures.energy.residual());
+  EXPECT_EQ(number(rows[1][8]), measures.elastic_energy);
+  EXPECT_EQ(number(rows[1][9]), measures.kinetic_to_elastic);
+  EXPECT_EQ(number(rows[1][10]), measures.unbalanced_force);
+  EXPECT_EQ(number(rows[1][11]), measures.sliding_fraction);
+  EXPECT_EQ(number(rows[1][12]), measures.mean_stress);
+  EXPECT_EQ(number(rows[1][13]), measures.deformation_rate);
+  EXPECT_EQ(number(rows[1][14]), measures.inertial_number);
+  EXPECT_EQ(number(rows[1][15]), measures.energy.gravity_work);
+  EXPECT_EQ(number(rows[1][18]), measures.energy.contact_damping);
+  EXPECT_EQ(number(rows[1][22]), measures.energy.residual());
 }
 
 TEST_F(CsvWriters, ProbesReportTouchingAndApartPairs) {

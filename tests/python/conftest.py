@@ -10,7 +10,7 @@ import dem
 
 # One domain per test, distinct across this suite by construction, and
 # apart from the others: tests/service 40-119, bench_service 125, the demo
-# 30 and its bridge's, tests/container 150-153, tests/docs 186-187,
+# 30 and its bridge's, tests/container 150-157, tests/docs 186-187,
 # tests/ros2 190; the Python suite has 160-174 and 180-185, its examples
 # 175-178.
 DOMAINS = {

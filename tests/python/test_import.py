@@ -62,3 +62,39 @@ def test_the_case_classes_are_generated_from_the_schema():
     from dem import snapshot_pb2
 
     assert snapshot_pb2.Snapshot.DESCRIPTOR.full_name == "dem.proto.Snapshot"
+
+
+def _import_dem_with(interpreter_arguments):
+    """`import dem` in another interpreter: its exit status and stderr."""
+    import subprocess
+
+    result = subprocess.run([*interpreter_arguments, "-c", "import dem"], capture_output=True, text=True,
+                            env={**os.environ, "PYTHONNOUSERSITE": "1"})
+    return result.returncode, result.stderr
+
+
+def test_an_interpreter_without_debians_packages_gets_a_hint():
+    # python3 -S: Debian's interpreter without its site packages (no protobuf,
+    # no numpy), as a python3 of pyenv or a virtual environment sees them.
+    code, stderr = _import_dem_with([sys.executable, "-S"])
+    assert code != 0
+    last = stderr.strip().splitlines()[-1]
+    print(last)
+    assert last.startswith("ImportError: import dem: No module named 'google'")
+    assert "Debian's python3-protobuf is missing for /usr/bin/python3" in last
+
+
+def test_another_python3_first_on_path_is_told_which_to_use():
+    import shutil
+
+    other = shutil.which("python3", path=os.environ.get("DEM_TEST_PATH", os.environ.get("PATH", "")))
+    if other is None or os.path.realpath(other) == os.path.realpath(sys.executable):
+        import pytest
+
+        pytest.skip("no python3 other than Debian's on PATH")
+    code, stderr = _import_dem_with([other])
+    assert code != 0
+    last = stderr.strip().splitlines()[-1]
+    print(last)
+    assert "ImportError: import dem: No module named" in last
+    assert "the package is built for /usr/bin/python3" in last and "run it with /usr/bin/python3" in last

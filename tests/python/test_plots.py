@@ -154,6 +154,25 @@ def test_a_monitor_recording_becomes_a_stress_settlement_png(out):
     assert len(StressSettlementSeries.from_monitor_csv(recording)) == 60  # both plates
 
 
+def test_a_monitor_recording_draws_the_quasi_static_measures_under_the_curve(out):
+    # demctl monitor --csv with the quasi-static columns (monitor_columns.h).
+    recording = out / "monitor.csv"
+    recording.write_text(
+        "cycle,time,top_stress,top_settlement,contacts,kinetic_to_elastic,unbalanced_force,inertial_number\n"
+        + "".join(f"{100 * k},{0.01 * k},{1e4 * k},{0.002 * k},50,{1.0 / k},{0.1 / k},{1e-3 / k}\n"
+                  for k in range(1, 31)))
+    series = StressSettlementSeries.from_monitor_csv(recording, ["top"])
+    assert sorted(series.measures) == ["inertial_number", "kinetic_to_elastic", "unbalanced_force"]
+    np.testing.assert_allclose(series.measures["kinetic_to_elastic"], 1.0 / np.arange(1, 31))
+    from dem.plots.stress_settlement import plot_stress_settlement
+    figure = plot_stress_settlement(series, png=out / "curve.png")
+    assert len(figure.axes) == 4  # the curve and three panels
+    drawn = figure.axes[1].get_lines()[0]  # kinetic / elastic against the settlement
+    np.testing.assert_allclose(drawn.get_xdata(), 0.002 * np.arange(1, 31))
+    np.testing.assert_allclose(drawn.get_ydata(), 1.0 / np.arange(1, 31))
+    assert_png(out / "curve.png")
+
+
 def test_dem_runs_own_tables_become_stress_settlement_pngs(out):
     # Miyata's reduced case CS through dem_run: walls.csv and compression.csv.
     subprocess.run([str(dem.paths.run_program()), str(dem.paths.cases_dir() / "miyata" / "cs_reduced.case.txtpb"),

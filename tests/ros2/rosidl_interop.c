@@ -2,7 +2,9 @@
  * ros2/dem_interfaces alone: their DDS IDL written as rosidl does
  * (msg_to_dds_idl.py), compiled by idlc, and read and written with libddsc
  * the way rmw_cyclonedds_cpp does (topic rt/dem/<server>/..., type
- * dem_interfaces::msg::dds_::<Type>_, plain CDR). None of the project's
+ * dem_interfaces::msg::dds_::<Type>_, plain CDR; each endpoint declaring
+ * its type's hash in USER_DATA, "typehash=RIHS01_...;", as ROS 2 does since
+ * Iron, from the message files: typehashes.h). None of the project's
  * headers is used.
  *
  *   rosidl_interop DOMAIN SERVER TELEMETRY_CYCLES
@@ -27,6 +29,7 @@
 #include "dem_interfaces/msg/dds_/PlateForces_.h"
 #include "dem_interfaces/msg/dds_/Reply_.h"
 #include "dem_interfaces/msg/dds_/Status_.h"
+#include "typehashes.h"
 
 #define CLIENT_ID "rosidl_interop"
 #define CYCLES 200
@@ -58,6 +61,16 @@ static dds_qos_t *qos(int transient_local, int depth) {
   dds_qset_reliability(q, DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
   dds_qset_durability(q, transient_local ? DDS_DURABILITY_TRANSIENT_LOCAL : DDS_DURABILITY_VOLATILE);
   dds_qset_history(q, DDS_HISTORY_KEEP_LAST, depth);
+  return q;
+}
+
+/* The QoS of an endpoint of a type with this hash: rmw_cyclonedds_cpp's USER_DATA. */
+static dds_qos_t *declaring(const dds_qos_t *base, const char *type_hash) {
+  char data[128];
+  snprintf(data, sizeof data, "typehash=%s;", type_hash);
+  dds_qos_t *q = dds_create_qos();
+  dds_copy_qos(q, base);
+  dds_qset_userdata(q, data, strlen(data));
   return q;
 }
 
@@ -190,12 +203,19 @@ int main(int argc, char **argv) {
   const dds_entity_t command_topic = topic(participant, &dem_interfaces_msg_dds__Command__desc, server, "command");
   const dds_entity_t reply_topic = topic(participant, &dem_interfaces_msg_dds__Reply__desc, server, "reply");
 
-  dds_qos_t *durable = qos(1, 1), *documented = qos(0, 1024), *ros_default = qos(0, 10);
+  dds_qos_t *base_durable = qos(1, 1), *base_documented = qos(0, 1024), *base_default = qos(0, 10);
+  dds_qos_t *durable = declaring(base_durable, TYPEHASH_dem_interfaces_Status);
+  dds_qos_t *documented = declaring(base_documented, TYPEHASH_dem_interfaces_PlateForces);
+  dds_qos_t *plates_default = declaring(base_default, TYPEHASH_dem_interfaces_PlateForces);
+  dds_qos_t *command_default = declaring(base_default, TYPEHASH_dem_interfaces_Command);
+  dds_qos_t *reply_default = declaring(base_default, TYPEHASH_dem_interfaces_Reply);
   const dds_entity_t status_reader = must(dds_create_reader(participant, status_topic, durable, NULL), "status reader");
   const dds_entity_t plates_reader = must(dds_create_reader(participant, plates_topic, documented, NULL), "plates reader");
-  const dds_entity_t shallow_reader = must(dds_create_reader(participant, plates_topic, ros_default, NULL), "depth-10 reader");
-  const dds_entity_t command_writer = must(dds_create_writer(participant, command_topic, ros_default, NULL), "command writer");
-  const dds_entity_t reply_reader = must(dds_create_reader(participant, reply_topic, ros_default, NULL), "reply reader");
+  const dds_entity_t shallow_reader =
+      must(dds_create_reader(participant, plates_topic, plates_default, NULL), "depth-10 reader");
+  const dds_entity_t command_writer =
+      must(dds_create_writer(participant, command_topic, command_default, NULL), "command writer");
+  const dds_entity_t reply_reader = must(dds_create_reader(participant, reply_topic, reply_default, NULL), "reply reader");
 
   check(wait_for(status_reader, is_loaded_status, 0, DDS_SECS(20)),
         "the durable status arrived, state LOADED");
@@ -254,9 +274,9 @@ int main(int argc, char **argv) {
   send_and_await(command_writer, reply_reader, &shutdown);
   check(reply_seen.found && reply_seen.status == 0, "shutdown: accepted");
 
-  dds_delete_qos(durable);
-  dds_delete_qos(documented);
-  dds_delete_qos(ros_default);
+  dds_qos_t *qoses[] = {base_durable, base_documented, base_default, durable, documented, plates_default,
+                      command_default, reply_default};
+  for (size_t i = 0; i < sizeof qoses / sizeof qoses[0]; ++i) dds_delete_qos(qoses[i]);
   dds_delete(participant);
   printf("%s\n", failures == 0 ? "all checks hold" : "some checks FAILED");
   return failures == 0 ? 0 : 1;

@@ -108,3 +108,102 @@ def test_the_check_finds_a_changed_file(tmp_path):
                              "--msg-dir", str(tmp_path), "--check"], capture_output=True, text=True)
     assert result.returncode == 1
     assert "Status.msg: differs from what idl/dem/telemetry.idl generates" in result.stdout
+
+
+# --- the interface's type hashes and version (docs/DDS.md, "Evolving the wire") --------------
+
+GENERATOR = SOURCE / "ros2" / "generate_interfaces.py"
+sys.path.insert(0, str(SOURCE / "idl"))
+sys.path.insert(0, str(SOURCE / "ros2"))
+sys.path.insert(0, str(SOURCE / "tests" / "ros2"))
+
+
+def generate(*arguments, idl_dir=SOURCE / "idl" / "dem"):
+    return subprocess.run([sys.executable, str(GENERATOR), str(idl_dir), *map(str, arguments)], capture_output=True,
+                          text=True)
+
+
+def test_type_hashes_are_ros2s():
+    # REP-2016's hash of builtin_interfaces/msg/Time as ROS 2 publishes it,
+    # from the declaration in idl/dem/ros_types.idl.
+    import generate_interfaces
+    import idl_types
+    import type_hash
+
+    types = generate_interfaces.wire_types(idl_types.read_idl(sorted((SOURCE / "idl" / "dem").glob("*.idl"))))
+    assert type_hash.rihs01("builtin_interfaces/Time", types) == \
+        "RIHS01_b106235e25a4c5ed35098aa0a61a3ee9c9b18d197f398b0e4206cea9acf9c197"
+
+
+def test_the_msg_files_hash_as_the_idl_does():
+    # A ROS 2 node computes its hashes from the .msg files (rosidl); the
+    # service from the IDL. Read each on its own: the same hash per message.
+    import generate_interfaces
+    import idl_types
+    import msg_to_dds_idl
+    import type_hash
+
+    from_idl = generate_interfaces.wire_state(idl_types.read_idl(sorted((SOURCE / "idl" / "dem").glob("*.idl"))))
+    packages = [SOURCE / "ros2" / "dem_interfaces", SOURCE / "tests" / "ros2" / "ros_msgs" / "builtin_interfaces",
+                SOURCE / "tests" / "ros2" / "ros_msgs" / "geometry_msgs"]
+    from_msg = msg_to_dds_idl.type_hashes(packages)
+    for name, value in from_idl["hashes"].items():
+        assert from_msg[f"dem_interfaces/{name}"] == value, name
+    assert from_msg["builtin_interfaces/Time"] == type_hash.rihs01(
+        "builtin_interfaces/Time", {"builtin_interfaces/Time": [("sec", "int32", False), ("nanosec", "uint32", False)]})
+
+
+def test_the_recorded_history_holds_this_wire_as_this_version():
+    result = generate("--check")
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
+def test_a_field_appended_to_telemetry_needs_a_version_and_is_judged(tmp_path):
+    # What appending to ContactStats means: the check fails until the
+    # version is bumped and recorded; then a 0.2.0 reader of ContactStats
+    # still reads the new samples (the fields are at its end), while Reply,
+    # which embeds ContactStats before other fields, no longer meets 0.2.0.
+    idl = tmp_path / "idl"
+    idl.mkdir()
+    for path in (SOURCE / "idl" / "dem").glob("*.idl"):
+        (idl / path.name).write_text(path.read_text())
+    telemetry = idl / "telemetry.idl"
+    text = telemetry.read_text()
+    end = "double inertial_number;     // deformation rate x diameter / sqrt(mean_stress / density)\n"
+    assert end in text
+    telemetry.write_text(text.replace(end, end + "        double coordination_without_rattlers;\n"))
+    history = tmp_path / "history.json"
+    history.write_text((SOURCE / "idl" / "interface_history.json").read_text())
+    package = tmp_path / "package.xml"
+    package.write_text((SOURCE / "ros2" / "dem_interfaces" / "package.xml").read_text())
+
+    unchanged_version = generate("--check", "--history", history, "--package-xml", package, idl_dir=idl)
+    assert unchanged_version.returncode == 1
+    assert "the wire changed (ContactStats, Reply) while the interface version stayed 0.2.0: bump <version>" in \
+        unchanged_version.stdout
+
+    package.write_text(package.read_text().replace("<version>0.2.0</version>", "<version>0.3.0</version>"))
+    unrecorded = generate("--check", "--history", history, "--package-xml", package, idl_dir=idl)
+    assert unrecorded.returncode == 1 and "dem_interfaces 0.3.0 (package.xml) is not in the interface history" in \
+        unrecorded.stdout
+    assert generate("--record", "--history", history, "--package-xml", package, idl_dir=idl).returncode == 0
+    assert generate("--check", "--history", history, "--package-xml", package, idl_dir=idl).returncode == 0
+
+    header = tmp_path / "interface_version.h"
+    assert generate("--cpp-interface", header, "--history", history, "--package-xml", package,
+                    idl_dir=idl).returncode == 0
+    forms = [line for line in header.read_text().splitlines() if '"0.1.0' in line or '"0.2.0' in line]
+    stats = [line for line in forms if "ContactStats_" in line and '"0.2.0"' in line]
+    assert stats and stats[0].endswith('"lacks coordination_without_rattlers", true, false},'), forms
+    reply = [line for line in forms if "Reply_" in line and '"0.2.0"' in line]
+    assert reply and reply[0].endswith('"lacks stats.coordination_without_rattlers", false, false},'), forms
+
+
+def test_dds_md_lists_every_messages_fields(tmp_path):
+    result = generate("--docs", SOURCE / "docs" / "DDS.md", "--check")
+    assert result.returncode == 0, result.stdout + result.stderr
+    # The check can fail: a copy with one field left out of its table.
+    copy = tmp_path / "DDS.md"
+    copy.write_text((SOURCE / "docs" / "DDS.md").read_text().replace("| `force` | `bool` |", "| `forced` | `bool` |", 1))
+    result = generate("--docs", copy, "--check")
+    assert result.returncode == 1 and "its field lists differ from the IDL's" in result.stdout

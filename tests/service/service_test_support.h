@@ -22,7 +22,8 @@ using namespace std::chrono_literals;
 
 // One domain id per test, distinct across the whole suite by construction.
 // The shell tests (CMakeLists.txt) use 118 and 119; the container test
-// (tests/container) 150 to 153; the Python tests (tests/python) 160 to 179.
+// (tests/container) 150 to 153, the one from source 154 to 157; the Python
+// tests (tests/python) 160 to 179.
 enum Domain : std::uint32_t {
   kDdsTypedRoundTrip = 40,
   kDdsWaitSet,
@@ -99,15 +100,25 @@ static_assert(kLastReliabilityDomain <= 142, "the reliability tests' domains are
 // Two servers of one name started at the same instant: 210 and 211 (142 to
 // 209 belong to other tests, CMakeLists.txt; the discovery probe 208).
 enum NameContestDomain : std::uint32_t { kOwnershipSimultaneousServers = 210, kOwnershipSimultaneousPrograms };
-// The reliability tests of issue 37: 212 to 219.
+// What a new user met (issue 34): 213 to 219 (the shell test demctl_usability
+// takes 214, and 219 as a domain with no server; tests/ros2's
+// older-interfaces test 218).
+enum UsabilityDomain : std::uint32_t {
+  kProgrammeEnds = 213,
+  kTelemetryHistory = 215,
+  kInterfaceMismatchServer,
+  kInterfaceMismatchClient,
+  kLastUsabilityDomain = 219
+};
+// The reliability tests of issue 37: 191 to 198 (212 to 219 are issue 34's).
 enum ReliabilityRoundTwoDomain : std::uint32_t {
-  kFilesNoReadDirectory = 212,
+  kFilesNoReadDirectory = 191,
   kFilesHiddenContent,
   kGuardsTypeInformation,
   kLimitsDeepPipeline,
   kLastRoundTwoDomain
 };
-static_assert(kLastRoundTwoDomain <= 220, "issue 37's tests take 212-219 (the Python tests 220 on)");
+static_assert(kLastRoundTwoDomain <= 199, "issue 37's tests take 191-198 (200 on belong to others)");
 
 std::filesystem::path case_file(const std::string& name);  // cases/ball/<name>.case.txtpb
 std::string read_text(const std::filesystem::path& path);

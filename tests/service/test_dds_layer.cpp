@@ -180,7 +180,12 @@ TEST(DdsLayer, TelemetryWritersNeverWaitAndStatusIsDurable) {
   int32_t depth = 0;
   ASSERT_TRUE(dds_qget_history(protocol::telemetry_writer_qos().get(), &history, &depth));
   EXPECT_EQ(history, DDS_HISTORY_KEEP_LAST);  // KEEP_ALL would hold the engine behind a stalled reader
+  EXPECT_EQ(depth, 256);                      // the history a late joiner is given
   dds_durability_kind_t durability;
+  ASSERT_TRUE(dds_qget_durability(protocol::telemetry_writer_qos().get(), &durability));
+  EXPECT_EQ(durability, DDS_DURABILITY_TRANSIENT_LOCAL);
+  ASSERT_TRUE(dds_qget_durability(protocol::telemetry_reader_qos().get(), &durability));
+  EXPECT_EQ(durability, DDS_DURABILITY_TRANSIENT_LOCAL);
   ASSERT_TRUE(dds_qget_durability(protocol::status_qos().get(), &durability));
   EXPECT_EQ(durability, DDS_DURABILITY_TRANSIENT_LOCAL);
   ASSERT_TRUE(dds_qget_history(protocol::command_qos().get(), &history, &depth));

@@ -97,7 +97,8 @@ TEST(Files, AServerSideFileThatDoesNotParseIsNamedByLineAndColumnWithoutItsText)
   const fs::path allowed = output_directory("files_hidden") / "allowed";
   fs::create_directories(allowed);
   std::ofstream(allowed / "secret.txt") << "root:x:0:0:root:/root:/bin/bash\n";
-  std::ofstream(allowed / "number.case.txtpb") << "name: \"n\"\nmaterial { density: 99999999999999999999999999999999999999x }\n";
+  std::ofstream(allowed / "number.case.txtpb")
+      << "name: \"n\"\nmaterial { density: 99999999999999999999999999999999999999x }\n";
   std::ofstream(allowed / "bed.csv") << "x,y,r\n1,2,0.5\n3,the-secret-field,0.5\n";
   service::ServerOptions options = server_options("hidden", kFilesHiddenContent);
   options.read_directories = {allowed};

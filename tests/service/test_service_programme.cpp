@@ -6,8 +6,11 @@
 // refuses.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
+#include <mutex>
 
+#include "dem/client/telemetry.h"
 #include "dem/io/case_conversion.h"
 #include "dem/io/case_loader.h"
 #include "service_test_support.h"
@@ -149,6 +152,92 @@ TEST(ProgrammeCommand, AStopEndsItCancelledAndBadRangesAreRefused) {
   // The status published after the reply may come a moment after it.
   EXPECT_TRUE(client.wait_for_status([](const auto& s) { return s.state == ServerState::kLoaded; }, 10s));
   EXPECT_TRUE(client.cycle(5).ok());
+}
+
+// What a monitor, a dashboard and ParaView see of a programme run by
+// command (Miyata's reduced CS: settle, trim and settle, load to 900 kPa):
+// telemetry at each stage's end whatever the schedule - the last sample is
+// the state the reply reports, the one where the stop condition is met;
+// a ParaView series from the programme's first cycle, as dem_run's; and a
+// status whose progress is the stages' own (the loading stage's share is
+// its plate's stress over the 900 kPa it runs to, not its cycles over a
+// cap of millions).
+TEST(ProgrammeCommand, PublishesItsEndStartsItsSeriesAtItsStartAndShowsTheStagesProgress) {
+  const auto cs = std::filesystem::path(DEM_CASES_DIR) / "miyata" / "cs_reduced.case.txtpb";
+  service::ServerOptions options = server_options("ends", kProgrammeEnds);
+  options.telemetry_cycles = 7000;  // a schedule the stages' ends do not fall on
+  options.vtk_interval = 20000;
+  InProcessServer server(options);
+  client::Client client(connect_options("ends", kProgrammeEnds));
+  std::mutex mutex;
+  std::vector<std::uint64_t> sample_cycles;
+  std::vector<protocol::Status> statuses;
+  client::TelemetrySubscription telemetry(client, {.plate_forces =
+                                                       [&](const protocol::PlateForces& p) {
+                                                         std::lock_guard lock(mutex);
+                                                         sample_cycles.push_back(p.cycle);
+                                                       },
+                                                   .status =
+                                                       [&](const protocol::Status& s) {
+                                                         std::lock_guard lock(mutex);
+                                                         if (s.state == ServerState::kRunning) statuses.push_back(s);
+                                                       }});
+  ASSERT_TRUE(eventually([&] { return telemetry.matched_publishers() > 0; }, 10s));
+  client.load_case_file(cs);
+  const protocol::Reply reply = client.run_programme();
+  ASSERT_TRUE(reply.ok()) << reply.message;
+  const std::uint64_t end = reply.state.cycle;
+  ASSERT_TRUE(eventually(
+      [&] {
+        std::lock_guard lock(mutex);
+        return !sample_cycles.empty() && sample_cycles.back() == end;
+      },
+      10s));
+  std::lock_guard lock(mutex);
+  std::printf("programme ended at cycle %llu; %zu plate samples, the last at %llu\n",
+              static_cast<unsigned long long>(end), sample_cycles.size(),
+              static_cast<unsigned long long>(sample_cycles.back()));
+  EXPECT_NE(end % options.telemetry_cycles, 0u) << "the test needs an end off the schedule";
+
+  // The series' first step is the programme's first cycle.
+  std::ifstream pvd(options.output_directory / "miyata_cs_reduced" / "particles.pvd");
+  const std::string series((std::istreambuf_iterator<char>(pvd)), std::istreambuf_iterator<char>());
+  const auto first_step = series.find("particles_");
+  ASSERT_NE(first_step, std::string::npos) << series;
+  EXPECT_EQ(series.substr(first_step, 20), "particles_0000000000") << series;
+
+  // Progress: each of the three stages a third; the loading stage by its stress.
+  // (The status that announces a stage, before its first cycle, says only
+  // that it runs.)
+  std::vector<const protocol::Status*> loading;
+  for (const protocol::Status& s : statuses) {
+    EXPECT_GE(s.progress, 0.0);
+    EXPECT_LE(s.progress, 1.0);
+    if (s.message.ends_with(" running")) continue;
+    if (s.message.starts_with("stage 1/3 settle: ")) {
+      EXPECT_LE(s.progress, 1.0 / 3.0) << s.message;
+      EXPECT_NE(s.message.find("of at most 400000"), std::string::npos) << s.message;  // a kinetic energy: its cap
+    }
+    if (s.message.starts_with("stage 3/3 load: top stress ")) loading.push_back(&s);
+  }
+  ASSERT_FALSE(loading.empty()) << "the loading stage showed no status of its progress";
+  for (const protocol::Status* s : loading) {
+    // "stage 3/3 load: top stress 563.1 kPa of 900 kPa": two stages done and
+    // the third as far as its stress (in Pa before the plate bears, "0 Pa",
+    // or while a contact's dashpot pulls it, "-53.01 Pa").
+    const std::string& text = s->message;
+    std::size_t number_end = 0;
+    const double value = std::stod(text.substr(text.find("stress ") + 7), &number_end);
+    const std::string unit = text.substr(text.find("stress ") + 7 + number_end);
+    ASSERT_TRUE(unit.starts_with(" kPa of 900 kPa") || unit.starts_with(" Pa of 900 kPa")) << text;
+    const double stress_kpa = unit.starts_with(" kPa") ? value : value / 1e3;
+    EXPECT_NEAR(s->progress, (2.0 + std::clamp(stress_kpa / 900.0, 0.0, 1.0)) / 3.0, 1e-3) << text;
+  }
+  const protocol::Status& last = *loading.back();
+  std::printf("the last status of the loading stage: %.3f done, \"%s\"; cycle %llu of at most %llu (%.1f%%)\n",
+              last.progress, last.message.c_str(), static_cast<unsigned long long>(last.command_cycles_done),
+              static_cast<unsigned long long>(last.command_cycles_total),
+              100.0 * static_cast<double>(last.command_cycles_done) / static_cast<double>(last.command_cycles_total));
 }
 
 }  // namespace

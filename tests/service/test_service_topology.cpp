@@ -70,6 +70,51 @@ TEST(Topology, ALateJoiningMonitorSeesTheCurrentStatus) {
   EXPECT_EQ(seen->message, "ran 50 cycles to cycle 50");
 }
 
+// A monitor, recording or dashboard started beside a run is given the
+// run's recent telemetry: the writer's last 256 samples, in order
+// (transient-local, as a ROS 2 latched topic with a depth; DDS.md).
+TEST(Topology, ALateJoiningMonitorIsGivenTheRecentTelemetry) {
+  service::ServerOptions options = server_options("history", kTelemetryHistory);
+  options.telemetry_cycles = 10;
+  InProcessServer server(options);
+  {
+    client::Client client(connect_options("history", kTelemetryHistory));
+    client.load_case_file(case_file("nine_disc_damped"));
+    ASSERT_EQ(client.cycle(3000).cycles_run, 3000u);  // 300 samples of each, every 10 cycles
+  }
+  dds::Participant late(kTelemetryHistory);
+  std::mutex mutex;
+  std::vector<std::uint64_t> plates;
+  std::vector<std::uint64_t> stats;
+  client::TelemetrySubscription monitor(late, "history",
+                                        {.plate_forces =
+                                             [&](const protocol::PlateForces& p) {
+                                               std::lock_guard lock(mutex);
+                                               plates.push_back(p.cycle);
+                                             },
+                                         .contact_stats =
+                                             [&](const protocol::ContactStats& c) {
+                                               std::lock_guard lock(mutex);
+                                               stats.push_back(c.cycle);
+                                             }});
+  ASSERT_TRUE(eventually(
+      [&] {
+        std::lock_guard lock(mutex);
+        return plates.size() >= 256 && stats.size() >= 256;
+      },
+      10s))
+      << plates.size() << " plate and " << stats.size() << " contact samples";
+  std::this_thread::sleep_for(200ms);  // nothing more is coming
+  std::lock_guard lock(mutex);
+  std::printf("a monitor joining at cycle 3000 was given %zu plate and %zu contact samples, cycles %llu to %llu\n",
+              plates.size(), stats.size(), static_cast<unsigned long long>(plates.front()),
+              static_cast<unsigned long long>(plates.back()));
+  std::vector<std::uint64_t> expected;
+  for (std::uint64_t cycle = 3000 - 255 * 10; cycle <= 3000; cycle += 10) expected.push_back(cycle);
+  EXPECT_EQ(plates, expected);
+  EXPECT_EQ(stats, expected);
+}
+
 TEST(Topology, StopCancelsALongCycle) {
   InProcessServer server(server_options("long", kTopologyStopCancels));
   client::Client client(connect_options("long", kTopologyStopCancels));

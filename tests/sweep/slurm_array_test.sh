@@ -102,7 +102,9 @@ code=0
 "$python" -m dem.sweep status "$sweep" >"$work/status.txt" || code=$?
 [ $code -eq 1 ] || fail "dem.sweep status exited $code with a task failed, expected 1"
 grep -q "task 0002 failed (exit 3)" "$work/status.txt" || fail "dem.sweep status does not report task 2: $(cat "$work/status.txt")"
-grep -q "no_such_field" "$work/status.txt" || fail "the report does not say why: $(cat "$work/status.txt")"
+# Why: the case file and its line (the server quotes none of a file's content).
+bad_line=$(wc -l <"$sweep/cases/0002.case.txtpb")
+grep -q "0002.case.txtpb:$bad_line:" "$work/status.txt" || fail "the report does not say why: $(cat "$work/status.txt")"
 echo "ok: dem.sweep status reports task 0002 failed and why"
 
 # 3. Mended and resubmitted alone; then the whole array again.

@@ -228,3 +228,22 @@ def test_the_command_line(tmp_path):
     assert results.returncode == 0 and results.stdout.count(",done,") == 2
     wrong = subprocess.run(command + ["status", str(tmp_path)], capture_output=True, text=True)
     assert wrong.returncode == 2 and "not a sweep directory" in wrong.stderr
+
+
+def test_packings_runs_a_case_over_packings_and_dem_validate_judges_them(tmp_path):
+    command = [sys.executable, "-m", "dem.sweep", "packings", str(CS_REDUCED), "--out", str(tmp_path / "packings"),
+               "--packings", "2", "--workers", "2", "--domain", str(LOCAL_DOMAIN)]
+    run = subprocess.run(command, capture_output=True, text=True, timeout=240)
+    output = run.stdout + run.stderr
+    assert run.returncode in (0, 1), output  # the verdict over two packings, either way
+    sweep = Sweep.open(tmp_path / "packings")
+    assert [t.state for t in sweep.status()] == ["done", "done"]
+    assert "miyata_cs_reduced over 2 packings" in output, output
+    assert output.count("over packings:") >= 3, output  # one line per check, "N of 2 packings"
+    verdict = "miyata-compression: PASS" if run.returncode == 0 else "miyata-compression: FAIL"
+    assert verdict in output, output
+    # Each task ran its own packing: the case's seed, then 1.
+    results = sweep.results(write_summary=False)
+    assert [int(seed) for seed in results.parameters["seed"]] == [2002, 1], results.parameters
+    cycles = {(task.output_dir() / "compression.csv").read_text().count("\n") for task in sweep.status()}
+    assert len(cycles) == 2, "two packings loaded alike"

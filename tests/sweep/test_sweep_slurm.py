@@ -43,7 +43,9 @@ def test_a_sweep_as_a_slurm_job_array(tmp_path, slurm):
     assert [t.state for t in progress.tasks] == ["done", "failed", "done"], [str(t) for t in progress.tasks]
     failed = sweep.failed()
     assert [t.index for t in failed] == [1] and failed[0].exit_code == 3
-    assert "no_such_field" in failed[0].log_tail()
+    # The log names the case file and the line (the server quotes none of a file's content: docs/SECURITY.md).
+    lines = good.count("\n") + 1
+    assert f"0001.case.txtpb:{lines}:" in failed[0].log_tail(), failed[0].log_tail()
     assert (sweep.directory / "logs" / f"slurm-{handle.job}_1.out").is_file()
     assert backend.active(sweep) == []
 

@@ -94,17 +94,20 @@ def test_the_progress_line_shows_the_rate_and_the_time_left(tmp_path):
 
 def test_the_flagship_cases_do_not_trip_their_own_time_step_warning(tmp_path):
     # Miyata's reduced CS, CR and SR, at the seed's time step (Table 2): Randall's
-    # ratio spikes above 0.3 while the sample settles (a particle nearly at rest,
-    # struck) and, in SR, stays there under the plate near 900 kPa (0.36-0.45),
-    # where the step is 0.13 of the stiffest contact's critical step: his
-    # estimate of a varying stiffness is for the Hertz laws (run_recorder.cpp).
+    # ratio spikes above 0.3 while the circles settle (0.45: a particle nearly
+    # at rest, struck), where the step is far below the stiffest contact's
+    # critical step: his estimate of a varying stiffness is for the Hertz laws
+    # (run_recorder.cpp). SR's ratio stays below 0.3 since its force acts at
+    # the overlap's centroid (0.26; before, 0.36-0.45 under the plate).
+    highest = {}
     for name in ("cs_reduced", "cr_reduced", "sr_reduced"):
         result = subprocess.run([DEM_RUN, str(CASES / "miyata" / f"{name}.case.txtpb"), "--out", str(tmp_path / name),
                                  "--quiet"], capture_output=True, text=True, timeout=120)
         assert result.returncode == 0, result.stderr
         assert "warning" not in result.stderr, result.stderr
-        ratios = [float(r["time_step_ratio"]) for r in rows(tmp_path / name / "assembly.csv")]
-        assert max(ratios) > 0.3  # the spikes are there; the warning knows them for what they are
+        highest[name] = max(float(r["time_step_ratio"]) for r in rows(tmp_path / name / "assembly.csv"))
+    # The spikes are there; the warning knows them for what they are.
+    assert highest["cs_reduced"] > 0.3 and highest["cr_reduced"] > 0.3, highest
 
 
 def test_a_time_step_too_large_still_warns(tmp_path):

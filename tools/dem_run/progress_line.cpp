@@ -35,8 +35,8 @@ void ProgressLine::show(int stage_index, int stage_count, const StageDefT<Dim>& 
   if (rate_ > 0.0) {
     char text[96];
     const double left = static_cast<double>(stage.cycles > stage_cycles ? stage.cycles - stage_cycles : 0) / rate_;
-    std::snprintf(text, sizeof text, "  %.0f cycles/s, %s%s left", rate_, has_condition(stage.until) ? "at most " : "",
-                  duration(left).c_str());
+    std::snprintf(text, sizeof text, "  %.0f cycles/s, %s%s left", rate_,
+                  has_stop_condition(stage.until) ? "at most " : "", duration(left).c_str());
     pace = text;
   }
   char line[320];

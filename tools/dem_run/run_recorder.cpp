@@ -58,8 +58,7 @@ void RunRecorder<Dim>::fill(io::ResumePoint& point) {
   if (regions_) tables.push_back(&regions_->file());
   if (box_) tables.push_back(&box_->file());
   if (compression_csv_) {
-    tables.push_back(&compression_csv_->samples_file());
-    tables.push_back(&compression_csv_->contacts_file());
+    for (io::CsvFile* table : compression_csv_->tables()) tables.push_back(table);
   }
   point.tables.clear();
   for (io::CsvFile* table : tables) {

@@ -17,11 +17,6 @@ std::string brief(double value) {
 
 }  // namespace
 
-bool has_condition(const StopConditions& until) {
-  return until.kinetic_energy_below || until.out_of_balance_below || until.servo_tolerance || until.wall_stress_above ||
-         until.wall_settlement_above;
-}
-
 namespace {
 
 // What the particles are, for the header line (a world's particles are
@@ -83,7 +78,7 @@ void print_stage_result(std::ostream& out, int stage_index, int stage_count, con
   out << "stage " << stage_index + 1 << '/' << stage_count;
   if (!stage.name.empty()) out << ' ' << stage.name;
   out << ": " << result.cycles_run << " cycles";
-  if (has_condition(stage.until)) {
+  if (has_stop_condition(stage.until)) {
     out << (result.condition_met ? ", stop condition met" : ", stop condition not met by the cycle cap");
   }
   out << '\n';
@@ -103,7 +98,9 @@ void print_final_state(std::ostream& out, const BasicWorld<Dim>& world,
   const AssemblyMeasures assembly = world.assembly_measures();
   out << "after " << world.cycle_count() << " cycles (" << brief(world.time()) << " s): kinetic energy "
       << brief(assembly.kinetic_energy) << " J, out-of-balance " << brief(assembly.out_of_balance) << ", "
-      << assembly.contacts << " contacts (" << assembly.sliding_contacts << " sliding)\n";
+      << assembly.contacts << " contacts (" << assembly.sliding_contacts << " sliding)\n"
+      << "quasi-static: kinetic/elastic " << brief(assembly.kinetic_to_elastic) << ", unbalanced force "
+      << brief(assembly.unbalanced_force) << ", inertial number " << brief(assembly.inertial_number) << '\n';
   const EnergyBudget& e = assembly.energy;
   if (world.energy_budget()) {
     out << "energy (J): gravity " << brief(e.gravity_work) << ", walls " << brief(e.wall_work) << " -> kinetic "

@@ -12,9 +12,6 @@
 
 namespace dem::run {
 
-// Whether a stage may end before its cycle count (it is then a cap).
-bool has_condition(const StopConditions& until);
-
 template <int Dim>
 void print_case_header(std::ostream& out, const io::CaseDefinitionT<Dim>& definition, const BasicWorld<Dim>& world);
 template <int Dim>

@@ -12,8 +12,10 @@
 //   dem_validate deposition --case FILE --out DIR             (Randall 1989, 6.3: pluvial deposition)
 //   dem_validate rolling-to-rest --out DIR  (rolling resistance: a ball stops where the closed form says)
 //   dem_validate angle-of-repose --out DIR  (rolling resistance: the repose angle of a heap by mu_r)
-//   dem_validate miyata-compression --case FILE --out DIR
+//   dem_validate miyata-compression --case FILE --out DIR [--packings N | --seeds S,... | --runs DIR ...]
 //                                           (Miyata et al. 2002, 3.2-3.3: plate loading, Figs. 26-37)
+//   dem_validate miyata-surfaces --out DIR [--packings N] [--reduced]
+//                                           (Miyata et al. 2002, 3.2: CS, CR, SS and SR compared)
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
@@ -27,7 +29,7 @@
 #include "dem/version.h"
 #include "deposition.h"
 #include "hopper.h"
-#include "miyata_compression.h"
+#include "miyata_commands.h"
 #include "nine_disc.h"
 #include "randall_assembly.h"
 #include "rolling.h"
@@ -134,14 +136,35 @@ int main(int argc, char** argv) {
   auto* repose = app.add_subcommand("angle-of-repose", "rolling resistance: angle of repose of a collapsed column");
   repose->add_option("--out", out, "directory for angle_of_repose.csv")->required();
   repose->add_option("--rolling-friction", rolling_frictions, "the mu_r values, in rising order")->delimiter(',');
-  std::filesystem::path miyata_case;
+  dem::validation::MiyataOptions miyata_options;
   auto* miyata = app.add_subcommand("miyata-compression",
                                     "a plate loading case of Miyata et al. (2002) 3.2-3.3 (cases/miyata): three "
-                                    "states, plate contacts, force distribution, stress drops");
-  miyata->add_option("--case", miyata_case, "the case file (it must set output.compression)")
+                                    "states, plate contacts, force distribution, stress drops; over packings");
+  miyata->add_option("--case", miyata_options.case_file, "the case file (it must set output.compression)")
       ->required()
       ->check(CLI::ExistingFile);
-  miyata->add_option("--out", out, "directory for the analyses' CSV files and miyata_summary.csv")->required();
+  miyata
+      ->add_option("--runs", miyata_options.runs,
+                   "judge these finished runs of the case (directories of dem_run, dem_server or a sweep's "
+                   "tasks) instead of running it")
+      ->check(CLI::ExistingDirectory);
+  auto* miyata_surfaces =
+      app.add_subcommand("miyata-surfaces",
+                         "Miyata et al. (2002) 3.2: the four samples of Table 1 (CS, CR, SS, SR) over packings: "
+                         "circles release stress, rectangles never; rough surfaces have fewer plate contacts");
+  bool reduced = false;
+  miyata_surfaces->add_flag("--reduced", reduced, "the _reduced cases (4 m wide) instead of the full ones");
+  miyata_surfaces->add_option("--cases", cases, "directory holding cases/miyata")->check(CLI::ExistingDirectory);
+  for (auto* sub : {miyata, miyata_surfaces}) {
+    sub->add_option("--out", out,
+                    "directory for the analyses' CSV files and miyata_summary.csv (one packing), or a directory "
+                    "per packing (packing_<seed>)");
+    sub->add_option("--packings", miyata_options.packings, "packings to run: the case's seed, then 1, 2, ...")
+        ->check(CLI::PositiveNumber);
+    sub->add_option("--seeds", miyata_options.seeds, "the packing seeds to run instead")->delimiter(',');
+    sub->add_option("--jobs", miyata_options.jobs, "runs at a time")->check(CLI::PositiveNumber);
+    sub->add_option("--threads", miyata_options.threads, "threads of each run")->check(CLI::PositiveNumber);
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -188,13 +211,11 @@ int main(int argc, char** argv) {
       dem::validation::write_verification_csv(out, run);
       verdict = dem::validation::judge_verification(run);
     }
-    if (*miyata) {
-      const dem::validation::MiyataRun run = dem::validation::run_miyata_compression(miyata_case, out);
-      const dem::validation::MiyataFigures figures = dem::validation::miyata_figures(run);
-      dem::validation::print_miyata_report(stdout, run, figures);
-      dem::validation::write_miyata_summary(out, run, figures);
-      std::printf("wrote the analyses and miyata_summary.csv to %s\n", out.c_str());
-      verdict = dem::validation::judge_miyata(run, figures);
+    if (*miyata || *miyata_surfaces) {
+      if (out.empty() && miyata_options.runs.empty()) throw std::runtime_error("--out is required to run a case");
+      miyata_options.out = out;
+      verdict = *miyata ? dem::validation::miyata_compression_command(miyata_options)
+                        : dem::validation::miyata_surfaces_command(cases, reduced, miyata_options);
     }
     if (*nine) {
       const auto compression = dem::validation::run_compression(cases / "ball");

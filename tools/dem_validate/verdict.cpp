@@ -34,6 +34,10 @@ void Verdict::at_least(std::string name, double measured, double bound) {
   expect(std::move(name), measured >= bound, number(measured) + ", expected at least " + number(bound));
 }
 
+void Verdict::at_most(std::string name, double measured, double bound) {
+  expect(std::move(name), measured <= bound, number(measured) + ", expected at most " + number(bound));
+}
+
 void Verdict::add(const Verdict& other) { checks_.insert(checks_.end(), other.checks_.begin(), other.checks_.end()); }
 
 bool Verdict::passed() const { return failures() == 0; }

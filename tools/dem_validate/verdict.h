@@ -25,6 +25,7 @@ class Verdict {
   void below(std::string name, double measured, double bound);     // measured < bound
   void above(std::string name, double measured, double bound);     // measured > bound
   void at_least(std::string name, double measured, double bound);  // measured >= bound
+  void at_most(std::string name, double measured, double bound);   // measured <= bound
   void add(const Verdict& other);
 
   bool passed() const;

@@ -18,6 +18,7 @@
 
 #include "csv.h"
 #include "dem/client/errors.h"
+#include "dem/client/local_file.h"
 #include "exit_codes.h"
 #include "interrupt.h"
 #include "json.h"
@@ -39,16 +40,14 @@ Client connect(const Global& global) { return Client(connect_options(global)); }
 
 void print(const Reply& reply) { std::cout << reply.message << '\n'; }
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
 // A progress bar on stderr, drawn only for a person (a terminal): the
 // share done, the rate in cycles per second (averaged over the last few
-// status updates) and the time left at that rate - "at most" for
-// run-until and run-programme, which may end before their cap.
+// status updates) and, for a cycle command, the time left at that rate;
+// "at most" that for run-until, which may end before its cap. A programme
+// shows its stage and how far the stage is (the server's status: a plate's
+// stress against its target, or the cycles of a fixed stage), with no time
+// left - its caps are bounds, millions of cycles beyond where a stress
+// target ends it.
 class ProgressBar {
  public:
   explicit ProgressBar(bool enabled) : enabled_(enabled && isatty(STDERR_FILENO) == 1) {}
@@ -68,25 +67,34 @@ class ProgressBar {
     }
     constexpr int kWidth = 30;
     const int filled = static_cast<int>(s.progress * kWidth + 0.5);
+    const bool programme = s.command == "run_programme" || s.command == "programme";
     char pace[96] = "";
-    if (rate_ > 0.0) {
+    if (rate_ > 0.0 && !programme) {
       const auto left =
           s.command_cycles_total > s.command_cycles_done ? s.command_cycles_total - s.command_cycles_done : 0;
       std::snprintf(pace, sizeof pace, ", %.0f cycles/s, %s%s left", rate_, s.command == "cycle" ? "" : "at most ",
                     duration(static_cast<double>(left) / rate_).c_str());
+    } else if (rate_ > 0.0) {
+      std::snprintf(pace, sizeof pace, ", %.0f cycles/s", rate_);
     }
-    const int width =
-        std::fprintf(stderr, "\r[%s%s] %3.0f%%  cycle %llu, %llu of %llu%s%*s", std::string(filled, '#').c_str(),
-                     std::string(kWidth - filled, '-').c_str(), 100.0 * s.progress,
-                     static_cast<unsigned long long>(s.cycle), static_cast<unsigned long long>(s.command_cycles_done),
-                     static_cast<unsigned long long>(s.command_cycles_total), pace, 4, "");
+    const std::string bar = std::string(filled, '#') + std::string(kWidth - filled, '-');
+    char line[512];
+    if (programme) {
+      std::snprintf(line, sizeof line, "[%s] %3.0f%%  %s, cycle %llu%s", bar.c_str(), 100.0 * s.progress,
+                    s.message.c_str(), static_cast<unsigned long long>(s.cycle), pace);
+    } else {
+      std::snprintf(line, sizeof line, "[%s] %3.0f%%  cycle %llu, %llu of %llu%s", bar.c_str(), 100.0 * s.progress,
+                    static_cast<unsigned long long>(s.cycle), static_cast<unsigned long long>(s.command_cycles_done),
+                    static_cast<unsigned long long>(s.command_cycles_total), pace);
+    }
+    // Erased to the line's end: the line before may have been longer.
+    std::fprintf(stderr, "\r%s\033[K", line);
     std::fflush(stderr);
-    width_ = std::max(width_, width);
     shown_ = true;
   }
   void clear() {
     if (!shown_) return;
-    std::fprintf(stderr, "\r%*s\r", width_, "");
+    std::fprintf(stderr, "\r\033[K");
     std::fflush(stderr);
     shown_ = false;
   }
@@ -108,7 +116,6 @@ class ProgressBar {
 
   bool enabled_;
   bool shown_ = false;
-  int width_ = 80;
   bool seen_ = false;  // a status of this run was shown
   std::chrono::steady_clock::time_point last_{};
   std::uint64_t last_cycles_ = 0;
@@ -192,6 +199,9 @@ dem::client::ConnectOptions connect_options(const Global& global) {
   options.dds_config = global.dds_config;
   options.timeout = milliseconds(global.timeout);
   options.reply_timeout = std::max(milliseconds(global.timeout), std::chrono::milliseconds(60s));
+  // A server whose interface is an older form, or whose telemetry this
+  // demctl cannot read, is said on stderr (commands work: it answered).
+  options.on_interface_note = [](const std::string& note) { std::cerr << "demctl: note: " << note << '\n'; };
   return options;
 }
 
@@ -256,7 +266,7 @@ int load(const Global& global, const std::string& file, bool on_server, bool bin
   if (on_server) {
     print(client.load_case_on_server(file));
   } else if (binary) {
-    print(client.load_case_binary(read_file(file), file));
+    print(client.load_case_binary(dem::client::read_local_file(file), file));
   } else {
     print(client.load_case_file(file));
   }
@@ -428,7 +438,8 @@ int snapshot_save(const Global& global, const std::string& file, bool on_server)
 
 int snapshot_load(const Global& global, const std::string& file, bool on_server) {
   Client client = connect(global);
-  print(on_server ? client.load_snapshot_on_server(file) : client.load_snapshot_bytes(read_file(file)));
+  print(on_server ? client.load_snapshot_on_server(file)
+                  : client.load_snapshot_bytes(dem::client::read_local_file(file)));
   return kOk;
 }
 

@@ -3,7 +3,8 @@
 // Exit codes (exit_codes.h): 0 done; 1 other failure; 2 bad arguments;
 // 3 no such server within --timeout; 4 the server replied with an error;
 // 5 no reply in time; 6 run-until --wait ended at its cycle cap without
-// meeting its condition; 130 interrupted.
+// meeting its condition; 7 the server's interface and demctl's cannot meet;
+// 130 interrupted.
 #include <CLI/CLI.hpp>
 #include <cstdlib>
 #include <iostream>
@@ -34,7 +35,7 @@ int main(int argc, char** argv) {
   app.footer(
       "Exit codes: 0 done, 1 other failure, 2 bad arguments, 3 no such server within --timeout,\n"
       "4 the server replied with an error, 5 no reply in time, 6 run-until --wait reached its cycle cap\n"
-      "before its condition, 130 interrupted.");
+      "before its condition, 7 the server's interface and demctl's cannot meet, 130 interrupted.");
   app.fallthrough();  // --server and --domain may also follow the subcommand
   app.add_option("-s,--server", global.server, "server name (default $DEM_SERVER, else dem)")->capture_default_str();
   app.add_option("-d,--domain", global.domain, "DDS domain id (default $DEM_DOMAIN, else 0)")
@@ -239,6 +240,12 @@ int main(int argc, char** argv) {
   } catch (const std::invalid_argument& error) {
     std::cerr << "demctl: " << error.what() << '\n';
     return demctl::kBadArguments;
+  } catch (const dem::client::LocalFileError& error) {
+    std::cerr << "demctl: " << error.what() << '\n';
+    return demctl::kBadArguments;
+  } catch (const dem::client::InterfaceMismatch& error) {
+    std::cerr << "demctl: " << error.what() << '\n';
+    return demctl::kInterfaceMismatch;
   } catch (const dem::client::NoSuchServer& error) {
     std::cerr << "demctl: " << error.what() << '\n';
     return demctl::kNoSuchServer;

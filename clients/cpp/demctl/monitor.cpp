@@ -12,6 +12,7 @@
 #include <mutex>
 #include <optional>
 #include <set>
+#include <string_view>
 
 #include "commands.h"
 #include "csv.h"
@@ -19,6 +20,7 @@
 #include "dem/dds/discovery.h"
 #include "exit_codes.h"
 #include "interrupt.h"
+#include "monitor_columns.h"
 
 namespace demctl {
 
@@ -94,6 +96,9 @@ class Inbox {
   std::deque<Row> rows_;
 };
 
+// The plates shown: those --wall names (every wall without it), in the
+// server's order of its walls, so the columns are the case's whatever
+// order --wall gives.
 std::vector<std::string> plate_names(const PlateForces& plates, const std::vector<std::string>& wanted) {
   std::vector<std::string> names;
   for (const auto& wall : plates.walls) names.push_back(wall.name);
@@ -105,7 +110,9 @@ std::vector<std::string> plate_names(const PlateForces& plates, const std::vecto
       throw BadArguments("monitor: no wall \"" + name + "\" (walls: " + known + ")");
     }
   }
-  return wanted;
+  std::erase_if(names,
+                [&](const std::string& name) { return std::find(wanted.begin(), wanted.end(), name) == wanted.end(); });
+  return names;
 }
 
 const dem::protocol::WallForce* find(const PlateForces& plates, const std::string& name) {
@@ -135,18 +142,22 @@ class RowWriter {
     if (server_width_ > 0) std::printf("%-*s ", server_width_, server.c_str());
     std::printf("%10llu %12.6g", static_cast<unsigned long long>(plates.cycle), plates.time);
     for (const double value : plate_values) std::printf(" %14.6g", value);
-    std::printf(" %9d %6.3f %7.1f%% %12.5g\n", stats.contacts, stats.coordination_number,
-                100.0 * stats.sliding_fraction, stats.kinetic_energy);
+    std::vector<double> statistics;
+    for (const StatisticsColumn& column : kStatisticsColumns) {
+      const double value = column.value(stats);
+      statistics.push_back(value);
+      if (column.heading) {
+        std::printf(" ");
+        std::printf(column.format, column.width, value * column.scale);
+      }
+    }
+    std::printf("\n");
     std::fflush(stdout);
     if (csv_) {
       if (server_width_ > 0) {
-        csv_->row(server, plates.cycle, plates.time, plate_values, stats.contacts, stats.coordination_number,
-                  stats.sliding_fraction, stats.mean_normal_force, stats.max_normal_force, stats.kinetic_energy,
-                  stats.out_of_balance);
+        csv_->row(server, plates.cycle, plates.time, plate_values, statistics);
       } else {
-        csv_->row(plates.cycle, plates.time, plate_values, stats.contacts, stats.coordination_number,
-                  stats.sliding_fraction, stats.mean_normal_force, stats.max_normal_force, stats.kinetic_energy,
-                  stats.out_of_balance);
+        csv_->row(plates.cycle, plates.time, plate_values, statistics);
       }
       csv_->flush();
     }
@@ -165,13 +176,16 @@ class RowWriter {
     if (server_width_ > 0) std::printf("%-*s ", server_width_, "server");
     std::printf("%10s %12s", "cycle", "time [s]");
     for (std::size_t i = 0; i < walls_.size(); ++i) std::printf(" %14s %14s", "stress [Pa]", "settlement [m]");
-    std::printf(" %9s %6s %8s %12s\n", "contacts", "Z", "sliding", "KE [J]");
+    for (const StatisticsColumn& column : kStatisticsColumns) {
+      // A percentage's sign takes a place of its own.
+      const bool percent = std::string_view(column.format ? column.format : "").ends_with("%%");
+      if (column.heading) std::printf(" %*s", column.width + (percent ? 1 : 0), column.heading);
+    }
+    std::printf("\n");
     if (!options_.csv.empty()) {
       std::string header = server_width_ > 0 ? "server,cycle,time" : "cycle,time";
       for (const auto& name : walls_) header += "," + name + "_stress," + name + "_settlement";
-      header +=
-          ",contacts,coordination_number,sliding_fraction,mean_normal_force,max_normal_force,"
-          "kinetic_energy,out_of_balance";
+      for (const StatisticsColumn& column : kStatisticsColumns) header += std::string(",") + column.csv;
       csv_ = std::make_unique<CsvWriter>(options_.csv, header);
     }
   }

@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <atomic>
-#include <fstream>
 #include <iterator>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
+#include "dem/client/local_file.h"
 #include "dem/dds/discovery.h"
 #include "dem/protocol/qos.h"
 #include "dem/protocol/topics.h"
@@ -55,6 +55,7 @@ ConnectOptions checked(ConnectOptions options) {
 Client::Client(ConnectOptions options)
     : options_(checked(std::move(options))),
       participant_(options_.domain, options_.dds_config),
+      interface_watch_(participant_, protocol::topics_of(options_.server), "this client"),
       command_topic_(participant_, protocol::topic_name(options_.server, TopicKind::kCommand)),
       reply_topic_(participant_, protocol::topic_name(options_.server, TopicKind::kReply)),
       status_topic_(participant_, protocol::topic_name(options_.server, TopicKind::kStatus)),
@@ -100,7 +101,10 @@ void Client::connect() {
   const std::string where = "server \"" + options_.server + "\" on DDS domain " + std::to_string(options_.domain);
   // The server's durable status says it is there.
   const auto status = wait_for_status([](const protocol::Status&) { return true; }, remaining());
-  if (!status) throw NoSuchServer("no " + where + " within " + seconds(options_.timeout));
+  if (!status) {
+    judge_server(true);  // a server there whose status this client cannot read
+    throw NoSuchServer("no " + where + " within " + seconds(options_.timeout) + "; " + others_seen());
+  }
   if (status->state == protocol::ServerState::kShutdown) throw NoSuchServer(where + " is shutting down");
   // One round trip: the server has then matched this client both ways, so
   // no later command or reply is lost to discovery. A ping sent before the
@@ -120,10 +124,51 @@ void Client::connect() {
         complete_.erase(id);
         outstanding_.erase(id);
       }
+      lock.unlock();
+      for (const protocol::PeerVerdict& verdict : judge_server(false)) {
+        interface_notes_.push_back(verdict.text);
+        if (options_.on_interface_note) options_.on_interface_note(verdict.text);
+      }
       return;
     }
   }
+  judge_server(true);  // its commands or replies of a form this client's cannot read
   throw NoSuchServer(where + " was found but did not answer within " + seconds(options_.timeout));
+}
+
+std::vector<protocol::PeerVerdict> Client::judge_server(bool fatal) {
+  using Kind = protocol::PeerVerdict::Kind;
+  const std::string command_topic = protocol::topic_name(options_.server, TopicKind::kCommand);
+  std::vector<protocol::PeerVerdict> verdicts;
+  std::string fatal_text;
+  for (protocol::PeerVerdict& verdict : interface_watch_.check()) {
+    // The server's endpoints: the command topic's reader, every other topic's
+    // writers (other clients read those and write commands).
+    const bool servers = verdict.peer.writer != (verdict.peer.topic_name == command_topic);
+    if (!servers) continue;
+    const bool crossing = verdict.peer.topic_name == command_topic ||
+                          verdict.peer.topic_name == protocol::topic_name(options_.server, TopicKind::kReply) ||
+                          verdict.peer.topic_name == protocol::topic_name(options_.server, TopicKind::kStatus);
+    if (fatal && crossing && verdict.kind != Kind::kOlderCompatible) {
+      fatal_text += (fatal_text.empty() ? "" : "; ") + verdict.text;
+    }
+    verdicts.push_back(std::move(verdict));
+  }
+  if (!fatal_text.empty()) {
+    throw InterfaceMismatch("server \"" + options_.server + "\" cannot meet this client: " + fatal_text);
+  }
+  return verdicts;
+}
+
+// What this participant has discovered meanwhile, for a name given wrong
+// or not at all: the servers it can see on the domain, by name.
+std::string Client::others_seen() const {
+  const std::set<std::string> names = server_names(dds::PublicationMonitor(participant_).alive());
+  const std::string domain = "DDS domain " + std::to_string(options_.domain);
+  if (names.empty()) return "no server is on " + domain + " (another --domain, or not started yet?)";
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+  return "servers on " + domain + ": " + list + " (name one with --server NAME or $DEM_SERVER)";
 }
 
 // --- receiving -----------------------------------------------------------
@@ -205,8 +250,8 @@ std::uint64_t Client::send(protocol::Command command) {
           return outstanding_.size() < std::max<std::size_t>(options_.max_outstanding, 1);
         })) {
       throw ReplyTimeout(std::to_string(outstanding_.size()) + " requests to server \"" + options_.server +
-                         "\" still unanswered after " + seconds(options_.reply_timeout) +
-                         " (at most " + std::to_string(options_.max_outstanding) + " may be outstanding)");
+                         "\" still unanswered after " + seconds(options_.reply_timeout) + " (at most " +
+                         std::to_string(options_.max_outstanding) + " may be outstanding)");
     }
     command.request_id = next_request_++;
     outstanding_.insert(command.request_id);
@@ -276,10 +321,7 @@ bool Client::server_alive() const { return status_reader_.matched_writers() > 0;
 // --- one call per command --------------------------------------------------
 
 protocol::Reply Client::load_case_file(const std::filesystem::path& local_file) {
-  std::ifstream in(local_file, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + local_file.string());
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return load_case_text(std::move(text), local_file.string());
+  return load_case_text(read_local_file(local_file), local_file.string());
 }
 
 protocol::Reply Client::load_case_text(std::string text, std::string source_name) {

@@ -15,12 +15,19 @@ case's stages run through the service (dem.programme); the seeds' figures
         contacts = press.contacts(wall="top")
 """
 
-from . import _build_info, cases, errors
-from ._client import (CONTACT_DTYPE, ContactStats, PlateForces, RegionMeasures, RegionTelemetry, Reply, Status,
-                      WallForce)
+from . import _build_info
+
+try:
+    from . import cases, errors
+    from ._client import (CONTACT_DTYPE, ContactStats, PlateForces, RegionMeasures, RegionTelemetry, Reply, Status,
+                          WallForce)
+except ModuleNotFoundError as missing:
+    from ._interpreter import dependency_hint
+
+    raise ImportError(dependency_hint(missing)) from missing
 from .client import Client, list_servers
-from .errors import (CaseFileError, DdsError, DemError, NoSuchServer, ProgrammeError, ReplyTimeout,
-                     ServerError)
+from .errors import (CaseFileError, DdsError, DemError, InterfaceMismatch, NoSuchServer, ProgrammeError,
+                     ReplyTimeout, ServerError)
 from .paths import use_loopback
 from .programme import run_programme
 from .server_process import ServerProcess
@@ -36,6 +43,7 @@ __all__ = [
     "ContactStats",
     "DdsError",
     "DemError",
+    "InterfaceMismatch",
     "NoSuchServer",
     "PlateForces",
     "ProgrammeError",

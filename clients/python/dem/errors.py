@@ -11,6 +11,12 @@ class NoSuchServer(DemError):
     """No server of that name answered on the domain within the timeout."""
 
 
+class InterfaceMismatch(DemError):
+    """The server was found, but its interface and this client's cannot meet:
+    its commands or replies are of an older or newer dem_interfaces (the
+    message names the versions and the fields; docs/DDS.md)."""
+
+
 class ReplyTimeout(DemError, TimeoutError):
     """The server was found, but its (complete) reply did not come in time."""
 

@@ -2,7 +2,8 @@
 environment every process here uses (docs/DDS.md, "Loopback only").
 
 Environment variables override the build's locations: DEM_SERVER_PROGRAM,
-DEMCTL_PROGRAM, DEM_RUN_PROGRAM, DEM_SOURCE_DIR, DEM_SWEEP_TASK_SCRIPT.
+DEMCTL_PROGRAM, DEM_RUN_PROGRAM, DEM_VALIDATE_PROGRAM, DEM_SOURCE_DIR,
+DEM_SWEEP_TASK_SCRIPT.
 """
 
 import os
@@ -31,6 +32,11 @@ def demctl_program():
 def run_program():
     """dem_run of this build (or $DEM_RUN_PROGRAM)."""
     return _program("DEM_RUN_PROGRAM", _build_info.RUN_PROGRAM)
+
+
+def validate_program():
+    """dem_validate of this build (or $DEM_VALIDATE_PROGRAM)."""
+    return _program("DEM_VALIDATE_PROGRAM", getattr(_build_info, "VALIDATE_PROGRAM", ""))
 
 
 def source_dir():

@@ -84,7 +84,8 @@ class _Runner:
 
         until = stage.until
         conditional = any(has(until, name) for name in
-                          ("kinetic_energy_below", "out_of_balance_below", "servo_tolerance",
+                          ("kinetic_energy_below", "out_of_balance_below", "kinetic_to_elastic_below",
+                           "unbalanced_force_below", "servo_tolerance",
                            "wall_stress_above", "wall_settlement_above"))
         check = max(until.check_interval or 10, 1)  # the schema's default: 10
         done = 0
@@ -144,6 +145,12 @@ class _Runner:
             return False
         if has(until, "out_of_balance_below") and not (
                 stats.contacts > 0 and stats.out_of_balance < until.out_of_balance_below):
+            return False
+        if has(until, "kinetic_to_elastic_below") and not (
+                stats.contacts > 0 and stats.kinetic_to_elastic < until.kinetic_to_elastic_below):
+            return False
+        if has(until, "unbalanced_force_below") and not (
+                stats.contacts > 0 and stats.unbalanced_force < until.unbalanced_force_below):
             return False
         if has(until, "servo_tolerance"):
             if not self.servo_targets:

@@ -36,8 +36,12 @@ void bind_errors(py::module_&) {
       const auto kind = protocol::command_kind(reply.kind);
       raise("ServerError", py::make_tuple(std::string(protocol::to_string(reply.status)), reply.message,
                                           kind ? std::string(protocol::to_string(*kind)) : "unknown", py::cast(reply)));
+    } catch (const client::InterfaceMismatch& error) {
+      raise("InterfaceMismatch", py::make_tuple(error.what()));
     } catch (const client::NoSuchServer& error) {
       raise("NoSuchServer", py::make_tuple(error.what()));
+    } catch (const client::LocalFileError& error) {
+      PyErr_SetString(PyExc_OSError, error.what());
     } catch (const client::ReplyTimeout& error) {
       raise("ReplyTimeout", py::make_tuple(error.what()));
     } catch (const dds::DdsError& error) {

@@ -83,6 +83,28 @@ struct AssemblyMeasures {
   // (a wall contact's: the particle's; shaped particles: the bounding
   // radius), for the health check (dem/health.h); 0 without contacts.
   double deepest_overlap = 0.0;
+  // Quasi-static measures (docs/CASES.md): how far the assembly is from
+  // the static equilibrium a slow test assumes (Miyata et al. 2002, 3.2:
+  // "quasi-static behavior of the particles").
+  double elastic_energy = 0.0;  // J: held in the contact springs (EnergyBudget::strain)
+  // Kinetic over elastic energy: far below 1 when the springs, not the
+  // motion, hold the energy; infinite with motion and no stored energy.
+  double kinetic_to_elastic = 0.0;
+  // Mean |sum F| over the particles (gravity included) over the mean contact
+  // force: 0 in equilibrium (Ng 2006; Kruyt & Rothenburg); 0 without contacts.
+  double unbalanced_force = 0.0;
+  double sliding_fraction = 0.0;  // sliding_contacts / contacts; 0 without contacts
+  // The Love-Weber mean stress over the volume the particles span, Pa
+  // (per unit depth for 2D discs), compression positive.
+  double mean_stress = 0.0;
+  // The spread of the principal rates of the particles' best linear
+  // velocity field (shear rate of a simple shear, strain rate of a uniaxial
+  // compression), 1/s.
+  double deformation_rate = 0.0;
+  // I = deformation_rate d / sqrt(mean_stress / rho), d the mean
+  // volume-equivalent diameter: quasi-static below about 1e-3 (GDR MiDi
+  // 2004); infinite when a deforming assembly holds no stress.
+  double inertial_number = 0.0;
   EnergyBudget energy;
 };
 

@@ -24,14 +24,19 @@ struct WallThreshold {
 // Conditions that end a stage early - the one stop rule of the project
 // (dem_run's stages, the service's run_programme and run_until): the stage
 // ends when EVERY condition that is set holds at once (a conjunction). The
-// direction of each is fixed by its name: kinetic energy and out of balance
-// from above ("below"), wall stress, settlement and deviator strain from
+// direction of each is fixed by its name: kinetic energy, out of balance
+// and the quasi-static measures from above ("below"), wall stress, settlement and deviator strain from
 // below ("above"); a target already passed at the first check ends the stage
 // there. They are checked every check_interval cycles, never before
 // min_cycles.
 struct StopConditions {
   std::optional<double> kinetic_energy_below;  // J
   std::optional<double> out_of_balance_below;  // Delta F / F
+  // Quasi-static measures (AssemblyMeasures): kinetic over elastic energy,
+  // and the mean unbalanced force over the mean contact force; both hold
+  // only with contacts.
+  std::optional<double> kinetic_to_elastic_below;
+  std::optional<double> unbalanced_force_below;
   // Every servo-controlled wall carries its target within this relative
   // error, and so does every stress-controlled axis of the box control.
   std::optional<double> servo_tolerance;

@@ -105,9 +105,11 @@ class RawPeer {
     const Bytes spdp = dem::probe::participant_announcement(prefix, port_, 2 + static_cast<int>(random() % 4));
     send(RtpsMessage(prefix).info_timestamp().data(dem::probe::kSpdpReader, dem::probe::kSpdpWriter, 1, spdp));
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    static constexpr const char* kTopics[][2] = {
-        {"command", "Command_"}, {"reply", "Reply_"}, {"status", "Status_"},
-        {"plate_forces", "PlateForces_"}, {"contact_stats", "ContactStats_"}};
+    static constexpr const char* kTopics[][2] = {{"command", "Command_"},
+                                                 {"reply", "Reply_"},
+                                                 {"status", "Status_"},
+                                                 {"plate_forces", "PlateForces_"},
+                                                 {"contact_stats", "ContactStats_"}};
     std::int64_t publications = 0;
     std::int64_t subscriptions = 0;
     for (int e = 0; e < 10; ++e) {
@@ -266,10 +268,11 @@ int main(int argc, char** argv) {
   // server handles their expiry too.
   std::this_thread::sleep_for(std::chrono::seconds(1));
   const bool survived = alive(options.server_pid);
-  std::printf("dds_discovery_probe: %d rounds (%d peer processes failed), %lld hand-made messages in %.0f s; the "
-              "server %s\n",
-              options.rounds, peer_failures, raw.messages_sent(),
-              std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(),
-              survived ? "is alive" : "died");
+  std::printf(
+      "dds_discovery_probe: %d rounds (%d peer processes failed), %lld hand-made messages in %.0f s; the "
+      "server %s\n",
+      options.rounds, peer_failures, raw.messages_sent(),
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(),
+      survived ? "is alive" : "died");
   return survived ? 0 : 1;
 }

@@ -1,8 +1,11 @@
 #include "probe_participant.h"
 
+// ddsi_typelib.h needs ddsi_xqos.h's QoS types, so the order is not alphabetical
+// clang-format off
 #include <dds/dds.h>
-#include <dds/ddsi/ddsi_xqos.h>  // before ddsi_typelib.h, which needs its QoS types
+#include <dds/ddsi/ddsi_xqos.h>
 #include <dds/ddsi/ddsi_typelib.h>
+// clang-format on
 #include <unistd.h>
 
 #include <array>
@@ -101,7 +104,8 @@ void look_up_server_types(dds_entity_t participant, const std::string& prefix, i
       if (dds_builtintopic_get_endpoint_type_info(endpoint, &type_info) != DDS_RETCODE_OK || type_info == nullptr) {
         continue;
       }
-      for (const ddsi_typeid_t* id : {ddsi_typeinfo_minimal_typeid(type_info), ddsi_typeinfo_complete_typeid(type_info)}) {
+      for (const ddsi_typeid_t* id :
+           {ddsi_typeinfo_minimal_typeid(type_info), ddsi_typeinfo_complete_typeid(type_info)}) {
         dds_typeobj_t* object = nullptr;
         if (id != nullptr && dds_get_typeobj(participant, id, DDS_MSECS(timeout_ms), &object) == DDS_RETCODE_OK) {
           dds_free_typeobj(object);

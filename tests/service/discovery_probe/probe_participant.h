@@ -16,8 +16,8 @@ namespace dem::probe {
 
 struct ParticipantRound {
   std::uint32_t domain = 0;
-  std::string server;       // the dem_server whose topics are probed
-  std::uint64_t seed = 0;   // picks the descriptions, the QoS and how the round ends
+  std::string server;      // the dem_server whose topics are probed
+  std::uint64_t seed = 0;  // picks the descriptions, the QoS and how the round ends
   int lookup_timeout_ms = 200;
 };
 

@@ -5,11 +5,11 @@
 
 #include <dds/dds.h>
 
-#define DEM_PROBE_VARIANT(variant)                             \
-  extern "C" const dds_topic_descriptor_t probe_##variant##_Command_desc;      \
-  extern "C" const dds_topic_descriptor_t probe_##variant##_Reply_desc;        \
-  extern "C" const dds_topic_descriptor_t probe_##variant##_Status_desc;       \
-  extern "C" const dds_topic_descriptor_t probe_##variant##_PlateForces_desc;  \
+#define DEM_PROBE_VARIANT(variant)                                            \
+  extern "C" const dds_topic_descriptor_t probe_##variant##_Command_desc;     \
+  extern "C" const dds_topic_descriptor_t probe_##variant##_Reply_desc;       \
+  extern "C" const dds_topic_descriptor_t probe_##variant##_Status_desc;      \
+  extern "C" const dds_topic_descriptor_t probe_##variant##_PlateForces_desc; \
   extern "C" const dds_topic_descriptor_t probe_##variant##_ContactStats_desc;
 
 DEM_PROBE_VARIANT(final)

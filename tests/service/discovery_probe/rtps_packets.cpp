@@ -140,8 +140,8 @@ RtpsMessage& RtpsMessage::data(std::uint32_t reader, std::uint32_t writer, std::
   return *this;
 }
 
-RtpsMessage& RtpsMessage::heartbeat(std::uint32_t reader, std::uint32_t writer, std::int64_t first,
-                                    std::int64_t last, std::uint32_t count) {
+RtpsMessage& RtpsMessage::heartbeat(std::uint32_t reader, std::uint32_t writer, std::int64_t first, std::int64_t last,
+                                    std::uint32_t count) {
   Bytes body;
   put_entity(body, reader);
   put_entity(body, writer);
@@ -216,7 +216,8 @@ Bytes damaged(const Bytes& payload, std::mt19937_64& random) {
         if (i + 4 <= out.size()) {
           static constexpr std::uint32_t kCounts[] = {0, 1, 3, 0x7fffffff, 0xffffffff, 0x10000, 255};
           const std::uint32_t count = kCounts[random() % std::size(kCounts)];
-          for (int b = 0; b < 4; ++b) out[i + static_cast<std::size_t>(b)] = static_cast<std::uint8_t>(count >> (8 * b));
+          for (int b = 0; b < 4; ++b)
+            out[i + static_cast<std::size_t>(b)] = static_cast<std::uint8_t>(count >> (8 * b));
         }
         break;
       }

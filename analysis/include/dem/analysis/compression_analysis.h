@@ -27,7 +27,12 @@ struct PlateSnapshotT {
   int index = 0;                  // in the order taken
   double target_stress = 0.0;     // Pa
   bool for_distribution = false;  // one of the force distribution's snapshots
-  CompressionSample sample;       // the plates when it was taken
+  // One of contacts_at_stress, or the loading's start (target 0, taken
+  // with them): the whole assembly is written at this moment too (Figs.
+  // 27-28), by whoever writes the snapshot (io::record_compression); the
+  // analysis keeps only the plates' contacts.
+  bool for_contacts = false;
+  CompressionSample sample;  // the plates when it was taken
   std::vector<PlateContactT<Dim>> loading;
   std::vector<PlateContactT<Dim>> bottom;
 };
@@ -74,6 +79,8 @@ class CompressionAnalysisT {
 
   // Samples the plates once per cycle (a second call at the same cycle does
   // nothing), from the loading stage on; returns the snapshots taken now.
+  // With contacts_at_stress, the first sample of the loading is a snapshot
+  // too: the unloaded state (target 0) the sample starts from (Fig. 28).
   std::vector<const PlateSnapshotT<Dim>*> add(const BasicWorld<Dim>& world, int stage);
 
   // The summary of the loading so far, with the world's contacts as they are now.

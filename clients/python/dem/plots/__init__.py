@@ -14,7 +14,10 @@ axes (or a new headless figure) and writes a PNG when given a path:
   stress-settlement curves and final measures (dem.sweep.Results);
 - plot_rose, plot_obliquity_histogram, plot_shear_series,
   plot_stress_path, plot_discharge, plot_velocity_field: Randall's
-  chapter 6 (granular.py).
+  chapter 6 (granular.py);
+- draw_miyata_directory: Miyata et al.'s Figs. 26-37 from a run's plate
+  loading analyses (miyata.py, over miyata_loading, miyata_assembly,
+  miyata_plates and miyata_moment).
 
 Figures are drawn on matplotlib's Agg canvas (figure.py), so nothing here
 needs a display.
@@ -26,6 +29,7 @@ from .force_chains import plot_force_chains
 from .force_distribution import plot_force_distribution
 from .granular import (draw_randall_directory, plot_discharge, plot_obliquity_histogram, plot_rose, plot_shear_series,
                        plot_stress_path, plot_velocity_field)
+from .miyata import draw_miyata_directory
 from .oblique_impact import plot_psi2_against_psi1
 from .stress_settlement import LiveStressSettlement, StressSettlementSeries, plot_stress_settlement
 from .sweep import plot_final_measure, plot_stress_settlement_family
@@ -33,6 +37,7 @@ from .sweep import plot_final_measure, plot_stress_settlement_family
 __all__ = [
     "LiveStressSettlement",
     "StressSettlementSeries",
+    "draw_miyata_directory",
     "draw_randall_directory",
     "new_axes",
     "plot_discharge",

@@ -20,6 +20,7 @@ import numpy as np
 from matplotlib.ticker import EngFormatter
 
 from .figure import finish, new_axes, save_png
+from .quasi_static import QUASI_STATIC
 
 
 class StressSettlementSeries:
@@ -30,6 +31,10 @@ class StressSettlementSeries:
         # Settlement counted from these (wall -> m), e.g. where loading began.
         self.origin = dict(origin or {})
         self._rows = {}  # wall -> list of (cycle, time, settlement, stress, contacts)
+        # The quasi-static measures sample by sample (column -> values, in
+        # the order of the first wall's rows), when the source has them: a
+        # demctl monitor table (docs/CASES.md, "Quasi-static measures").
+        self.measures = {}
 
     def add(self, plate_forces):
         """Adds one PlateForces sample (telemetry or a reply's ``plates``)."""
@@ -60,6 +65,9 @@ class StressSettlementSeries:
                 series._rows.setdefault(wall, []).append(
                     (int(row["cycle"]), float(row["time"]), float(row[f"{wall}_settlement"]),
                      float(row[f"{wall}_stress"]), 0))
+        for column, *_ in QUASI_STATIC:
+            if column in columns:
+                series.measures[column] = np.array([float(row[column]) for row in rows])
         return series
 
     @classmethod
@@ -158,9 +166,26 @@ class StressSettlementSeries:
 
 
 def plot_stress_settlement(series, *, walls=None, ax=None, png=None, title=None):
-    """Normal stress (Pa) against settlement (m), one curve per wall."""
-    figure, ax = new_axes(ax)
-    _draw(ax, series, walls or series.names(), title)
+    """Normal stress (Pa) against settlement (m), one curve per wall; with
+    the quasi-static measures under it, against the first wall's
+    settlement, when the series has them (and no axes were given)."""
+    walls = walls or series.names()
+    if ax is not None or not series.measures or not walls:
+        figure, ax = new_axes(ax)
+        _draw(ax, series, walls, title)
+        return finish(figure, png)
+    from .miyata_loading import new_figure
+    from .quasi_static import draw_quasi_static_panels
+
+    panels = [column for column, *_ in QUASI_STATIC if column in series.measures]
+    figure = new_figure((8.0, 5.0 + 1.5 * len(panels)))
+    axes = figure.subplots(1 + len(panels), 1, sharex=True,
+                           gridspec_kw={"height_ratios": [3.0] + [1] * len(panels)}, squeeze=False)[:, 0]
+    _draw(axes[0], series, walls, title)
+    axes[0].set_xlabel("")
+    draw_quasi_static_panels(axes[1:], series.column(walls[0], "settlement"), series.measures, panels)
+    axes[-1].set_xlabel(f"settlement of {walls[0]}")
+    axes[-1].xaxis.set_major_formatter(EngFormatter(unit="m"))
     return finish(figure, png)
 
 

@@ -5,6 +5,8 @@
     python3 -m dem.sweep run DIR --backend slurm [--sbatch-option=--time=1:00:00 ...] [--no-wait]
     python3 -m dem.sweep run DIR --backend dask --scheduler tcp://HOST:8786
     python3 -m dem.sweep results DIR           writes DIR/summary.csv and prints it
+    python3 -m dem.sweep packings CASE --out DIR [--packings 5] [--workers N] [--threads T]
+                                               a Miyata case over packings, judged by dem_validate
 
 run submits the tasks not done (or those of --tasks) and waits, printing
 progress. Exit codes: 0 every task done, 1 some failed or are unfinished,
@@ -17,6 +19,7 @@ import sys
 from ..errors import DemError
 from .backends import DaskBackend, LocalBackend, SlurmBackend
 from .directory import Sweep
+from . import packings as packings_command
 
 
 def task_list(text):
@@ -63,7 +66,20 @@ def main(argv=None):
     results = commands.add_parser("results", help="gather the tables; write and print summary.csv")
     results.add_argument("directory")
     results.add_argument("--plate", help="the loading plate (default: the case's)")
+    packings = commands.add_parser("packings", help="a plate loading case over packings, run and judged")
+    packings.add_argument("case")
+    packings.add_argument("--out", required=True, help="the sweep's directory (made, or continued)")
+    packings.add_argument("--packings", type=int, default=5)
+    packings.add_argument("--workers", type=int, help="packings at a time (default: cores / threads)")
+    packings.add_argument("--threads", type=int, default=1, help="threads of each packing's server")
+    packings.add_argument("--domain", type=int, default=0, help="the DDS domain of the tasks' servers")
     args = parser.parse_args(argv)
+    if args.command == "packings":
+        try:
+            return packings_command.main(args)
+        except (DemError, ValueError) as error:
+            print(f"dem.sweep: {error}", file=sys.stderr)
+            return 2
 
     try:
         sweep = Sweep.open(args.directory)

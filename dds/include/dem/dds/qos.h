@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <string_view>
 
 namespace dem::dds {
 
@@ -28,9 +29,15 @@ class Qos {
   Qos& keep_last(std::int32_t depth);
   Qos& keep_all();
   Qos& volatile_durability();
-  // Late-joining readers receive the writer's history (its KEEP_LAST depth).
-  Qos& transient_local();
+  // A writer keeps its last `late_joiner_depth` samples for readers that
+  // join later (which ask for transient-local too). Cyclone keeps for them
+  // the durability service's history, not the writer's own - one sample
+  // unless said: this sets both.
+  Qos& transient_local(std::int32_t late_joiner_depth = 1);
   Qos& resource_limits(std::int32_t max_samples, std::int32_t max_instances, std::int32_t max_samples_per_instance);
+  // USER_DATA: bytes discovery hands to every peer with the endpoint (ROS 2
+  // puts its type hash there, "typehash=RIHS01_...;").
+  Qos& user_data(std::string_view data);
 
   const dds_qos_t* get() const { return qos_; }
 

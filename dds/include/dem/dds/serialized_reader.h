@@ -30,7 +30,7 @@ class SerializedReader {
   template <SupportedType T>
   SerializedReader(const Participant& participant, const Topic<T>& topic, const Qos& qos)
       : topic_name_(topic.name()),
-        entity_(check(dds_create_reader(participant.handle(), topic.handle(), qos.get(), nullptr),
+        entity_(check(dds_create_reader(participant.handle(), topic.handle(), endpoint_qos<T>(qos).get(), nullptr),
                       "creating a reader for " + topic_name_)) {}
 
   // Removes up to `max` samples from the reader's history and returns those

@@ -25,10 +25,10 @@ class Topic {
  public:
   Topic(const Participant& participant, std::string name)
       : name_(std::move(name)),
-        entity_((protect_type_information(*TypeSupport<T>::descriptor()),
-                 check(dds_create_topic(participant.handle(), TypeSupport<T>::descriptor(), name_.c_str(), nullptr,
-                                        nullptr),
-                       "creating topic " + name_))) {}
+        entity_((
+            protect_type_information(*TypeSupport<T>::descriptor()),
+            check(dds_create_topic(participant.handle(), TypeSupport<T>::descriptor(), name_.c_str(), nullptr, nullptr),
+                  "creating topic " + name_))) {}
 
   dds_entity_t handle() const { return entity_.handle(); }
   const std::string& name() const { return name_; }
@@ -58,7 +58,7 @@ class Writer {
  public:
   Writer(const Participant& participant, const Topic<T>& topic, const Qos& qos)
       : topic_name_(topic.name()),
-        entity_(check(dds_create_writer(participant.handle(), topic.handle(), qos.get(), nullptr),
+        entity_(check(dds_create_writer(participant.handle(), topic.handle(), endpoint_qos<T>(qos).get(), nullptr),
                       "creating a writer for " + topic_name_)) {}
 
   // False when the writer's history stayed full for the QoS's max blocking
@@ -111,7 +111,7 @@ class Reader {
  public:
   Reader(const Participant& participant, const Topic<T>& topic, const Qos& qos)
       : topic_name_(topic.name()),
-        entity_(check(dds_create_reader(participant.handle(), topic.handle(), qos.get(), nullptr),
+        entity_(check(dds_create_reader(participant.handle(), topic.handle(), endpoint_qos<T>(qos).get(), nullptr),
                       "creating a reader for " + topic_name_)) {}
 
   // Removes up to `max` samples from the reader's history and returns those

@@ -9,6 +9,8 @@
 
 #include <concepts>
 
+#include "dem/dds/qos.h"
+
 namespace dem::dds {
 
 // Specialize for each message type T:
@@ -18,6 +20,9 @@ namespace dem::dds {
 //   static dds_return_t write(dds_entity_t writer, const T& value);
 //   // Converts a received C sample (of descriptor()'s type) to T.
 //   static T from_sample(const void* sample);
+// and optionally
+//   // USER_DATA every writer and reader of T carries (its type's hash).
+//   static std::string user_data();
 template <class T>
 struct TypeSupport;
 
@@ -27,5 +32,14 @@ concept SupportedType = requires(const T& value, const void* sample, dds_entity_
   { TypeSupport<T>::write(writer, value) } -> std::same_as<dds_return_t>;
   { TypeSupport<T>::from_sample(sample) } -> std::same_as<T>;
 };
+
+// The QoS an endpoint of T is created with: `qos`, with T's USER_DATA when
+// its TypeSupport gives one.
+template <class T>
+Qos endpoint_qos(const Qos& qos) {
+  Qos with = qos;
+  if constexpr (requires { TypeSupport<T>::user_data(); }) with.user_data(TypeSupport<T>::user_data());
+  return with;
+}
 
 }  // namespace dem::dds

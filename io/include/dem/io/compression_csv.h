@@ -11,12 +11,23 @@
 //                         bottom_contacts (0 while the bottom has none).
 //   plate_contacts.csv    2D: snapshot,target_stress,cycle,stress,plate,
 //                             particle,x,y,normal_force,shear_force,f,
-//                             formed_cycle,formed_in
+//                             formed_cycle,formed_in,for_contacts,
+//                             for_distribution
 //                         3D: the same with z after y
 //                         every contact on both plates at each snapshot
 //                         stress (Fig. 34 and the force distribution's);
 //                         f = normal_force over the plate's mean at that
-//                         snapshot; formed_in the state the contact formed in.
+//                         snapshot; formed_in the state the contact formed
+//                         in; for_contacts (0/1) a snapshot of
+//                         contacts_at_stress or the loading's start (target
+//                         0), for_distribution one pooled into the force
+//                         distribution.
+//   particles_at_stress.csv  snapshot,target_stress,cycle,stress, then the
+//                         columns of particles.csv (csv_writers.h)
+//   contacts_at_stress.csv   snapshot,target_stress,cycle,stress, then the
+//                         columns of contacts.csv
+//                         the whole assembly at each for_contacts snapshot
+//                         (Figs. 27-28: force chains, particle rotations).
 // At the end:
 //   compression_states.csv  state,first_cycle,samples,stress_from,stress_to,
 //                         settlement_from,settlement_to,secant_stiffness,
@@ -55,7 +66,8 @@ inline constexpr int kQModelNeighbours = 3;
 template <int Dim>
 class CompressionCsvT {
  public:
-  // Creates compression.csv and plate_contacts.csv; the plates' names label the rows.
+  // Creates compression.csv, plate_contacts.csv, particles_at_stress.csv and
+  // contacts_at_stress.csv; the plates' names label the rows.
   // `resume`: see CsvFile.
   CompressionCsvT(const std::filesystem::path& directory, std::string loading_plate, std::string bottom_plate,
                   const TableSizes* resume = nullptr);
@@ -64,14 +76,16 @@ class CompressionCsvT {
   // `cycles` as known when the snapshot was taken: enough for the contacts
   // formed by then.
   void write_snapshot(const dem::analysis::PlateSnapshotT<Dim>& snapshot, const dem::analysis::StateCycles& cycles);
+  // Every particle and touching contact of `world`, which must be at the
+  // snapshot's moment (a for_contacts snapshot just taken).
+  void write_assembly(const dem::analysis::PlateSnapshotT<Dim>& snapshot, const BasicWorld<Dim>& world);
   // The summaries at the end of the run.
   void write_results(const dem::analysis::CompressionResults& results);
 
   // Every file written so far.
   const std::vector<std::filesystem::path>& files() const { return files_; }
   // The tables written as the run goes, for a checkpoint.
-  CsvFile& samples_file() { return samples_; }
-  CsvFile& contacts_file() { return contacts_; }
+  std::vector<CsvFile*> tables() { return {&samples_, &contacts_, &particles_at_stress_, &contacts_at_stress_}; }
 
  private:
   void write_plate_rows(const dem::analysis::PlateSnapshotT<Dim>& snapshot, const std::string& plate,
@@ -83,11 +97,14 @@ class CompressionCsvT {
   std::string bottom_plate_;
   CsvFile samples_;
   CsvFile contacts_;
+  CsvFile particles_at_stress_;
+  CsvFile contacts_at_stress_;
   std::vector<std::filesystem::path> files_;
 };
 
 // Samples the plates into the analysis and writes what it took now: the
-// row of compression.csv and any snapshots.
+// row of compression.csv and any snapshots, with the whole assembly for
+// the for_contacts ones.
 template <int Dim>
 void record_compression(dem::analysis::CompressionAnalysisT<Dim>& analysis, CompressionCsvT<Dim>& csv,
                         const BasicWorld<Dim>& world, int stage);

@@ -1,8 +1,9 @@
 // The QoS of each topic, chosen on purpose (docs/DDS.md explains why):
 //   command, reply     reliable, keep all, volatile: nothing is lost, nothing replayed
 //   status             reliable, transient-local, keep last 1: a late joiner sees the state now
-//   plate_forces,      reliable, keep last, volatile; the server's writes never block
-//   contact_stats      (max blocking time 0): a stalled subscriber costs samples, not cycles
+//   plate_forces,      reliable, keep last 256, transient-local: a late joiner gets the
+//   contact_stats,     recent history; the server's writes never block (max blocking
+//   region_measures    time 0): a stalled subscriber costs samples, not cycles
 #pragma once
 
 #include "dem/dds/qos.h"

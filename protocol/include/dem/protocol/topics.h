@@ -16,6 +16,8 @@ enum class TopicKind { kCommand, kReply, kStatus, kPlateForces, kContactStats, k
 // writes: service/name_claim.h; hidden from `ros2 topic list` by the leading underscore, as ROS 2
 // hides such names).
 std::string topic_name(std::string_view server, TopicKind kind);
+// "rt/dem/<server>/": what every topic of the server begins with.
+std::string topics_of(std::string_view server);
 
 // A server name is one ROS 2 name token: a letter, then letters, digits and
 // underscores (at most 64 characters), so every topic name is a valid ROS 2 name.

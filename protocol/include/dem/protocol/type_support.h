@@ -3,7 +3,10 @@
 // generates from the same IDL; protocol/src/type_support.cpp converts.
 #pragma once
 
+#include <string>
+
 #include "dem/dds/type_support.h"
+#include "dem/protocol/interface_check.h"
 #include "dem/protocol/messages.h"
 
 namespace dem::protocol::detail {
@@ -27,6 +30,8 @@ struct TypeSupport<T> {
     return protocol::detail::write_sample(writer, value);
   }
   static T from_sample(const void* sample) { return protocol::detail::read_sample<T>(sample); }
+  // Every endpoint declares its type's hash and the interface's version.
+  static std::string user_data() { return protocol::endpoint_user_data(descriptor()->m_typename); }
 };
 
 }  // namespace dem::dds

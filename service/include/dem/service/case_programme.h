@@ -16,6 +16,19 @@
 
 namespace dem::service {
 
+// How far a running stage is toward its end, for the status of a
+// programme (docs/SERVICE.md, "Programmes"): a stage that ends on a wall's
+// stress or settlement, or on a box's deviator strain, is that measure's
+// share of its target (the least of them when several must hold); any
+// other - a stage of fixed length, or one ending on the kinetic energy,
+// the balance or the servos, which give no share - its cycles' share of its
+// length or cap.
+struct StageProgress {
+  double fraction = 0.0;  // 0..1
+  bool measured = false;  // the fraction is a measure's, not the cycles'
+  std::string text;       // "top plate 405 kPa of 900 kPa", or "cycle 1200 of at most 40000"
+};
+
 class CaseProgramme {
  public:
   CaseProgramme() = default;  // no stages
@@ -39,6 +52,8 @@ class CaseProgramme {
   // (dem/programme.h) - the stage ends there, after the row the checkpoint
   // follows.
   bool resumable_at(std::size_t stage, std::uint64_t stage_cycles, const WorldSession& world) const;
+  // `stage` running on `world`, `stage_cycles` into it (stage_progress.cpp).
+  StageProgress progress(std::size_t stage, std::uint64_t stage_cycles, const WorldSession& world) const;
 
  private:
   std::variant<std::vector<StageDefT<2>>, std::vector<StageDefT<3>>> stages_;

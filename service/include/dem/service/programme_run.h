@@ -57,6 +57,11 @@ class ProgrammeRun {
     return output_interval_ - (cycle - stage_start_) % output_interval_;
   }
 
+  // The share of the programme done, the running stage `stage_fraction` of
+  // the way (CaseProgramme::progress): each stage run counts alike, as
+  // their lengths are not known before they end.
+  double progress(double stage_fraction) const;
+
   std::uint64_t done(const WorldSession& world) const { return world.cycle_count() - start_cycle_; }
   // The length or cap of every stage run, added up: what `done` reaches at most.
   std::uint64_t total() const { return total_; }

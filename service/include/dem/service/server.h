@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "dem/dds/participant.h"
+#include "dem/protocol/interface_watch.h"
 #include "dem/service/command_queue.h"
 #include "dem/service/command_receiver.h"
 #include "dem/service/name_claim.h"
@@ -53,6 +54,9 @@ class Server {
   CommandQueue queue_;
   StateCache cache_;
   dds::Participant participant_;
+  // Peers whose interface does not meet the server's, logged when
+  // discovery finds them (docs/DDS.md, "Evolving the wire").
+  protocol::InterfaceWatch interface_watch_;
   NameClaim name_claim_;  // before anything is published under the name
   TelemetryPublisher telemetry_;
   ReplySender replies_;

@@ -125,7 +125,9 @@ class SimulationRunner {
   protocol::Status status() const;
   void announce();
   void publish_status();
-  void publish_telemetry();
+  // `scheduled`: the schedule's sample, from which the next is counted; an
+  // extra one (a stage's end) leaves the schedule's rhythm as it was.
+  void publish_telemetry(bool scheduled = true);
   void refresh_cache(bool always = false);  // the StateCache's get_state, as of now
   void write_checkpoint(std::size_t stage, std::uint64_t stage_cycles);
   // Puts the world back at `good` (a failed run's last good state) and says

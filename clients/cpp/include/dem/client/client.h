@@ -27,6 +27,7 @@
 #include "dem/dds/participant.h"
 #include "dem/dds/topic.h"
 #include "dem/dds/waitset.h"
+#include "dem/protocol/interface_watch.h"
 #include "dem/protocol/messages.h"
 #include "dem/protocol/type_support.h"
 
@@ -41,6 +42,8 @@ struct ConnectOptions {
   std::chrono::milliseconds timeout = 5s;         // to find the server
   std::chrono::milliseconds reply_timeout = 60s;  // default wait for a reply (not for cycle, which waits as asked)
   std::string client_id;                          // empty: "<host>-<pid>-<n>"
+  // Called at connection with each of interface_notes() (a program tells its user).
+  std::function<void(const std::string&)> on_interface_note;
   // Requests sent and not yet answered, at most: send() waits for a reply
   // beyond them. The server keeps its last 256 replies for every client
   // together (protocol/src/qos.cpp), so four clients at this bound never
@@ -52,7 +55,8 @@ struct ConnectOptions {
 class Client {
  public:
   // Finds the server (its status) and makes one round trip with it, so the
-  // first command cannot be lost to discovery; throws NoSuchServer.
+  // first command cannot be lost to discovery; throws NoSuchServer, or
+  // InterfaceMismatch when the server's interface cannot meet this client's.
   explicit Client(ConnectOptions options);
   ~Client();
   Client(const Client&) = delete;
@@ -62,6 +66,11 @@ class Client {
   const std::string& client_id() const { return options_.client_id; }
   const ConnectOptions& options() const { return options_; }
   const dds::Participant& participant() const { return participant_; }
+  // What discovery said of the server's endpoints at connection, when not
+  // all of them are of this client's form (docs/DDS.md, "Evolving the
+  // wire"): an older form the client still reads, or telemetry it cannot
+  // read. Empty when the server is of this client's interface.
+  const std::vector<std::string>& interface_notes() const { return interface_notes_; }
 
   // Addresses a command (server, client id, a new request id, stamp) and
   // sends it; returns its request id. With max_outstanding requests
@@ -123,9 +132,15 @@ class Client {
   void take_replies();
   void take_status();
   void connect();
+  std::string others_seen() const;  // the servers discovery found, for a NoSuchServer
+  // The server's endpoints not of this client's form; throws InterfaceMismatch
+  // for those its commands or replies cannot cross when `fatal`.
+  std::vector<protocol::PeerVerdict> judge_server(bool fatal);
 
   ConnectOptions options_;
   dds::Participant participant_;
+  protocol::InterfaceWatch interface_watch_;
+  std::vector<std::string> interface_notes_;
   dds::Topic<protocol::Command> command_topic_;
   dds::Topic<protocol::Reply> reply_topic_;
   dds::Topic<protocol::Status> status_topic_;

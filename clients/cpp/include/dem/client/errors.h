@@ -15,8 +15,23 @@ class NoSuchServer : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The server was found, but its interface and this client's cannot meet:
+// its commands or replies are of a form the other side cannot read (an
+// older or newer dem_interfaces). what() names the versions and the fields.
+class InterfaceMismatch : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // The server was there but its (complete) reply did not arrive in time.
 class ReplyTimeout : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A file on this machine that a command was to send could not be read
+// (missing, a directory, no permission); what() names it and why.
+class LocalFileError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
