@@ -157,9 +157,19 @@ MemoryLimit memory_limit(const MemoryFacts& facts) {
 
 MemoryLimit memory_limit() { return memory_limit(memory_facts()); }
 
-ResourceLimits limits_with_budget(std::uint64_t max_particles, std::uint64_t memory_bytes) {
+const MemoryLimit& starting_memory_limit() {
   static const MemoryLimit memory = memory_limit();
-  return limits_with_budget(max_particles, memory_bytes, memory);
+  return memory;
+}
+
+std::string out_of_memory_reason() {
+  const MemoryLimit& memory = starting_memory_limit();
+  return "memory ran out (std::bad_alloc; the process may have " + bytes_text(memory.bytes) + ", what " +
+         memory.source + ")";
+}
+
+ResourceLimits limits_with_budget(std::uint64_t max_particles, std::uint64_t memory_bytes) {
+  return limits_with_budget(max_particles, memory_bytes, starting_memory_limit());
 }
 
 ResourceLimits limits_with_budget(std::uint64_t max_particles, std::uint64_t memory_bytes, const MemoryLimit& memory) {

@@ -270,7 +270,7 @@ void SimulationRunner::execute(ReceivedCommand received) {
     // Anything else a command runs into (a full disk, memory) fails that
     // command, not the server.
     reply.status = ReplyStatus::kFailed;
-    reply.message = error.what();
+    reply.message = failure_reason(error);
   }
   // The status topic says what changed: a new state, a new case, a run -
   // before the reply, so who reads the reply finds the status to match.

@@ -77,7 +77,7 @@ void SimulationRunner::step_programme() {
     }
   } catch (const std::exception& error) {
     programme.fail("the engine failed at cycle " + std::to_string(simulation_.world().cycle_count()) + " in " +
-                   stage_label(programme.stage()) + ": " + error.what());
+                   stage_label(programme.stage()) + ": " + failure_reason(error));
   }
   if (programme.outcome() != ProgrammeOutcome::kRunning) end_programme();
 }

@@ -153,7 +153,7 @@ void SimulationRunner::run_chunk() {
     // goes back to its last good state too.
     const std::string at = std::to_string(world.cycle_count());
     const std::string back = go_back_to(active_health_->last_good());
-    fail_run("the engine failed at cycle " + at + ": " + error.what() + "; " + back);
+    fail_run("the engine failed at cycle " + at + ": " + failure_reason(error) + "; " + back);
     drop_lost_world();
     return;
   }
@@ -210,7 +210,7 @@ std::string SimulationRunner::go_back_to(const StateCheckpoint& good) {
     simulation_.drop();
     readout_.reset();
     ++world_generation_;
-    return "the world could not be put back at its last good state (" + std::string(error.what()) +
+    return "the world could not be put back at its last good state (" + failure_reason(error) +
            ") and is let go: load a case or a snapshot";
   }
 }
@@ -223,14 +223,14 @@ void SimulationRunner::drop_lost_world() {
 }
 
 void SimulationRunner::fail_anything_running(const std::exception& error) {
-  spdlog::error("the engine thread ran into: {}", error.what());
+  spdlog::error("the engine thread ran into: {}", failure_reason(error));
   if (active_) {
     const std::string at = std::to_string(simulation_.world().cycle_count());
     const std::string back = go_back_to(active_health_->last_good());
-    fail_run("the run failed at cycle " + at + ": " + error.what() + "; " + back);
+    fail_run("the run failed at cycle " + at + ": " + failure_reason(error) + "; " + back);
     drop_lost_world();
   } else if (programme_ && programme_->outcome() == ProgrammeOutcome::kRunning) {
-    programme_->fail(std::string("the engine thread ran into: ") + error.what());
+    programme_->fail("the engine thread ran into: " + failure_reason(error));
     end_programme();
   }
 }

@@ -70,6 +70,13 @@ struct MemoryFacts {
 MemoryFacts memory_facts();
 MemoryLimit memory_limit(const MemoryFacts& facts);
 MemoryLimit memory_limit();  // this process's, read afresh
+// This process's as it started (read once): what the default budget is half of.
+const MemoryLimit& starting_memory_limit();
+
+// Why an allocation failed, for a reply or a log: memory ran out, and the
+// limit the process started under ("... 631 MiB, what the address-space
+// limit (ulimit -v 1150000) leaves this process").
+std::string out_of_memory_reason();
 
 // The memory limits of the cgroups that /proc/self/cgroup's text names,
 // under a hierarchy mounted at `root` (/sys/fs/cgroup): cgroup v2's
