@@ -73,6 +73,7 @@ HealthMonitorT<Dim>::HealthMonitorT(const BasicWorld<Dim>& world, HealthLimits l
     const EnergyBudget e = world.assembly_measures().energy;
     created_at_start_ = health::created_energy(e);
     held_at_start_ = e.kinetic + e.strain;
+    budget_at_start_ = e;
     referenced_ = true;
   }
   const ParticleViewT<Dim> p = world.particles();
@@ -110,9 +111,11 @@ StepHealth HealthMonitorT<Dim>::assess(const BasicWorld<Dim>& world) {
   if (world.energy_budget() && !referenced_ && health.cycle > 0) {
     created_at_start_ = health::created_energy(e);
     held_at_start_ = e.kinetic + e.strain;
+    budget_at_start_ = e;
     referenced_ = true;
   }
-  const double created = referenced_ ? health::created_energy(e) - created_at_start_ : 0.0;
+  const double injected = referenced_ ? health::injected_energy(e, budget_at_start_) : 0.0;
+  const double created = referenced_ ? health::created_energy(e) - created_at_start_ + injected : 0.0;
   const double in_play =
       std::abs(e.initial_kinetic) + std::abs(e.gravity_work) + std::abs(e.wall_work) + held_at_start_;
   most_in_play_ = std::max(most_in_play_, in_play);
@@ -125,7 +128,10 @@ StepHealth HealthMonitorT<Dim>::assess(const BasicWorld<Dim>& world) {
   if (beyond && (health.cycle >= suspect_cycle_ + 2 || created >= 2.0 * suspect_created_)) {
     health.problem = HealthProblem::kEnergyGrowth;
     health.message = at + health::number(created) +
-                     " J of energy appeared without work done (the most energy in play was " +
+                     " J of energy appeared without work done" +
+                     (injected > 0.0 ? " (" + health::number(injected) + " J put in by dashpots, friction or damping)"
+                                     : std::string()) +
+                     " (the most energy in play was " +
                      health::number(most_in_play_) + " J; the limit is " + health::number(limits_.max_energy_growth) +
                      " times that): the integration is unstable; reduce the time step (time_step.fraction)";
     return health;

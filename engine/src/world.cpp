@@ -300,10 +300,22 @@ DampingDef BasicWorld<Dim>::damping() const {
 }
 
 template <int Dim>
+double BasicWorld<Dim>::critical_time_step_with(const DampingDef& damping) const {
+  check_damping(damping);
+  return estimate_critical_time_step(*state_, ContactParamTable(state_->materials, state_->contact_models, damping),
+                                     damping);
+}
+
+// The dashpots set the critical step: a step given as a fraction of it
+// follows it, a fixed one stays (the health check judges it).
+template <int Dim>
 void BasicWorld<Dim>::set_damping(const DampingDef& damping) {
   check_damping(damping);
+  ContactParamTable params(state_->materials, state_->contact_models, damping);
+  state_->critical_time_step = estimate_critical_time_step(*state_, params, damping);
   state_->damping = damping;
-  state_->params = ContactParamTable(state_->materials, state_->contact_models, damping);
+  state_->params = std::move(params);
+  if (state_->fixed_time_step == 0.0) state_->time_step = state_->time_step_fraction * state_->critical_time_step;
 }
 
 template <int Dim>
@@ -319,6 +331,11 @@ void BasicWorld<Dim>::set_fixed_time_step(double seconds) {
   check_fixed_time_step(seconds);
   state_->fixed_time_step = seconds;
   state_->time_step = seconds;
+}
+
+template <int Dim>
+double BasicWorld<Dim>::fixed_time_step() const {
+  return state_->fixed_time_step;
 }
 
 template <int Dim>

@@ -117,9 +117,21 @@ StepContext current_context(const WorldState<Dim>& state) {
 template <int Dim>
 void find_contacts(WorldState<Dim>& state, const StepContext& step);
 
-// Critical time step 2 sqrt(m/k) over particles and the stiffnesses they can meet.
+// The critical time step of central differences (time_step.cpp): over the
+// particles and the contacts they can make, with the damping given (a
+// stage's, a parameter's) or the state's own. Undamped, 2 sqrt(m/k) for the
+// linear laws and Rayleigh's step for the Hertz laws.
+template <int Dim>
+double estimate_critical_time_step(const WorldState<Dim>& state, const ContactParamTable& params,
+                                   const DampingDef& damping);
 template <int Dim>
 double estimate_critical_time_step(const WorldState<Dim>& state);
+// What a dashpot of damping ratio zeta acting on the last step's velocity
+// leaves of the undamped limit omega dt < 2: sqrt(1 + zeta^2) - zeta.
+double damped_step_factor(double zeta);
+// The critical step of a mass (or moment of inertia) on a spring with a
+// dashpot on the last step's velocity, under local damping `local`.
+double mode_critical_step(double mass, double stiffness, double dashpot, double local);
 
 template <int Dim>
 AssemblyMeasures measure_assembly(const WorldState<Dim>& state);

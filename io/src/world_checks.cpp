@@ -16,8 +16,9 @@ void check_fixed_step(double step, double critical, const CaseSource& source, co
     throw CaseError(describe_problem(
         source, path + ".fixed",
         format_number(step) + " s exceeds the critical time step " + format_number(critical) +
-            " s (2 sqrt(m/k) for linear laws, Rayleigh's for Hertz laws), beyond which central differences are "
-            "unstable and the run blows up; use at most " +
+            " s (2 sqrt(m/k) for linear laws, Rayleigh's for Hertz laws, times sqrt(1 + zeta^2) - zeta for the "
+            "dashpots' damping ratio zeta), beyond which central differences are unstable and the run blows up; "
+            "use at most " +
             format_number(critical) + " s, or a fraction instead"));
   }
 }
@@ -42,10 +43,20 @@ template <int Dim>
 void check_built_world(const BasicWorld<Dim>& world, const std::vector<StageDefT<Dim>>& stages,
                        const CaseSource& source) {
   check_built_world(world, source);
+  // What each stage keeps from the one before: the damping and a fixed step (0: a fraction).
+  DampingDef damping = world.damping();
+  double fixed = world.fixed_time_step();
+  std::string fixed_by = "time_step";
   for (std::size_t i = 0; i < stages.size(); ++i) {
-    if (stages[i].time_step && stages[i].time_step->fixed > 0.0) {
-      check_fixed_step(stages[i].time_step->fixed, world.critical_time_step(), source,
-                       "stage[" + std::to_string(i) + "].time_step");
+    const std::string stage = "stage[" + std::to_string(i) + "]";
+    if (stages[i].time_step) {
+      fixed = stages[i].time_step->fixed;
+      fixed_by = stage + ".time_step";
+    }
+    if (stages[i].damping) damping = *stages[i].damping;
+    if (fixed > 0.0 && (stages[i].damping || stages[i].time_step)) {
+      check_fixed_step(fixed, world.critical_time_step_with(damping), source,
+                       stages[i].time_step ? fixed_by : stage + ".damping: with it, " + fixed_by);
     }
   }
 }

@@ -96,6 +96,7 @@ class HealthMonitorT {
   HealthLimits limits_;
   double created_at_start_ = 0.0;    // J: the budget's excess when the monitor began
   double held_at_start_ = 0.0;       // J: kinetic and strain energy then
+  EnergyBudget budget_at_start_;     // and the dissipating terms then (health::injected_energy)
   double most_in_play_ = 0.0;        // J: the largest energy in play at an assessment
   double round_off_ = 0.0;           // J: the floor below which an excess is round-off
   bool referenced_ = false;          // created_at_start_ and held_at_start_ are taken

@@ -111,7 +111,12 @@ class BasicWorld {
   std::uint64_t cycle_count() const;
   double time() const;                // s
   double time_step() const;           // s
-  double critical_time_step() const;  // s, the estimate 2 sqrt(m/k)
+  // s, the largest step central differences keep stable for one contact:
+  // 2 sqrt(m/k) undamped (Rayleigh's for Hertz laws), less with the
+  // contact dashpots and local damping (time_step.cpp).
+  double critical_time_step() const;
+  // The same were the damping `damping` (a stage's, a parameter's).
+  double critical_time_step_with(const DampingDef& damping) const;
 
   // Particle ids are given once, in definition order (ParticleId{k} is
   // WorldDef::particles[k]), and stay with their particle for the whole
@@ -214,6 +219,7 @@ class BasicWorld {
   void set_time_step_fraction(double fraction);
   // A fixed time step, s (> 0).
   void set_fixed_time_step(double seconds);
+  double fixed_time_step() const;  // s; 0 when the step is a fraction of the critical step
   // Friction coefficient tan(phi) of a material; recomputes the pair table
   // (contact models that set their own friction keep it).
   void set_friction(MaterialId material, double friction);

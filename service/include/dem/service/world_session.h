@@ -55,6 +55,7 @@ class WorldSession {
   virtual std::uint64_t cycle_count() const = 0;
   virtual double time() const = 0;       // s
   virtual double time_step() const = 0;  // s
+  virtual double critical_time_step() const = 0;  // s, with the damping now
   virtual int particle_count() const = 0;
   virtual int wall_count() const = 0;
   virtual std::uint64_t state_hash() const = 0;
