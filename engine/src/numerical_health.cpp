@@ -121,6 +121,7 @@ StepHealth HealthMonitorT<Dim>::assess(const BasicWorld<Dim>& world) {
   most_in_play_ = std::max(most_in_play_, in_play);
   const bool beyond = referenced_ && created > round_off_ && created > limits_.max_energy_growth * most_in_play_;
   if (!beyond) suspect_created_ = 0.0;
+  health.energy_suspect = beyond;
   if (beyond && suspect_created_ == 0.0) {
     suspect_created_ = created;
     suspect_cycle_ = health.cycle;

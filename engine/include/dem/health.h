@@ -66,6 +66,10 @@ struct StepHealth {
   // What is wrong and what to change ("contact 12-40 overlaps 0.83 of the
   // smaller radius ...: reduce the time step or the loading rate").
   std::string message;
+  // Healthy so far, but energy beyond the limit was seen and awaits its
+  // confirmation (HealthLimits::max_energy_growth): not a state to keep as
+  // the last good one.
+  bool energy_suspect = false;
   bool ok() const { return problem == HealthProblem::kNone; }
 };
 
