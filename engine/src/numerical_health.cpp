@@ -129,12 +129,10 @@ StepHealth HealthMonitorT<Dim>::assess(const BasicWorld<Dim>& world) {
   if (beyond && (health.cycle >= suspect_cycle_ + 2 || created >= 2.0 * suspect_created_)) {
     health.problem = HealthProblem::kEnergyGrowth;
     health.message = at + health::number(created) +
-                     " J of energy appeared without work done" +
-                     (injected > 0.0 ? " (" + health::number(injected) + " J put in by dashpots, friction or damping)"
-                                     : std::string()) +
-                     " (the most energy in play was " +
+                     " J of energy appeared without work done (the most energy in play was " +
                      health::number(most_in_play_) + " J; the limit is " + health::number(limits_.max_energy_growth) +
                      " times that): the integration is unstable; reduce the time step (time_step.fraction)";
+    if (injected > 0.0) health.message += "; dashpots, friction or damping put in " + health::number(injected) + " J";
     return health;
   }
   // Validation refuses such a step in a case; a snapshot or a parameter can still bring one.

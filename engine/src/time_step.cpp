@@ -71,8 +71,8 @@ double estimate_critical_time_step(const WorldState<Dim>& state, const ContactPa
       if (!c.defined) continue;
       if (c.law == ContactLaw::kHertzMindlin || c.law == ContactLaw::kHertzLinearTangential) {
         const double zeta = std::max({c.damping_ratio, c.tangential_damping_ratio, c.rolling_damping_ratio});
-        critical = std::min(critical, rayleigh_time_step(state.materials[p.material[i]], r) *
-                                          damped_step_factor(zeta) / std::sqrt(1.0 + std::max(local, local_rotation)));
+        critical = std::min(critical, rayleigh_time_step(state.materials[p.material[i]], r) * damped_step_factor(zeta) /
+                                          std::sqrt(1.0 + std::max(local, local_rotation)));
         continue;
       }
       const bool restitution = c.law == ContactLaw::kLinearRestitution;
@@ -83,9 +83,10 @@ double estimate_critical_time_step(const WorldState<Dim>& state, const ContactPa
       const double rolling = 2.25 * c.normal_stiffness * c.rolling_friction * c.rolling_friction * r * r;
       const double turning = c.shear_stiffness * r * r + rolling;
       const double rolling_dashpot = 2.0 * c.rolling_damping_ratio * std::sqrt(rolling * inertia);
-      critical = std::min({critical, mode_critical_step(m, c.normal_stiffness, normal_dashpot, local),
-                           mode_critical_step(m, c.shear_stiffness, shear_dashpot, local),
-                           mode_critical_step(inertia, turning, shear_dashpot * r * r + rolling_dashpot, local_rotation)});
+      critical =
+          std::min({critical, mode_critical_step(m, c.normal_stiffness, normal_dashpot, local),
+                    mode_critical_step(m, c.shear_stiffness, shear_dashpot, local),
+                    mode_critical_step(inertia, turning, shear_dashpot * r * r + rolling_dashpot, local_rotation)});
     }
   }
   return critical;

@@ -116,8 +116,9 @@ MemoryFacts memory_facts() {
   MemoryFacts facts;
   const long pages = sysconf(_SC_PHYS_PAGES);
   const long page_size = sysconf(_SC_PAGESIZE);
-  facts.machine_bytes =
-      pages > 0 && page_size > 0 ? static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page_size) : 1ull << 30;
+  facts.machine_bytes = pages > 0 && page_size > 0
+                            ? static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page_size)
+                            : 1ull << 30;
   std::ifstream cgroup("/proc/self/cgroup");
   std::stringstream text;
   text << cgroup.rdbuf();
@@ -177,8 +178,8 @@ ResourceLimits limits_with_budget(std::uint64_t max_particles, std::uint64_t mem
   ResourceLimits limits;
   limits.max_threads = cores;
   limits.memory_bytes = memory_bytes > 0 ? memory_bytes : memory.bytes / 2;
-  limits.memory_source = memory_bytes > 0 ? "as set (--memory-budget)"
-                                          : "half of the " + bytes_text(memory.bytes) + " " + memory.source;
+  limits.memory_source =
+      memory_bytes > 0 ? "as set (--memory-budget)" : "half of the " + bytes_text(memory.bytes) + " " + memory.source;
   const std::uint64_t by_memory = std::max<std::uint64_t>(1, limits.memory_bytes / kBytesPerParticle);
   limits.max_particles = std::min({max_particles > 0 ? max_particles : by_memory, by_memory, kMaxIds});
   limits.max_packing_cells = saturating_multiply(limits.max_particles, kCellsPerParticle);

@@ -99,8 +99,8 @@ TEST(TimeStep, CentredGlobalDampingLeavesTheLimitWhereItWas) {
   EXPECT_NEAR(world.critical_time_step(), closed_form_step(0.0), 1e-12 * closed_form_step(0.0));
   const double below = amplitude_ratio(damping, 0.98, 400);
   const double above = amplitude_ratio(damping, 1.02, 400);
-  std::printf("global damping, zeta 0.25, 400 steps: amplitude x %.3g at 0.98 of omega dt = 2, x %.3g at 1.02\n",
-              below, above);
+  std::printf("global damping, zeta 0.25, 400 steps: amplitude x %.3g at 0.98 of omega dt = 2, x %.3g at 1.02\n", below,
+              above);
   EXPECT_LT(below, 1.0);
   EXPECT_GT(above, 1.0);
 }

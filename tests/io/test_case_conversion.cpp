@@ -10,6 +10,7 @@
 #include <variant>
 
 #include "dem/io/case_conversion.h"
+#include "dem/io/world_checks.h"
 #include "dem/programme.h"
 #include "dem/world.h"
 #include "io_test_support.h"
@@ -743,9 +744,13 @@ TEST_F(EllipsoidConversion, EllipsoidsComeToRestOnTheFaces) {
   EXPECT_NEAR(floor, weight, 0.02 * weight);
 }
 
+// Built, and its steps checked as dem_run and dem_server check them (a
+// fixed step within the critical step under the damping in force).
 template <int Dim>
-int built_particles(const CaseDefinitionT<Dim>& def) {
-  return BasicWorld<Dim>(def.world).particle_count();
+int built_particles(const CaseDefinitionT<Dim>& def, const CaseSource& source) {
+  const BasicWorld<Dim> world(def.world);
+  check_built_world(world, def.stages, source);
+  return world.particle_count();
 }
 
 // Every case the repository ships converts, and the engine accepts it.
@@ -755,7 +760,7 @@ TEST(ShippedCases, ConvertAndBuild) {
     if (!entry.path().string().ends_with(".case.txtpb")) continue;
     SCOPED_TRACE(entry.path().string());
     const LoadedCase loaded = load_case_file(entry.path());
-    std::visit([](const auto& def) { EXPECT_GT(built_particles(def), 0); },
+    std::visit([&](const auto& def) { EXPECT_GT(built_particles(def, loaded.source), 0); },
                convert_any_case(loaded.message, loaded.source));
     ++count;
   }

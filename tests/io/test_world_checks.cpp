@@ -70,7 +70,8 @@ TEST(WorldChecks, AStagesDampingThatLeavesTheFixedStepAboveTheCriticalStepIsRefu
     EXPECT_THAT(error.what(), HasSubstr("exceeds the critical time step"));
   }
   // A step of the stage's own that fits passes.
-  c.mutable_stage(0)->mutable_time_step()->set_fixed(0.5 * world.critical_time_step_with(*definition.stages[0].damping));
+  c.mutable_stage(0)->mutable_time_step()->set_fixed(0.5 *
+                                                     world.critical_time_step_with(*definition.stages[0].damping));
   definition = convert_case(c);
   EXPECT_NO_THROW(check_built_world(World(definition.world), definition.stages));
 }

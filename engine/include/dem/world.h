@@ -109,8 +109,8 @@ class BasicWorld {
   void cycle(std::uint64_t n = 1);
 
   std::uint64_t cycle_count() const;
-  double time() const;                // s
-  double time_step() const;           // s
+  double time() const;       // s
+  double time_step() const;  // s
   // s, the largest step central differences keep stable for one contact:
   // 2 sqrt(m/k) undamped (Rayleigh's for Hertz laws), less with the
   // contact dashpots and local damping (time_step.cpp).

@@ -53,8 +53,8 @@ class WorldSession {
   virtual std::uint8_t dimension() const = 0;
   virtual WorldView view() const = 0;
   virtual std::uint64_t cycle_count() const = 0;
-  virtual double time() const = 0;       // s
-  virtual double time_step() const = 0;  // s
+  virtual double time() const = 0;                // s
+  virtual double time_step() const = 0;           // s
   virtual double critical_time_step() const = 0;  // s, with the damping now
   virtual int particle_count() const = 0;
   virtual int wall_count() const = 0;
