@@ -62,6 +62,15 @@ double amplitude_ratio(const DampingDef& damping, double fraction, int cycles) {
   return std::abs(y - rest) / offset;
 }
 
+// 0.98 of the limit settles; 1.02 of it grows more than `growth` times in 400 steps.
+void expect_stable_below_and_growing_above(const DampingDef& damping, const char* what, double growth) {
+  const double below = amplitude_ratio(damping, 0.98, 400);
+  const double above = amplitude_ratio(damping, 1.02, 400);
+  std::printf("%s, 400 steps: amplitude x %.3g at 0.98 of the limit, x %.3g at 1.02\n", what, below, above);
+  EXPECT_LT(below, 1.0);
+  EXPECT_GT(above, growth);
+}
+
 TEST(TimeStep, TheCriticalStepOfOneDampedContactIsTheClosedForm) {
   for (const double beta : {0.0, 1e-3, 5e-3, 2e-2}) {
     DampingDef damping;
@@ -82,11 +91,7 @@ TEST(TimeStep, TheCriticalStepOfOneDampedContactIsTheClosedForm) {
 TEST(TimeStep, OneDampedContactIsStableBelowTheDampedLimitAndGrowsAbove) {
   DampingDef damping;
   damping.contact_beta = 2e-2;
-  const double below = amplitude_ratio(damping, 0.98, 400);
-  const double above = amplitude_ratio(damping, 1.02, 400);
-  std::printf("zeta 0.36, 400 steps: amplitude x %.3g at 0.98 of the damped limit, x %.3g at 1.02\n", below, above);
-  EXPECT_LT(below, 1.0);
-  EXPECT_GT(above, 100.0);
+  expect_stable_below_and_growing_above(damping, "contact damping, zeta 0.36", 100.0);
 }
 
 // Global damping (eq. 34) taken at the middle of the step (eqs. 35-36)
@@ -97,12 +102,7 @@ TEST(TimeStep, CentredGlobalDampingLeavesTheLimitWhereItWas) {
   damping.global_alpha = 0.5 * std::sqrt(kNormalStiffness / kMass);  // C = alpha m: zeta 0.25
   const World world(disc_on_floor(damping, 0.0));
   EXPECT_NEAR(world.critical_time_step(), closed_form_step(0.0), 1e-12 * closed_form_step(0.0));
-  const double below = amplitude_ratio(damping, 0.98, 400);
-  const double above = amplitude_ratio(damping, 1.02, 400);
-  std::printf("global damping, zeta 0.25, 400 steps: amplitude x %.3g at 0.98 of omega dt = 2, x %.3g at 1.02\n", below,
-              above);
-  EXPECT_LT(below, 1.0);
-  EXPECT_GT(above, 1.0);
+  expect_stable_below_and_growing_above(damping, "global damping, zeta 0.25 (limit omega dt = 2)", 100.0);
 }
 
 // Local damping (Miyata eq. 33) stiffens the spring by 1 + alpha while it
@@ -113,11 +113,7 @@ TEST(TimeStep, LocalDampingShortensTheLimitBySqrtOnePlusAlpha) {
   const World world(disc_on_floor(damping, 0.0));
   const double expected = closed_form_step(0.0) / std::sqrt(1.3);
   EXPECT_NEAR(world.critical_time_step(), expected, 1e-12 * expected);
-  const double below = amplitude_ratio(damping, 0.98, 400);
-  const double above = amplitude_ratio(damping, 1.02, 400);
-  std::printf("local damping 0.3, 400 steps: amplitude x %.3g at 0.98 of the limit, x %.3g at 1.02\n", below, above);
-  EXPECT_LT(below, 1.0);
-  EXPECT_GT(above, 10.0);
+  expect_stable_below_and_growing_above(damping, "local damping 0.3", 100.0);
 }
 
 // The factor alone: 1 undamped, 2 (sqrt(1 + zeta^2) - zeta) -> 1/zeta for heavy damping.

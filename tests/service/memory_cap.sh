@@ -10,24 +10,11 @@ set -uo pipefail
 server_program=$1 demctl=$2 data=$3 cases=$4 out=$5 domain=$6
 cap_kb=1150000
 rm -rf "$out" && mkdir -p "$out"
-failures=0
 server=""
 cleanup() { [ -n "$server" ] && kill -9 "$server" 2>/dev/null; }
 trap cleanup EXIT
 
-fail() {
-  echo "FAIL: $*"
-  sed 's/^/  | /' "$out/last.out" "$out/last.err"
-  failures=$((failures + 1))
-}
-expect() {
-  local want=$1 what=$2
-  shift 2
-  "$@" >"$out/last.out" 2>"$out/last.err"
-  local got=$?
-  if [ "$got" -ne "$want" ]; then fail "$what: exit code $got, expected $want"; else echo "ok: $what"; fi
-}
-said() { grep -qF -- "$1" "$out/last.out" "$out/last.err" || fail "the output lacks: $1"; }
+source "$(dirname "${BASH_SOURCE[0]}")/expect.sh"
 # start NAME [OPTIONS...]: a dem_server under the cap, its pid in $server.
 start() {
   local name=$1
@@ -51,6 +38,19 @@ stop() {
   server=""
 }
 vm_peak() { grep -E '^VmPeak' "/proc/$server/status" | awk '{print $2}'; }
+# ran_out: the last reply said memory ran out, naming the cap, and the server lives on.
+ran_out() {
+  said "memory ran out (std::bad_alloc"
+  said "ulimit -v $cap_kb"
+  echo "  reply: $(cat "$out/last.err")"
+  kill -0 "$server" 2>/dev/null || fail "the server ended"
+}
+# answers STATE: get_state answers, the world in STATE at cycle 0.
+answers() {
+  expect 0 "get_state answers" "${d[@]}" status --json
+  said "\"state_name\":\"$1\""
+  said '"cycle":0,'
+}
 
 # The budget is half of what the cap leaves (about 550 MB: 225,000 particles
 # at 2.5 kB): the lattice of twice as many layers is refused at load, naming the cap.
@@ -70,34 +70,25 @@ expect 0 "the lattice loads under the cap" "${d[@]}" load "$data/memory_cap.case
 echo "  address space at its peak after the load: $(vm_peak) kB of $cap_kb"
 expect 4 "its first cycle fails" "${d[@]}" cycle --wait 1
 said "failed: the run failed at cycle"
-said "memory ran out (std::bad_alloc"
-said "ulimit -v $cap_kb"
 said "the world is back at the last good state, cycle 0"
-echo "  reply: $(cat "$out/last.err")"
-kill -0 "$server" 2>/dev/null || fail "the server ended"
-expect 0 "get_state answers" "${d[@]}" status --json
-said '"state_name":"error"'
-said '"cycle":0,'
-expect 0 "get_state answers again" "${d[@]}" status
+ran_out
+answers error
+expect 0 "its status says why" "${d[@]}" status
 said "memory ran out"
 # Saving it needs its bytes beside the world: under the cap that may run out too, a failed reply then.
 "${d[@]}" snapshot save "$out/last_good.snapshot" >"$out/last.out" 2>"$out/last.err"
-case $? in
+code=$?
+case $code in
   0) echo "ok: the last good state is saved" ;;
-  4) said "memory ran out" && echo "ok: saving the last good state ran out of memory: a failed reply" ;;
-  *) fail "snapshot save: exit code $?" ;;
+  4) echo "ok: saving the last good state ran out of memory: a failed reply" && ran_out ;;
+  *) fail "snapshot save: exit code $code" ;;
 esac
-kill -0 "$server" 2>/dev/null || fail "the server ended"
 # A programme of it: its start (a copy of the world, the last good state)
 # already runs out, a failed reply with nothing started.
 expect 0 "the lattice loads again" "${d[@]}" load "$data/memory_cap.case.txtpb"
 expect 4 "its programme fails" "${d[@]}" run-programme --wait
-said "memory ran out (std::bad_alloc"
-echo "  reply: $(cat "$out/last.err")"
-kill -0 "$server" 2>/dev/null || fail "the server ended"
-expect 0 "get_state answers" "${d[@]}" status --json
-said '"state_name":"loaded"'
-said '"cycle":0,'
+ran_out
+answers loaded
 expect 0 "a small case loads" "${d[@]}" load "$cases/ball/nine_disc_damped.case.txtpb"
 expect 0 "and runs" "${d[@]}" cycle --wait 100
 said "ran 100 cycles to cycle 100"
