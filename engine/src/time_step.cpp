@@ -54,8 +54,12 @@ double mode_critical_step(double mass, double stiffness, double dashpot, double 
 // covers that.
 // Linear laws: omega^2 = k_n / m, k_s / m, (k_s R^2 + k_roll) / I (Cundall &
 // Strack, Motion: 2 sqrt(m/k) undamped). Hertz laws: the Rayleigh time step
-// of the particle (Randall 4.33), shortened by the same factor for the
-// damping ratio of their dashpots.
+// of the particle (Randall 4.33), as it is: Randall takes it as the step
+// itself, with dashpots at 10-20 % of critical (his hopper and pluvial
+// runs). It is a wave's crossing time, not a contact's limit: a Hertz
+// contact stiffens with its overlap (k_n = 2 E* a), and at the overlaps of
+// such runs its own limit lies above the Rayleigh step - which a dashpot
+// shortens, and a step set from the Rayleigh step does not follow.
 template <int Dim>
 double estimate_critical_time_step(const WorldState<Dim>& state, const ContactParamTable& params,
                                    const DampingDef& damping) {
@@ -70,9 +74,7 @@ double estimate_critical_time_step(const WorldState<Dim>& state, const ContactPa
       const ContactParams& c = params(p.material[i], other);
       if (!c.defined) continue;
       if (c.law == ContactLaw::kHertzMindlin || c.law == ContactLaw::kHertzLinearTangential) {
-        const double zeta = std::max({c.damping_ratio, c.tangential_damping_ratio, c.rolling_damping_ratio});
-        critical = std::min(critical, rayleigh_time_step(state.materials[p.material[i]], r) * damped_step_factor(zeta) /
-                                          std::sqrt(1.0 + std::max(local, local_rotation)));
+        critical = std::min(critical, rayleigh_time_step(state.materials[p.material[i]], r));
         continue;
       }
       const bool restitution = c.law == ContactLaw::kLinearRestitution;
@@ -97,9 +99,41 @@ double estimate_critical_time_step(const WorldState<Dim>& state) {
   return estimate_critical_time_step(state, state.params, state.damping);
 }
 
+// Undamped, as Cundall & Strack (Motion) give it: 2 sqrt(m/k) for the
+// stiffest contact a particle's material can make, translation (m, k_n)
+// and rotation (I, k_s R^2); Hertz laws: the Rayleigh time step (Randall
+// 4.33). A time step fraction is of this, so the steps of cases given as
+// fractions stay what they were before the damping counted.
+template <int Dim>
+double estimate_undamped_critical_time_step(const WorldState<Dim>& state) {
+  const Particles<Dim>& p = state.particles;
+  const auto materials = static_cast<std::int32_t>(state.materials.size());
+  double critical = kInfinity;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    double kn = 0.0, ks = 0.0;
+    for (std::int32_t other = 0; other < materials; ++other) {
+      const ContactParams& c = state.params(p.material[i], other);
+      if (!c.defined) continue;
+      if (c.law == ContactLaw::kHertzMindlin || c.law == ContactLaw::kHertzLinearTangential) {
+        critical = std::min(critical, rayleigh_time_step(state.materials[p.material[i]], p.radius[i]));
+        continue;
+      }
+      kn = std::max(kn, c.normal_stiffness);
+      ks = std::max(ks, c.shear_stiffness);
+    }
+    if (kn > 0.0) critical = std::min(critical, 2.0 * std::sqrt(p.mass[i] / kn));
+    if (ks > 0.0) {
+      critical = std::min(critical, 2.0 * std::sqrt(p.inertia[i] / (ks * p.radius[i] * p.radius[i])));
+    }
+  }
+  return critical;
+}
+
 template double estimate_critical_time_step(const WorldState<2>&, const ContactParamTable&, const DampingDef&);
 template double estimate_critical_time_step(const WorldState<3>&, const ContactParamTable&, const DampingDef&);
 template double estimate_critical_time_step(const WorldState<2>&);
 template double estimate_critical_time_step(const WorldState<3>&);
+template double estimate_undamped_critical_time_step(const WorldState<2>&);
+template double estimate_undamped_critical_time_step(const WorldState<3>&);
 
 }  // namespace dem

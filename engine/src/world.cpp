@@ -300,14 +300,19 @@ DampingDef BasicWorld<Dim>::damping() const {
 }
 
 template <int Dim>
+double BasicWorld<Dim>::undamped_critical_time_step() const {
+  return state_->undamped_critical_time_step;
+}
+
+template <int Dim>
 double BasicWorld<Dim>::critical_time_step_with(const DampingDef& damping) const {
   check_damping(damping);
   return estimate_critical_time_step(*state_, ContactParamTable(state_->materials, state_->contact_models, damping),
                                      damping);
 }
 
-// The dashpots set the critical step: a step given as a fraction of it
-// follows it, a fixed one stays (the health check judges it).
+// The dashpots set the critical step; the step stays (a fraction is of the
+// undamped critical step), and the health check judges it.
 template <int Dim>
 void BasicWorld<Dim>::set_damping(const DampingDef& damping) {
   check_damping(damping);
@@ -315,7 +320,6 @@ void BasicWorld<Dim>::set_damping(const DampingDef& damping) {
   state_->critical_time_step = estimate_critical_time_step(*state_, params, damping);
   state_->damping = damping;
   state_->params = std::move(params);
-  if (state_->fixed_time_step == 0.0) state_->time_step = state_->time_step_fraction * state_->critical_time_step;
 }
 
 template <int Dim>
@@ -323,7 +327,7 @@ void BasicWorld<Dim>::set_time_step_fraction(double fraction) {
   check_time_step_fraction(fraction);
   state_->time_step_fraction = fraction;
   state_->fixed_time_step = 0.0;
-  state_->time_step = fraction * state_->critical_time_step;
+  state_->time_step = fraction * state_->undamped_critical_time_step;
 }
 
 template <int Dim>

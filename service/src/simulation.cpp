@@ -219,9 +219,8 @@ std::string Simulation::set_wall_servo(const protocol::WallServoArgs& args) {
 
 namespace {
 
-// Damping moves the critical step (the dashpots shorten it) and a step
-// given as a fraction of it; a fixed step it would leave above the new
-// critical step is refused, and the damping stays as it was.
+// Damping moves the critical step (the dashpots shorten it); a damping
+// that would leave the step above it is refused, and stays as it was.
 std::string set_damping_keeping_a_stable_step(WorldSession& w, const DampingDef& damping, const std::string& name) {
   const DampingDef before = w.damping();
   w.set_damping(damping);
@@ -230,7 +229,7 @@ std::string set_damping_keeping_a_stable_step(WorldSession& w, const DampingDef&
     w.set_damping(before);
     throw CommandError(ReplyStatus::kBadRequest,
                        name + ": with it the critical step would be " + format_value(critical) +
-                           " s, below the fixed time step " + format_value(w.time_step()) +
+                           " s, below the time step " + format_value(w.time_step()) +
                            " s: central differences would be unstable; set a smaller time_step_fraction first");
   }
   return "; time step " + format_value(w.time_step()) + " s, critical step " + format_value(critical) + " s";
@@ -260,9 +259,15 @@ std::string Simulation::set_parameter(const protocol::ParameterArgs& args) {
     }
     if (name == "time_step_fraction") {
       require(args.value > 0.0 && args.value <= 1.0, "time_step_fraction must be in (0, 1]");
+      const double step = args.value * w.undamped_critical_time_step();
+      require(step <= w.critical_time_step() * (1.0 + 1e-9),
+              "time_step_fraction: " + format_value(args.value) + " gives " + format_value(step) +
+                  " s, above the critical step " + format_value(w.critical_time_step()) +
+                  " s with the damping: central differences would be unstable; use at most " +
+                  format_value(w.critical_time_step() / w.undamped_critical_time_step()));
       w.set_time_step_fraction(args.value);
       return "time step now " + format_value(w.time_step()) + " s (" + format_value(args.value) +
-             " of the critical step)";
+             " of the undamped critical step; the critical step is " + format_value(w.critical_time_step()) + " s)";
     }
     if (name == "friction") {
       require(args.value >= 0.0, "friction must be >= 0");

@@ -51,6 +51,7 @@ class WorldSessionT final : public WorldSession {
   double time() const override { return world_.time(); }
   double time_step() const override { return world_.time_step(); }
   double critical_time_step() const override { return world_.critical_time_step(); }
+  double undamped_critical_time_step() const override { return world_.undamped_critical_time_step(); }
   int particle_count() const override { return world_.particle_count(); }
   int wall_count() const override { return world_.wall_count(); }
   std::uint64_t state_hash() const override { return world_.state_hash(); }

@@ -123,20 +123,21 @@ TEST(TimeStep, TheDampedFactorIsOneUndampedAndFallsAsOneOverTwoZeta) {
   EXPECT_NEAR(damped_step_factor(100.0) * 200.0, 1.0, 1e-4);
 }
 
-// A stage's or a parameter's damping moves the critical step, and a step
-// given as a fraction of it with it.
-TEST(TimeStep, NewDampingMovesTheCriticalStepAndAFractionOfIt) {
+// A stage's or a parameter's damping moves the critical step; the step
+// stays, a fraction being of the undamped critical step.
+TEST(TimeStep, NewDampingMovesTheCriticalStepNotTheStep) {
   WorldDef def = disc_on_floor({}, 0.0);
   def.time_step_fraction = 0.5;
   World world(def);
+  EXPECT_NEAR(world.undamped_critical_time_step(), closed_form_step(0.0), 1e-15);
   DampingDef damping;
   damping.contact_beta = 2e-2;
   world.set_damping(damping);
   EXPECT_NEAR(world.critical_time_step(), closed_form_step(2e-2), 1e-12);
-  EXPECT_NEAR(world.time_step(), 0.5 * closed_form_step(2e-2), 1e-12);
-  world.set_fixed_time_step(0.9 * closed_form_step(0.0));
-  world.set_damping({});
-  EXPECT_DOUBLE_EQ(world.time_step(), 0.9 * closed_form_step(0.0));
+  EXPECT_NEAR(world.undamped_critical_time_step(), closed_form_step(0.0), 1e-15);
+  EXPECT_NEAR(world.time_step(), 0.5 * closed_form_step(0.0), 1e-15);
+  world.set_time_step_fraction(0.5);
+  EXPECT_NEAR(world.time_step(), 0.5 * closed_form_step(0.0), 1e-15);
 }
 
 }  // namespace

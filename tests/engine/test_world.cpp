@@ -105,7 +105,9 @@ TEST(World, TimeStepIsFractionOfCriticalStep) {
   const double zeta = def.damping.contact_beta * omega / 2.0;
   const double rotational = 2.0 / omega * (std::sqrt(1.0 + zeta * zeta) - zeta);
   EXPECT_NEAR(world.critical_time_step(), rotational, 1e-14 * rotational);
-  EXPECT_NEAR(world.time_step(), 0.2 * rotational, 1e-14 * rotational);
+  // A fraction is of the undamped step, 2 sqrt(I / (k_s R^2)).
+  EXPECT_DOUBLE_EQ(world.undamped_critical_time_step(), 2.0 / omega);
+  EXPECT_DOUBLE_EQ(world.time_step(), 0.2 * 2.0 / omega);
 }
 
 TEST(World, WallMeasuresSeeTheWeightOnTheFloor) {

@@ -291,7 +291,7 @@ TEST_F(CaseConversion, AStageSetsTheTimeStepAndFrictionFromThenOn) {
   StageDef third = def.stages[2];
   third.cycles = 1;
   run_stage(world, third);
-  EXPECT_EQ(world.time_step(), 0.05 * world.critical_time_step());
+  EXPECT_EQ(world.time_step(), 0.05 * world.undamped_critical_time_step());
   EXPECT_EQ(world.materials()[1].friction, 0.25);
 }
 

@@ -226,14 +226,22 @@ TEST(Commands, SetParameterChangesTheSimulation) {
     ADD_FAILURE() << "a damping that leaves the step unstable was taken";
   } catch (const client::ServerError& error) {
     EXPECT_EQ(error.reply().status, protocol::ReplyStatus::kBadRequest) << error.what();
-    EXPECT_NE(error.reply().message.find("below the fixed time step 0.01 s"), std::string::npos) << error.what();
+    EXPECT_NE(error.reply().message.find("below the time step 0.01 s"), std::string::npos) << error.what();
   }
   EXPECT_EQ(s.client.set_parameter("global_damping", 4).message, "global_damping set to 4 1/s" + steps);
   EXPECT_EQ(s.client.set_parameter("friction", 0.25, "disc").message, "friction of disc set to 0.25");
   EXPECT_EQ(s.client.set_gravity({0.0, -9.81, 0.0}).message, "gravity set to (0, -9.81) m/s^2");
+  // A fraction is of the undamped step, 0.1075 s; 0.9 of it is above the damped one.
+  try {
+    s.client.set_parameter("time_step_fraction", 0.9);
+    ADD_FAILURE() << "a fraction above the damped critical step was taken";
+  } catch (const client::ServerError& error) {
+    EXPECT_NE(error.reply().message.find("above the critical step " + shown.str() + " s"), std::string::npos)
+        << error.what();
+  }
   const protocol::Reply step = s.client.set_parameter("time_step_fraction", 0.05);
-  EXPECT_NE(step.message.find("0.05 of the critical step"), std::string::npos) << step.message;
-  EXPECT_NEAR(step.state.time_step, 0.05 * critical, 1e-12);
+  EXPECT_NE(step.message.find("0.05 of the undamped critical step"), std::string::npos) << step.message;
+  EXPECT_NEAR(step.state.time_step, 0.05 * 0.01 / 0.093, 2e-4);  // the case's fixed 0.01 was 0.093 of the undamped step
   // Gravity acts: the discs fall.
   s.client.cycle(100);
   EXPECT_GT(s.client.get_state().stats.kinetic_energy, 0.0);

@@ -117,6 +117,11 @@ class BasicWorld {
   double critical_time_step() const;
   // The same were the damping `damping` (a stage's, a parameter's).
   double critical_time_step_with(const DampingDef& damping) const;
+  // s, 2 sqrt(m/k) (Rayleigh's step for Hertz laws) without the damping:
+  // what a time step fraction is a fraction of; the fraction covers the
+  // damping and a particle's several contacts, and validation refuses one
+  // whose step is above the critical step.
+  double undamped_critical_time_step() const;
 
   // Particle ids are given once, in definition order (ParticleId{k} is
   // WorldDef::particles[k]), and stay with their particle for the whole
@@ -215,7 +220,7 @@ class BasicWorld {
   // Everything needed to continue this run exactly (see snapshot.h).
   Snapshot snapshot() const;
 
-  // The time step as a fraction of the critical step (0, 1]; recomputes the step.
+  // The time step as a fraction (0, 1] of the undamped critical step; recomputes the step.
   void set_time_step_fraction(double fraction);
   // A fixed time step, s (> 0).
   void set_fixed_time_step(double seconds);

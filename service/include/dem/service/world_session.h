@@ -53,9 +53,10 @@ class WorldSession {
   virtual std::uint8_t dimension() const = 0;
   virtual WorldView view() const = 0;
   virtual std::uint64_t cycle_count() const = 0;
-  virtual double time() const = 0;                // s
-  virtual double time_step() const = 0;           // s
-  virtual double critical_time_step() const = 0;  // s, with the damping now
+  virtual double time() const = 0;                         // s
+  virtual double time_step() const = 0;                    // s
+  virtual double critical_time_step() const = 0;           // s, with the damping now
+  virtual double undamped_critical_time_step() const = 0;  // s, what a time step fraction is of
   virtual int particle_count() const = 0;
   virtual int wall_count() const = 0;
   virtual std::uint64_t state_hash() const = 0;
