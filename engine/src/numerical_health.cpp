@@ -73,6 +73,7 @@ HealthMonitorT<Dim>::HealthMonitorT(const BasicWorld<Dim>& world, HealthLimits l
     const EnergyBudget e = world.assembly_measures().energy;
     created_at_start_ = health::created_energy(e);
     held_at_start_ = e.kinetic + e.strain;
+    budget_at_start_ = e;
     referenced_ = true;
   }
   const ParticleViewT<Dim> p = world.particles();
@@ -110,15 +111,18 @@ StepHealth HealthMonitorT<Dim>::assess(const BasicWorld<Dim>& world) {
   if (world.energy_budget() && !referenced_ && health.cycle > 0) {
     created_at_start_ = health::created_energy(e);
     held_at_start_ = e.kinetic + e.strain;
+    budget_at_start_ = e;
     referenced_ = true;
   }
-  const double created = referenced_ ? health::created_energy(e) - created_at_start_ : 0.0;
+  const double injected = referenced_ ? health::injected_energy(e, budget_at_start_) : 0.0;
+  const double created = referenced_ ? health::created_energy(e) - created_at_start_ + injected : 0.0;
   const double in_play =
       std::abs(e.initial_kinetic) + std::abs(e.gravity_work) + std::abs(e.wall_work) + std::abs(e.continuum_work) +
       held_at_start_;
   most_in_play_ = std::max(most_in_play_, in_play);
   const bool beyond = referenced_ && created > round_off_ && created > limits_.max_energy_growth * most_in_play_;
   if (!beyond) suspect_created_ = 0.0;
+  health.energy_suspect = beyond;
   if (beyond && suspect_created_ == 0.0) {
     suspect_created_ = created;
     suspect_cycle_ = health.cycle;
@@ -129,6 +133,7 @@ StepHealth HealthMonitorT<Dim>::assess(const BasicWorld<Dim>& world) {
                      " J of energy appeared without work done (the most energy in play was " +
                      health::number(most_in_play_) + " J; the limit is " + health::number(limits_.max_energy_growth) +
                      " times that): the integration is unstable; reduce the time step (time_step.fraction)";
+    if (injected > 0.0) health.message += "; dashpots, friction or damping put in " + health::number(injected) + " J";
     return health;
   }
   // Validation refuses such a step in a case; a snapshot or a parameter can still bring one.

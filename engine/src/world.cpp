@@ -308,10 +308,26 @@ DampingDef BasicWorld<Dim>::damping() const {
 }
 
 template <int Dim>
+double BasicWorld<Dim>::undamped_critical_time_step() const {
+  return state_->undamped_critical_time_step;
+}
+
+template <int Dim>
+double BasicWorld<Dim>::critical_time_step_with(const DampingDef& damping) const {
+  check_damping(damping);
+  return estimate_critical_time_step(*state_, ContactParamTable(state_->materials, state_->contact_models, damping),
+                                     damping);
+}
+
+// The dashpots set the critical step; the step stays (a fraction is of the
+// undamped critical step), and the health check judges it.
+template <int Dim>
 void BasicWorld<Dim>::set_damping(const DampingDef& damping) {
   check_damping(damping);
+  ContactParamTable params(state_->materials, state_->contact_models, damping);
+  state_->critical_time_step = estimate_critical_time_step(*state_, params, damping);
   state_->damping = damping;
-  state_->params = ContactParamTable(state_->materials, state_->contact_models, damping);
+  state_->params = std::move(params);
 }
 
 template <int Dim>
@@ -319,7 +335,7 @@ void BasicWorld<Dim>::set_time_step_fraction(double fraction) {
   check_time_step_fraction(fraction);
   state_->time_step_fraction = fraction;
   state_->fixed_time_step = 0.0;
-  state_->time_step = fraction * state_->critical_time_step;
+  state_->time_step = fraction * state_->undamped_critical_time_step;
 }
 
 template <int Dim>
@@ -327,6 +343,11 @@ void BasicWorld<Dim>::set_fixed_time_step(double seconds) {
   check_fixed_time_step(seconds);
   state_->fixed_time_step = seconds;
   state_->time_step = seconds;
+}
+
+template <int Dim>
+double BasicWorld<Dim>::fixed_time_step() const {
+  return state_->fixed_time_step;
 }
 
 template <int Dim>

@@ -163,9 +163,11 @@ void build_world(WorldState<Dim>& s, const WorldDefT<Dim>& def) {
   s.contact_tolerance = def.contact_tolerance > 0.0 ? def.contact_tolerance : 0.1 * radius_sum / n;
   check_periodic_reach(s.periodic, *std::max_element(p.radius.begin(), p.radius.end()), s.contact_tolerance);
   s.critical_time_step = estimate_critical_time_step(s);
+  s.undamped_critical_time_step = estimate_undamped_critical_time_step(s);
   s.time_step_fraction = def.time_step_fraction;
   s.fixed_time_step = def.fixed_time_step;
-  s.time_step = def.fixed_time_step > 0.0 ? def.fixed_time_step : def.time_step_fraction * s.critical_time_step;
+  s.time_step =
+      def.fixed_time_step > 0.0 ? def.fixed_time_step : def.time_step_fraction * s.undamped_critical_time_step;
   check(std::isfinite(s.time_step) && s.time_step > 0.0, "world: cannot determine a time step");
 }
 

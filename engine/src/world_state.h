@@ -46,7 +46,10 @@ struct WorldState {
   PlanarParticle planar_particle = PlanarParticle::kDisc;
   double depth = 1.0;  // out-of-plane depth that turns 2D wall forces into stresses (3D: unused)
   double time_step = 0.0;
-  double critical_time_step = 0.0;
+  double critical_time_step = 0.0;  // with the damping in force (estimate_critical_time_step)
+  // 2 sqrt(m/k) without it (Rayleigh's step for Hertz laws): what a
+  // time_step fraction is a fraction of.
+  double undamped_critical_time_step = 0.0;
   double time_step_fraction = 0.1;  // the user's settings the step came from
   double fixed_time_step = 0.0;
   double contact_tolerance = 0.0;  // BALL's TOL
@@ -129,9 +132,23 @@ StepContext current_context(const WorldState<Dim>& state) {
 template <int Dim>
 void find_contacts(WorldState<Dim>& state, const StepContext& step);
 
-// Critical time step 2 sqrt(m/k) over particles and the stiffnesses they can meet.
+// The critical time step of central differences (time_step.cpp): over the
+// particles and the contacts they can make, with the damping given (a
+// stage's, a parameter's) or the state's own. Undamped, 2 sqrt(m/k) for the
+// linear laws and Rayleigh's step for the Hertz laws.
+template <int Dim>
+double estimate_critical_time_step(const WorldState<Dim>& state, const ContactParamTable& params,
+                                   const DampingDef& damping);
 template <int Dim>
 double estimate_critical_time_step(const WorldState<Dim>& state);
+template <int Dim>
+double estimate_undamped_critical_time_step(const WorldState<Dim>& state);
+// What a dashpot of damping ratio zeta acting on the last step's velocity
+// leaves of the undamped limit omega dt < 2: sqrt(1 + zeta^2) - zeta.
+double damped_step_factor(double zeta);
+// The critical step of a mass (or moment of inertia) on a spring with a
+// dashpot on the last step's velocity, under local damping `local`.
+double mode_critical_step(double mass, double stiffness, double dashpot, double local);
 
 template <int Dim>
 AssemblyMeasures measure_assembly(const WorldState<Dim>& state);

@@ -9,7 +9,7 @@ std::optional<StepHealth> HealthWatch::check(WorldSession& world, bool always) {
   StepHealth health;
   pacing_.run([&] {
     health = world.assess_health();
-    if (health.ok()) last_good_ = StateCheckpoint(world);
+    if (health.ok() && !health.energy_suspect) last_good_ = StateCheckpoint(world);
   });
   if (health.ok()) return std::nullopt;
   return health;

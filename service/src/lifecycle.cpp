@@ -61,6 +61,8 @@ std::string_view to_string(Transition transition) {
       return "end_run";
     case Transition::kFailRun:
       return "fail_run";
+    case Transition::kLoseWorld:
+      return "lose_world";
     case Transition::kShutDown:
       return "shut_down";
   }
@@ -82,6 +84,9 @@ std::optional<ServerState> next_state(ServerState from, Transition transition) {
     case Transition::kFailRun:
       if (from != ServerState::kRunning) return std::nullopt;
       return ServerState::kError;
+    case Transition::kLoseWorld:
+      if (from != ServerState::kError) return std::nullopt;
+      return ServerState::kIdle;
     case Transition::kShutDown:
       return ServerState::kShutdown;
   }

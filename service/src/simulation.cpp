@@ -151,6 +151,12 @@ Simulation::Prepared Simulation::Preparer::prepare_snapshot(std::string_view byt
   }
 }
 
+void Simulation::drop() {
+  world_.reset();
+  programme_ = CaseProgramme();
+  digest_.clear();
+}
+
 std::string Simulation::snapshot_bytes() const { return service::snapshot_bytes(world(), snapshot_info()); }
 
 WallId Simulation::find_wall(const std::string& name, std::int32_t id) const {
@@ -211,6 +217,26 @@ std::string Simulation::set_wall_servo(const protocol::WallServoArgs& args) {
          format_value(servo.gain * area) + " m/(Pa s), at most " + format_value(servo.max_speed) + " m/s)";
 }
 
+namespace {
+
+// Damping moves the critical step (the dashpots shorten it); a damping
+// that would leave the step above it is refused, and stays as it was.
+std::string set_damping_keeping_a_stable_step(WorldSession& w, const DampingDef& damping, const std::string& name) {
+  const DampingDef before = w.damping();
+  w.set_damping(damping);
+  const double critical = w.critical_time_step();
+  if (w.time_step() > critical * (1.0 + 1e-9)) {
+    w.set_damping(before);
+    throw CommandError(ReplyStatus::kBadRequest,
+                       name + ": with it the critical step would be " + format_value(critical) +
+                           " s, below the time step " + format_value(w.time_step()) +
+                           " s: central differences would be unstable; set a smaller time_step_fraction first");
+  }
+  return "; time step " + format_value(w.time_step()) + " s, critical step " + format_value(critical) + " s";
+}
+
+}  // namespace
+
 std::string Simulation::set_parameter(const protocol::ParameterArgs& args) {
   WorldSession& w = world();
   const std::string& name = args.name;
@@ -221,21 +247,27 @@ std::string Simulation::set_parameter(const protocol::ParameterArgs& args) {
       require(args.value >= 0.0, name + " must be >= 0");
       DampingDef damping = w.damping();
       (name == "contact_damping" ? damping.contact_beta : damping.global_alpha) = args.value;
-      w.set_damping(damping);
-      return name + " set to " + format_value(args.value) + (name == "contact_damping" ? " s" : " 1/s");
+      const std::string step = set_damping_keeping_a_stable_step(w, damping, name);
+      return name + " set to " + format_value(args.value) + (name == "contact_damping" ? " s" : " 1/s") + step;
     }
     if (name == "local_damping") {
       require(args.value >= 0.0 && args.value < 1.0, "local_damping must be in [0, 1)");
       DampingDef damping = w.damping();
       damping.local_alpha = args.value;
-      w.set_damping(damping);
-      return "local_damping set to " + format_value(args.value);
+      const std::string step = set_damping_keeping_a_stable_step(w, damping, name);
+      return "local_damping set to " + format_value(args.value) + step;
     }
     if (name == "time_step_fraction") {
       require(args.value > 0.0 && args.value <= 1.0, "time_step_fraction must be in (0, 1]");
+      const double step = args.value * w.undamped_critical_time_step();
+      require(step <= w.critical_time_step() * (1.0 + 1e-9),
+              "time_step_fraction: " + format_value(args.value) + " gives " + format_value(step) +
+                  " s, above the critical step " + format_value(w.critical_time_step()) +
+                  " s with the damping: central differences would be unstable; use at most " +
+                  format_value(w.critical_time_step() / w.undamped_critical_time_step()));
       w.set_time_step_fraction(args.value);
       return "time step now " + format_value(w.time_step()) + " s (" + format_value(args.value) +
-             " of the critical step)";
+             " of the undamped critical step; the critical step is " + format_value(w.critical_time_step()) + " s)";
     }
     if (name == "friction") {
       require(args.value >= 0.0, "friction must be >= 0");

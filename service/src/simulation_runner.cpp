@@ -104,26 +104,36 @@ void SimulationRunner::serve(bool until_programme_ends) {
     }
   };
   while (programme_going() || (!until_programme_ends && !queue_.shutdown_requested())) {
-    if (run_going()) {
-      // Between two chunks: everything that arrived meanwhile, in order.
-      take_waiting();
-      if (!run_going() && !awaiting_refresh_.empty()) refresh_cache(true);  // the run ended among them
-      if (active_ && !queue_.shutdown_requested()) {
-        run_chunk();
-      } else if (programme_going()) {
-        step_programme();  // a shutdown request stops and ends it
-      }
-      if (run_going() && std::chrono::steady_clock::now() - last_status_ >= options_.progress_interval) {
-        note_owner_left();
-        publish_status();
-      }
-    } else if (std::optional<ReceivedCommand> received = queue_.pop(kIdleWait)) {
-      execute(std::move(*received));
-      take_waiting();
-      refresh_cache();
-    } else if (!awaiting_refresh_.empty()) {
-      refresh_cache(true);  // a quiet moment: catch up
+    try {
+      serve_once(take_waiting);
+    } catch (const std::exception& error) {
+      fail_anything_running(error);
     }
+  }
+}
+
+// One turn of the loop: a chunk of the run going on and the commands that
+// came meanwhile, or a command when none runs.
+void SimulationRunner::serve_once(const std::function<void()>& take_waiting) {
+  if (run_going()) {
+    // Between two chunks: everything that arrived meanwhile, in order.
+    take_waiting();
+    if (!run_going() && !awaiting_refresh_.empty()) refresh_cache(true);  // the run ended among them
+    if (active_ && !queue_.shutdown_requested()) {
+      run_chunk();
+    } else if (programme_going()) {
+      step_programme();  // a shutdown request stops and ends it
+    }
+    if (run_going() && std::chrono::steady_clock::now() - last_status_ >= options_.progress_interval) {
+      note_owner_left();
+      publish_status();
+    }
+  } else if (std::optional<ReceivedCommand> received = queue_.pop(kIdleWait)) {
+    execute(std::move(*received));
+    take_waiting();
+    refresh_cache();
+  } else if (!awaiting_refresh_.empty()) {
+    refresh_cache(true);  // a quiet moment: catch up
   }
 }
 
@@ -260,7 +270,7 @@ void SimulationRunner::execute(ReceivedCommand received) {
     // Anything else a command runs into (a full disk, memory) fails that
     // command, not the server.
     reply.status = ReplyStatus::kFailed;
-    reply.message = error.what();
+    reply.message = failure_reason(error);
   }
   // The status topic says what changed: a new state, a new case, a run -
   // before the reply, so who reads the reply finds the status to match.

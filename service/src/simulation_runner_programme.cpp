@@ -77,7 +77,7 @@ void SimulationRunner::step_programme() {
     }
   } catch (const std::exception& error) {
     programme.fail("the engine failed at cycle " + std::to_string(simulation_.world().cycle_count()) + " in " +
-                   stage_label(programme.stage()) + ": " + error.what());
+                   stage_label(programme.stage()) + ": " + failure_reason(error));
   }
   if (programme.outcome() != ProgrammeOutcome::kRunning) end_programme();
 }
@@ -161,7 +161,6 @@ void SimulationRunner::end_programme() {
   const bool failed = programme.outcome() == ProgrammeOutcome::kFailed;
   const std::string name = failed ? "last_good.snapshot" : "final.snapshot";
   const std::filesystem::path path = recorder_.case_directory() / name;
-  const std::uint64_t snapshot_cycle = failed ? programme.last_good().cycle() : world.cycle_count();
   bool written = true;
   try {
     io::write_snapshot_bytes(recorder_.own_file(name), failed ? programme.last_good().bytes(simulation_.snapshot_info())
@@ -172,6 +171,7 @@ void SimulationRunner::end_programme() {
     programme.fail("the snapshot cannot be written: " + std::string(error.what()));
   }
   const std::string at = " at cycle " + std::to_string(world.cycle_count());
+  const std::uint64_t cycles_run = programme.done(world);
   switch (programme.outcome()) {
     case ProgrammeOutcome::kCompleted:
       lifecycle_.take(Transition::kEndRun);
@@ -190,20 +190,19 @@ void SimulationRunner::end_programme() {
       message_ = "programme failed: " + programme.reason();
       if (failed) {
         // The world goes back to it: what the server shows and saves from now on is sound.
-        programme.last_good().restore(world);
-        ++world_generation_;
-        message_ += "; the world is back at the last good state, cycle " + std::to_string(snapshot_cycle);
-        if (written) message_ += ", which is in " + path.string();
+        message_ += "; " + go_back_to(programme.last_good());
+        if (written && !world_lost_) message_ += ", which is in " + path.string();
       }
       spdlog::error("{}", message_);
       break;
   }
+  drop_lost_world();
   if (!programme_command_) {
     publish_status();  // the one-shot mode: the server ends with it
     return;
   }
   protocol::Reply reply;
-  reply.cycles_run = programme.done(world);
+  reply.cycles_run = cycles_run;
   reply.message = message_;
   reply.status = programme.outcome() == ProgrammeOutcome::kCompleted ? ReplyStatus::kOk
                  : programme.outcome() == ProgrammeOutcome::kStopped ? ReplyStatus::kCancelled

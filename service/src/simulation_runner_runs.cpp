@@ -109,10 +109,13 @@ void SimulationRunner::start_run(ReceivedCommand& received, CommandKind kind) {
     goal.until.kinetic_energy_below = until.kinetic_energy;
     goal.until.check_interval = until.check_interval > 0 ? static_cast<std::uint64_t>(until.check_interval) : 1;
   }
+  // The first good state is a whole copy of the world: taken first, so a
+  // copy that memory cannot hold fails the command with nothing started.
+  HealthWatch health(simulation_.world());
   spdlog::info("request {} from {}: {} accepted, up to {} cycles from cycle {}", command.request_id, command.client_id,
                protocol::to_string(kind), goal.max_cycles, simulation_.world().cycle_count());
   active_.emplace(std::move(received), goal, simulation_.world());
-  active_health_.emplace(simulation_.world());
+  active_health_.emplace(std::move(health));
   owner_left_logged_ = false;
   lifecycle_.take(Transition::kStartRun);
   message_ = std::string(protocol::to_string(kind)) + " running";
@@ -146,12 +149,18 @@ void SimulationRunner::run_chunk() {
     timed(cycles,
           [&] { finished = active_->step(cycles, world); });  // the engine's stage runner: the cycles, then its check
   } catch (const std::exception& error) {
-    fail_run("the engine failed at cycle " + std::to_string(world.cycle_count()) + ": " + error.what());
+    // The step may have stopped half-way (memory ran out in it): the world
+    // goes back to its last good state too.
+    const std::string at = std::to_string(world.cycle_count());
+    const std::string back = go_back_to(active_health_->last_good());
+    fail_run("the engine failed at cycle " + at + ": " + failure_reason(error) + "; " + back);
+    drop_lost_world();
     return;
   }
   // A blow-up's motion (not finite, a particle flung out) is looked for
   // after every chunk: it is what a blow-up reaches between two paced
-  // assessments.
+  // assessments. Keeping a good state copies the world: memory that
+  // cannot hold the copy fails the run (fail_anything_running).
   const bool suspect = world.motion_suspect();
   if (const auto problem = active_health_->check(world, finished || suspect)) {
     fail_unhealthy(*problem);
@@ -176,19 +185,54 @@ void SimulationRunner::run_chunk() {
 // The last good state is written beside the case's tables and the world
 // goes back to it; the server stays in error until a case or snapshot is loaded.
 void SimulationRunner::fail_unhealthy(const StepHealth& problem) {
-  WorldSession& world = simulation_.world();
   const StateCheckpoint& good = active_health_->last_good();
   const std::filesystem::path path = recorder_.case_directory() / "last_good.snapshot";
-  std::string kept = "; the world is back at the last good state, cycle " + std::to_string(good.cycle());
+  std::string written;
   try {
     io::write_snapshot_bytes(recorder_.own_file("last_good.snapshot"), good.bytes(simulation_.snapshot_info()));
-    kept += ", which is in " + path.string();
+    written = ", which is in " + path.string();
   } catch (const std::exception& error) {
-    kept += " (it could not be written: " + std::string(error.what()) + ")";
+    written = " (it could not be written: " + std::string(error.what()) + ")";
   }
-  good.restore(world);
-  ++world_generation_;
-  fail_run("the run is unhealthy " + problem.message + kept);
+  const std::string back = go_back_to(good);
+  fail_run("the run is unhealthy " + problem.message + "; " + back + (world_lost_ ? "" : written));
+  drop_lost_world();
+}
+
+std::string SimulationRunner::go_back_to(const StateCheckpoint& good) {
+  try {
+    good.restore(simulation_.world());
+    ++world_generation_;
+    return "the world is back at the last good state, cycle " + std::to_string(good.cycle());
+  } catch (const std::exception& error) {
+    // The session has no world left (WorldSession::restore): nothing reads it from here on.
+    world_lost_ = true;
+    simulation_.drop();
+    readout_.reset();
+    ++world_generation_;
+    return "the world could not be put back at its last good state (" + failure_reason(error) +
+           ") and is let go: load a case or a snapshot";
+  }
+}
+
+void SimulationRunner::drop_lost_world() {
+  if (!world_lost_) return;
+  world_lost_ = false;
+  lifecycle_.take(Transition::kLoseWorld);
+  announce();
+}
+
+void SimulationRunner::fail_anything_running(const std::exception& error) {
+  spdlog::error("the engine thread ran into: {}", failure_reason(error));
+  if (active_) {
+    const std::string at = std::to_string(simulation_.world().cycle_count());
+    const std::string back = go_back_to(active_health_->last_good());
+    fail_run("the run failed at cycle " + at + ": " + failure_reason(error) + "; " + back);
+    drop_lost_world();
+  } else if (programme_ && programme_->outcome() == ProgrammeOutcome::kRunning) {
+    programme_->fail("the engine thread ran into: " + failure_reason(error));
+    end_programme();
+  }
 }
 
 void SimulationRunner::complete_run() {

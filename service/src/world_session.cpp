@@ -50,6 +50,8 @@ class WorldSessionT final : public WorldSession {
   std::uint64_t cycle_count() const override { return world_.cycle_count(); }
   double time() const override { return world_.time(); }
   double time_step() const override { return world_.time_step(); }
+  double critical_time_step() const override { return world_.critical_time_step(); }
+  double undamped_critical_time_step() const override { return world_.undamped_critical_time_step(); }
   int particle_count() const override { return world_.particle_count(); }
   int wall_count() const override { return world_.wall_count(); }
   std::uint64_t state_hash() const override { return world_.state_hash(); }
@@ -99,7 +101,12 @@ class WorldSessionT final : public WorldSession {
 
   void restore(const AnyWorldSnapshot& state) override {
     const int threads = world_.threads();
-    world_ = BasicWorld<Dim>(std::get<WorldSnapshotT<Dim>>(state));
+    // The world it replaces goes first: a restore after memory ran out
+    // needs no more than the world it puts back. If building it fails, the
+    // session is left without a world, for the caller to drop.
+    const WorldSnapshotT<Dim>& snapshot = std::get<WorldSnapshotT<Dim>>(state);
+    { const BasicWorld<Dim> replaced = std::move(world_); }
+    world_ = BasicWorld<Dim>(snapshot);
     world_.set_threads(threads);
     health_ = HealthMonitorT<Dim>(world_);
   }

@@ -96,12 +96,18 @@ TEST(World, TimeStepIsFractionOfCriticalStep) {
   WorldDef def = dense_box(3, 3);
   World world(def);
   // 2 sqrt(m/k) over the assembly, rotation (I, k_s R^2) included: the
-  // smallest disc (radius 0.01 * (1 - 0.05 * 6/7)) with k_s = 0.7e6.
+  // smallest disc (radius 0.01 * (1 - 0.05 * 6/7)) with k_s = 0.7e6,
+  // shortened by its shear dashpot (c = beta k_s, eq. 28) to
+  // 2/omega (sqrt(1 + zeta^2) - zeta), zeta = beta omega / 2.
   const double r = 0.01 * (1.0 - 0.05 * 6.0 / 7.0);
   const double m = 2650.0 * std::acos(-1.0) * r * r;
-  const double rotational = 2.0 * std::sqrt(0.5 * m * r * r / (0.7e6 * r * r));
-  EXPECT_DOUBLE_EQ(world.critical_time_step(), rotational);
-  EXPECT_DOUBLE_EQ(world.time_step(), 0.2 * rotational);
+  const double omega = std::sqrt(0.7e6 * r * r / (0.5 * m * r * r));
+  const double zeta = def.damping.contact_beta * omega / 2.0;
+  const double rotational = 2.0 / omega * (std::sqrt(1.0 + zeta * zeta) - zeta);
+  EXPECT_NEAR(world.critical_time_step(), rotational, 1e-14 * rotational);
+  // A fraction is of the undamped step, 2 sqrt(I / (k_s R^2)).
+  EXPECT_DOUBLE_EQ(world.undamped_critical_time_step(), 2.0 / omega);
+  EXPECT_DOUBLE_EQ(world.time_step(), 0.2 * 2.0 / omega);
 }
 
 TEST(World, WallMeasuresSeeTheWeightOnTheFloor) {

@@ -6,7 +6,6 @@
 set -uo pipefail
 server_program=$1 demctl=$2 cases=$3 out=$4 domain=$5
 rm -rf "$out" && mkdir -p "$out"
-failures=0
 server=""
 monitor=""
 cleanup() {
@@ -14,23 +13,7 @@ cleanup() {
 }
 trap cleanup EXIT
 
-fail() {
-  echo "FAIL: $*"
-  sed 's/^/  | /' "$out/last.out" "$out/last.err"
-  failures=$((failures + 1))
-}
-# expect CODE WHAT COMMAND...: runs COMMAND and checks its exit code.
-expect() {
-  local want=$1 what=$2
-  shift 2
-  "$@" >"$out/last.out" 2>"$out/last.err"
-  local got=$?
-  if [ "$got" -ne "$want" ]; then fail "$what: exit code $got, expected $want"; else echo "ok: $what"; fi
-}
-# said TEXT: the last command printed TEXT.
-said() {
-  grep -qF -- "$1" "$out/last.out" "$out/last.err" || fail "the output lacks: $1"
-}
+source "$(dirname "${BASH_SOURCE[0]}")/expect.sh"
 # wait_for PID SECONDS: its exit code, or 124 when it did not end in time.
 wait_for() {
   local pid=$1 ticks=$(($2 * 10))

@@ -2,7 +2,10 @@
 // this process (over the loopback DDS configuration).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <mutex>
+#include <numbers>
+#include <sstream>
 
 #include "dem/case.pb.h"
 #include "dem/client/telemetry.h"
@@ -205,13 +208,40 @@ TEST(Commands, QueryContactsFiltersAndSendsLargeResultsInChunks) {
 
 TEST(Commands, SetParameterChangesTheSimulation) {
   Loaded s("params", kCommandsSetParameter);
-  EXPECT_EQ(s.client.set_parameter("contact_damping", 0.02).message, "contact_damping set to 0.02 s");
-  EXPECT_EQ(s.client.set_parameter("global_damping", 4).message, "global_damping set to 4 1/s");
+  // The dashpots shorten the critical step (time_step.cpp): the discs'
+  // rotation on one contact, omega^2 = k_s R^2 / I = 2 k_s / m, with
+  // zeta = beta omega / 2; the case's fixed step stays.
+  const double omega = std::sqrt(2.0 * 1.35e9 / (1000.0 * std::numbers::pi * 50.0 * 50.0));
+  const double zeta = 0.02 * omega / 2.0;
+  const double critical = 2.0 / omega * (std::sqrt(1.0 + zeta * zeta) - zeta);
+  std::ostringstream shown;  // as replies show numbers: 6 significant digits
+  shown << critical;
+  const std::string steps = "; time step 0.01 s, critical step " + shown.str() + " s";
+  EXPECT_EQ(s.client.set_parameter("contact_damping", 0.02).message, "contact_damping set to 0.02 s" + steps);
+  // Global damping, taken at the middle of the step, leaves it where it was.
+  EXPECT_EQ(s.client.set_parameter("global_damping", 4).message, "global_damping set to 4 1/s" + steps);
+  // A damping under which the fixed step would be unstable is refused, and changes nothing.
+  try {
+    s.client.set_parameter("contact_damping", 50.0);
+    ADD_FAILURE() << "a damping that leaves the step unstable was taken";
+  } catch (const client::ServerError& error) {
+    EXPECT_EQ(error.reply().status, protocol::ReplyStatus::kBadRequest) << error.what();
+    EXPECT_NE(error.reply().message.find("below the time step 0.01 s"), std::string::npos) << error.what();
+  }
+  EXPECT_EQ(s.client.set_parameter("global_damping", 4).message, "global_damping set to 4 1/s" + steps);
   EXPECT_EQ(s.client.set_parameter("friction", 0.25, "disc").message, "friction of disc set to 0.25");
   EXPECT_EQ(s.client.set_gravity({0.0, -9.81, 0.0}).message, "gravity set to (0, -9.81) m/s^2");
+  // A fraction is of the undamped step, 0.1075 s; 0.9 of it is above the damped one.
+  try {
+    s.client.set_parameter("time_step_fraction", 0.9);
+    ADD_FAILURE() << "a fraction above the damped critical step was taken";
+  } catch (const client::ServerError& error) {
+    EXPECT_NE(error.reply().message.find("above the critical step " + shown.str() + " s"), std::string::npos)
+        << error.what();
+  }
   const protocol::Reply step = s.client.set_parameter("time_step_fraction", 0.05);
-  EXPECT_NE(step.message.find("0.05 of the critical step"), std::string::npos) << step.message;
-  EXPECT_NEAR(step.state.time_step, 0.05 * 0.01 / 0.093, 2e-4);  // the case's fixed 0.01 was 0.093 of critical
+  EXPECT_NE(step.message.find("0.05 of the undamped critical step"), std::string::npos) << step.message;
+  EXPECT_NEAR(step.state.time_step, 0.05 * 0.01 / 0.093, 2e-4);  // the case's fixed 0.01 was 0.093 of the undamped step
   // Gravity acts: the discs fall.
   s.client.cycle(100);
   EXPECT_GT(s.client.get_state().stats.kinetic_energy, 0.0);

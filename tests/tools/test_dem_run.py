@@ -111,14 +111,21 @@ def test_the_flagship_cases_do_not_trip_their_own_time_step_warning(tmp_path):
 
 
 def test_a_time_step_too_large_still_warns(tmp_path):
-    # The nine-disc case (linear springs) with its fixed step raised tenfold:
-    # 0.93 of its stiffest contact's critical step, 2 sqrt(m/k).
-    text = (CASES / "ball" / "nine_disc_damped.case.txtpb").read_text().replace("fixed: 0.01", "fixed: 0.1")
+    # The nine-disc case (linear springs) with its fixed step raised ninefold:
+    # 0.92 of its stiffest contact's critical step, 2 sqrt(m/k) shortened by
+    # its shear dashpot (zeta 0.093 on a disc's rotation): 0.098 s.
+    text = (CASES / "ball" / "nine_disc_damped.case.txtpb").read_text().replace("fixed: 0.01", "fixed: 0.09")
     case = tmp_path / "large_step.case.txtpb"
     case.write_text(text)
     result = subprocess.run([DEM_RUN, str(case), "--out", str(tmp_path / "out"), "--quiet"], capture_output=True,
                             text=True, timeout=120)
     assert "of the critical step of the stiffest contact" in result.stderr, result.stderr
+    # Tenfold, 0.93 of the undamped step, is above the damped one: refused.
+    case.write_text(text.replace("fixed: 0.09", "fixed: 0.1"))
+    result = subprocess.run([DEM_RUN, str(case), "--out", str(tmp_path / "out10"), "--quiet"], capture_output=True,
+                            text=True, timeout=120)
+    assert result.returncode == 3, result.stderr
+    assert "time_step.fixed: 0.1 s exceeds the critical time step 0.0983306" in result.stderr, result.stderr
 
 
 def test_a_hertz_step_too_large_warns_from_randalls_running_check(tmp_path):

@@ -34,7 +34,7 @@ class RunHealth {
     StepHealth health;
     pacing_.run([&] {
       health = monitor_.assess(world);
-      if (health.ok()) last_good_ = world.snapshot();
+      if (health.ok() && !health.energy_suspect) last_good_ = world.snapshot();
     });
     if (health.ok()) return std::nullopt;
     return health;

@@ -105,7 +105,8 @@ void RunRecorder<Dim>::record(const BasicWorld<Dim>& world, int stage) {
       warned_time_step_ = true;
       std::fprintf(stderr,
                    "warning: from cycle %llu the time step %g s is %.2f of the critical step of the stiffest contact, "
-                   "2 sqrt(m/k) = %g s (Cundall & Strack); a particle with several contacts needs less: keep it "
+                   "2 sqrt(m/k) shortened by its damping = %g s (Cundall & Strack); a particle with several "
+                   "contacts needs less: keep it "
                    "below 0.3 of it (time_step.fraction or time_step.fixed)\n",
                    static_cast<unsigned long long>(world.cycle_count()), world.time_step(), ratio,
                    world.critical_time_step());

@@ -66,6 +66,10 @@ struct StepHealth {
   // What is wrong and what to change ("contact 12-40 overlaps 0.83 of the
   // smaller radius ...: reduce the time step or the loading rate").
   std::string message;
+  // Healthy so far, but energy beyond the limit was seen and awaits its
+  // confirmation (HealthLimits::max_energy_growth): not a state to keep as
+  // the last good one.
+  bool energy_suspect = false;
   bool ok() const { return problem == HealthProblem::kNone; }
 };
 
@@ -96,6 +100,7 @@ class HealthMonitorT {
   HealthLimits limits_;
   double created_at_start_ = 0.0;    // J: the budget's excess when the monitor began
   double held_at_start_ = 0.0;       // J: kinetic and strain energy then
+  EnergyBudget budget_at_start_;     // and the dissipating terms then (health::injected_energy)
   double most_in_play_ = 0.0;        // J: the largest energy in play at an assessment
   double round_off_ = 0.0;           // J: the floor below which an excess is round-off
   bool referenced_ = false;          // created_at_start_ and held_at_start_ are taken

@@ -110,9 +110,19 @@ class BasicWorld {
   void cycle(std::uint64_t n = 1);
 
   std::uint64_t cycle_count() const;
-  double time() const;                // s
-  double time_step() const;           // s
-  double critical_time_step() const;  // s, the estimate 2 sqrt(m/k)
+  double time() const;       // s
+  double time_step() const;  // s
+  // s, the largest step central differences keep stable for one contact:
+  // 2 sqrt(m/k) undamped (Rayleigh's for Hertz laws), less with the
+  // contact dashpots and local damping (time_step.cpp).
+  double critical_time_step() const;
+  // The same were the damping `damping` (a stage's, a parameter's).
+  double critical_time_step_with(const DampingDef& damping) const;
+  // s, 2 sqrt(m/k) (Rayleigh's step for Hertz laws) without the damping:
+  // what a time step fraction is a fraction of; the fraction covers the
+  // damping and a particle's several contacts, and validation refuses one
+  // whose step is above the critical step.
+  double undamped_critical_time_step() const;
 
   // Particle ids are given once, in definition order (ParticleId{k} is
   // WorldDef::particles[k]), and stay with their particle for the whole
@@ -224,10 +234,11 @@ class BasicWorld {
   // Everything needed to continue this run exactly (see snapshot.h).
   Snapshot snapshot() const;
 
-  // The time step as a fraction of the critical step (0, 1]; recomputes the step.
+  // The time step as a fraction (0, 1] of the undamped critical step; recomputes the step.
   void set_time_step_fraction(double fraction);
   // A fixed time step, s (> 0).
   void set_fixed_time_step(double seconds);
+  double fixed_time_step() const;  // s; 0 when the step is a fraction of the critical step
   // Friction coefficient tan(phi) of a material; recomputes the pair table
   // (contact models that set their own friction keep it).
   void set_friction(MaterialId material, double friction);

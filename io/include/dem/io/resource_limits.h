@@ -8,9 +8,12 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace dem::io {
 
@@ -22,6 +25,10 @@ struct ResourceLimits {
   std::uint64_t max_particles = 0;
   // Bytes one world may need, estimated at kBytesPerParticle per particle.
   std::uint64_t memory_bytes = 0;
+  // Where memory_bytes comes from, for messages: "half of the 24105 MiB
+  // this machine has", "half of what the address-space limit (ulimit -v)
+  // leaves this process", "set with --memory-budget".
+  std::string memory_source;
   // Cells of a random packing's placement grid (one per largest diameter
   // of the box): a huge box of small particles would allocate them all.
   std::uint64_t max_packing_cells = 0;
@@ -40,15 +47,58 @@ struct ResourceLimits {
 // each; rounded up for denser packings and the case's own copies.
 inline constexpr std::uint64_t kBytesPerParticle = 2560;
 
-// Sized to this machine: every core it may use, half its memory (or of the
-// container's memory limit, when one is set), as many particles as that
-// memory holds (and particle ids can number), and packing grids of at most
-// 64 cells per particle the budget allows.
+// The memory this process may use, and which limit says so: the smallest
+// of the machine's memory, the memory limits of the cgroups it runs in
+// (from its own up to the root: a container's, a systemd unit's, a batch
+// job's) and what its address-space and data limits (RLIMIT_AS, ulimit -v;
+// RLIMIT_DATA, ulimit -d) leave beside what it has mapped already.
+struct MemoryLimit {
+  std::uint64_t bytes = 0;
+  std::string source;  // "this machine has", "the address-space limit (ulimit -v) leaves this process", ...
+};
+
+// What memory_limit() weighs, read from this process (memory_facts) or
+// given (the tests).
+struct MemoryFacts {
+  std::uint64_t machine_bytes = 0;
+  std::vector<std::pair<std::string, std::uint64_t>> cgroup_limits;  // the file that says so, its bytes
+  std::optional<std::uint64_t> address_space_limit;                  // RLIMIT_AS when not unlimited
+  std::uint64_t address_space_used = 0;                              // VmSize
+  std::optional<std::uint64_t> data_limit;                           // RLIMIT_DATA when not unlimited
+  std::uint64_t data_used = 0;                                       // VmData
+};
+MemoryFacts memory_facts();
+MemoryLimit memory_limit(const MemoryFacts& facts);
+MemoryLimit memory_limit();  // this process's, read afresh
+// This process's as it started (read once): what the default budget is half of.
+const MemoryLimit& starting_memory_limit();
+
+// Why an allocation failed, for a reply or a log: memory ran out, and the
+// limit the process started under ("... 631 MiB, what the address-space
+// limit (ulimit -v 1150000) leaves this process").
+std::string out_of_memory_reason();
+
+// The memory limits of the cgroups that /proc/self/cgroup's text names,
+// under a hierarchy mounted at `root` (/sys/fs/cgroup): cgroup v2's
+// memory.max and memory.high (at root or root/unified) and v1's
+// memory.limit_in_bytes (at root/memory), each directory from the
+// hierarchy's root down to the process's own. "max" and missing files are
+// no limit.
+std::vector<std::pair<std::string, std::uint64_t>> cgroup_memory_limits(const std::filesystem::path& root,
+                                                                        const std::string& proc_self_cgroup);
+
+// Sized to this machine: every core it may use, half the memory it may use
+// (memory_limit(): the machine's, a cgroup's, what ulimit -v leaves), as
+// many particles as that memory holds (and particle ids can number), and
+// packing grids of at most 64 cells per particle the budget allows.
 ResourceLimits machine_limits();
 
 // The same limits with a smaller particle or memory budget (each 0 keeps
 // the machine's); the particle budget follows the memory one and the reverse.
 ResourceLimits limits_with_budget(std::uint64_t max_particles, std::uint64_t memory_bytes);
+// The same from a given memory limit (half of it is the budget when
+// memory_bytes is 0).
+ResourceLimits limits_with_budget(std::uint64_t max_particles, std::uint64_t memory_bytes, const MemoryLimit& memory);
 
 // What is wrong with asking for `threads` engine threads, or nothing;
 // `threads` 0 means every core and is always allowed.

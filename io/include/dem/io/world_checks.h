@@ -15,13 +15,16 @@ namespace dem::io {
 // Throws CaseError naming time_step.fixed when a fixed step exceeds the
 // critical step the engine estimates (2 sqrt(m/k) for the linear laws,
 // Rayleigh's for the Hertz laws, over every particle and the stiffest
-// contact it can meet): central differences are unstable beyond it, and
-// the run would blow up. Also refuses a step that is not a finite number > 0.
+// contact it can meet, shortened by the contact dashpots and local damping:
+// BasicWorld::critical_time_step): central differences are unstable beyond
+// it, and the run would blow up. Also refuses a step that is not a finite
+// number > 0.
 template <int Dim>
 void check_built_world(const BasicWorld<Dim>& world, const CaseSource& source = {});
-// And each stage's own fixed step (stage[i].time_step.fixed), which the
-// stage sets from its start on: the critical step depends on the masses
-// and stiffnesses alone, which no stage changes.
+// And each stage's fixed step (stage[i].time_step.fixed, or the one kept
+// from before) under the damping in force from its start on (its own
+// damping, or the one kept): the masses and stiffnesses no stage changes,
+// its damping moves the critical step.
 template <int Dim>
 void check_built_world(const BasicWorld<Dim>& world, const std::vector<StageDefT<Dim>>& stages,
                        const CaseSource& source = {});

@@ -4,6 +4,7 @@
 // it was.
 #pragma once
 
+#include <exception>
 #include <stdexcept>
 #include <string>
 
@@ -25,5 +26,10 @@ class CommandError : public std::runtime_error {
 inline void require_argument(bool condition, const std::string& message) {
   if (!condition) throw CommandError(protocol::ReplyStatus::kBadRequest, message);
 }
+
+// What a command, a run or the work between them ran into, for its reply:
+// memory running out (std::bad_alloc) is said as such, with the limit the
+// process started under; anything else by its own message.
+std::string failure_reason(const std::exception& error);
 
 }  // namespace dem::service

@@ -31,11 +31,12 @@
 namespace dem::service {
 
 enum class Transition {
-  kInstall,   // a case or snapshot loaded: a new world
-  kStartRun,  // a cycle, run_until or programme begins
-  kEndRun,    // it completed or was stopped
-  kFailRun,   // it failed (the engine threw, the world is unhealthy, an output failed)
-  kShutDown,  // the server stops
+  kInstall,    // a case or snapshot loaded: a new world
+  kStartRun,   // a cycle, run_until or programme begins
+  kEndRun,     // it completed or was stopped
+  kFailRun,    // it failed (the engine threw, the world is unhealthy, an output failed)
+  kLoseWorld,  // after a failure, the world could not be kept (no memory to restore it): idle
+  kShutDown,   // the server stops
 };
 
 std::string_view to_string(Transition transition);

@@ -99,6 +99,9 @@ class Simulation {
   }
   // Makes a prepared world the simulation; returns its message.
   std::string install(Prepared prepared);
+  // Lets the world go (a restore that failed for want of memory left the
+  // session without one): nothing is loaded afterwards.
+  void drop();
   std::string snapshot_bytes() const;
   io::SnapshotInfo snapshot_info() const { return {case_name_, description_}; }  // what a snapshot says of the case
 

@@ -70,6 +70,7 @@ class SimulationRunner {
   // a shutdown request, the one-shot mode until its programme is over; a
   // programme going when the shutdown comes is stopped and ended first.
   void serve(bool until_programme_ends);
+  void serve_once(const std::function<void()>& take_waiting);
   bool programme_going() const { return programme_ && !programme_->over(); }
   bool run_going() const { return active_ || programme_going(); }  // a cycle, run_until or programme
   void execute(ReceivedCommand received);
@@ -129,6 +130,16 @@ class SimulationRunner {
   void publish_telemetry(bool scheduled = true);
   void refresh_cache(bool always = false);  // the StateCache's get_state, as of now
   void write_checkpoint(std::size_t stage, std::uint64_t stage_cycles);
+  // Puts the world back at `good` (a failed run's last good state) and says
+  // so; when that cannot be done (no memory to build it), the world is let
+  // go - drop_lost_world, after the failure's transition, leaves the server
+  // idle - and says that instead.
+  std::string go_back_to(const StateCheckpoint& good);
+  void drop_lost_world();
+  // Whatever escapes the engine thread's work between commands (memory
+  // running out in a chunk, its check, the telemetry, a readout) fails the
+  // run going on, as an unhealthy state does: it never ends the server.
+  void fail_anything_running(const std::exception& error);
 
   const ServerOptions& options_;
   CommandQueue& queue_;
@@ -163,6 +174,7 @@ class SimulationRunner {
   const Readout& readout() const;
   mutable std::optional<Readout> readout_;
   std::uint64_t world_generation_ = 0;       // a new world, or one put back: another readout
+  bool world_lost_ = false;                  // go_back_to could not put it back
   std::vector<ReceivedCommand> unanswered_;  // taken from the queue after a shutdown request
   std::string message_ = "started";
   std::uint64_t last_telemetry_cycle_ = 0;

@@ -53,8 +53,10 @@ class WorldSession {
   virtual std::uint8_t dimension() const = 0;
   virtual WorldView view() const = 0;
   virtual std::uint64_t cycle_count() const = 0;
-  virtual double time() const = 0;       // s
-  virtual double time_step() const = 0;  // s
+  virtual double time() const = 0;                         // s
+  virtual double time_step() const = 0;                    // s
+  virtual double critical_time_step() const = 0;           // s, with the damping now
+  virtual double undamped_critical_time_step() const = 0;  // s, what a time step fraction is of
   virtual int particle_count() const = 0;
   virtual int wall_count() const = 0;
   virtual std::uint64_t state_hash() const = 0;
@@ -94,7 +96,10 @@ class WorldSession {
   virtual void set_threads(int threads) = 0;
   // Replaces the world by a state of its dimension (std::bad_variant_access
   // for the other); its threads stay and the health monitor starts afresh
-  // from it.
+  // from it. The old world is freed first, so going back to a state needs
+  // no more memory than that state; if building the new one throws
+  // (std::bad_alloc), the session is left without a world and must be
+  // dropped (Simulation::drop).
   virtual void restore(const AnyWorldSnapshot& state) = 0;
 
   // Stepping: a stage of the engine's on this session's world, its start
