@@ -116,9 +116,8 @@ StepHealth HealthMonitorT<Dim>::assess(const BasicWorld<Dim>& world) {
   }
   const double injected = referenced_ ? health::injected_energy(e, budget_at_start_) : 0.0;
   const double created = referenced_ ? health::created_energy(e) - created_at_start_ + injected : 0.0;
-  const double in_play =
-      std::abs(e.initial_kinetic) + std::abs(e.gravity_work) + std::abs(e.wall_work) + std::abs(e.continuum_work) +
-      held_at_start_;
+  const double in_play = std::abs(e.initial_kinetic) + std::abs(e.gravity_work) + std::abs(e.wall_work) +
+                         std::abs(e.continuum_work) + held_at_start_;
   most_in_play_ = std::max(most_in_play_, in_play);
   const bool beyond = referenced_ && created > round_off_ && created > limits_.max_energy_growth * most_in_play_;
   if (!beyond) suspect_created_ = 0.0;

@@ -77,8 +77,7 @@ bool stop_conditions_hold(const BasicWorld<Dim>& world, const StopConditions& un
 bool has_stop_condition(const StopConditions& until) {
   return until.kinetic_energy_below || until.out_of_balance_below || until.kinetic_to_elastic_below ||
          until.unbalanced_force_below || until.servo_tolerance || until.wall_stress_above ||
-         until.wall_settlement_above || until.deviator_strain_above ||
-         until.region_out_of_balance_below;
+         until.wall_settlement_above || until.deviator_strain_above || until.region_out_of_balance_below;
 }
 
 template bool stop_conditions_hold<2>(const BasicWorld<2>&, const StopConditions&);

@@ -56,7 +56,8 @@ void particle_motion(WorldState<Dim>& s, const StepContext& step) {
   const MotionStep motion = integrate_motion(
       s.particles, MotionInputs<Dim>{s.periodic, s.gravity, s.damping, step.dt, step.threads, step.energy_budget,
                                      step.keep_force, step.check_step, hot ? s.blocks.hot_place.data() : nullptr,
-                                     hot ? s.blocks.hot_motion.data() : nullptr, s.centripetal_gravity ? &*s.centripetal_gravity : nullptr,
+                                     hot ? s.blocks.hot_motion.data() : nullptr,
+                                     s.centripetal_gravity ? &*s.centripetal_gravity : nullptr,
                                      s.continuum ? &*s.continuum : nullptr, continuum ? &*continuum : nullptr});
   s.continuum = continuum;
   s.blocks.hot_fresh = hot;

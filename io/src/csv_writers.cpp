@@ -44,7 +44,8 @@ AssemblyCsv::AssemblyCsv(const std::filesystem::path& directory, const TableSize
     : file_(directory, "assembly.csv",
             "cycle,time,kinetic_energy,out_of_balance,max_contact_force,contacts,sliding_contacts,time_step_ratio,"
             "elastic_energy,kinetic_to_elastic,unbalanced_force,sliding_fraction,mean_stress,deformation_rate,"
-            "inertial_number,gravity_work,wall_work,continuum_work,strain_energy,contact_damping,friction,global_damping,local_"
+            "inertial_number,gravity_work,wall_work,continuum_work,strain_energy,contact_damping,friction,global_"
+            "damping,local_"
             "damping,energy_residual",
             resume) {}
 
@@ -57,8 +58,8 @@ AssemblyMeasures AssemblyCsv::write(const BasicWorld<Dim>& world) {
                     measures.max_contact_force, measures.contacts, measures.sliding_contacts, measures.time_step_ratio,
                     measures.elastic_energy, measures.kinetic_to_elastic, measures.unbalanced_force,
                     measures.sliding_fraction, measures.mean_stress, measures.deformation_rate,
-                    measures.inertial_number, e.gravity_work, e.wall_work, e.continuum_work, e.strain, e.contact_damping, e.friction,
-                    e.global_damping, e.local_damping, e.residual());
+                    measures.inertial_number, e.gravity_work, e.wall_work, e.continuum_work, e.strain,
+                    e.contact_damping, e.friction, e.global_damping, e.local_damping, e.residual());
   } else {
     // A world keeps its energy budget only when the case asks for it
     // (output.energy_budget): the budget's columns stay empty.

@@ -77,11 +77,12 @@ TEST(CentripetalGravity, ItsWorkClosesTheEnergyBudget) {
     double farthest = 0.0;
     for (const Vec2& x : world.particles().position) farthest = std::max(farthest, (x - kCentre).norm());
     residual[k] = std::abs(e.residual()) / e.gravity_work;
-    std::printf("dt %.0e s, after 2 s: %zu contacts, farthest centre %.4f m; body-force work %.6e J, kinetic %.3e, "
-                "strain %.3e, dashpots %.3e, friction %.3e, global damping %.3e J; residual %.3e J (%.2e of the "
-                "work)\n",
-                def.fixed_time_step, world.contacts().size(), farthest, e.gravity_work, e.kinetic, e.strain,
-                e.contact_damping, e.friction, e.global_damping, e.residual(), residual[k]);
+    std::printf(
+        "dt %.0e s, after 2 s: %zu contacts, farthest centre %.4f m; body-force work %.6e J, kinetic %.3e, "
+        "strain %.3e, dashpots %.3e, friction %.3e, global damping %.3e J; residual %.3e J (%.2e of the "
+        "work)\n",
+        def.fixed_time_step, world.contacts().size(), farthest, e.gravity_work, e.kinetic, e.strain, e.contact_damping,
+        e.friction, e.global_damping, e.residual(), residual[k]);
     EXPECT_GT(world.contacts().size(), 150u);  // a compact assembly: over 1.5 contacts per disc
     EXPECT_LT(farthest, 0.1);                  // all gathered in from the corners
     EXPECT_GT(e.gravity_work, 0.0);

@@ -35,7 +35,7 @@ TEST(ContactTable, MergeKeepsTheHistoryOfSurvivingPairs) {
 TEST(ContactTable, RenamedSlotsKeepHistoryAndOrientation) {
   ContactRows<3> rows;
   merge_rows(rows, {{0, 1}, {0, 2}, {2, 1}});  // (2, 1): the lower id sits in slot 2
-  for (std::size_t r = 0; r < 3; ++r) rows.shear[r] = Vec3(r + 1.0, 0.0, 0.0);
+  for (std::size_t r = 0; r < 3; ++r) rows.shear[r] = Vec3(static_cast<double>(r) + 1.0, 0.0, 0.0);
   // Slots 0 -> 2, 1 -> 0, 2 -> 1.
   rename_slots(rows, {2, 0, 1}, true);
   ASSERT_EQ(rows.size(), 3u);

@@ -12,8 +12,8 @@
 #include "dem/error.h"
 #include "dem/packing.h"
 #include "dem/world.h"
-#include "model_builders.h"
 #include "exact_continuation.h"
+#include "model_builders.h"
 
 namespace dem {
 namespace {
@@ -70,9 +70,10 @@ TEST(ContinuumField, ParticlesApartFollowTheBoxsDeformation) {
   double worst = 0.0;
   for (std::size_t i = 0; i < before.size(); ++i) worst = std::max(worst, (after[i] - before[i]).norm());
   const BoxMeasure m = world.box_measure();
-  std::printf("after 5000 steps at rates -2, 1 /s: box %.6f x %.6f m, no contacts %zu, worst drift of a particle's "
-              "place in the box %.2e\n",
-              m.extent.x(), m.extent.y(), world.contacts().size(), worst);
+  std::printf(
+      "after 5000 steps at rates -2, 1 /s: box %.6f x %.6f m, no contacts %zu, worst drift of a particle's "
+      "place in the box %.2e\n",
+      m.extent.x(), m.extent.y(), world.contacts().size(), worst);
   EXPECT_GT(m.extent.x(), 0.2 * 1.2);  // the box did deform
   EXPECT_EQ(world.contacts().size(), 0u);
   EXPECT_LT(worst, 1e-12);
@@ -88,7 +89,8 @@ TEST(ContinuumField, ContactsSeeTheFieldsRelativeVelocity) {
   const double radius = 0.01, overlap = 1e-5, rate = 1.0;  // m, m, 1/s
   const Vec2 centre{0.1, 0.1};
   const double half = 0.5 * (2.0 * radius - overlap) / std::sqrt(2.0);
-  const std::vector<ParticleDef> pair = {disc(centre - Vec2{half, half}, radius), disc(centre + Vec2{half, half}, radius)};
+  const std::vector<ParticleDef> pair = {disc(centre - Vec2{half, half}, radius),
+                                         disc(centre + Vec2{half, half}, radius)};
   for (const bool continuum : {true, false}) {
     World world(box_around(pair));
     world.set_box_control(rates(-rate, rate, continuum));
@@ -139,12 +141,13 @@ TEST(ContinuumField, ItsWorkClosesTheEnergyBudget) {
     const EnergyBudget e = world.assembly_measures().energy;
     const double in = std::abs(e.wall_work) + std::abs(e.continuum_work);
     residual[continuum ? 0 : 1] = std::abs(e.residual()) / in;
-    std::printf("%s, after 3500 steps: box %.5f m, %zu contacts; continuum work %.6e J, wall work %.6e J, kinetic "
-                "%.3e, strain %.3e, dashpots %.3e, global damping %.3e, friction %.3e J; residual %.3e J (%.2e of the "
-                "work done)\n",
-                continuum ? "with the field" : "walls alone", world.box_measure().extent.x(), world.contacts().size(),
-                e.continuum_work, e.wall_work, e.kinetic, e.strain, e.contact_damping, e.global_damping, e.friction,
-                e.residual(), residual[continuum ? 0 : 1]);
+    std::printf(
+        "%s, after 3500 steps: box %.5f m, %zu contacts; continuum work %.6e J, wall work %.6e J, kinetic "
+        "%.3e, strain %.3e, dashpots %.3e, global damping %.3e, friction %.3e J; residual %.3e J (%.2e of the "
+        "work done)\n",
+        continuum ? "with the field" : "walls alone", world.box_measure().extent.x(), world.contacts().size(),
+        e.continuum_work, e.wall_work, e.kinetic, e.strain, e.contact_damping, e.global_damping, e.friction,
+        e.residual(), residual[continuum ? 0 : 1]);
     EXPECT_GT(world.contacts().size(), 300u);  // compressed well into contact
     if (continuum) {
       EXPECT_NE(e.continuum_work, 0.0);

@@ -164,9 +164,10 @@ TEST(Packing, DenseGenerationMovesOnToTheNextSmallerSize) {
       ASSERT_GE((p[i].position - p[j].position).norm(), p[i].radius + p[j].radius) << i << " " << j;
     }
   }
-  std::printf("dense generation in a 20 x 20 box: %d of 200 r = 1, %d of 400 r = 0.6, %d of 800 r = 0.35; "
-              "solid fraction %.3f\n",
-              count[0], count[1], count[2], solid / 400.0);
+  std::printf(
+      "dense generation in a 20 x 20 box: %d of 200 r = 1, %d of 400 r = 0.6, %d of 800 r = 0.35; "
+      "solid fraction %.3f\n",
+      count[0], count[1], count[2], solid / 400.0);
   EXPECT_LT(count[0], 200);  // the box could not hold them all
   EXPECT_GT(count[1], 0);    // and the smaller sizes filled the gaps
   EXPECT_GT(count[2], 0);

@@ -154,7 +154,9 @@ TEST(WorldEdits, TrimKeepsEveryOtherParticlesId) {
   EXPECT_EQ(checked, before - 3);
   for (const ContactRecord& c : world.contacts()) {
     EXPECT_TRUE(world.has_particle(c.first)) << c.first;
-    if (c.second_particle != kInvalidId) EXPECT_TRUE(world.has_particle(c.second_particle)) << c.second_particle;
+    if (c.second_particle != kInvalidId) {
+      EXPECT_TRUE(world.has_particle(c.second_particle)) << c.second_particle;
+    }
   }
   EXPECT_FALSE(world.has_particle(ParticleId{10}));
   EXPECT_TRUE(world.has_particle(ParticleId{11}));

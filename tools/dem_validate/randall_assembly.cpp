@@ -40,10 +40,8 @@ void write_snapshot(const std::filesystem::path& directory, const World& world) 
 }  // namespace
 
 RandallFigures randall_figures(const std::string& case_name) {
-  if (case_name.starts_with("randall_graded"))
-    return {"graded", 0.14, 3.57, 0.59 / 0.123, 0.36, 0.0, 0.001, 0.14};
-  if (case_name.starts_with("randall_uniform"))
-    return {"uniform", 0.16, 3.15, 0.53 / 0.143, 0.30, 0.001, 0.002, 0.15};
+  if (case_name.starts_with("randall_graded")) return {"graded", 0.14, 3.57, 0.59 / 0.123, 0.36, 0.0, 0.001, 0.14};
+  if (case_name.starts_with("randall_uniform")) return {"uniform", 0.16, 3.15, 0.53 / 0.143, 0.30, 0.001, 0.002, 0.15};
   throw std::runtime_error("case \"" + case_name +
                            "\": Randall's figures are for the cases named randall_graded... or randall_uniform...");
 }
@@ -268,7 +266,8 @@ RandallMeasured measure_randall(const RandallRun& run) {
   m.force_ratio = force_ratio(rest);
   m.sheared = run.shear.size() >= 3;
   if (!m.sheared) return m;
-  for (const ShearSample& s : run.shear) m.largest_out_of_balance = std::max(m.largest_out_of_balance, s.out_of_balance);
+  for (const ShearSample& s : run.shear)
+    m.largest_out_of_balance = std::max(m.largest_out_of_balance, s.out_of_balance);
   const SinPhiPeak peak = sin_phi_peak(run, 0);
   m.peak_sin_phi = peak.value;
   m.peak_strain = peak.strain;
@@ -294,7 +293,7 @@ double median(std::vector<double> values) {
 }
 
 // The figures of a RandallMeasured, for the median and the table.
-constexpr double RandallMeasured::* kFigures[] = {
+constexpr double RandallMeasured::*kFigures[] = {
     &RandallMeasured::box_stress,         &RandallMeasured::interior_stress,
     &RandallMeasured::out_of_balance,     &RandallMeasured::anisotropy,
     &RandallMeasured::sliding_at_rest,    &RandallMeasured::porosity,
@@ -321,9 +320,8 @@ RandallMeasured median_of(const std::vector<RandallMeasured>& packings) {
 }
 
 void print_packings(std::FILE* out, const std::vector<RandallMeasured>& packings) {
-  std::fprintf(out,
-               "  %-22s %8s %7s %7s %7s %6s %8s %9s %7s %8s\n", "packing", "p kPa", "n", "Z", "Z mech",
-               "Fmax/Fm", "sin phi", "by %", "tang %", "slide %");
+  std::fprintf(out, "  %-22s %8s %7s %7s %7s %6s %8s %9s %7s %8s\n", "packing", "p kPa", "n", "Z", "Z mech", "Fmax/Fm",
+               "sin phi", "by %", "tang %", "slide %");
   const auto row = [&](const RandallMeasured& m) {
     std::fprintf(out, "  %-22s %8.1f %7.4f %7.3f %7.3f %6.2f %8.4f %9.4f %7.1f %8.1f\n", m.label.c_str(),
                  m.interior_stress / 1e3, m.porosity, m.coordination, m.mechanical_coordination, m.force_ratio,

@@ -34,17 +34,17 @@ struct ShearSample {
 // What Randall measured on one of his two assemblies (6.4.3, 6.5.2,
 // Fig. 6.24), which a run is judged against.
 struct RandallFigures {
-  std::string assembly;          // "graded" or "uniform"
-  double porosity = 0.0;         // "14% and 16%" (6.5.2)
-  double coordination = 0.0;     // 3.57 graded, 3.15 uniform (6.4.3)
-  double force_ratio = 0.0;      // F_max / F_mean: 0.59/0.123, 0.53/0.143 N (6.4.3)
-  double peak_sin_phi = 0.0;     // "around 0.36", "approximately 0.3" (Fig. 6.24)
+  std::string assembly;       // "graded" or "uniform"
+  double porosity = 0.0;      // "14% and 16%" (6.5.2)
+  double coordination = 0.0;  // 3.57 graded, 3.15 uniform (6.4.3)
+  double force_ratio = 0.0;   // F_max / F_mean: 0.59/0.123, 0.53/0.143 N (6.4.3)
+  double peak_sin_phi = 0.0;  // "around 0.36", "approximately 0.3" (Fig. 6.24)
   // The deviator strains between which sin(phi) reaches its peak (95 % of
   // its largest value): graded "by 0.05%" read as by 0.1 %, a factor of two;
   // uniform "just after 0.1%" as between 0.1 and 0.2 %.
   double peak_strain_low = 0.0;
   double peak_strain_high = 0.0;
-  double tangential_share = 0.0; // of the deviator: "14% for the graded and 15% for the uniform"
+  double tangential_share = 0.0;  // of the deviator: "14% for the graded and 15% for the uniform"
 };
 
 // Randall's figures for the assembly a case stands for, by its name
@@ -87,9 +87,9 @@ void print_randall(std::FILE* out, const RandallRun& run);
 // circle well inside the walls): of one packing, or the median of each
 // over several.
 struct RandallMeasured {
-  std::string label;        // "packing seed 1989", "median of 3"
-  bool compressed = false;  // compression and friction stages settled (in every packing)
-  double box_stress = 0.0;  // Pa, the walls' mean at rest
+  std::string label;             // "packing seed 1989", "median of 3"
+  bool compressed = false;       // compression and friction stages settled (in every packing)
+  double box_stress = 0.0;       // Pa, the walls' mean at rest
   double interior_stress = 0.0;  // Pa, the region's mean stress at rest
   double out_of_balance = 0.0;   // Delta F / F at rest
   double anisotropy = 0.0;       // Phi_1 - Phi_2 at rest

@@ -88,9 +88,8 @@ constexpr double kVerificationRatioTolerance = 0.12;
 VerificationRun run_verification(const std::filesystem::path& case_file, std::optional<std::uint64_t> packing_seed) {
   const auto start = std::chrono::steady_clock::now();
   io::LoadedCase loaded = io::load_case_file(case_file);
-  const bool has_packing = std::ranges::any_of(loaded.message.particles(), [](const proto::ParticleSource& source) {
-    return source.has_random_packing();
-  });
+  const bool has_packing = std::ranges::any_of(
+      loaded.message.particles(), [](const proto::ParticleSource& source) { return source.has_random_packing(); });
   if (!has_packing) throw std::runtime_error(case_file.string() + ": the verification case has no random_packing");
   if (packing_seed) reseed_packings(loaded.message, *packing_seed);
   packing_seed = first_packing_seed(loaded.message);

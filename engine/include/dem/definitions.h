@@ -328,7 +328,7 @@ struct WorldDefT {
   PeriodicDefT<Dim> periodic;
   std::optional<BoxControlT<Dim>> box_control;  // element-test control of a box of the walls
   DampingDef damping;
-  Vec<Dim> gravity = Vec<Dim>::Zero();  // m/s^2, body force per unit mass
+  Vec<Dim> gravity = Vec<Dim>::Zero();                          // m/s^2, body force per unit mass
   std::optional<CentripetalGravityT<Dim>> centripetal_gravity;  // Randall 6.4.2; none when absent
   // 2D only: discs or spheres in the plane (3D particles are spheres).
   PlanarParticle planar_particle = PlanarParticle::kDisc;

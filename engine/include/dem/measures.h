@@ -52,8 +52,8 @@ struct WallMeasureT {
 // integration and contact-law errors.
 struct EnergyBudget {
   double initial_kinetic = 0.0;
-  double gravity_work = 0.0;     // work of the body forces: gravity and a centripetal field
-  double wall_work = 0.0;        // work of the walls' motion on the particles
+  double gravity_work = 0.0;  // work of the body forces: gravity and a centripetal field
+  double wall_work = 0.0;     // work of the walls' motion on the particles
   // Work of a box's continuum field (BoxControlT::continuum, Randall 4.5.2)
   // on the particles it carries.
   double continuum_work = 0.0;

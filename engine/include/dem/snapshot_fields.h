@@ -65,13 +65,12 @@ struct SnapshotFields<DampingDef> {
 };
 template <>
 struct SnapshotFields<EnergyBudget> {
-  static constexpr auto list =
-      std::make_tuple(DEM_FIELD(EnergyBudget, initial_kinetic), DEM_FIELD(EnergyBudget, gravity_work),
-                      DEM_FIELD(EnergyBudget, wall_work), DEM_FIELD(EnergyBudget, kinetic),
-                      DEM_FIELD(EnergyBudget, strain), DEM_FIELD(EnergyBudget, contact_damping),
-                      DEM_FIELD(EnergyBudget, friction), DEM_FIELD(EnergyBudget, global_damping),
-                      DEM_FIELD(EnergyBudget, local_damping), DEM_FIELD(EnergyBudget, removed),
-                      DEM_FIELD(EnergyBudget, continuum_work));
+  static constexpr auto list = std::make_tuple(
+      DEM_FIELD(EnergyBudget, initial_kinetic), DEM_FIELD(EnergyBudget, gravity_work),
+      DEM_FIELD(EnergyBudget, wall_work), DEM_FIELD(EnergyBudget, kinetic), DEM_FIELD(EnergyBudget, strain),
+      DEM_FIELD(EnergyBudget, contact_damping), DEM_FIELD(EnergyBudget, friction),
+      DEM_FIELD(EnergyBudget, global_damping), DEM_FIELD(EnergyBudget, local_damping), DEM_FIELD(EnergyBudget, removed),
+      DEM_FIELD(EnergyBudget, continuum_work));
 };
 template <>
 struct SnapshotFields<ServoDef> {
@@ -152,8 +151,9 @@ struct SnapshotFields<WorldDefT<Dim>> {
   static constexpr auto list = std::make_tuple(
       DEM_FIELD(Def, materials), DEM_FIELD(Def, contact_models), DEM_FIELD(Def, particles), DEM_FIELD(Def, walls),
       DEM_FIELD(Def, periodic), DEM_FIELD(Def, box_control), DEM_FIELD(Def, damping), DEM_FIELD(Def, gravity),
-      DEM_FIELD(Def, centripetal_gravity), DEM_FIELD(Def, planar_particle), DEM_FIELD(Def, time_step_fraction), DEM_FIELD(Def, fixed_time_step),
-      DEM_FIELD(Def, contact_tolerance), DEM_FIELD(Def, threads), DEM_FIELD(Def, energy_budget));
+      DEM_FIELD(Def, centripetal_gravity), DEM_FIELD(Def, planar_particle), DEM_FIELD(Def, time_step_fraction),
+      DEM_FIELD(Def, fixed_time_step), DEM_FIELD(Def, contact_tolerance), DEM_FIELD(Def, threads),
+      DEM_FIELD(Def, energy_budget));
 };
 template <int Dim>
 struct SnapshotFields<WallSnapshotT<Dim>> {
