@@ -16,7 +16,7 @@
 #include "dem/io/csv_table.h"
 #include "dem/programme.h"
 #include "dem/world.h"
-#include "packing_seed.h"
+#include "packings.h"
 
 namespace dem::validation {
 

@@ -6,16 +6,11 @@
 #include <map>
 #include <thread>
 
+#include "packings.h"
+
 namespace dem::validation {
 
 namespace {
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 double median_contacts(const std::vector<MiyataPacking>& packings, bool at_final) {
   std::vector<double> values;

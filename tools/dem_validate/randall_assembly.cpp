@@ -12,7 +12,7 @@
 #include "dem/io/csv_writers.h"
 #include "dem/io/regions_csv.h"
 #include "dem/programme.h"
-#include "packing_seed.h"
+#include "packings.h"
 
 namespace dem::validation {
 
@@ -285,12 +285,6 @@ RandallMeasured measure_randall(const RandallRun& run) {
 }
 
 namespace {
-
-double median(std::vector<double> values) {
-  std::ranges::sort(values);
-  const std::size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 // The figures of a RandallMeasured, for the median and the table.
 constexpr double RandallMeasured::*kFigures[] = {

@@ -10,7 +10,7 @@
 #include "dem/io/case_loader.h"
 #include "dem/io/csv_file.h"
 #include "dem/programme.h"
-#include "packing_seed.h"
+#include "packings.h"
 
 namespace dem::validation {
 
@@ -61,13 +61,6 @@ VerificationStage read_stage(const World& world, const std::string& name, bool s
   s.contacts = a.contacts;
   s.sliding = a.sliding_contacts;
   return s;
-}
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 // The q-quantile by linear interpolation between order statistics.
