@@ -16,7 +16,7 @@
 // fast as the client library lets them (each with its 64 requests in
 // flight, client::ConnectOptions::max_outstanding): the load of issue 37,
 // where get_state's p99 beside them was 35.7 ms.
-//   bench_responsiveness [--seconds 60] [--baseline 15] [--rate 1000] [--flood]
+//   bench_responsiveness [--seconds 60] [--baseline 15] [--rate 1000] [--flood] [--domain 126]
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -49,7 +49,8 @@ using namespace std::chrono_literals;
 using dem::bench::lattice_case;
 using dem::bench::LatticeTop;
 using Clock = std::chrono::steady_clock;
-constexpr std::uint32_t kDomain = 126;
+// The DDS domain, --domain (126 unless told).
+std::uint32_t domain_id = 126;
 
 pid_t spawn(std::vector<std::string> arguments) {
   std::vector<char*> argv;
@@ -85,7 +86,7 @@ double cpu_seconds(pid_t pid) {
 dem::client::ConnectOptions connect_options() {
   dem::client::ConnectOptions options;
   options.server = "responsive";
-  options.domain = kDomain;
+  options.domain = domain_id;
   options.timeout = 20s;
   options.reply_timeout = 60s;
   return options;
@@ -129,18 +130,19 @@ int main(int argc, char** argv) {
   app.add_option("--seconds", seconds, "how long the load lasts")->capture_default_str();
   app.add_option("--baseline", baseline, "seconds of the run without commands, first")->capture_default_str();
   app.add_option("--rate", rate, "commands a second, all clients together")->capture_default_str();
+  app.add_option("--domain", domain_id, "the DDS domain id of the server and clients")->capture_default_str();
   bool flood = false, stalled = true;
   app.add_flag("!--no-stalled-monitor", stalled, "leave out the monitor stopped with SIGSTOP");
   app.add_flag("--flood", flood, "clients B, C and D query contacts without pause instead of at the rate");
   CLI11_PARSE(app, argc, argv);
 
-  const pid_t server = spawn({DEM_SERVER_PROGRAM, "--name", "responsive", "--domain", std::to_string(kDomain),
+  const pid_t server = spawn({DEM_SERVER_PROGRAM, "--name", "responsive", "--domain", std::to_string(domain_id),
                               "--threads", "1", "--log-level", "warn", "--no-csv", "--telemetry-cycles", "100", "--out",
                               std::string(DEM_BENCH_OUTPUT) + "/responsive"});
   dem::client::Client owner(connect_options());
   owner.load_case_text(lattice_case(70, 70, LatticeTop::kWall), "lattice_70x70");
   const std::uint64_t run = owner.start_cycle(1'000'000'000);
-  const pid_t monitor = spawn({DEM_DEMCTL_PROGRAM, "--server", "responsive", "--domain", std::to_string(kDomain),
+  const pid_t monitor = spawn({DEM_DEMCTL_PROGRAM, "--server", "responsive", "--domain", std::to_string(domain_id),
                                "monitor", "--csv", "/dev/null"});
   std::this_thread::sleep_for(2s);
   if (stalled) {
