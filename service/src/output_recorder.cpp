@@ -29,9 +29,12 @@ std::filesystem::path OutputRecorder::case_directory_of(const std::filesystem::p
 void OutputRecorder::claim(const std::string& case_name, bool overwrite) {
   const std::filesystem::path directory = case_directory_of(output_directory_, case_name);
   std::error_code error;
-  // A link in its place is start()'s to refuse (io::own_directory).
-  if (started_.contains(directory) || !std::filesystem::is_directory(directory, error) ||
-      std::filesystem::is_symlink(std::filesystem::symlink_status(directory, error))) {
+  if (started_.contains(directory) || !std::filesystem::is_directory(directory, error)) return;
+  // A link in its place or in it is start()'s to refuse (io::own_directory):
+  // nothing is then written there, so nothing is cut.
+  try {
+    io::own_directory(output_directory_, directory.filename());
+  } catch (const io::FileAccessError&) {
     return;
   }
   std::vector<std::string> names;

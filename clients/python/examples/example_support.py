@@ -38,7 +38,9 @@ def service(args, name):
             yield client
         return
     args.out.mkdir(parents=True, exist_ok=True)
-    with dem.ServerProcess(name, args.domain, args.out / "server", telemetry_cycles=args.telemetry_cycles) as server:
+    # The example's own scratch directory: a second run replaces the first's output.
+    with dem.ServerProcess(name, args.domain, args.out / "server", telemetry_cycles=args.telemetry_cycles,
+                           overwrite=True) as server:
         with server.connect() as client:
             yield client
 

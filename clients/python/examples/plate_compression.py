@@ -277,7 +277,8 @@ def compress_on_server(args, case, plate, plates, clock):
     snapshot_rows = []
     server_out = args.out / "server"
     server = dem.ServerProcess("compression", args.domain, server_out, telemetry_cycles=args.telemetry_cycles,
-                               extra_arguments=["--case", str(pathlib.Path(args.case).resolve()), "--run-and-exit"])
+                               extra_arguments=["--case", str(pathlib.Path(args.case).resolve()), "--run-and-exit"],
+                               overwrite=True)
     with server:
         with server.connect() as client, client.subscribe(contact_stats=False) as telemetry, \
                 LiveStressSettlement(telemetry, [plate], png=args.out / "stress_settlement.png", show=args.show,
