@@ -137,7 +137,7 @@ def main():
     if args.preparation == "server":
         return compress_on_server(args, case, plate, plates, clock)
 
-    with service(args, "compression") as client:
+    with service(args, "compression", read_dirs=[pathlib.Path(args.case).resolve().parent]) as client:
         # The server reads the file itself, so paths inside it resolve against its directory.
         loaded = client.load_case(args.case, on_server=True)
         say(f"{loaded.message}; loading plate {plate}, bottom plate {bottom or '-'}")
