@@ -120,6 +120,7 @@ struct Results {
   std::map<std::string, std::vector<double>> server_ms;  // by kind: reply.duration
   std::vector<double> round_trip_ms;                     // client A's get_state
   std::uint64_t sent = 0, answered = 0, busy = 0, errors = 0, lost = 0;
+  std::vector<std::string> lost_requests;  // "request N from CLIENT", as the server's log names them
 };
 
 }  // namespace
@@ -134,11 +135,15 @@ int main(int argc, char** argv) {
   bool flood = false, stalled = true;
   app.add_flag("!--no-stalled-monitor", stalled, "leave out the monitor stopped with SIGSTOP");
   app.add_flag("--flood", flood, "clients B, C and D query contacts without pause instead of at the rate");
+  std::string log_level = "warn";
+  app.add_option("--server-log-level", log_level,
+                 "the server's log level (info logs every reply: which of those without reply it sent)")
+      ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
   const pid_t server = spawn({DEM_SERVER_PROGRAM, "--name", "responsive", "--domain", std::to_string(domain_id),
-                              "--threads", "1", "--log-level", "warn", "--no-csv", "--telemetry-cycles", "100", "--out",
-                              std::string(DEM_BENCH_OUTPUT) + "/responsive"});
+                              "--threads", "1", "--log-level", log_level, "--no-csv", "--telemetry-cycles", "100",
+                              "--out", std::string(DEM_BENCH_OUTPUT) + "/responsive"});
   dem::client::Client owner(connect_options());
   owner.load_case_text(lattice_case(70, 70, LatticeTop::kWall), "lattice_70x70");
   const std::uint64_t run = owner.start_cycle(1'000'000'000);
@@ -207,6 +212,7 @@ int main(int argc, char** argv) {
           std::lock_guard lock(results.mutex);
           if (!reply) {
             ++results.lost;
+            results.lost_requests.push_back("request " + std::to_string(id) + " from " + client.client_id());
             continue;
           }
           ++results.answered;
@@ -280,6 +286,9 @@ int main(int argc, char** argv) {
               static_cast<double>(results.sent) / load_seconds, static_cast<unsigned long long>(results.answered),
               static_cast<unsigned long long>(results.busy), static_cast<unsigned long long>(results.errors),
               static_cast<unsigned long long>(results.lost));
+  for (std::size_t i = 0; i < results.lost_requests.size() && i < 5; ++i) {
+    std::printf("without reply: %s\n", results.lost_requests[i].c_str());
+  }
   std::printf("get_state round trip (client A): median %.3f ms, p99 %.3f ms, max %.3f ms (%zu)\n",
               percentile(results.round_trip_ms, 0.5), percentile(results.round_trip_ms, 0.99),
               percentile(results.round_trip_ms, 1.0), results.round_trip_ms.size());
