@@ -16,7 +16,7 @@
 // fast as the client library lets them (each with its 64 requests in
 // flight, client::ConnectOptions::max_outstanding): the load of issue 37,
 // where get_state's p99 beside them was 35.7 ms.
-//   bench_responsiveness [--seconds 60] [--baseline 15] [--rate 1000] [--flood]
+//   bench_responsiveness [--seconds 60] [--baseline 15] [--rate 1000] [--flood] [--domain 126]
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -49,7 +49,8 @@ using namespace std::chrono_literals;
 using dem::bench::lattice_case;
 using dem::bench::LatticeTop;
 using Clock = std::chrono::steady_clock;
-constexpr std::uint32_t kDomain = 126;
+// The DDS domain, --domain (126 unless told).
+std::uint32_t domain_id = 126;
 
 pid_t spawn(std::vector<std::string> arguments) {
   std::vector<char*> argv;
@@ -85,7 +86,7 @@ double cpu_seconds(pid_t pid) {
 dem::client::ConnectOptions connect_options() {
   dem::client::ConnectOptions options;
   options.server = "responsive";
-  options.domain = kDomain;
+  options.domain = domain_id;
   options.timeout = 20s;
   options.reply_timeout = 60s;
   return options;
@@ -119,6 +120,7 @@ struct Results {
   std::map<std::string, std::vector<double>> server_ms;  // by kind: reply.duration
   std::vector<double> round_trip_ms;                     // client A's get_state
   std::uint64_t sent = 0, answered = 0, busy = 0, errors = 0, lost = 0;
+  std::vector<std::string> lost_requests;  // "request N from CLIENT", as the server's log names them
 };
 
 }  // namespace
@@ -129,18 +131,23 @@ int main(int argc, char** argv) {
   app.add_option("--seconds", seconds, "how long the load lasts")->capture_default_str();
   app.add_option("--baseline", baseline, "seconds of the run without commands, first")->capture_default_str();
   app.add_option("--rate", rate, "commands a second, all clients together")->capture_default_str();
+  app.add_option("--domain", domain_id, "the DDS domain id of the server and clients")->capture_default_str();
   bool flood = false, stalled = true;
   app.add_flag("!--no-stalled-monitor", stalled, "leave out the monitor stopped with SIGSTOP");
   app.add_flag("--flood", flood, "clients B, C and D query contacts without pause instead of at the rate");
+  std::string log_level = "warn";
+  app.add_option("--server-log-level", log_level,
+                 "the server's log level (info logs every reply: which of those without reply it sent)")
+      ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
-  const pid_t server = spawn({DEM_SERVER_PROGRAM, "--name", "responsive", "--domain", std::to_string(kDomain),
-                              "--threads", "1", "--log-level", "warn", "--no-csv", "--telemetry-cycles", "100", "--out",
-                              std::string(DEM_BENCH_OUTPUT) + "/responsive"});
+  const pid_t server = spawn({DEM_SERVER_PROGRAM, "--name", "responsive", "--domain", std::to_string(domain_id),
+                              "--threads", "1", "--log-level", log_level, "--no-csv", "--telemetry-cycles", "100",
+                              "--out", std::string(DEM_BENCH_OUTPUT) + "/responsive"});
   dem::client::Client owner(connect_options());
   owner.load_case_text(lattice_case(70, 70, LatticeTop::kWall), "lattice_70x70");
   const std::uint64_t run = owner.start_cycle(1'000'000'000);
-  const pid_t monitor = spawn({DEM_DEMCTL_PROGRAM, "--server", "responsive", "--domain", std::to_string(kDomain),
+  const pid_t monitor = spawn({DEM_DEMCTL_PROGRAM, "--server", "responsive", "--domain", std::to_string(domain_id),
                                "monitor", "--csv", "/dev/null"});
   std::this_thread::sleep_for(2s);
   if (stalled) {
@@ -200,10 +207,12 @@ int main(int argc, char** argv) {
             std::this_thread::sleep_for(1ms);
             continue;
           }
-          const std::optional<dem::protocol::Reply> reply = client.await(id, 30s);
+          // A reply not here in 10 s is lost (2 s once the load is over: its stragglers).
+          const std::optional<dem::protocol::Reply> reply = client.await(id, done ? 2s : 10s);
           std::lock_guard lock(results.mutex);
           if (!reply) {
             ++results.lost;
+            results.lost_requests.push_back("request " + std::to_string(id) + " from " + client.client_id());
             continue;
           }
           ++results.answered;
@@ -277,6 +286,9 @@ int main(int argc, char** argv) {
               static_cast<double>(results.sent) / load_seconds, static_cast<unsigned long long>(results.answered),
               static_cast<unsigned long long>(results.busy), static_cast<unsigned long long>(results.errors),
               static_cast<unsigned long long>(results.lost));
+  for (std::size_t i = 0; i < results.lost_requests.size() && i < 5; ++i) {
+    std::printf("without reply: %s\n", results.lost_requests[i].c_str());
+  }
   std::printf("get_state round trip (client A): median %.3f ms, p99 %.3f ms, max %.3f ms (%zu)\n",
               percentile(results.round_trip_ms, 0.5), percentile(results.round_trip_ms, 0.99),
               percentile(results.round_trip_ms, 1.0), results.round_trip_ms.size());

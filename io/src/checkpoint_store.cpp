@@ -51,14 +51,15 @@ void PeriodicCheckpoints::begin(const std::filesystem::path& directory, std::str
   case_digest_ = std::move(case_digest);
   last_cycle_ = cycle;
   last_time_ = std::chrono::steady_clock::now();
+  written_ = false;
 }
 
 bool PeriodicCheckpoints::due(std::uint64_t cycle) const {
   if (!store_) return false;
   const bool by_cycles = settings_.cycles > 0 && cycle - last_cycle_ >= settings_.cycles;
+  const double seconds = !written_ && settings_.first_seconds > 0.0 ? settings_.first_seconds : settings_.seconds;
   const bool by_time =
-      settings_.seconds > 0.0 &&
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - last_time_).count() >= settings_.seconds;
+      seconds > 0.0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - last_time_).count() >= seconds;
   return by_cycles || by_time;
 }
 
@@ -67,6 +68,7 @@ void PeriodicCheckpoints::write(std::string_view snapshot_bytes, ResumePoint poi
   store_->write(snapshot_bytes, point);
   last_cycle_ = point.cycle;
   last_time_ = std::chrono::steady_clock::now();
+  written_ = true;
 }
 
 std::string resume_text(const ResumePoint& point) {

@@ -74,6 +74,11 @@ std::filesystem::path FileAccess::readable(const std::filesystem::path& requeste
   const std::filesystem::path canonical = std::filesystem::canonical(joined, error);
   const bool inside = !error && std::any_of(roots_.begin(), roots_.end(),
                                             [&](const auto& root) { return lies_within(canonical, root); });
+  if (roots_.empty()) {
+    throw FileAccessError(name +
+                          ": this server reads no files for clients; start dem_server with --read-dir DIR "
+                          "(repeatable) to let it read files from DIR");
+  }
   // Whether a file outside exists is not said either.
   if (!inside) {
     throw FileAccessError(name + ": not a file in the directories this server reads (" + allowed + ")");

@@ -2,6 +2,7 @@
 
 #include "snapshot_contacts.h"
 #include "snapshot_conversion_fields.h"
+#include "snapshot_rules.h"
 #include "snapshot_structure_checks.h"
 
 namespace dem::io {
@@ -32,6 +33,7 @@ template <int Dim>
 WorldSnapshotT<Dim> snapshot_from_proto(const proto::Snapshot& m, SnapshotInfo* info, const ResourceLimits& limits) {
   Problems problems;
   check_structure<Dim>(m, problems, limits);
+  if (problems.empty()) check_case_rules<Dim>(m, problems);
   if (!problems.empty()) throw SnapshotError(problems.text());
 
   WorldSnapshotT<Dim> s;

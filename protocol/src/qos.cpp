@@ -18,11 +18,12 @@ dds::Qos command_qos() { return dds::Qos().reliable(1s).keep_all().volatile_dura
 // writer until its max blocking time and then fail every write. So the
 // writer keeps the last 256, and each client has at most 64 requests
 // unanswered (client::ConnectOptions::max_outstanding): a reply leaves the
-// history only after 256 newer ones, which four clients at the bound
-// cannot have asked for before it was delivered - none is lost to a live
-// client, however many requests it has in the pipeline; a stalled reader
-// loses what falls out (it was not reading), the others read on (a repair
-// of a lost packet comes from this history). The ReplySender paces a reply
+// history after 256 newer ones, so one client's pipeline, however long,
+// loses none; a client whose process falls behind while other clients'
+// replies keep coming can (bench_responsiveness --flood: 64 and 69 of
+// about 100,000; docs/RELIABILITY.md, Not yet). A stalled reader loses
+// what falls out (it was not reading), the others read on (a repair of a
+// lost packet comes from this history). The ReplySender paces a reply
 // of many chunks (reply_sender.cpp); a stalled reader holds at most 256
 // samples of the server's memory.
 constexpr int kReplyHistory = 256;

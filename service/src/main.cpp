@@ -152,13 +152,16 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::PositiveNumber)
       ->envname("DEM_LOAD_SECONDS");
-  app.add_option("--checkpoint-cycles", options.checkpoints.cycles,
-                 "write a checkpoint to <out>/<case>/checkpoints every N cycles (0: none)")
-      ->envname("DEM_CHECKPOINT_CYCLES");
-  app.add_option("--checkpoint-seconds", options.checkpoints.seconds,
-                 "write a checkpoint every S seconds of wall time (0: none)")
-      ->check(CLI::NonNegativeNumber)
-      ->envname("DEM_CHECKPOINT_SECONDS");
+  CLI::Option* checkpoint_cycles =
+      app.add_option("--checkpoint-cycles", options.checkpoints.cycles,
+                     "write a checkpoint to <out>/<case>/checkpoints every N cycles (0: none); without this or "
+                     "--checkpoint-seconds, programmes (--run-and-exit, run_programme) write a first one 5 s into "
+                     "the run and then one every 300 s, cycle and run_until none")
+          ->envname("DEM_CHECKPOINT_CYCLES");
+  CLI::Option* checkpoint_seconds = app.add_option("--checkpoint-seconds", options.checkpoints.seconds,
+                                                   "write a checkpoint every S seconds of wall time (0: none)")
+                                        ->check(CLI::NonNegativeNumber)
+                                        ->envname("DEM_CHECKPOINT_SECONDS");
   app.add_option("--checkpoint-keep", options.checkpoints.keep, "checkpoints kept (the newest)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber)
@@ -168,6 +171,11 @@ int main(int argc, char** argv) {
                "(with --run-and-exit: from where its programme stood)")
       ->needs(case_option)
       ->envname("DEM_RESUME");
+  app.add_flag("--overwrite", options.overwrite,
+               "replace the output of an earlier run in <out>/<case>/ (its tables, snapshots and checkpoints) when "
+               "a case is loaded afresh; without it such a load is refused, so nothing is cut unasked")
+      ->excludes("--resume")
+      ->envname("DEM_OVERWRITE");
   app.add_option("--queue-capacity", options.queue_capacity,
                  "commands waiting for the engine; beyond them a command is answered busy")
       ->capture_default_str()
@@ -218,6 +226,12 @@ int main(int argc, char** argv) {
     }
     options.threads = threads;
   }
+  // Asked for, checkpoints are the same for every run (both 0: none at all);
+  // otherwise programmes keep their default.
+  if (checkpoint_cycles->count() > 0 || checkpoint_seconds->count() > 0) {
+    options.programme_checkpoints = options.checkpoints;
+  }
+  options.programme_checkpoints.keep = options.checkpoints.keep;
   options.record_csv = !no_csv;
   if (vtk_option->count() > 0) options.vtk_interval = vtk_interval;
   options.load_time_limit = std::chrono::seconds(load_seconds);

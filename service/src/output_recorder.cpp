@@ -2,6 +2,9 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
+#include <vector>
+
 #include "dem/io/compression_state.h"
 #include "dem/io/file_access.h"
 
@@ -21,6 +24,36 @@ std::string directory_name(const std::string& case_name) {
 std::filesystem::path OutputRecorder::case_directory_of(const std::filesystem::path& output,
                                                         const std::string& case_name) {
   return output / directory_name(case_name);
+}
+
+void OutputRecorder::claim(const std::string& case_name, bool overwrite) {
+  const std::filesystem::path directory = case_directory_of(output_directory_, case_name);
+  std::error_code error;
+  if (started_.contains(directory) || !std::filesystem::is_directory(directory, error)) return;
+  // A link in its place or in it is start()'s to refuse (io::own_directory):
+  // nothing is then written there, so nothing is cut.
+  try {
+    io::own_directory(output_directory_, directory.filename());
+  } catch (const io::FileAccessError&) {
+    return;
+  }
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
+    names.push_back(entry.path().filename().string());
+  }
+  if (names.empty()) return;
+  std::sort(names.begin(), names.end());
+  if (!overwrite) {
+    std::string listed;
+    for (std::size_t i = 0; i < names.size() && i < 4; ++i) listed += (i > 0 ? ", " : "") + names[i];
+    if (names.size() > 4) listed += ", ... (" + std::to_string(names.size()) + " in all)";
+    throw OutputInUse(directory.string() + " holds the output of an earlier run (" + listed +
+                      "), which a new run would cut: continue it with --resume (dem_server --case FILE --resume), "
+                      "start the server with --overwrite to replace it, or give another --out");
+  }
+  // remove_all takes a link itself away, never what it points to.
+  for (const std::string& name : names) std::filesystem::remove_all(directory / name, error);
+  spdlog::warn("--overwrite: removed the {} files of an earlier run in {}", names.size(), directory.string());
 }
 
 OutputRecorder::OutputRecorder(std::filesystem::path output_directory, bool enabled,
@@ -58,6 +91,7 @@ void OutputRecorder::start(const std::string& case_name, const BasicWorld<Dim>& 
   vtk_interval_ = vtk_override_.value_or(vtk_interval);
   if (resume) resume_ = *resume;
   directory_problem_.reset();
+  started_.insert(directory_);
   try {
     io::own_directory(output_directory_, directory_.filename());
   } catch (const io::FileAccessError& error) {

@@ -48,7 +48,7 @@ SimulationRunner::SimulationRunner(const ServerOptions& options, CommandQueue& q
                   options.limits.max_query_contacts, read_access(options)),
       recorder_(options.output_directory, options.record_csv, options.vtk_interval),
       schedule_(options.telemetry_cycles, options.telemetry_seconds),
-      checkpoints_(options.checkpoints) {}
+      checkpoints_(options.checkpoints, options.programme_checkpoints) {}
 
 void SimulationRunner::load_initial_case(const std::filesystem::path& path, bool resume) {
   protocol::LoadCaseArgs args;

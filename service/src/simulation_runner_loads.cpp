@@ -16,6 +16,14 @@ using protocol::CommandKind;
 using protocol::ReplyStatus;
 
 std::string SimulationRunner::install(Simulation::Prepared prepared, const io::ResumePoint* resume) {
+  if (!resume) {
+    // Before anything changes: a refused load leaves the server as it was.
+    try {
+      recorder_.claim(prepared.case_name, options_.overwrite);
+    } catch (const OutputRecorder::OutputInUse& error) {
+      throw CommandError(ReplyStatus::kRefused, error.what());
+    }
+  }
   if (simulation_.loaded()) recorder_.finish(simulation_.world().view());
   std::string message = simulation_.install(std::move(prepared));
   ++world_generation_;

@@ -57,6 +57,7 @@ void SimulationRunner::run_programme(ReceivedCommand& received) {
 void SimulationRunner::start_programme(std::size_t first, std::size_t count, std::uint64_t first_done) {
   programme_.emplace(simulation_.programme(), simulation_.world(), simulation_.output_interval(), first, count,
                      first_done);
+  checkpoints_.begin_programme(simulation_.world().cycle_count());
   lifecycle_.take(Transition::kStartRun);
   message_ = "programme of " + std::to_string(count) + " stages running";
   spdlog::info("running the programme of {}: stages {} to {}, up to {} cycles", simulation_.case_name(), first + 1,
@@ -209,7 +210,8 @@ void SimulationRunner::end_programme() {
                                                                      : ReplyStatus::kFailed;
   const ReceivedCommand received = *std::exchange(programme_command_, std::nullopt);
   programme_.reset();  // cycle and run_until record the tables at the telemetry interval again
-  announce();          // before the reply: who reads it sees the programme ended
+  checkpoints_.end_programme(world.cycle_count());
+  announce();  // before the reply: who reads it sees the programme ended
   send(received, std::move(reply));
 }
 

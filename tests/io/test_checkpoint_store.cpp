@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "dem/io/checkpoint_store.h"
@@ -95,6 +97,33 @@ TEST(CheckpointStore, PeriodicCheckpointsAreDueAfterTheirInterval) {
   periodic.begin(directory, "def456", 1000);  // a new world loaded: its interval from its own cycle
   EXPECT_FALSE(periodic.due(1099));
   EXPECT_TRUE(periodic.due(1100));
+  std::filesystem::remove_all(directory);
+}
+
+// A programme run killed 6 s in had nothing to resume from (issue 37): by
+// default the first checkpoint is due 5 s of wall time into a run, the
+// next ones every 300 s after the last.
+TEST(CheckpointStore, TheFirstCheckpointComesSoonAfterTheStart) {
+  const CheckpointSettings defaults = default_programme_checkpoints();
+  EXPECT_TRUE(defaults.enabled());
+  EXPECT_EQ(defaults.first_seconds, 5.0);
+  EXPECT_EQ(defaults.seconds, 300.0);
+  EXPECT_EQ(defaults.cycles, 0u);
+
+  const auto directory = test::fresh_directory("first_checkpoint");
+  PeriodicCheckpoints periodic(CheckpointSettings{.seconds = 300.0, .first_seconds = 0.05});
+  periodic.begin(directory, "abc123", 0);
+  EXPECT_FALSE(periodic.due(10));
+  std::this_thread::sleep_for(std::chrono::milliseconds(60));
+  EXPECT_TRUE(periodic.due(20));
+  World world(testing::settling_box());
+  world.cycle(20);
+  periodic.write(serialize_snapshot(world.snapshot(), SnapshotInfo{}), ResumePoint{.cycle = 20});
+  std::this_thread::sleep_for(std::chrono::milliseconds(60));
+  EXPECT_FALSE(periodic.due(30));           // from now on, the interval
+  periodic.begin(directory, "abc123", 30);  // a new run begins: its first one soon again
+  std::this_thread::sleep_for(std::chrono::milliseconds(60));
+  EXPECT_TRUE(periodic.due(40));
   std::filesystem::remove_all(directory);
 }
 

@@ -1,7 +1,8 @@
 // What a snapshot may not hold even when its arrays fit together: unknown
 // enum values, duplicate names, thread counts and particle counts beyond
-// the limits, numbers the force arithmetic cannot carry. Each is refused
-// naming its field.
+// the limits, numbers the force arithmetic cannot carry, values a case
+// could not give (its rules, applied after decoding), a cycle counter that
+// could wrap. Each is refused naming its field.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -13,10 +14,20 @@ namespace {
 
 using ::testing::HasSubstr;
 using testing::settling_box;
+using testing::sphere_stack;
 
 std::string problems_of(const proto::Snapshot& message, const ResourceLimits& limits = machine_limits()) {
   try {
     snapshot_from_proto<2>(message, nullptr, limits);
+  } catch (const SnapshotError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+std::string problems_of_3d(const proto::Snapshot& message) {
+  try {
+    snapshot_from_proto<3>(message, nullptr, machine_limits());
   } catch (const SnapshotError& error) {
     return error.what();
   }
@@ -76,6 +87,72 @@ TEST(SnapshotChecks, NumbersTheForceArithmeticCannotCarryAreRefused) {
   m = good_snapshot();
   m.mutable_settings()->mutable_damping()->set_global_alpha(std::numeric_limits<double>::infinity());
   EXPECT_THAT(problems_of(m), HasSubstr("settings.damping.global_alpha: is not a finite number (inf)"));
+}
+
+// A payload edited and signed again passes the frame's checksum: the
+// case's rules (case_validation.cpp, contact_model_checks.cpp) refuse what
+// no case could hold, by the snapshot's field.
+TEST(SnapshotChecks, ValuesNoCaseCouldHoldAreRefused) {
+  for (const double stiffness : {0.0, -1e6}) {
+    proto::Snapshot m = good_snapshot();
+    m.mutable_settings()->mutable_contact_models(0)->set_linear_normal_stiffness(stiffness);
+    EXPECT_THAT(problems_of(m), HasSubstr("settings.contact_models[0].linear_normal_stiffness: must be > 0"));
+  }
+  proto::Snapshot m = good_snapshot();
+  m.mutable_settings()->mutable_contact_models(0)->set_linear_shear_stiffness(-5);
+  EXPECT_THAT(problems_of(m), HasSubstr("settings.contact_models[0].linear_shear_stiffness: must be >= 0 (got -5)"));
+  m = good_snapshot();
+  m.mutable_settings()->mutable_materials(0)->set_poisson_ratio(2);
+  EXPECT_THAT(problems_of(m), HasSubstr("settings.materials[0].poisson_ratio: must be in (-1, 0.5) (got 2)"));
+  m = good_snapshot();
+  m.mutable_settings()->mutable_materials(0)->set_density(0);
+  EXPECT_THAT(problems_of(m), HasSubstr("settings.materials[0].density: must be > 0 (got 0)"));
+  m = good_snapshot();
+  m.mutable_settings()->mutable_materials(0)->set_friction(-0.3);
+  EXPECT_THAT(problems_of(m), HasSubstr("settings.materials[0].friction: must be >= 0 (got -0.3)"));
+  m = good_snapshot();
+  m.mutable_settings()->mutable_damping()->set_local_alpha(1);
+  EXPECT_THAT(problems_of(m), HasSubstr("settings.damping.local_alpha: must be in [0, 1) (got 1)"));
+  m = good_snapshot();
+  m.mutable_settings()->set_time_step_fraction(1.5);
+  EXPECT_THAT(problems_of(m), HasSubstr("settings.time_step_fraction: must be in (0, 1] (got 1.5)"));
+}
+
+TEST(SnapshotChecks, AHertzSnapshotNeedsTheParticlesElasticConstants) {
+  World3 world(sphere_stack(ContactLaw::kHertzMindlin));
+  world.cycle(20);
+  const proto::Snapshot good = snapshot_to_proto(world.snapshot(), SnapshotInfo{});
+  EXPECT_EQ(problems_of_3d(good), "");
+  proto::Snapshot m = good;
+  m.mutable_settings()->mutable_materials(m.particles().material(0))->set_youngs_modulus(0);
+  EXPECT_THAT(problems_of_3d(m), HasSubstr(".youngs_modulus: must be > 0 (got 0)"));
+  m = good;
+  m.mutable_settings()->mutable_contact_models(0)->set_hertz_damping_ratio(-0.1);
+  EXPECT_THAT(problems_of_3d(m), HasSubstr("settings.contact_models[0].hertz_damping_ratio: must be >= 0 (got -0.1)"));
+}
+
+TEST(SnapshotChecks, AZeroQuaternionIsRefused) {
+  World3 world(sphere_stack(ContactLaw::kLinear));
+  world.cycle(20);
+  proto::Snapshot m = snapshot_to_proto(world.snapshot(), SnapshotInfo{});
+  for (int k = 4; k < 8; ++k) m.mutable_particles()->set_rotation(k, 0.0);
+  EXPECT_THAT(problems_of_3d(m),
+              HasSubstr("particles.rotation[1]: must be a unit quaternion, an orientation (got one of length 0)"));
+  m.mutable_particles()->set_rotation(4, 2.0);
+  EXPECT_THAT(problems_of_3d(m), HasSubstr("particles.rotation[1]: must be a unit quaternion"));
+}
+
+// A counter near 2^64 wrapped to 19 after 20 cycles; a snapshot stands at
+// most at 2^62, from where no run can reach the wrap.
+TEST(SnapshotChecks, ACycleCounterThatCouldWrapIsRefused) {
+  proto::Snapshot m = good_snapshot();
+  m.set_cycle(~std::uint64_t{0});
+  EXPECT_THAT(problems_of(m), HasSubstr("cycle: is 18446744073709551615, beyond 2^62 (4611686018427387904)"));
+  m.set_cycle(std::uint64_t{1} << 62);
+  EXPECT_EQ(problems_of(m), "");
+  m = good_snapshot();
+  m.set_sorted_cycle(m.cycle() + 1);
+  EXPECT_THAT(problems_of(m), HasSubstr("sorted_cycle: is 51, after the snapshot's cycle 50"));
 }
 
 }  // namespace

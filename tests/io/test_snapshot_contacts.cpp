@@ -67,6 +67,8 @@ void expect_every_field_round_trips(WorldSnapshotT<Dim> snap) {
     for (ContactSnapshotT<Dim>& c : snap.contacts)
       field(c) = distinct(field(c), k + 40 * static_cast<int>(&c - &snap.contacts[0]));
   });
+  // A contact forms no later than the snapshot's cycle (io/src/snapshot_rules.cpp).
+  for (const ContactSnapshotT<Dim>& c : snap.contacts) snap.cycle = std::max(snap.cycle, c.formed_cycle);
   const WorldSnapshotT<Dim> back = snapshot_from_proto<Dim>(snapshot_to_proto(snap, SnapshotInfo{"fields", ""}));
   ASSERT_EQ(back.contacts.size(), snap.contacts.size());
   for_each_contact_field<Dim>([&](const ContactFieldInfo& info, auto field, auto) {

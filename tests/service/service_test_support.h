@@ -119,6 +119,13 @@ enum ReliabilityRoundTwoDomain : std::uint32_t {
   kLastRoundTwoDomain
 };
 static_assert(kLastRoundTwoDomain <= 199, "issue 37's tests take 191-198 (200 on belong to others)");
+// Issue 37's later tests: 175 to 179 (the Python tests take 160 to 174).
+enum ReliabilityRoundTwoLaterDomain : std::uint32_t {
+  kCheckpointsRandomKills = 175,
+  kCheckpointsOutputInUse,
+  kLastRoundTwoLaterDomain
+};
+static_assert(kLastRoundTwoLaterDomain <= 180, "issue 37's later tests take 175-179 (180 on belong to others)");
 
 std::filesystem::path case_file(const std::string& name);  // cases/ball/<name>.case.txtpb
 std::string read_text(const std::filesystem::path& path);

@@ -3,9 +3,14 @@
 // checkpoint - a one-shot run ends with the same final state, the same
 // tables and ParaView files, byte for byte, as one never interrupted; an interactive server
 // takes up the world of the checkpoint, and the same commands then end in
-// the same state.
+// the same state; twenty kills at random moments of one run change nothing
+// either. An earlier run's output is continued with --resume, or replaced
+// with --overwrite, never cut unasked.
 #include <gtest/gtest.h>
 #include <signal.h>
+
+#include <cstdio>
+#include <random>
 
 #include "service_test_support.h"
 
@@ -107,6 +112,93 @@ TEST(Checkpoints, AnInteractiveServerKilledAndResumedTakesUpItsWorld) {
   client.shutdown();
   EXPECT_EQ(server.wait(20s), 0);
   EXPECT_EQ(read_text(out / "nine_disc_damped" / "walls.csv"), read_text(whole / "nine_disc_damped" / "walls.csv"));
+}
+
+// Every regular file of a one-shot run's case directory (tables, analyses,
+// final.snapshot) and of its vtk/ equal in `a` and `b`; how many compared.
+int expect_same_files(const fs::path& a, const fs::path& b) {
+  int compared = 0;
+  for (const fs::path& directory : {fs::path(), fs::path("vtk")}) {
+    if (!fs::exists(a / directory)) continue;
+    for (const auto& entry : fs::directory_iterator(a / directory)) {
+      if (!entry.is_regular_file()) continue;
+      const fs::path name = directory / entry.path().filename();
+      if (!fs::exists(b / name)) {
+        ADD_FAILURE() << name << " is missing";
+        continue;
+      }
+      EXPECT_EQ(read_text(a / name), read_text(b / name)) << name << " differs";
+      ++compared;
+    }
+  }
+  return compared;
+}
+
+// Twenty SIGKILLs of a one-shot run, each at a random moment after the run
+// passed one more checkpoint, each followed by a start with --resume (under
+// another name: the killed one's stays on the domain until its lease runs
+// out): the run ends with the uninterrupted run's final state and tables,
+// byte for byte. The verification assembly runs 338,765 cycles in all.
+TEST(Checkpoints, TwentyRandomKillsOfAOneShotRunEndAsOneNeverInterrupted) {
+  const fs::path case_path = case_file("verification_assembly");
+  const std::uint32_t domain = kCheckpointsRandomKills;
+  const fs::path whole = output_directory("random_kills_whole");
+  const fs::path killed = output_directory("random_kills_killed");
+  const std::vector<std::string> one_shot = {"--run-and-exit", "--vtk-interval", "50000", "--checkpoint-cycles",
+                                             "2500"};
+  ServerProcess first(server_arguments("whole", domain, whole, case_path, one_shot));
+  ASSERT_EQ(first.wait(180s), 0);
+
+  std::mt19937 random(37);  // the same moments every run
+  std::uniform_int_distribution<int> delay_ms(0, 100);
+  const fs::path directory = killed / "verification_assembly";
+  int kills = 0;
+  std::uint64_t newest = 0;
+  for (int life = 0; life < 20; ++life) {
+    std::vector<std::string> arguments = one_shot;
+    if (life > 0) arguments.push_back("--resume");
+    ServerProcess server(server_arguments("life" + std::to_string(life), domain, killed, case_path, arguments));
+    const std::uint64_t before = newest;
+    ASSERT_TRUE(eventually([&] { return newest_checkpoint(directory) > before; }, 60s)) << "life " << life;
+    std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms(random)));
+    server.signal(SIGKILL);
+    server.wait(10s);
+    newest = newest_checkpoint(directory);
+    ASSERT_FALSE(fs::exists(directory / "final.snapshot")) << "the run ended before kill " << life + 1;
+    ++kills;
+    std::printf("kill %d: newest checkpoint at cycle %llu\n", kills, static_cast<unsigned long long>(newest));
+  }
+  std::vector<std::string> arguments = one_shot;
+  arguments.push_back("--resume");
+  ServerProcess last(server_arguments("resumed", domain, killed, case_path, arguments));
+  ASSERT_EQ(last.wait(180s), 0);
+  EXPECT_EQ(kills, 20);
+  EXPECT_GE(expect_same_files(whole / "verification_assembly", directory), 6);  // final.snapshot: the state hash too
+}
+
+// A one-shot run started again without --resume into the directory of an
+// earlier one cut its tables (assembly.csv from 3,317 lines to 32): it is
+// refused, naming --resume and --overwrite, and leaves them as they were;
+// with --overwrite it starts afresh and ends as the first did.
+TEST(Checkpoints, AnEarlierRunsOutputIsContinuedOrReplacedNeverCut) {
+  const fs::path case_path = case_file("nine_disc_damped");
+  const std::uint32_t domain = kCheckpointsOutputInUse;
+  const fs::path out = output_directory("output_in_use");
+  ServerProcess first(server_arguments("first", domain, out, case_path, {"--run-and-exit"}));
+  ASSERT_EQ(first.wait(60s), 0);
+  const fs::path directory = out / "nine_disc_damped";
+  const std::string walls = read_text(directory / "walls.csv");
+  const std::string final_state = read_text(directory / "final.snapshot");
+
+  ServerProcess again(server_arguments("again", domain, out, case_path, {"--run-and-exit"}));
+  EXPECT_EQ(again.wait(60s), 3);  // the initial case cannot be loaded
+  EXPECT_EQ(read_text(directory / "walls.csv"), walls);
+  EXPECT_EQ(read_text(directory / "final.snapshot"), final_state);
+
+  ServerProcess replaced(server_arguments("replaced", domain, out, case_path, {"--run-and-exit", "--overwrite"}));
+  EXPECT_EQ(replaced.wait(60s), 0);
+  EXPECT_EQ(read_text(directory / "walls.csv"), walls);
+  EXPECT_EQ(read_text(directory / "final.snapshot"), final_state);
 }
 
 }  // namespace

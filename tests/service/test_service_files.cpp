@@ -88,6 +88,15 @@ TEST(Files, WithoutAReadDirectoryServerSideLoadsAreRefusedSayingHowToAllowThem) 
     EXPECT_EQ(reply.message.find("root:"), std::string::npos) << reply.message;
   }
   EXPECT_TRUE(client.load_case_file(case_file("nine_disc_damped")).ok());  // a case sent as text still loads
+  // A sent case that names a particle file: that file is a server-side read too.
+  protocol::Command text;
+  text.kind = static_cast<std::uint8_t>(CommandKind::kLoadCase);
+  text.load_case.text = read_text(case_file("nine_disc_damped")) +
+                        "\nparticles { csv_file { path: \"/etc/passwd\" material: \"disc\" } }\n";
+  const protocol::Reply particles = reply_to(client, text);
+  EXPECT_EQ(particles.status, ReplyStatus::kInvalidCase);
+  EXPECT_NE(particles.message.find("start dem_server with --read-dir DIR"), std::string::npos) << particles.message;
+  EXPECT_EQ(particles.message.find("root:"), std::string::npos) << particles.message;
 }
 
 // A file in a read directory that is no case, or a particle file that is

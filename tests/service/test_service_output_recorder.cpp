@@ -1,7 +1,8 @@
 // The service's per-case files (OutputRecorder): the ParaView series of a
 // programme - steps while a stage runs at the case's vtk_interval, or the
 // server's when it was given one, and the final state at the end - and none
-// for a world driven by commands alone. No DDS: the recorder by itself.
+// for a world driven by commands alone; an earlier run's output is never
+// cut unasked (claim). No DDS: the recorder by itself.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -82,6 +83,43 @@ TEST(OutputRecorderVtk, CommandsAloneWriteNoSeries) {
   recorder.finish(nine.world);
   EXPECT_FALSE(std::filesystem::exists(out / "nine" / "particles.pvd"));
   EXPECT_TRUE(std::filesystem::exists(out / "nine" / "particles.csv"));
+}
+
+// A server restarted into an output directory without --resume cut its
+// assembly.csv from 3,317 lines to 32 (issue 37): a new recorder refuses a
+// case directory with files in it, naming --resume and --overwrite; with
+// overwrite it empties it first, checkpoints and all.
+TEST(OutputRecorderClaim, AnEarlierRunsOutputIsRefusedOrReplacedWhenAsked) {
+  const auto out = output_directory("output_recorder_claim");
+  NineDisc nine;
+  {
+    service::OutputRecorder earlier(out, true);
+    earlier.claim("nine", false);  // nothing there yet
+    earlier.start("nine", nine.world);
+    nine.world.cycle(100);
+    earlier.record(nine.world);
+    earlier.claim("nine", false);  // its own: a load of the same case starts again
+    earlier.finish(nine.world);
+  }
+  std::filesystem::create_directories(out / "nine" / "checkpoints");
+  std::ofstream(out / "nine" / "checkpoints" / "checkpoint-0000000100.resume") << "a checkpoint";
+  const std::string assembly = read_text(out / "nine" / "assembly.csv");
+
+  service::OutputRecorder restarted(out, true);
+  try {
+    restarted.claim("nine", false);
+    ADD_FAILURE() << "an earlier run's output was taken over";
+  } catch (const service::OutputRecorder::OutputInUse& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("holds the output of an earlier run (assembly.csv"), std::string::npos) << message;
+    EXPECT_NE(message.find("--resume"), std::string::npos) << message;
+    EXPECT_NE(message.find("--overwrite"), std::string::npos) << message;
+  }
+  EXPECT_EQ(read_text(out / "nine" / "assembly.csv"), assembly);  // untouched
+  restarted.claim("other", false);                                // another case's directory is free
+
+  restarted.claim("nine", true);
+  EXPECT_TRUE(std::filesystem::is_empty(out / "nine"));
 }
 
 }  // namespace

@@ -58,11 +58,13 @@ int main(int argc, char** argv) {
                                                  "output.vtk_interval)")
                                       ->check(whole_number("0 = none"));
   app.add_flag("-q,--quiet", options.quiet, "print errors only: no progress line and no summary");
-  app.add_option("--checkpoint-cycles", options.checkpoints.cycles,
-                 "write a checkpoint to OUT/checkpoints every N cycles (0: none)");
-  app.add_option("--checkpoint-seconds", options.checkpoints.seconds,
-                 "write a checkpoint every S seconds of wall time (0: none)")
-      ->check(CLI::NonNegativeNumber);
+  const CLI::Option* checkpoint_cycles =
+      app.add_option("--checkpoint-cycles", options.checkpoints.cycles,
+                     "write a checkpoint to OUT/checkpoints every N cycles (0: none); without this or "
+                     "--checkpoint-seconds, a first one 5 s into the run and then one every 300 s");
+  const CLI::Option* checkpoint_seconds = app.add_option("--checkpoint-seconds", options.checkpoints.seconds,
+                                                         "write a checkpoint every S seconds of wall time (0: none)")
+                                              ->check(CLI::NonNegativeNumber);
   app.add_option("--checkpoint-keep", options.checkpoints.keep, "checkpoints kept (the newest)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
@@ -73,6 +75,12 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     // --help arrives here too, and is not a mistake.
     return app.exit(error) == 0 ? 0 : kBadArguments;
+  }
+  // A programme run checkpoints unless told otherwise (both 0: none).
+  if (checkpoint_cycles->count() == 0 && checkpoint_seconds->count() == 0) {
+    const int keep = options.checkpoints.keep;
+    options.checkpoints = dem::io::default_programme_checkpoints();
+    options.checkpoints.keep = keep;
   }
   if (threads_option->count() > 0) {
     if (const auto problem = dem::io::thread_count_problem(threads, dem::io::machine_limits())) {

@@ -67,7 +67,8 @@ int main(int argc, char** argv) {
   bool binary = false;
   auto* load = app.add_subcommand("load", "load a case (sent as text; the server reports file, line and field)");
   load->add_option("CASE", case_file, "case file in protobuf text format")->required();
-  load->add_flag("--on-server", on_server, "CASE is a path on the server's file system");
+  load->add_flag("--on-server", on_server,
+                 "CASE is a path on the server's file system (in a directory it was started with --read-dir)");
   load->add_flag("--binary", binary, "CASE is a serialized dem.proto.Case");
   load->callback([&] { action = [&] { return demctl::load(global, case_file, on_server, binary); }; });
 

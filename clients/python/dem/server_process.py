@@ -22,7 +22,7 @@ from .paths import cases_dir, server_program, use_loopback
 
 class ServerProcess:
     def __init__(self, name, domain, out, *, telemetry_cycles=100, threads=1, log_level="warn", log_file=None,
-                 program=None, extra_arguments=(), stop_timeout=20.0, read_dirs=None):
+                 program=None, extra_arguments=(), stop_timeout=20.0, read_dirs=None, overwrite=False):
         self.name = name
         self.domain = domain
         self.out = pathlib.Path(out)
@@ -31,6 +31,9 @@ class ServerProcess:
         self.arguments = [str(program or server_program()), "--name", name, "--domain", str(domain),
                           "--out", str(self.out), "--telemetry-cycles", str(telemetry_cycles),
                           "--threads", str(threads), "--log-level", log_level, *extra_arguments]
+        # An earlier run's output in <out>/<case>/ is refused unless replaced (--overwrite).
+        if overwrite:
+            self.arguments.append("--overwrite")
         # The server reads cases by their path only from these (--read-dir):
         # by default the current directory and the repository's cases.
         for directory in read_dirs if read_dirs is not None else [pathlib.Path.cwd(), cases_dir()]:

@@ -18,7 +18,8 @@ def argument_parser(description, out, domain, telemetry_cycles=100):
     parser.add_argument("--out", type=pathlib.Path, default=pathlib.Path(out), help="directory for CSV and PNG files")
     parser.add_argument("--domain", type=int, default=domain, help="DDS domain id")
     parser.add_argument("--server", default=None,
-                        help="drive this running dem_server instead of starting one")
+                        help="drive this running dem_server instead of starting one (examples that have it "
+                             "read a case file need it started with --read-dir covering the file)")
     parser.add_argument("--telemetry-cycles", type=int, default=telemetry_cycles,
                         help="telemetry interval of the server started here")
     return parser
@@ -30,15 +31,19 @@ def case_path(name):
 
 
 @contextlib.contextmanager
-def service(args, name):
-    """A Client of the server the example drives."""
+def service(args, name, read_dirs=()):
+    """A Client of the server the example drives; the one started here may
+    also read cases from ``read_dirs`` (beside the current directory and the
+    repository's cases/)."""
     dem.use_loopback()
     if args.server:
         with dem.Client(args.server, args.domain, timeout=20) as client:
             yield client
         return
     args.out.mkdir(parents=True, exist_ok=True)
-    with dem.ServerProcess(name, args.domain, args.out / "server", telemetry_cycles=args.telemetry_cycles) as server:
+    # The example's own scratch directory: a second run replaces the first's output.
+    with dem.ServerProcess(name, args.domain, args.out / "server", telemetry_cycles=args.telemetry_cycles,
+                           overwrite=True, read_dirs=[pathlib.Path.cwd(), paths.cases_dir(), *read_dirs]) as server:
         with server.connect() as client:
             yield client
 

@@ -137,7 +137,7 @@ def main():
     if args.preparation == "server":
         return compress_on_server(args, case, plate, plates, clock)
 
-    with service(args, "compression") as client:
+    with service(args, "compression", read_dirs=[pathlib.Path(args.case).resolve().parent]) as client:
         # The server reads the file itself, so paths inside it resolve against its directory.
         loaded = client.load_case(args.case, on_server=True)
         say(f"{loaded.message}; loading plate {plate}, bottom plate {bottom or '-'}")
@@ -277,7 +277,8 @@ def compress_on_server(args, case, plate, plates, clock):
     snapshot_rows = []
     server_out = args.out / "server"
     server = dem.ServerProcess("compression", args.domain, server_out, telemetry_cycles=args.telemetry_cycles,
-                               extra_arguments=["--case", str(pathlib.Path(args.case).resolve()), "--run-and-exit"])
+                               extra_arguments=["--case", str(pathlib.Path(args.case).resolve()), "--run-and-exit"],
+                               overwrite=True)
     with server:
         with server.connect() as client, client.subscribe(contact_stats=False) as telemetry, \
                 LiveStressSettlement(telemetry, [plate], png=args.out / "stress_settlement.png", show=args.show,

@@ -32,13 +32,24 @@ struct ResumePoint {
 };
 
 // When a checkpoint is due: every `cycles` cycles and/or every `seconds`
-// of wall time, whichever comes first (0 turns either off; both 0: none).
+// of wall time, whichever comes first (0 turns either off; both 0: none);
+// the first one after `first_seconds` of wall time when that is set, so a
+// long interval does not leave a run's start unprotected.
 struct CheckpointSettings {
   std::uint64_t cycles = 0;
   double seconds = 0.0;
   int keep = 3;
-  bool enabled() const { return cycles > 0 || seconds > 0.0; }
+  double first_seconds = 0.0;
+  bool enabled() const { return cycles > 0 || seconds > 0.0 || first_seconds > 0.0; }
 };
+
+// What a programme run (dem_run, dem_server's one-shot mode and
+// run_programme) checkpoints when not told: a first checkpoint 5 s of wall
+// time after its start, then every 5 minutes: a killed run loses at most
+// that much work, and a run killed early has something to resume from.
+inline CheckpointSettings default_programme_checkpoints() {
+  return CheckpointSettings{.cycles = 0, .seconds = 300.0, .keep = 3, .first_seconds = 5.0};
+}
 
 class CheckpointStore {
  public:
@@ -90,6 +101,7 @@ class PeriodicCheckpoints {
   std::string case_digest_;
   std::uint64_t last_cycle_ = 0;
   std::chrono::steady_clock::time_point last_time_;
+  bool written_ = false;  // since begin()
 };
 
 // The resume file's text, and back (throws std::runtime_error naming what is wrong).

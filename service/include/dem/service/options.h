@@ -53,10 +53,18 @@ struct ServerOptions {
   // A load_case or load_snapshot still preparing after this long (a
   // packing that nearly cannot fit) is abandoned with an error.
   std::chrono::milliseconds load_time_limit{120'000};
-  // Periodic checkpoints in <output>/<case>/checkpoints (none by default),
-  // and --resume: continue the initial case from the newest of them.
+  // Periodic checkpoints in <output>/<case>/checkpoints: of cycle and
+  // run_until when asked (none by default); of programmes (the one-shot
+  // mode, run_programme) the same when asked, else a first one 5 s into the
+  // run and then every 5 minutes (io::default_programme_checkpoints). And
+  // --resume: continue the initial case from the newest of them.
   io::CheckpointSettings checkpoints;
+  io::CheckpointSettings programme_checkpoints = io::default_programme_checkpoints();
   bool resume = false;
+  // A case whose directory (<output>/<case>/) holds an earlier run's output
+  // is refused, unless resumed (--resume) or this is set (--overwrite):
+  // then that output is removed first (OutputRecorder::claim).
+  bool overwrite = false;
   // Before starting, how long to look for another server of this name,
   // and to wait for one found to leave (name_claim.h).
   std::chrono::milliseconds name_discovery{500};

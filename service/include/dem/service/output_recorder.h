@@ -20,6 +20,8 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <set>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
@@ -43,6 +45,17 @@ class OutputRecorder {
   // `vtk_interval`, when set, replaces every case's output.vtk_interval.
   OutputRecorder(std::filesystem::path output_directory, bool enabled,
                  std::optional<std::uint64_t> vtk_interval = std::nullopt);
+
+  // Before a load that starts its tables afresh (not a resume): the case's
+  // directory may hold an earlier run's output, which start() would cut.
+  // A directory this recorder started in is its own to start again; any
+  // other holding files is refused (OutputInUse) unless `overwrite`, when
+  // its contents go first (checkpoints included, so a later --resume never
+  // mixes two runs).
+  void claim(const std::string& case_name, bool overwrite);
+  struct OutputInUse : std::runtime_error {
+    using std::runtime_error::runtime_error;
+  };
 
   // After a load; `resume`: a checkpoint's, whose tables are cut back to
   // it and appended to, and whose analyses carry on (io/checkpoint_store.h).
@@ -118,6 +131,7 @@ class OutputRecorder {
   bool enabled_;
   bool failed_ = false;
   std::filesystem::path directory_;
+  std::set<std::filesystem::path> started_;  // the case directories start() wrote in
   std::optional<std::string> directory_problem_;
   std::unique_ptr<io::WallsCsvT<2>> walls2_;
   std::unique_ptr<io::WallsCsvT<3>> walls3_;
