@@ -105,7 +105,10 @@ struct CentripetalMeasured {
   double turn_small = 0.0, turn_large = 0.0;
   double expansion_small = 0.0, expansion_large = 0.0;
   double late_expansion_large = 0.0;  // over the last quarter of the shear
-  double mean_stress_drift = 0.0;     // the largest circle's mean stress at the end over at the start
+  // At the end: the smallest circle's volumetric strain less the largest's
+  // (negative: the centre has expanded more).
+  double end_volumetric_difference = 0.0;
+  double mean_stress_drift = 0.0;  // the largest circle's mean stress at the end over at the start
 };
 
 CentripetalMeasured measure_centripetal(const CentripetalRun& run);
@@ -118,7 +121,7 @@ void print_packings(std::FILE* out, const std::vector<CentripetalMeasured>& pack
 // Delta F / F < 0.1, sin(phi) of the three circles within 0.05 of each
 // other, the largest circle contracting then expanding from 0.25-1 % ("at
 // around 0.5%") to the end, the smallest expanding from the start (turning
-// by 0.1 %).
+// by 0.1 %) and more than the largest by the end.
 Verdict judge_centripetal(const CentripetalMeasured& measured);
 
 // Runs the case on each seed (its own packing when `seeds` is empty), into
