@@ -339,11 +339,7 @@ CentripetalMeasured median_of(const std::vector<CentripetalMeasured>& packings) 
   m.label = "median of " + std::to_string(packings.size());
   m.settled = std::ranges::all_of(packings, &CentripetalMeasured::settled);
   m.sheared = std::ranges::all_of(packings, &CentripetalMeasured::sheared);
-  for (const auto figure : kFigures) {
-    std::vector<double> values;
-    for (const CentripetalMeasured& p : packings) values.push_back(p.*figure);
-    m.*figure = median(std::move(values));
-  }
+  set_medians(m, packings, kFigures);
   return m;
 }
 
