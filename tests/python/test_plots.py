@@ -252,3 +252,57 @@ def test_randall_chapter_6_figures_from_a_dem_validate_directory(tmp_path):
                             capture_output=True, text=True)
     assert result.returncode == 0, result.stderr
     assert (tmp_path / "cli" / "shear.png").exists()
+
+
+def test_randall_centripetal_figures_from_a_dem_validate_directory(tmp_path):
+    """Randall's 6.4.2 (Figs. 6.4-6.8) from the tables dem_validate
+    randall-centripetal writes: the contact forces after the compaction and
+    at 100 kPa with the circles, the porosity by radius, sin(phi) and the
+    volumetric strain of each circle against its deviator strain; a figure
+    whose files are missing is skipped with a line naming them."""
+    with open(tmp_path / "circles.csv", "w", newline="") as out:
+        rows = csv.writer(out)
+        rows.writerow(["region", "centre_x", "centre_y", "radius"])
+        for name, radius in (("circle_15", 0.002), ("circle_34", 0.003), ("circle_62", 0.004)):
+            rows.writerow([name, 0.005, 0.005, radius])
+    with open(tmp_path / "profile.csv", "w", newline="") as out:
+        rows = csv.writer(out)
+        rows.writerow(["state", "radius_low", "radius_high", "porosity", "contacts", "mean_normal_force"])
+        for k in range(12):
+            rows.writerow(["compacted", 0.0005 * k, 0.0005 * (k + 1), 0.13 + 0.002 * k, 10, 0.1 - 0.005 * k])
+    with open(tmp_path / "centripetal.csv", "w", newline="") as out:
+        rows = csv.writer(out)
+        rows.writerow(["cycle", "box_deviator_strain", "out_of_balance", "region", "volumetric_strain",
+                       "deviator_strain", "sin_phi"])
+        for name, sign in (("circle_15", -1.0), ("circle_62", 1.0)):
+            for k in range(30):
+                strain = 5e-4 * k
+                rows.writerow([1000 * k, strain, 0.01, name, sign * strain * (0.005 - strain), strain,
+                               0.3 * (1 - np.exp(-k / 5))])
+    (tmp_path / "compacted").mkdir()
+    with open(tmp_path / "compacted" / "particles.csv", "w", newline="") as out:
+        rows = csv.writer(out)
+        rows.writerow(["id", "x", "y", "radius", "vx", "vy", "angular_velocity", "rotation", "material"])
+        for k in range(25):
+            rows.writerow([k, 0.002 * (k % 5) + 0.001, 0.002 * (k // 5) + 0.001, 0.001, 0, 0, 0, 0, "glass"])
+    with open(tmp_path / "compacted" / "contacts.csv", "w", newline="") as out:
+        rows = csv.writer(out)
+        rows.writerow(["first", "second_kind", "second", "x", "y", "normal_force"])
+        for k in range(24):
+            if k % 5 != 4:
+                rows.writerow([k, "particle", k + 1, 0, 0, 0.1 * (1 + k % 3)])
+        rows.writerow([0, "wall", 0, 0.001, 0.0, 0.05])
+    from dem.plots import draw_centripetal_directory
+
+    said = []
+    written = draw_centripetal_directory(tmp_path, tmp_path / "png", say=said.append)
+    assert {p.name for p in written} == {"fig6_4_forces_compacted.png", "fig6_5_porosity.png", "fig6_7_sin_phi.png",
+                                         "fig6_8_volumetric_strain.png"}
+    for path in written:
+        assert_png(path)
+    assert said == [f"skipped Fig. 6.6: no at_100_kPa/particles.csv, at_100_kPa/contacts.csv in {tmp_path}"]
+    result = subprocess.run([sys.executable, "-m", "dem.plots", "randall", str(tmp_path), str(tmp_path / "cli")],
+                            capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    assert (tmp_path / "cli" / "fig6_8_volumetric_strain.png").exists()
+    assert "skipped Fig. 6.6" in result.stdout

@@ -1,8 +1,10 @@
 // Randall (1989) chapter 6 on reduced assemblies, short enough for the
 // suite: the graded assembly (120 spheres, three packings) at 100 kPa and
-// sheared at constant volume to 0.2 % (6.4.3, 6.5.2); a hopper discharging
-// through two orifices (6.2). The full runs are dem_validate's randall-shear,
-// hopper and deposition (docs/VALIDATION.md); the checks are theirs.
+// sheared at constant volume to 0.2 % (6.4.3, 6.5.2); the centripetal
+// compaction (200 spheres, three packings) sheared at constant mean stress
+// to 1.5 % (6.4.2); a hopper discharging through two orifices (6.2). The
+// full runs are dem_validate's randall-shear, randall-centripetal, hopper
+// and deposition (docs/VALIDATION.md); the checks are theirs.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -11,6 +13,7 @@
 
 #include "hopper.h"
 #include "randall_assembly.h"
+#include "randall_centripetal.h"
 
 namespace dem::validation {
 namespace {
@@ -39,6 +42,39 @@ TEST(Randall, GradedAssemblyAt100KpaThenShearedAtConstantVolume) {
   verdict.print(stdout, "randall_graded_reduced");
   for (const Check& check : verdict.checks()) {
     if (!kDisagreements.contains(check.name)) {
+      EXPECT_TRUE(check.passed) << check.name << ": " << check.detail;
+    }
+  }
+}
+
+// Randall's 6.4.2 figures that the centripetal compaction of 200 spheres,
+// done his way, does not reproduce: printed by the verdict, not asserted.
+// docs/VALIDATION.md ("6.4.2") gives the evidence: the largest circle turns
+// to expand long before 0.5 % in the full assembly too; the smallest circle
+// here holds some 30 spheres, whose sin(phi) and volumetric strain scatter
+// from packing to packing, and the largest some 120, whose expansion
+// levels off within the test; one packing (seed 2) creeps at 100 kPa, a
+// corner wall 9 % below its target when the load stage reaches its cap
+// (its circle reads 90 kPa). The full assembly's circles are judged by
+// dem_validate.
+const std::set<std::string> kCentripetalDisagreements = {
+    "compacted, at equilibrium and at 100 kPa (the stages met their conditions)",
+    "largest spread of the three circles' sin(phi) from 0.5 % (Fig. 6.7)",
+    "deviator strain where the largest circle turns to expand, from 0.25 % (around 0.5 %)",
+    "largest circle's expansion over the last quarter of the test",
+    "deviator strain where the smallest circle turns to expand (from the start)",
+};
+
+// The centripetal compaction of 200 spheres on three packings: compacted
+// without friction by the field, bounded, the field removed, friction
+// added, 100 kPa, then sheared at constant mean stress to 1.5 % while three
+// circles of 15, 34 and 62 % of the particles are measured (Figs. 6.4-6.8);
+// the median packing judged as the full assembly is.
+TEST(Randall, CentripetalCompactionThenShearedAtConstantMeanStress) {
+  const Verdict verdict = report_centripetal(kCases / "centripetal_reduced.case.txtpb", std::nullopt, {1989, 1, 2});
+  verdict.print(stdout, "randall_centripetal_reduced");
+  for (const Check& check : verdict.checks()) {
+    if (!kCentripetalDisagreements.contains(check.name)) {
       EXPECT_TRUE(check.passed) << check.name << ": " << check.detail;
     }
   }

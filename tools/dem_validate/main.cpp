@@ -8,6 +8,7 @@
 //   dem_validate verification --out DIR [--seeds S,...]      (Cundall & Strack 1979, Tables 1-3: stages A and B)
 //   dem_validate randall-compression --case FILE --out DIR [--seeds S,...]  (Randall 1989, 6.4.3: 100 kPa)
 //   dem_validate randall-shear --case FILE --out DIR [--seeds S,...]        (6.5.2: constant-volume shear)
+//   dem_validate randall-centripetal --case FILE --out DIR [--seeds S,...]  (6.4.2: centripetal compaction)
 //   dem_validate hopper --case FILE --out DIR [--runs 45:10,30:10,...]  (Randall 1989, 6.2: discharge rates)
 //   dem_validate deposition --case FILE --out DIR             (Randall 1989, 6.3: pluvial deposition)
 //   dem_validate rolling-to-rest --out DIR  (rolling resistance: a ball stops where the closed form says)
@@ -34,6 +35,7 @@
 #include "miyata_commands.h"
 #include "nine_disc.h"
 #include "randall_assembly.h"
+#include "randall_centripetal.h"
 #include "rolling.h"
 #include "verification.h"
 
@@ -128,9 +130,14 @@ int main(int argc, char** argv) {
       "randall-compression", "Randall (1989) 6.4.3: a cases/randall assembly compressed to 100 kPa, then friction");
   auto* randall_shear =
       app.add_subcommand("randall-shear", "Randall (1989) 6.5.2: the same, then sheared at constant volume");
-  for (auto* sub : {randall_compression, randall_shear}) {
+  auto* randall_centripetal = app.add_subcommand(
+      "randall-centripetal",
+      "Randall (1989) 6.4.2: centripetal compaction, 100 kPa, shear at constant mean stress in three circles");
+  for (auto* sub : {randall_compression, randall_shear, randall_centripetal}) {
     sub->add_option("--case", randall_case, "a cases/randall case file")->required()->check(CLI::ExistingFile);
-    sub->add_option("--out", out, "directory for randall.csv, roses.csv, obliquity.csv and the snapshots")->required();
+    sub->add_option("--out", out,
+                    "directory for the figures' CSV files (randall.csv or centripetal.csv, ...) and the snapshots")
+        ->required();
     sub->add_option("--seeds", randall_seeds,
                     "packing seeds: one run each (in OUT/packing_SEED/), the median packing judged")
         ->delimiter(',');
@@ -197,6 +204,7 @@ int main(int argc, char** argv) {
     if (*randall_compression || *randall_shear) {
       verdict = dem::validation::report_randall(randall_case, static_cast<bool>(*randall_shear), out, randall_seeds);
     }
+    if (*randall_centripetal) verdict = dem::validation::report_centripetal(randall_case, out, randall_seeds);
     if (*hopper) {
       std::vector<dem::validation::HopperRun> runs;
       for (const std::string& spec : hopper_runs) {

@@ -305,11 +305,7 @@ RandallMeasured median_of(const std::vector<RandallMeasured>& packings) {
   m.label = "median of " + std::to_string(packings.size());
   m.compressed = std::ranges::all_of(packings, &RandallMeasured::compressed);
   m.sheared = std::ranges::all_of(packings, &RandallMeasured::sheared);
-  for (const auto figure : kFigures) {
-    std::vector<double> values;
-    for (const RandallMeasured& p : packings) values.push_back(p.*figure);
-    m.*figure = median(std::move(values));
-  }
+  set_medians(m, packings, kFigures);
   return m;
 }
 

@@ -14,7 +14,9 @@ axes (or a new headless figure) and writes a PNG when given a path:
   stress-settlement curves and final measures (dem.sweep.Results);
 - plot_rose, plot_obliquity_histogram, plot_shear_series,
   plot_stress_path, plot_discharge, plot_velocity_field: Randall's
-  chapter 6 (granular.py);
+  chapter 6 (granular.py); plot_contact_forces, plot_porosity_profile,
+  plot_circle_series: its centripetal compaction, Figs. 6.4-6.8
+  (randall_centripetal.py);
 - draw_miyata_directory: Miyata et al.'s Figs. 26-37 from a run's plate
   loading analyses (miyata.py, over miyata_loading, miyata_assembly,
   miyata_plates and miyata_moment).
@@ -31,17 +33,23 @@ from .granular import (draw_randall_directory, plot_discharge, plot_obliquity_hi
                        plot_stress_path, plot_velocity_field)
 from .miyata import draw_miyata_directory
 from .oblique_impact import plot_psi2_against_psi1
+from .randall_centripetal import (draw_centripetal_directory, plot_circle_series, plot_contact_forces,
+                                  plot_porosity_profile)
 from .stress_settlement import LiveStressSettlement, StressSettlementSeries, plot_stress_settlement
 from .sweep import plot_final_measure, plot_stress_settlement_family
 
 __all__ = [
     "LiveStressSettlement",
     "StressSettlementSeries",
+    "draw_centripetal_directory",
     "draw_miyata_directory",
     "draw_randall_directory",
     "new_axes",
+    "plot_circle_series",
+    "plot_contact_forces",
     "plot_discharge",
     "plot_obliquity_histogram",
+    "plot_porosity_profile",
     "plot_rose",
     "plot_shear_series",
     "plot_stress_path",

@@ -2,6 +2,7 @@
 
     stress-settlement FILE PNG [--wall W ...]   from monitor.csv, walls.csv, compression.csv or a .mcap recording
     randall DIR [OUT]                           Randall's chapter 6 figures from a dem_validate randall-* or hopper directory
+                                                (randall-centripetal: Figs. 6.4-6.8)
     miyata RUN_DIR [OUT_DIR]                    Miyata et al.'s Figs. 26-37 from a run with output.compression
 """
 

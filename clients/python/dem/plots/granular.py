@@ -16,7 +16,8 @@ regions.csv:
 - plot_discharge: particles discharged from a hopper against time (6.2);
 - plot_velocity_field: each particle's velocity as an arrow, from a
   particles.csv (Fig. 6.31 at 0.005 % deviator strain; the hopper's flow
-  patterns, Fig. 6.2).
+  patterns, Fig. 6.2);
+- the centripetal compaction's Figs. 6.4-6.8 (randall_centripetal.py).
 
 ``python3 -m dem.plots randall DIR`` draws them all from a dem_validate
 output directory.
@@ -180,7 +181,7 @@ def plot_velocity_field(rows, *, png=None, title=None):
 
 
 def draw_randall_directory(directory, out=None):
-    """Every figure a dem_validate randall-* or hopper directory holds;
+    """Every figure a dem_validate randall-*, randall-centripetal or hopper directory holds;
     returns the PNG paths written."""
     directory = pathlib.Path(directory)
     out = pathlib.Path(out) if out else directory
@@ -203,6 +204,10 @@ def draw_randall_directory(directory, out=None):
         if rows:
             written.append(save_png(plot_shear_series(rows), out / "shear.png"))
             written.append(save_png(plot_stress_path(rows), out / "stress_path.png"))
+    if (directory / "centripetal.csv").exists():
+        from .randall_centripetal import draw_centripetal_directory  # it draws with this module's helpers
+
+        written.extend(draw_centripetal_directory(directory, out, say=print))
     if (directory / "hopper.csv").exists():
         written.append(save_png(plot_discharge(read_rows(directory / "hopper.csv")), out / "discharge.png"))
     # The states dem_validate keeps (at_100_kPa, strain_0.005_percent, a
