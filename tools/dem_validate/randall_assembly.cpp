@@ -88,6 +88,7 @@ RandallRun run_randall(const std::filesystem::path& case_file, bool shear,
           }
         }
         const analysis::Region& main = regions.front();
+        if (run.shear.empty()) run.contact_stresses.push_back(contact_stress_state(w, main, "0 %", 0.0));
         if (s.deviator_strain >= next_capture) {
           if (next_capture == kVelocityStrain) {
             run.early_sliding_rose = analysis::normal_rose(sample, main, kRoseBins, analysis::RoseOf::kSlidingContacts);
@@ -99,9 +100,11 @@ RandallRun run_randall(const std::filesystem::path& case_file, bool shear,
             next_capture = kForceStrain;
           } else if (next_capture == kForceStrain) {
             if (out) write_snapshot(*out / "strain_0.1_percent", w);
+            run.contact_stresses.push_back(contact_stress_state(w, main, "0.1 %", s.deviator_strain));
             next_capture = kLateStrain;
           } else if (next_capture == kLateStrain) {
             run.late_sliding_rose = analysis::normal_rose(sample, main, kRoseBins, analysis::RoseOf::kSlidingContacts);
+            run.contact_stresses.push_back(contact_stress_state(w, main, "0.2 %", s.deviator_strain));
             next_capture = 1.0;
           }
         }
@@ -112,6 +115,10 @@ RandallRun run_randall(const std::filesystem::path& case_file, bool shear,
       if (stage.box_control) world.set_box_control(stage.box_control);
       observe(world);
       run_stage(world, stage, def.output.interval, observe);
+      // A shear that stops at 0.2 % may end between two samples.
+      const double end_strain = world.box_measure().deviator_strain;
+      if (next_capture == kLateStrain && end_strain >= kLateStrain)
+        run.contact_stresses.push_back(contact_stress_state(world, regions.front(), "0.2 %", end_strain));
       continue;
     }
     const StageResult result = run_stage(world, stage);
@@ -143,6 +150,7 @@ RandallRun run_randall(const std::filesystem::path& case_file, bool shear,
     write_bins(roses, "0.2 %", "sliding contacts", run.late_sliding_rose);
     io::CsvFile obliquity(*out, "obliquity.csv", "state,kind,obliquity_low,obliquity_high,contacts,share");
     write_bins(obliquity, "100 kPa", "obliquity", run.obliquity);
+    if (!run.contact_stresses.empty()) write_contact_stresses(*out, run.contact_stresses);
   }
   return run;
 }
@@ -248,6 +256,7 @@ void print_randall(std::FILE* out, const RandallRun& run) {
                "tangential share %.0f %%, sliding never above 25 %%, Delta F / F below 0.5 %%\n",
                worst, f.assembly.c_str(), f.peak_sin_phi, 100.0 * f.peak_strain_low, 100.0 * f.peak_strain_high,
                100.0 * f.tangential_share);
+  print_contact_stresses(out, run.contact_stresses);
 }
 
 RandallMeasured measure_randall(const RandallRun& run) {
@@ -281,6 +290,7 @@ RandallMeasured measure_randall(const RandallRun& run) {
   const analysis::RegionMeasures& end = run.shear.back().regions[0];
   m.induced_anisotropy = induced(end) - induced(start);
   m.mean_stress_gain = start.mean_stress > 0.0 ? end.mean_stress / start.mean_stress : 0.0;
+  m.contact_stress = contact_stress_figures(run.contact_stresses);
   return m;
 }
 
@@ -306,6 +316,9 @@ RandallMeasured median_of(const std::vector<RandallMeasured>& packings) {
   m.compressed = std::ranges::all_of(packings, &RandallMeasured::compressed);
   m.sheared = std::ranges::all_of(packings, &RandallMeasured::sheared);
   set_medians(m, packings, kFigures);
+  std::vector<ContactStressFigures> contact_stresses;
+  for (const RandallMeasured& p : packings) contact_stresses.push_back(p.contact_stress);
+  m.contact_stress = median_of(contact_stresses);
   return m;
 }
 
@@ -383,6 +396,7 @@ Verdict judge_randall_shear(const RandallMeasured& m, const RandallFigures& f, c
   v.above("anisotropy Phi_yy - Phi_xx the shear induced", m.induced_anisotropy, 0.0);
   // "a smooth build up of isotropic stress" at constant volume (Fig. 6.25).
   v.above("mean stress at the end over at the start of the shear", m.mean_stress_gain, 1.0);
+  v.add(judge_contact_stresses(m.contact_stress));
   return v;
 }
 

@@ -18,6 +18,7 @@
 
 #include "dem/analysis/distributions.h"
 #include "dem/analysis/region_measures.h"
+#include "randall_contact_stresses.h"
 #include "verdict.h"
 
 namespace dem::validation {
@@ -70,13 +71,14 @@ struct RandallRun {
   std::vector<ShearSample> shear;
   std::vector<analysis::Bin> shear_rose, shear_weighted_rose;        // at 0.015 % (Figs. 6.36-6.37)
   std::vector<analysis::Bin> early_sliding_rose, late_sliding_rose;  // at 0.005 % and 0.2 % (Figs. 6.38-6.41)
+  std::vector<ContactStressState> contact_stresses;                  // at 0, 0.1 and 0.2 % (Figs. 6.42-6.43)
 };
 
 // Runs the case's stages up to "friction", and "shear" too when `shear`,
 // on its own packing or on `packing_seed`'s; with `out`, writes the
 // figures' CSV files there (randall.csv, roses.csv, obliquity.csv, the
 // contacts and particles at 100 kPa and at 0.1 % deviator strain,
-// velocities at 0.005 %).
+// velocities at 0.005 %, the contact stresses at 0, 0.1 and 0.2 %).
 RandallRun run_randall(const std::filesystem::path& case_file, bool shear,
                        const std::optional<std::filesystem::path>& out = std::nullopt,
                        std::optional<std::uint64_t> packing_seed = std::nullopt);
@@ -104,8 +106,9 @@ struct RandallMeasured {
   double peak_strain = 0.0;       // the first strain within 5 % of the peak
   double tangential_share = 0.0;  // of the deviator there
   double largest_sliding = 0.0;
-  double induced_anisotropy = 0.0;  // Phi_yy - Phi_xx gained in the shear
-  double mean_stress_gain = 0.0;    // the region's mean stress at the end over at the start
+  double induced_anisotropy = 0.0;      // Phi_yy - Phi_xx gained in the shear
+  double mean_stress_gain = 0.0;        // the region's mean stress at the end over at the start
+  ContactStressFigures contact_stress;  // Figs. 6.42-6.43
 };
 
 RandallMeasured measure_randall(const RandallRun& run);
