@@ -1,7 +1,8 @@
 // Randall (1989) chapter 6 on reduced assemblies, short enough for the
 // suite: the graded assembly (120 spheres, three packings) at 100 kPa and
 // sheared at constant volume to 0.2 %, with its contact stresses at 0, 0.1
-// and 0.2 % (6.4.3, 6.5.2, Figs. 6.42-6.43); the centripetal
+// and 0.2 % and the contacts it breaks by 0.1 % (6.4.3, 6.5.2, Figs. 6.35,
+// 6.42-6.43); the centripetal
 // compaction (200 spheres, three packings) sheared at constant mean stress
 // to 1.5 % (6.4.2); a hopper discharging through two orifices (6.2); a
 // pluvial deposition of 200 spheres (three packings) into a container (6.3). The

@@ -19,7 +19,8 @@ regions.csv:
   patterns, Fig. 6.2);
 - the centripetal compaction's Figs. 6.4-6.8 (randall_centripetal.py);
 - the contact stresses of Figs. 6.42-6.43 and each size's contacts (4.6)
-  (randall_contact_stresses.py).
+  (randall_contact_stresses.py);
+- the contact lattice of Fig. 6.35 (randall_lattice.py).
 
 ``python3 -m dem.plots randall DIR`` draws them all from a dem_validate
 output directory.
@@ -214,6 +215,13 @@ def draw_randall_directory(directory, out=None):
         if (directory / "size_contacts.csv").exists():
             written.append(save_png(plot_size_contacts(read_rows(directory / "size_contacts.csv")),
                                     out / "size_contacts.png"))
+    lattice = [directory / state / table for state in ("at_100_kPa", "strain_0.1_percent")
+               for table in ("particles.csv", "contacts.csv")]
+    if all(path.is_file() for path in lattice):
+        from .randall_lattice import plot_contact_lattice
+
+        written.append(save_png(plot_contact_lattice(*(read_rows(path) for path in lattice)),
+                                out / "fig6_35_contact_lattice.png"))
     if (directory / "centripetal.csv").exists():
         from .randall_centripetal import draw_centripetal_directory  # it draws with this module's helpers
 
