@@ -112,8 +112,9 @@ TEST(Randall, PluvialDepositionIntoAContainer) {
   }
 }
 
-// "Increasing the orifice width increased the discharge rate" (6.2), on
-// 200 spheres through 5 and 10 mm at a half-angle of 30 degrees.
+// "Increasing the orifice width increased the discharge rate, although it
+// did not seem to affect the duration of the initial acceleration stage"
+// (6.2), on 200 spheres through 5 and 10 mm at a half-angle of 30 degrees.
 TEST(Randall, AWiderOrificeDischargesFaster) {
   std::vector<HopperRun> runs;
   for (const double orifice : {0.005, 0.010})
