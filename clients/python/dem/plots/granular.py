@@ -17,7 +17,10 @@ regions.csv:
 - plot_velocity_field: each particle's velocity as an arrow, from a
   particles.csv (Fig. 6.31 at 0.005 % deviator strain; the hopper's flow
   patterns, Fig. 6.2);
-- the centripetal compaction's Figs. 6.4-6.8 (randall_centripetal.py).
+- the centripetal compaction's Figs. 6.4-6.8 (randall_centripetal.py);
+- the contact stresses of Figs. 6.42-6.43 and each size's contacts (4.6)
+  (randall_contact_stresses.py);
+- the contact lattice of Fig. 6.35 (randall_lattice.py).
 
 ``python3 -m dem.plots randall DIR`` draws them all from a dem_validate
 output directory.
@@ -204,6 +207,21 @@ def draw_randall_directory(directory, out=None):
         if rows:
             written.append(save_png(plot_shear_series(rows), out / "shear.png"))
             written.append(save_png(plot_stress_path(rows), out / "stress_path.png"))
+    if (directory / "contact_stresses.csv").exists():
+        from .randall_contact_stresses import plot_contact_stress_histograms, plot_size_contacts
+
+        written.append(save_png(plot_contact_stress_histograms(read_rows(directory / "contact_stresses.csv")),
+                                out / "fig6_42_43_contact_stresses.png"))
+        if (directory / "size_contacts.csv").exists():
+            written.append(save_png(plot_size_contacts(read_rows(directory / "size_contacts.csv")),
+                                    out / "size_contacts.png"))
+    lattice = [directory / state / table for state in ("at_100_kPa", "strain_0.1_percent")
+               for table in ("particles.csv", "contacts.csv")]
+    if all(path.is_file() for path in lattice):
+        from .randall_lattice import plot_contact_lattice
+
+        written.append(save_png(plot_contact_lattice(*(read_rows(path) for path in lattice)),
+                                out / "fig6_35_contact_lattice.png"))
     if (directory / "centripetal.csv").exists():
         from .randall_centripetal import draw_centripetal_directory  # it draws with this module's helpers
 
