@@ -32,8 +32,8 @@ from .contact_history import plot_contact_force_history
 from .figure import new_axes, save_png
 from .force_chains import plot_force_chains
 from .force_distribution import plot_force_distribution
-from .granular import (draw_randall_directory, plot_discharge, plot_obliquity_histogram, plot_rose, plot_shear_series,
-                       plot_stress_path, plot_velocity_field)
+from .granular import (plot_discharge, plot_obliquity_histogram, plot_rose, plot_shear_series, plot_stress_path,
+                       plot_velocity_field)
 from .miyata import draw_miyata_directory
 from .oblique_impact import plot_psi2_against_psi1
 from .randall_lattice import plot_contact_lattice
@@ -42,6 +42,7 @@ from .randall_centripetal import (draw_centripetal_directory, plot_circle_series
                                   plot_porosity_profile)
 from .stress_settlement import LiveStressSettlement, StressSettlementSeries, plot_stress_settlement
 from .sweep import plot_final_measure, plot_stress_settlement_family
+from .randall import draw_randall_directory
 
 __all__ = [
     "LiveStressSettlement",
