@@ -41,6 +41,7 @@ class Field:
     sequence: bool     # an unbounded array: "type[]"
     comment: str = ""
     idl_type: str = ""  # as the IDL writes it: "double", "octet", "WallForce_", "geometry_msgs::msg::dds_::Vector3_"
+    key: bool = False   # @key: DDS keeps a history per value of the type's keys (a .msg has no keys; ROS 2 ignores it)
 
     def msg_line(self):
         text = f"{self.type}{'[]' if self.sequence else ''} {self.name}"
@@ -140,6 +141,7 @@ def read_idl(paths):
         scope = []
         i = 0
         struct = None
+        next_key = False  # the member that follows is a @key
         block_comment = ""
 
         def expect(value):
@@ -186,6 +188,12 @@ def read_idl(paths):
                     struct = None
                 else:
                     scope.pop()
+            elif kind == "annotation" and struct is not None:
+                # A member's annotation: only @key (the DDS instance; the wire and the ROS 2 message are the same).
+                if value != "@key":
+                    raise IdlError(f"{path}:{line}: {value}: of member annotations only @key is known")
+                next_key = True
+                i += 1
             elif kind == "annotation":
                 if value != "@final":
                     raise IdlError(f"{path}:{line}: {value}: only @final types have a ROS 2 message form")
@@ -208,7 +216,8 @@ def read_idl(paths):
                 i += 1
                 expect(";")
                 struct.fields.append(Field(name, _msg_type(idl_type, path, line), sequence, trailing.get(name_line, ""),
-                                           idl_type))
+                                           idl_type, next_key))
+                next_key = False
             else:
                 raise IdlError(f"{path}:{line}: unexpected {value!r}")
     for (package, name), values in constants.items():

@@ -9,26 +9,30 @@ using namespace std::chrono_literals;
 // A client's command write waits at most a second for room; it never needs to.
 dds::Qos command_qos() { return dds::Qos().reliable(1s).keep_all().volatile_durability(); }
 
-// Replies are written by the server's threads, and every client reads the
-// topic. Keeping all of them until every reader acknowledged would let one
-// client that stops reading (a process stopped in a debugger, SIGSTOP)
-// block every write - every other client's replies and the engine with
-// them: Cyclone 0.10 has no resource limits for a writer's history, and
-// it never drops an unresponsive reader, so KEEP_ALL would throttle the
-// writer until its max blocking time and then fail every write. So the
-// writer keeps the last 256, and each client has at most 64 requests
-// unanswered (client::ConnectOptions::max_outstanding): a reply leaves the
-// history after 256 newer ones, so one client's pipeline, however long,
-// loses none; a client whose process falls behind while other clients'
-// replies keep coming can (bench_responsiveness --flood: 64 and 69 of
-// about 100,000; docs/RELIABILITY.md, Not yet). A stalled reader loses
-// what falls out (it was not reading), the others read on (a repair of a
-// lost packet comes from this history). The ReplySender paces a reply
-// of many chunks (reply_sender.cpp); a stalled reader holds at most 256
-// samples of the server's memory.
+// Replies are written by the server's threads, and every client's reader
+// matches the topic. Keeping all of them until every reader acknowledged
+// would let one client that stops reading (a process stopped in a
+// debugger, SIGSTOP) block every write - every other client's replies and
+// the engine with them: Cyclone 0.10 has no resource limits for a
+// writer's history, and it never drops an unresponsive reader, so KEEP_ALL
+// would throttle the writer until its max blocking time and then fail
+// every write. So the writer keeps the last 256 - of each client: the
+// reply is keyed by client_id (idl/dem/command.idl), and keep-last counts
+// per key. Each client has at most 64 requests unanswered
+// (client::ConnectOptions::max_outstanding), so no reply of its leaves the
+// history before it was delivered, however far its process falls behind
+// and however many replies other clients get meanwhile (before the key,
+// the 256 were for all clients together, and bench_responsiveness --flood
+// lost 64 to 102 of some 100,000 in 3 of 8 runs; docs/RELIABILITY.md). A
+// stalled reader holds at most 256 replies of each client in the server's
+// memory, and loses only what it was not reading; a repair of a lost
+// packet comes from this history. The ReplySender paces a reply of many
+// chunks (reply_sender.cpp).
 constexpr int kReplyHistory = 256;
 dds::Qos reply_qos() { return dds::Qos().reliable(5s).keep_last(kReplyHistory).volatile_durability(); }
 
+// Keeps all it receives: a client's own replies alone, the others' are
+// turned away unread by its instance filter (dds::OwnInstanceFilter).
 dds::Qos reply_reader_qos() { return dds::Qos().reliable(5s).keep_all().volatile_durability(); }
 
 // The current state, replayed to late joiners: one sample, durable.

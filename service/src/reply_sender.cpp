@@ -59,7 +59,7 @@ void ReplySender::send(const ReceivedCommand& received, protocol::Reply reply) {
     reply.last = next_contact == contacts.size() && next_byte == data.size();
     write(reply);
     if (reply.last) return;
-    // The writer keeps the last 256 samples (protocol/src/qos.cpp): every
+    // The writer keeps the last 256 samples of each client (protocol/src/qos.cpp): every
     // 32 chunks, let the readers catch up - for at most 2 s, as a stalled
     // reader never does.
     if ((chunk + 1) % 32 == 0) writer_.wait_for_acks(std::chrono::seconds(2));

@@ -7,7 +7,10 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
+#include <thread>
+#include <vector>
 
 #include "service_test_support.h"
 
@@ -213,6 +216,75 @@ TEST(Limits, TwentyThousandRequestsInOnePipelineEachGetTheirReply) {
   EXPECT_LE(most_outstanding, client.options().max_outstanding);
   EXPECT_TRUE(client.stop().ok());
   ASSERT_TRUE(client.await(running, 30s));
+}
+
+// Three clients flooding get_state (7,000 each, all sent before any is
+// awaited) beside a fourth, in a process of its own, whose contact queries
+// wait for the engine's chunk boundary (every 250 ms here): it is stopped
+// with SIGSTOP for 2 s with 64 of them in flight. While it takes nothing
+// its socket overflows with the flood's replies, so its own, written at
+// the next boundary, are lost there and come again from the server's
+// history once it reads again - if they are still there. Before replies
+// were keyed by client, the history was the last 256 replies for all
+// clients together, and the flood pushed the stopped client's out within
+// milliseconds (bench_responsiveness --flood lost 64 and 69 of some
+// 100,000; issue 37).
+TEST(Limits, SeveralFloodingClientsLoseNoReply) {
+  const std::uint32_t domain = kLimitsFloodingClients;
+  service::ServerOptions options = server_options("flood", domain);
+  options.chunk_duration = 250ms;
+  InProcessServer server(options);
+  client::Client owner(connect_options("flood", domain));
+  owner.load_case_file(case_file("nine_disc_damped"));
+  const std::uint64_t running = owner.start_cycle(1'000'000'000);
+  const std::uint64_t served = owner.status().commands_served;
+  const pid_t stopped = spawn(DEM_REPLY_PIPELINE_CLIENT, {"flood", std::to_string(domain), "3000", "64KiB"});
+  // Its pipeline is going once the server has answered some hundred of its
+  // queries (beside these polls).
+  std::uint64_t polls = 0;
+  ASSERT_TRUE(eventually([&] { return owner.get_state().state.commands_served >= served + ++polls + 200; }, 30s));
+
+  constexpr int kFlooders = 3;
+  constexpr int kRequests = 7'000;
+  std::atomic<int> missing{0}, answered{0};
+  std::vector<std::thread> flooders;
+  for (int f = 0; f < kFlooders; ++f) {
+    flooders.emplace_back([&] {
+      client::Client client(connect_options("flood", domain));
+      std::vector<std::uint64_t> requests;
+      requests.reserve(kRequests);
+      for (int i = 0; i < kRequests; ++i) requests.push_back(client.send(command(CommandKind::kGetState)));
+      for (const std::uint64_t request : requests) {
+        const std::optional<protocol::Reply> reply = client.await(request, 30s);
+        ++(reply && reply->ok() ? answered : missing);
+      }
+    });
+  }
+  std::this_thread::sleep_for(100ms);
+  int status = 0;
+  const bool was_running = waitpid(stopped, &status, WNOHANG) == 0;
+  ::kill(stopped, SIGSTOP);
+  std::this_thread::sleep_for(2s);
+  ::kill(stopped, SIGCONT);
+  for (std::thread& flooder : flooders) flooder.join();
+  const bool ended = was_running && eventually([&] { return waitpid(stopped, &status, WNOHANG) == stopped; }, 60s);
+  if (was_running && !ended) {
+    ::kill(stopped, SIGKILL);
+    waitpid(stopped, nullptr, 0);
+  }
+  std::printf("%d flooding clients: %d of %d requests answered, %d without a reply; the stopped client %s\n", kFlooders,
+              answered.load(), kFlooders * kRequests, missing.load(),
+              !was_running                                    ? "had ended before it was stopped"
+              : !ended                                        ? "did not end"
+              : WIFEXITED(status) && WEXITSTATUS(status) == 0 ? "got every reply"
+                                                              : "missed replies (its output above)");
+  EXPECT_TRUE(owner.stop().ok());
+  EXPECT_TRUE(owner.await(running, 30s));
+  ASSERT_TRUE(was_running) << "the client to stop ended before it could be stopped";
+  ASSERT_TRUE(ended);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  EXPECT_EQ(missing.load(), 0);
+  EXPECT_EQ(answered.load(), kFlooders * kRequests);
 }
 
 }  // namespace

@@ -58,6 +58,7 @@ Client::Client(ConnectOptions options)
       interface_watch_(participant_, protocol::topics_of(options_.server), "this client"),
       command_topic_(participant_, protocol::topic_name(options_.server, TopicKind::kCommand)),
       reply_topic_(participant_, protocol::topic_name(options_.server, TopicKind::kReply)),
+      own_replies_(reply_topic_.handle()),
       status_topic_(participant_, protocol::topic_name(options_.server, TopicKind::kStatus)),
       command_writer_(participant_, command_topic_, protocol::command_qos()),
       reply_reader_(participant_, reply_topic_, protocol::reply_reader_qos()),
@@ -192,12 +193,15 @@ void Client::receive_loop() {
 }
 
 void Client::take_replies() {
-  std::vector<protocol::Reply> replies = reply_reader_.take();
+  std::vector<dds::Received<protocol::Reply>> replies = reply_reader_.take_with_writers();
   if (replies.empty()) return;
   {
     std::lock_guard lock(mutex_);
-    for (protocol::Reply& chunk : replies) {
-      if (chunk.client_id != options_.client_id) continue;  // another client's reply
+    for (auto& [chunk, writer, instance] : replies) {
+      // Another client's reply, let through before this client's first
+      // reply from this writer taught the filter its instance.
+      if (chunk.client_id != options_.client_id) continue;
+      own_replies_.learn(writer, instance);
       const std::uint64_t id = chunk.request_id;
       if (chunk.chunk == 0) {
         partial_[id] = std::move(chunk);

@@ -48,11 +48,13 @@ std::uint32_t matched_writers(dds_entity_t reader);
 // left or lost its lease.
 bool writer_matched(dds_entity_t reader, dds_instance_handle_t writer);
 
-// A sample's value and the writer it came from.
+// A sample's value, the writer it came from and its instance (its key's
+// handle; one instance for a topic without keys).
 template <class T>
 struct Received {
   T value;
   dds_instance_handle_t writer = 0;
+  dds_instance_handle_t instance = 0;
 };
 
 template <SupportedType T>
@@ -165,7 +167,7 @@ class Reader {
     return values;
   }
 
-  // As take, with the writer of each sample.
+  // As take, with the writer and instance of each sample.
   std::vector<Received<T>> take_with_writers(std::size_t max = 256) {
     std::vector<void*> samples = slots_.buffer(max);
     std::vector<dds_sample_info_t> infos(max);
@@ -177,7 +179,8 @@ class Reader {
     values.reserve(static_cast<std::size_t>(count));
     for (std::int32_t i = 0; i < count; ++i) {
       if (infos[i].valid_data) {
-        values.push_back({TypeSupport<T>::from_sample(samples[i]), infos[i].publication_handle});
+        values.push_back(
+            {TypeSupport<T>::from_sample(samples[i]), infos[i].publication_handle, infos[i].instance_handle});
       }
     }
     return values;

@@ -24,6 +24,7 @@
 
 #include "dem/client/errors.h"
 #include "dem/dds/discovery.h"
+#include "dem/dds/instance_filter.h"
 #include "dem/dds/participant.h"
 #include "dem/dds/topic.h"
 #include "dem/dds/waitset.h"
@@ -45,10 +46,11 @@ struct ConnectOptions {
   // Called at connection with each of interface_notes() (a program tells its user).
   std::function<void(const std::string&)> on_interface_note;
   // Requests sent and not yet answered, at most: send() waits for a reply
-  // beyond them. The server keeps its last 256 replies for every client
-  // together (protocol/src/qos.cpp), so four clients at this bound never
-  // have a reply pushed out before it was delivered (docs/RELIABILITY.md,
-  // "No lost reply").
+  // beyond them. The server keeps the last 256 replies of each client
+  // (replies are keyed by client; protocol/src/qos.cpp), so a client at
+  // this bound never has a reply pushed out before it was delivered, also
+  // while its process falls behind and other clients flood the server
+  // (docs/RELIABILITY.md, "No lost reply").
   std::size_t max_outstanding = 64;
 };
 
@@ -143,6 +145,8 @@ class Client {
   std::vector<std::string> interface_notes_;
   dds::Topic<protocol::Command> command_topic_;
   dds::Topic<protocol::Reply> reply_topic_;
+  // Replies are keyed by client: the reader keeps this client's alone.
+  dds::OwnInstanceFilter own_replies_;
   dds::Topic<protocol::Status> status_topic_;
   dds::Writer<protocol::Command> command_writer_;
   dds::Reader<protocol::Reply> reply_reader_;
