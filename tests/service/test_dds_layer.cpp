@@ -7,6 +7,7 @@
 
 #include "dem/dds/discovery.h"
 #include "dem/dds/error.h"
+#include "dem/dds/instance_filter.h"
 #include "dem/dds/topic.h"
 #include "dem/dds/waitset.h"
 #include "dem/protocol/qos.h"
@@ -237,6 +238,58 @@ TEST(DdsLayer, LargeSamplesCrossTheWire) {
   const protocol::Reply received = round_trip(participant, "rt/test/big", big);
   EXPECT_EQ(received.data.size(), big.data.size());
   EXPECT_EQ(received, big);
+}
+
+// Replies are keyed by client (idl/dem/command.idl). Once a reader learnt
+// its own instance from a writer, that writer's replies to others are
+// turned away; a writer it learnt nothing from yet (a restarted server)
+// gets through, so the reader can learn again.
+TEST(DdsLayer, AnInstanceFilterKeepsTheReadersOwnReplies) {
+  dds::Participant participant(kDdsInstanceFilter);
+  dds::Topic<protocol::Reply> writer_topic(participant, "rt/test/replies");
+  dds::Topic<protocol::Reply> reader_topic(participant, "rt/test/replies");
+  dds::OwnInstanceFilter filter(reader_topic.handle());
+  dds::Reader<protocol::Reply> reader(participant, reader_topic, protocol::reply_reader_qos());
+  const auto reply_to = [](const std::string& client, std::uint64_t request) {
+    protocol::Reply reply;
+    reply.client_id = client;
+    reply.request_id = request;
+    reply.last = true;
+    return reply;
+  };
+  // What the reader has after the writes (and 200 ms for any stragglers).
+  const auto received = [&](std::size_t expected) {
+    std::vector<std::string> got;
+    const auto take = [&] {
+      for (const auto& [reply, writer, instance] : reader.take_with_writers()) {
+        got.push_back(reply.client_id + "/" + std::to_string(reply.request_id));
+        if (reply.client_id == "me") filter.learn(writer, instance);
+      }
+      return got.size() >= expected;
+    };
+    eventually(take, 10s);
+    std::this_thread::sleep_for(200ms);
+    take();
+    return got;
+  };
+  dds::Writer<protocol::Reply> server(participant, writer_topic, protocol::reply_qos());
+  ASSERT_TRUE(eventually([&] { return server.matched_readers() > 0; }, 10s));
+  server.write(reply_to("other", 1));
+  server.write(reply_to("me", 1));
+  EXPECT_EQ(received(2), (std::vector<std::string>{"other/1", "me/1"}));  // nothing learnt yet
+  server.write(reply_to("other", 2));
+  server.write(reply_to("me", 2));
+  server.write(reply_to("other", 3));
+  EXPECT_EQ(received(1), std::vector<std::string>{"me/2"});
+  dds::Writer<protocol::Reply> restarted(participant, writer_topic, protocol::reply_qos());
+  ASSERT_TRUE(eventually([&] { return restarted.matched_readers() > 0; }, 10s));
+  restarted.write(reply_to("other", 4));
+  restarted.write(reply_to("me", 3));
+  EXPECT_EQ(received(2), (std::vector<std::string>{"other/4", "me/3"}));
+  restarted.write(reply_to("other", 5));
+  restarted.write(reply_to("me", 4));
+  server.write(reply_to("other", 6));
+  EXPECT_EQ(received(1), std::vector<std::string>{"me/4"});
 }
 
 TEST(DdsLayer, WaitSetWakesForDataAndGuardConditions) {
