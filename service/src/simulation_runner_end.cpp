@@ -29,7 +29,8 @@ void SimulationRunner::end_run() {
   const auto level = outcome == ProgrammeOutcome::kCompleted ? spdlog::level::info
                      : outcome == ProgrammeOutcome::kStopped ? spdlog::level::warn
                                                              : spdlog::level::err;
-  spdlog::log(level, "{}", message_);
+  // A command's end is in its reply's log line; a failure is said here too.
+  if (run.of_case() || outcome == ProgrammeOutcome::kFailed) spdlog::log(level, "{}", message_);
   drop_lost_world();
   if (!run.command()) {
     publish_status();  // the one-shot mode: the server ends with it
