@@ -57,10 +57,10 @@ class SimulationRunner {
   void set_writer_check(std::function<bool(std::uint64_t)> alive) { writer_alive_ = std::move(alive); }
   // How the one-shot run ended; nothing when the server ran commands instead.
   std::optional<ProgrammeOutcome> programme_outcome() const;
-  // After run() and once no more commands arrive: stops the running command
-  // (a cancelled reply), answers every command still queued (shutting
-  // down), publishes the final telemetry and status, writes the end-of-run
-  // tables and waits briefly for subscribers to acknowledge.
+  // After run() (whose loop has ended a run going on: a cancelled reply)
+  // and once no more commands arrive: answers every command still queued
+  // (shutting down), publishes the final telemetry and status, writes the
+  // end-of-run tables and waits briefly for subscribers to acknowledge.
   void finish();
 
  private:
