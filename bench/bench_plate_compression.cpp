@@ -1,7 +1,16 @@
 // The shared "plate compression" benchmark (../shared/bench/README.md, v1):
 // loads the case, runs the 200 warm-up steps, times the 2000 steps after
 // them, and prints the README's metrics beside the reference values.
-//   bench_plate_compression [--case FILE] [--threads N ...]
+//   bench_plate_compression [--case FILE] [--threads N ...] [--materials MIX]
+// MIX gives the same bed other materials with the same physics, to time
+// what a material mix costs (docs/PERFORMANCE.md):
+//   one        the case as it is: one material
+//   walls      the floor and the plate of a second material, a copy of the spheres'
+//   particles  every other sphere of a second material, a copy of the first
+//   gathered   as particles, and the pairs with the second material given a
+//              contact model that differs only in a linear stiffness the
+//              Hertz law does not read: the rows' parameter sets differ,
+//              so each row gathers its own (contact_batch.h)
 // Figures are printed, not asserted.
 #include <sys/resource.h>
 #include <time.h>
@@ -12,6 +21,7 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "dem/io/case_conversion.h"
@@ -66,6 +76,29 @@ Metrics run(dem::WorldDef3 world_def, const std::vector<dem::StageDef3>& stages,
   return m;
 }
 
+// Gives the bed the material mix `mix` (see the top of the file).
+void apply_material_mix(dem::WorldDef3& def, const std::string& mix) {
+  if (mix == "one") return;
+  const dem::MaterialId second{static_cast<std::int32_t>(def.materials.size())};
+  def.materials.push_back(def.materials.at(0));
+  def.materials.back().name += "_copy";
+  if (mix == "walls") {
+    for (dem::WallDef3& wall : def.walls) wall.material = second;
+    return;
+  }
+  for (std::size_t i = 1; i < def.particles.size(); i += 2) def.particles[i].material = second;
+  if (mix == "gathered") {
+    const dem::ContactModelDef model = def.contact_models.at(0);
+    for (const dem::MaterialId other : {dem::MaterialId{0}, second}) {
+      dem::ContactModelDef pair = model;
+      pair.material_a = other;
+      pair.material_b = second;
+      pair.linear.normal_stiffness *= 2.0;  // read by the linear laws only
+      def.contact_models.push_back(pair);
+    }
+  }
+}
+
 double peak_rss_mib() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
@@ -79,17 +112,21 @@ int main(int argc, char** argv) {
   std::filesystem::path case_file = DEM_CASES_DIR "/bench/plate_compression_10k.case.txtpb";
   std::vector<int> threads{1, 2};
   std::uint64_t cycles = 0;
+  std::string mix = "one";
   app.add_option("--case", case_file, "a plate-compression case (cases/bench/)")->check(CLI::ExistingFile);
   app.add_option("--threads", threads, "thread counts to time, one run each");
   app.add_option("--cycles", cycles, "timed cycles instead of the benchmark's 2000 (for profiling; not the benchmark)");
+  app.add_option("--materials", mix, "material mix: one, walls, particles or gathered (same physics)")
+      ->check(CLI::IsMember({"one", "walls", "particles", "gathered"}));
   CLI11_PARSE(app, argc, argv);
   try {
     const auto total_start = std::chrono::steady_clock::now();
     const dem::io::LoadedCase loaded = dem::io::load_case_file(case_file);
     dem::io::CaseDefinition3 def = dem::io::convert_case<3>(loaded.message, loaded.source);
+    apply_material_mix(def.world, mix);
     const double n = static_cast<double>(def.world.particles.size());
     const bool big = def.world.particles.size() > 50000;
-    std::printf("plate compression, %.0f spheres (%s)\n", n, case_file.c_str());
+    std::printf("plate compression, %.0f spheres (%s), materials %s\n", n, case_file.c_str(), mix.c_str());
     for (std::size_t k = 0; k < threads.size(); ++k) {
       const int t = threads[k];
       // The last run takes the definition over; the others copy it.
