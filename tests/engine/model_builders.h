@@ -1,7 +1,14 @@
 // Small builders the engine tests share.
 #pragma once
 
+#include <algorithm>
+#include <cstdint>
+#include <set>
+#include <string>
+#include <vector>
+
 #include "dem/definitions.h"
+#include "parameter_sets.h"
 
 namespace dem::testing {
 
@@ -14,6 +21,48 @@ inline ContactModelDef linear_model(double normal_stiffness, double shear_stiffn
   model.material_b = b;
   model.linear = {normal_stiffness, shear_stiffness};
   return model;
+}
+
+// Spreads a bed of one material (0, under linear laws) over several with
+// the same physics: the walls take a copy of material 0, and particle i
+// material i % particle_materials, where material 0 stays and the others
+// are copies whose Young's modulus grows by modulus_step each. The linear
+// laws do not read the modulus: with a step of 0 every row resolves to the
+// one parameter set of the bed, with any other step the rows' sets differ
+// (parameter_sets.h) and each row finds its own, for the same forces.
+template <typename Def>
+void spread_materials(Def& def, int particle_materials, double modulus_step) {
+  const MaterialDef base = def.materials.at(0);
+  def.materials.resize(1);
+  const auto add = [&](double modulus) {
+    MaterialDef copy = base;
+    copy.name += '_';
+    copy.name += std::to_string(def.materials.size());
+    copy.youngs_modulus = modulus;
+    def.materials.push_back(copy);
+    return MaterialId{static_cast<std::int32_t>(def.materials.size() - 1)};
+  };
+  const MaterialId wall = add(base.youngs_modulus);
+  for (auto& w : def.walls) w.material = wall;
+  std::vector<MaterialId> kinds{MaterialId{0}};
+  for (int k = 1; k < particle_materials; ++k) kinds.push_back(add(base.youngs_modulus + k * modulus_step));
+  for (std::size_t i = 0; i < def.particles.size(); ++i) def.particles[i].material = kinds[i % kinds.size()];
+}
+
+// How the batched passes' law loops read the parameters of the pair rows
+// and of the wall rows of a world built from `def` (parameter_sets.h).
+struct SetChoices {
+  SetChoice pairs, walls;
+};
+template <typename Def>
+SetChoices set_choices(const Def& def) {
+  const ContactParamTable table(def.materials, def.contact_models, def.damping);
+  std::set<std::int32_t> particle_set, wall_set;
+  for (const auto& p : def.particles) particle_set.insert(p.material.value());
+  for (const auto& w : def.walls) wall_set.insert(w.material.value());
+  const std::vector<std::int32_t> particles(particle_set.begin(), particle_set.end());
+  const std::vector<std::int32_t> walls(wall_set.begin(), wall_set.end());
+  return {row_sets(table, particles, particles).choice(), row_sets(table, particles, walls).choice()};
 }
 
 }  // namespace dem::testing
