@@ -7,10 +7,13 @@
 //   one        the case as it is: one material
 //   walls      the floor and the plate of a second material, a copy of the spheres'
 //   particles  every other sphere of a second material, a copy of the first
-//   gathered   as particles, and the pairs with the second material given a
+//   few        as particles, and the pairs with the second material given a
 //              contact model that differs only in a linear stiffness the
-//              Hertz law does not read: the rows' parameter sets differ,
-//              so each row gathers its own (contact_batch.h)
+//              Hertz law does not read: two parameter sets in each table,
+//              each row chooses its own (parameter_sets.h)
+//   many       every third sphere of the first, second and third material,
+//              each pair of them with its own such model: six sets of
+//              sphere pairs, each row looks its own up
 // Figures are printed, not asserted.
 #include <sys/resource.h>
 #include <time.h>
@@ -86,14 +89,24 @@ void apply_material_mix(dem::WorldDef3& def, const std::string& mix) {
     for (dem::WallDef3& wall : def.walls) wall.material = second;
     return;
   }
-  for (std::size_t i = 1; i < def.particles.size(); i += 2) def.particles[i].material = second;
-  if (mix == "gathered") {
-    const dem::ContactModelDef model = def.contact_models.at(0);
-    for (const dem::MaterialId other : {dem::MaterialId{0}, second}) {
+  std::vector<dem::MaterialId> kinds{dem::MaterialId{0}, second};
+  if (mix == "many") {
+    kinds.push_back(dem::MaterialId{static_cast<std::int32_t>(def.materials.size())});
+    def.materials.push_back(def.materials.at(0));
+    def.materials.back().name += "_second_copy";
+  }
+  for (std::size_t i = 0; i < def.particles.size(); ++i) def.particles[i].material = kinds[i % kinds.size()];
+  if (mix == "particles") return;
+  // A model for each pair but the first material's own, each with another
+  // linear stiffness, which the linear laws alone read.
+  const dem::ContactModelDef model = def.contact_models.at(0);
+  double stiffness = model.linear.normal_stiffness;
+  for (std::size_t a = 0; a < kinds.size(); ++a) {
+    for (std::size_t b = std::max<std::size_t>(a, 1); b < kinds.size(); ++b) {
       dem::ContactModelDef pair = model;
-      pair.material_a = other;
-      pair.material_b = second;
-      pair.linear.normal_stiffness *= 2.0;  // read by the linear laws only
+      pair.material_a = kinds[a];
+      pair.material_b = kinds[b];
+      pair.linear.normal_stiffness = (stiffness *= 2.0);
       def.contact_models.push_back(pair);
     }
   }
@@ -116,8 +129,8 @@ int main(int argc, char** argv) {
   app.add_option("--case", case_file, "a plate-compression case (cases/bench/)")->check(CLI::ExistingFile);
   app.add_option("--threads", threads, "thread counts to time, one run each");
   app.add_option("--cycles", cycles, "timed cycles instead of the benchmark's 2000 (for profiling; not the benchmark)");
-  app.add_option("--materials", mix, "material mix: one, walls, particles or gathered (same physics)")
-      ->check(CLI::IsMember({"one", "walls", "particles", "gathered"}));
+  app.add_option("--materials", mix, "material mix: one, walls, particles, few or many (the same physics)")
+      ->check(CLI::IsMember({"one", "walls", "particles", "few", "many"}));
   CLI11_PARSE(app, argc, argv);
   try {
     const auto total_start = std::chrono::steady_clock::now();
