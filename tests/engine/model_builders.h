@@ -49,6 +49,23 @@ void spread_materials(Def& def, int particle_materials, double modulus_step) {
   for (std::size_t i = 0; i < def.particles.size(); ++i) def.particles[i].material = kinds[i % kinds.size()];
 }
 
+// Gives the particles of `def` the materials `kinds` in turn (particle i
+// kinds[i % 3]) and each pair of them its own linear model, the stiffnesses
+// k_n, k_s times 1 + (x + 2 y) / 10 for kinds x <= y: six distinct sets
+// of particle pairs.
+template <typename Def>
+void three_kinds_with_pair_models(Def& def, const MaterialId (&kinds)[3], double normal_stiffness,
+                                  double shear_stiffness) {
+  for (std::size_t i = 0; i < def.particles.size(); ++i) def.particles[i].material = kinds[i % 3];
+  for (int x = 0; x < 3; ++x) {
+    for (int y = x; y < 3; ++y) {
+      const double factor = 1.0 + 0.1 * (x + 2 * y);
+      def.contact_models.push_back(
+          linear_model(normal_stiffness * factor, shear_stiffness * factor, kinds[x], kinds[y]));
+    }
+  }
+}
+
 // How the batched passes' law loops read the parameters of the pair rows
 // and of the wall rows of a world built from `def` (parameter_sets.h).
 struct SetChoices {

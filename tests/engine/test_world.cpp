@@ -62,14 +62,7 @@ TEST(World, DistinctMaterialsGiveOneHashForOneAndTwoThreadsAndTheRowByRowBits) {
   WorldDef def = dense_box(80, 40);  // 3200 discs
   def.materials.push_back(MaterialDef{"disc_b", 2650.0, 0.4, 0.0});
   def.materials.push_back(MaterialDef{"disc_c", 2650.0, 0.6, 0.0});
-  const MaterialId discs[] = {MaterialId{0}, MaterialId{2}, MaterialId{3}};
-  for (std::size_t i = 0; i < def.particles.size(); ++i) def.particles[i].material = discs[i % 3];
-  for (int x = 0; x < 3; ++x) {
-    for (int y = x; y < 3; ++y) {
-      def.contact_models.push_back(testing::linear_model(1.0e6 * (1.0 + 0.1 * (x + 2 * y)),
-                                                         0.7e6 * (1.0 + 0.1 * (x + 2 * y)), discs[x], discs[y]));
-    }
-  }
+  testing::three_kinds_with_pair_models(def, {MaterialId{0}, MaterialId{2}, MaterialId{3}}, 1.0e6, 0.7e6);
   EXPECT_EQ(testing::set_choices(def).pairs, SetChoice::kMany);
   def.threads = 1;
   World serial(def);

@@ -275,14 +275,7 @@ WorldDef3 three_materials(int threads) {
   WorldDef3 def = spheres_in_a_box(9, threads);
   def.materials = {MaterialDef{"a", 2500.0, 0.5, 0.0}, MaterialDef{"wall", 1.0, 0.45, 0.0},
                    MaterialDef{"b", 2500.0, 0.4, 0.0}, MaterialDef{"c", 2500.0, 0.6, 0.0}};
-  const MaterialId spheres[] = {MaterialId{0}, MaterialId{2}, MaterialId{3}};
-  for (std::size_t i = 0; i < def.particles.size(); ++i) def.particles[i].material = spheres[i % 3];
-  for (int x = 0; x < 3; ++x) {
-    for (int y = x; y < 3; ++y) {
-      def.contact_models.push_back(testing::linear_model(1.0e5 * (1.0 + 0.1 * (x + 2 * y)),
-                                                         0.8e5 * (1.0 + 0.1 * (x + 2 * y)), spheres[x], spheres[y]));
-    }
-  }
+  testing::three_kinds_with_pair_models(def, {MaterialId{0}, MaterialId{2}, MaterialId{3}}, 1.0e5, 0.8e5);
   return def;
 }
 
