@@ -25,7 +25,7 @@ std::vector<double> normal_forces(std::span<const PlateContactT<Dim>> contacts) 
 template <int Dim>
 PlateReading read_plate(const BasicWorld<Dim>& world, const std::vector<WallMeasureT<Dim>>& measures, WallId plate) {
   const WallMeasureT<Dim>& m = measures[plate.index()];
-  return {m.normal_force, m.normal_force / world.wall_area(plate), world.wall_settlement(plate), m.contacts};
+  return {m.normal_force, world.wall_stress(plate), world.wall_settlement(plate), m.contacts};
 }
 
 namespace {

@@ -36,12 +36,12 @@ std::vector<Endpoint> EndpointMonitor::alive() const {
   // read (not take): the built-in reader keeps one sample per endpoint, and
   // an instance leaves the alive state when its endpoint goes away.
   for (std::size_t capacity = 256;; capacity *= 4) {
-    std::vector<void*> samples(capacity, nullptr);
+    std::vector<void*> samples = slots_.buffer(capacity);  // (topic.h, LoanSlots)
     std::vector<dds_sample_info_t> infos(capacity);
-    const auto count = check(
-        dds_read_mask(entity_.handle(), samples.data(), infos.data(), capacity, static_cast<std::uint32_t>(capacity),
-                      DDS_ANY_SAMPLE_STATE | DDS_ANY_VIEW_STATE | DDS_ALIVE_INSTANCE_STATE),
-        "reading discovery's endpoints");
+    const auto count = check(dds_read_mask(entity_.handle(), samples.data(), infos.data(), samples.size(),
+                                           static_cast<std::uint32_t>(capacity),
+                                           DDS_ANY_SAMPLE_STATE | DDS_ANY_VIEW_STATE | DDS_ALIVE_INSTANCE_STATE),
+                             "reading discovery's endpoints");
     Loan loan(entity_.handle(), samples, count);
     if (static_cast<std::size_t>(count) == capacity) continue;  // there may be more: read again with room
     std::vector<Endpoint> endpoints;

@@ -33,11 +33,6 @@ bool servos_settled(const BasicWorld<Dim>& world, double tolerance) {
   return any;
 }
 
-template <int Dim>
-double wall_stress(const BasicWorld<Dim>& world, WallId wall) {
-  return world.wall_measures()[wall.index()].normal_force / world.wall_area(wall);
-}
-
 }  // namespace
 
 template <int Dim>
@@ -54,7 +49,7 @@ bool stop_conditions_hold(const BasicWorld<Dim>& world, const StopConditions& un
     return false;
   }
   if (until.servo_tolerance && !servos_settled(world, *until.servo_tolerance)) return false;
-  if (until.wall_stress_above && wall_stress(world, until.wall_stress_above->wall) < until.wall_stress_above->value) {
+  if (until.wall_stress_above && world.wall_stress(until.wall_stress_above->wall) < until.wall_stress_above->value) {
     return false;
   }
   if (until.wall_settlement_above &&

@@ -26,10 +26,6 @@ class Hasher {
     for (Eigen::Index i = 0; i < v.size(); ++i) add(static_cast<double>(v[i]));
   }
   void add(const Quaternion& q) { add(q.coeffs()); }
-  template <typename T>
-  void add_all(const std::vector<T>& values) {
-    for (const T& v : values) add(v);
-  }
   std::uint64_t value() const { return hash_; }
 
  private:

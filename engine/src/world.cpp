@@ -271,6 +271,12 @@ double BasicWorld<Dim>::wall_area(WallId id) const {
 }
 
 template <int Dim>
+double BasicWorld<Dim>::wall_stress(WallId id) const {
+  const double area = wall_area(id);
+  return area > 0.0 ? measure_wall(state_->walls, id).normal_force / area : 0.0;
+}
+
+template <int Dim>
 std::vector<WallMeasureT<Dim>> BasicWorld<Dim>::wall_measures() const {
   std::vector<WallMeasureT<Dim>> measures;
   for (int w = 0; w < wall_count(); ++w) measures.push_back(measure_wall(state_->walls, WallId{w}));

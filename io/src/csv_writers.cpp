@@ -24,7 +24,7 @@ template <int Dim>
 void WallsCsvT<Dim>::write(const BasicWorld<Dim>& world) {
   for (const WallMeasureT<Dim>& m : world.wall_measures()) {
     const std::string& name = world.wall(m.wall).name;
-    const double stress = m.normal_force / world.wall_area(m.wall);
+    const double stress = world.wall_stress(m.wall);
     const double settlement = world.wall_settlement(m.wall);
     if constexpr (Dim == 2) {
       file_.write_row(world.cycle_count(), world.time(), name, m.force.x(), m.force.y(), m.moment, m.normal_force,

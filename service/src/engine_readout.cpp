@@ -17,11 +17,6 @@ protocol::Vector3 vector3(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 protocol::Vector3 spin3(double about_z) { return {0.0, 0.0, about_z}; }
 protocol::Vector3 spin3(const Vec3& v) { return vector3(v); }
 
-// The side of the wall the particles are on (Cundall & Strack Fig. 4 in 2D:
-// e rotated counter-clockwise; u x v in 3D).
-Vec2 wall_normal(const WallDefT<2>& wall) { return counter_clockwise_perpendicular(wall.direction); }
-Vec3 wall_normal(const WallDefT<3>& wall) { return wall.direction.cross(wall.direction2); }
-
 template <int Dim>
 protocol::WallForce to_wall_force(const BasicWorld<Dim>& world, const WallMeasureT<Dim>& m) {
   const WallDefT<Dim>& def = world.wall(m.wall);
@@ -32,10 +27,10 @@ protocol::WallForce to_wall_force(const BasicWorld<Dim>& world, const WallMeasur
   w.moment = spin3(m.moment);
   w.normal_force = m.normal_force;
   w.area = world.wall_area(m.wall);
-  w.normal_stress = w.area > 0.0 ? m.normal_force / w.area : 0.0;
+  w.normal_stress = world.wall_stress(m.wall);
   w.position = vector3(m.point);
   w.displacement = vector3(m.displacement);
-  w.settlement = m.displacement.dot(wall_normal(def)) + 0.0;  // + 0.0: no "-0" for a wall at rest
+  w.settlement = world.wall_settlement(m.wall) + 0.0;  // + 0.0: no "-0" for a wall at rest
   w.contacts = m.contacts;
   return w;
 }

@@ -56,7 +56,7 @@ StageProgress stage_progress(const std::vector<StageDefT<Dim>>& stages, std::siz
   };
   if (until.wall_stress_above) {
     const WallId wall = until.wall_stress_above->wall;
-    const double stress = world.wall_measures()[wall.index()].normal_force / world.wall_area(wall);
+    const double stress = world.wall_stress(wall);
     measure(share(stress, until.wall_stress_above->value), world.wall(wall).name + " stress " + stress_text(stress) +
                                                                " of " + stress_text(until.wall_stress_above->value));
   }

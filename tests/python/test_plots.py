@@ -254,6 +254,61 @@ def test_randall_chapter_6_figures_from_a_dem_validate_directory(tmp_path):
     assert (tmp_path / "cli" / "shear.png").exists()
 
 
+def test_randall_contact_stress_figures_from_a_dem_validate_directory(tmp_path):
+    """Figs. 6.42-6.43 (the mean normal contact stresses at 0, 0.1 and 0.2 %
+    deviator strain) and each size's contacts (Randall 4.6) from the tables
+    dem_validate randall-shear writes."""
+    random = np.random.default_rng(1989)
+    with open(tmp_path / "contact_stresses.csv", "w", newline="") as out:
+        rows = csv.writer(out)
+        rows.writerow(["state", "deviator_strain", "normal_force", "contact_radius", "normal_stress", "shear_stress",
+                       "radius_ratio", "overlap_ratio"])
+        for state, strain, spread in (("0 %", 0, 1.3e8), ("0.1 %", 0.001, 1.7e8), ("0.2 %", 0.002, 2e8)):
+            for stress in random.normal(5e8, spread, 150):
+                rows.writerow([state, strain, 0.15, 1e-5, abs(stress), 1e7, 0.03, 0.001])
+    with open(tmp_path / "size_contacts.csv", "w", newline="") as out:
+        rows = csv.writer(out)
+        rows.writerow(["state", "deviator_strain", "radius", "particles", "contacts", "coordination", "share",
+                       "without_contacts"])
+        for radius, particles, contacts in ((0.00031, 3, 6), (0.00046, 30, 95), (0.00092, 5, 28)):
+            rows.writerow(["0 %", 0, radius, particles, contacts, contacts / particles, contacts / 129, 0])
+    from dem.plots import draw_randall_directory
+
+    written = draw_randall_directory(tmp_path, tmp_path / "png")
+    assert {p.name for p in written} == {"fig6_42_43_contact_stresses.png", "size_contacts.png"}
+    for path in written:
+        assert_png(path)
+
+
+def test_randall_contact_lattice_from_the_two_states_dem_validate_keeps(tmp_path):
+    """Fig. 6.35: the contacts at the start of the shear (at_100_kPa/) and
+    at 0.1 % (strain_0.1_percent/), kept, broken and formed."""
+    states = {"at_100_kPa": [(0, 1), (1, 2), (0, 3)], "strain_0.1_percent": [(1, 2), (0, 3), (2, 3)]}
+    for state, pairs in states.items():
+        (tmp_path / state).mkdir()
+        with open(tmp_path / state / "particles.csv", "w", newline="") as out:
+            rows = csv.writer(out)
+            rows.writerow(["id", "x", "y", "radius", "vx", "vy", "angular_velocity", "rotation", "material"])
+            for k, (x, y) in enumerate(((0, 0), (0.002, 0), (0.002, 0.002), (0, 0.002))):
+                rows.writerow([k, x, y, 0.001, 0, 0, 0, 0, "glass"])
+        with open(tmp_path / state / "contacts.csv", "w", newline="") as out:
+            rows = csv.writer(out)
+            rows.writerow(["first", "second_kind", "second", "x", "y", "normal_force"])
+            for a, b in pairs:
+                rows.writerow([a, "particle", b, 0, 0, 0.1])
+            rows.writerow([0, "wall", 0, 0, 0, 0.1])
+    from dem.plots import draw_randall_directory, plot_contact_lattice
+
+    written = draw_randall_directory(tmp_path, tmp_path / "png")
+    assert "fig6_35_contact_lattice.png" in {p.name for p in written}
+    assert_png(tmp_path / "png" / "fig6_35_contact_lattice.png")
+    read = lambda state, table: list(csv.DictReader(open(tmp_path / state / table)))
+    figure = plot_contact_lattice(read("at_100_kPa", "particles.csv"), read("at_100_kPa", "contacts.csv"),
+                                  read("strain_0.1_percent", "particles.csv"),
+                                  read("strain_0.1_percent", "contacts.csv"))
+    assert "2 kept, 1 broken (dashed), 1 new (thick)" in figure.axes[0].get_title()
+
+
 def test_randall_centripetal_figures_from_a_dem_validate_directory(tmp_path):
     """Randall's 6.4.2 (Figs. 6.4-6.8) from the tables dem_validate
     randall-centripetal writes: the contact forces after the compaction and

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <string>
 
+#include "dem/cli/duration.h"
 #include "run_summary.h"
 
 namespace dem::run {
@@ -36,7 +37,7 @@ void ProgressLine::show(int stage_index, int stage_count, const StageDefT<Dim>& 
     char text[96];
     const double left = static_cast<double>(stage.cycles > stage_cycles ? stage.cycles - stage_cycles : 0) / rate_;
     std::snprintf(text, sizeof text, "  %.0f cycles/s, %s%s left", rate_,
-                  has_stop_condition(stage.until) ? "at most " : "", duration(left).c_str());
+                  has_stop_condition(stage.until) ? "at most " : "", cli::duration_text(left).c_str());
     pace = text;
   }
   char line[320];
@@ -50,19 +51,6 @@ void ProgressLine::show(int stage_index, int stage_count, const StageDefT<Dim>& 
   std::fprintf(stderr, "\r%s%*s", text.c_str(), static_cast<int>(width_ > text.size() ? width_ - text.size() : 0), "");
   std::fflush(stderr);
   width_ = text.size();
-}
-
-std::string ProgressLine::duration(double seconds) {
-  const auto whole = static_cast<long long>(seconds + 0.5);
-  char text[48];
-  if (whole < 60) {
-    std::snprintf(text, sizeof text, "%lld s", whole);
-  } else if (whole < 3600) {
-    std::snprintf(text, sizeof text, "%lld min %02lld s", whole / 60, whole % 60);
-  } else {
-    std::snprintf(text, sizeof text, "%lld h %02lld min", whole / 3600, (whole % 3600) / 60);
-  }
-  return text;
 }
 
 template void ProgressLine::show(int, int, const StageDef&, std::uint64_t, const World&);

@@ -28,9 +28,6 @@ class ProgressLine {
   // Blanks the line so the summary that follows starts clean.
   void clear();
 
-  // "42 s", "3 min 05 s", "2 h 05 min".
-  static std::string duration(double seconds);
-
  private:
   bool enabled_;
   std::size_t width_ = 0;  // of the line on screen, to blank it

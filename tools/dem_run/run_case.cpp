@@ -8,13 +8,13 @@
 #include <string>
 #include <variant>
 
+#include "dem/cli/interrupt.h"
 #include "dem/io/case_conversion.h"
 #include "dem/io/case_loader.h"
 #include "dem/io/snapshot_file.h"
 #include "dem/io/world_checks.h"
 #include "dem/programme.h"
 #include "dem/world.h"
-#include "interrupt.h"
 #include "progress_line.h"
 #include "run_checkpoints.h"
 #include "run_health.h"
@@ -98,7 +98,7 @@ RunOutcome run_definition(io::CaseDefinitionT<Dim>& definition, const io::CaseSo
   if (!resumed) recorder.record(world, 0);
   const auto stage_count = static_cast<int>(definition.stages.size());
   const std::uint64_t interval = std::max<std::uint64_t>(definition.output.interval, 1);
-  for (int i = resumed ? static_cast<int>(resumed->stage) : 0; i < stage_count && !interrupted(); ++i) {
+  for (int i = resumed ? static_cast<int>(resumed->stage) : 0; i < stage_count && !cli::interrupted(); ++i) {
     const std::uint64_t done_before = resumed && i == static_cast<int>(resumed->stage) ? resumed->stage_cycles : 0;
     const StageDefT<Dim>& stage = definition.stages[i];
     const StageDefT<Dim> running = done_before > 0 ? stage_remainder(stage, done_before) : stage;
@@ -121,14 +121,14 @@ RunOutcome run_definition(io::CaseDefinitionT<Dim>& definition, const io::CaseSo
         }
       }
       progress.show(i, stage_count, stage, done, w);
-      return !interrupted();
+      return !cli::interrupted();
     });
     result.cycles_run += done_before;
     progress.clear();
     if (!problem) problem = health.check(world, true);
     if (problem) fail(health, definition, options, i, *problem);
     recorder.record(world, i);
-    if (interrupted()) {
+    if (cli::interrupted()) {
       std::cerr << "interrupted in stage " << i + 1 << '/' << stage_count << " at cycle " << world.cycle_count()
                 << ": writing the tables and the snapshot of the state reached\n";
     } else if (summary) {
@@ -141,7 +141,7 @@ RunOutcome run_definition(io::CaseDefinitionT<Dim>& definition, const io::CaseSo
   std::vector<std::filesystem::path> files = recorder.files();
   files.push_back(snapshot);
   if (summary) print_final_state(std::cout, world, files);
-  return interrupted() ? RunOutcome::kInterrupted : RunOutcome::kCompleted;
+  return cli::interrupted() ? RunOutcome::kInterrupted : RunOutcome::kCompleted;
 }
 
 }  // namespace
@@ -150,7 +150,7 @@ RunOutcome run_case(const RunOptions& options) {
   const io::LoadedCase loaded = io::load_case_file(options.case_path);
   io::AnyCaseDefinition definition = io::convert_any_case(loaded.message, loaded.source);
   const std::string digest = io::file_digest(options.case_path);
-  watch_interrupts();
+  cli::watch_interrupts();
   return std::visit([&](auto& def) { return run_definition(def, loaded.source, options, digest); }, definition);
 }
 

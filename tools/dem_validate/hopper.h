@@ -25,8 +25,12 @@ struct HopperRun {
   std::vector<int> discharged;  // particles below the orifice's line then
   double rate = 0.0;            // particles/s: least squares over 20-70 % discharged
   double rate_r_squared = 0.0;  // how straight the discharge is there
-  double steady_from = 0.0;     // s: when 20 % had left (the end of the acceleration)
-  double seconds = 0.0;         // wall clock
+  double steady_from = 0.0;     // s: when 20 % had left
+  // s: where the steady line N = rate (t - lag) meets N = 0 - the time the
+  // initial acceleration stage cost (0 had the flow started at its steady
+  // rate; half the stage's length for a rate that grows evenly to it).
+  double acceleration_lag = 0.0;
+  double seconds = 0.0;  // wall clock
 };
 
 // Builds the hopper of the case with another half-angle (deg) and orifice
@@ -40,9 +44,11 @@ void print_hopper(std::FILE* out, const std::vector<HopperRun>& runs);
 void write_hopper_csv(const std::filesystem::path& out, const std::vector<HopperRun>& runs);
 
 // What the thesis determines (6.2): a steady discharge between the
-// acceleration and the end; a larger half-angle discharges more slowly; a
-// wider orifice faster. Given runs at several half-angles with one orifice
-// and at several orifices with one half-angle.
+// acceleration and the end; a larger half-angle discharges more slowly and
+// reaches its steady rate sooner; a wider orifice discharges faster, its
+// acceleration stage no shorter or longer. Given runs at several
+// half-angles with one orifice and at several orifices with one
+// half-angle.
 Verdict judge_hopper(const std::vector<HopperRun>& runs);
 
 }  // namespace dem::validation

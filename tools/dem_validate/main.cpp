@@ -10,7 +10,7 @@
 //   dem_validate randall-shear --case FILE --out DIR [--seeds S,...]        (6.5.2: constant-volume shear)
 //   dem_validate randall-centripetal --case FILE --out DIR [--seeds S,...]  (6.4.2: centripetal compaction)
 //   dem_validate hopper --case FILE --out DIR [--runs 45:10,30:10,...]  (Randall 1989, 6.2: discharge rates)
-//   dem_validate deposition --case FILE --out DIR             (Randall 1989, 6.3: pluvial deposition)
+//   dem_validate deposition --case FILE --out DIR [--seeds S,...]  (Randall 1989, 6.3: pluvial deposition)
 //   dem_validate rolling-to-rest --out DIR  (rolling resistance: a ball stops where the closed form says)
 //   dem_validate angle-of-repose --out DIR  (rolling resistance: the repose angle of a heap by mu_r)
 //   dem_validate miyata-compression --case FILE --out DIR [--packings N | --seeds S,... | --runs DIR ...]
@@ -154,6 +154,9 @@ int main(int argc, char** argv) {
       ->required()
       ->check(CLI::ExistingFile);
   deposition->add_option("--out", out, "directory for the bed's particles.csv and contacts.csv")->required();
+  std::vector<std::uint64_t> deposition_seeds;
+  deposition->add_option("--seeds", deposition_seeds, "run on these packing seeds (into DIR/packing_SEED/)")
+      ->delimiter(',');
   auto* rolling_to_rest = app.add_subcommand("rolling-to-rest", "rolling resistance: a disc and a sphere roll to rest");
   rolling_to_rest->add_option("--out", out, "directory for rolling_to_rest.csv")->required();
   std::vector<double> rolling_frictions = {0.0, 0.025, 0.05, 0.1, 0.2, 0.4};
@@ -220,9 +223,7 @@ int main(int argc, char** argv) {
       verdict = dem::validation::judge_hopper(runs);
     }
     if (*deposition) {
-      const dem::validation::DepositionRun run = dem::validation::run_deposition(deposition_case, out);
-      dem::validation::print_deposition(stdout, run);
-      verdict = dem::validation::judge_deposition(run);
+      verdict = dem::validation::report_deposition(deposition_case, out, deposition_seeds);
     }
     if (*rolling_to_rest) verdict = dem::validation::report_rolling_to_rest(out);
     if (*repose) verdict = dem::validation::report_angle_of_repose(out, rolling_frictions);

@@ -72,6 +72,7 @@ RandallRun run_randall(const std::filesystem::path& case_file, bool shear,
     if (stage.name == "shear") {
       if (!shear) break;
       double next_capture = kVelocityStrain;
+      analysis::AssemblySample start_sample;
       const auto observe = [&](const World& w) {
         const analysis::AssemblySample sample = analysis::sample(w);
         ShearSample s;
@@ -88,6 +89,10 @@ RandallRun run_randall(const std::filesystem::path& case_file, bool shear,
           }
         }
         const analysis::Region& main = regions.front();
+        if (run.shear.empty()) {
+          run.contact_stresses.push_back(contact_stress_state(w, main, "0 %", 0.0));
+          start_sample = sample;
+        }
         if (s.deviator_strain >= next_capture) {
           if (next_capture == kVelocityStrain) {
             run.early_sliding_rose = analysis::normal_rose(sample, main, kRoseBins, analysis::RoseOf::kSlidingContacts);
@@ -99,9 +104,13 @@ RandallRun run_randall(const std::filesystem::path& case_file, bool shear,
             next_capture = kForceStrain;
           } else if (next_capture == kForceStrain) {
             if (out) write_snapshot(*out / "strain_0.1_percent", w);
+            run.contact_stresses.push_back(contact_stress_state(w, main, "0.1 %", s.deviator_strain));
+            run.lattice = analysis::contact_changes(start_sample, sample, main);
+            run.lattice_taken = true;
             next_capture = kLateStrain;
           } else if (next_capture == kLateStrain) {
             run.late_sliding_rose = analysis::normal_rose(sample, main, kRoseBins, analysis::RoseOf::kSlidingContacts);
+            run.contact_stresses.push_back(contact_stress_state(w, main, "0.2 %", s.deviator_strain));
             next_capture = 1.0;
           }
         }
@@ -112,6 +121,10 @@ RandallRun run_randall(const std::filesystem::path& case_file, bool shear,
       if (stage.box_control) world.set_box_control(stage.box_control);
       observe(world);
       run_stage(world, stage, def.output.interval, observe);
+      // A shear that stops at 0.2 % may end between two samples.
+      const double end_strain = world.box_measure().deviator_strain;
+      if (next_capture == kLateStrain && end_strain >= kLateStrain)
+        run.contact_stresses.push_back(contact_stress_state(world, regions.front(), "0.2 %", end_strain));
       continue;
     }
     const StageResult result = run_stage(world, stage);
@@ -143,6 +156,7 @@ RandallRun run_randall(const std::filesystem::path& case_file, bool shear,
     write_bins(roses, "0.2 %", "sliding contacts", run.late_sliding_rose);
     io::CsvFile obliquity(*out, "obliquity.csv", "state,kind,obliquity_low,obliquity_high,contacts,share");
     write_bins(obliquity, "100 kPa", "obliquity", run.obliquity);
+    if (!run.contact_stresses.empty()) write_contact_stresses(*out, run.contact_stresses);
   }
   return run;
 }
@@ -248,6 +262,16 @@ void print_randall(std::FILE* out, const RandallRun& run) {
                "tangential share %.0f %%, sliding never above 25 %%, Delta F / F below 0.5 %%\n",
                worst, f.assembly.c_str(), f.peak_sin_phi, 100.0 * f.peak_strain_low, 100.0 * f.peak_strain_high,
                100.0 * f.tangential_share);
+  if (run.lattice_taken) {
+    const analysis::ContactChanges& l = run.lattice;
+    std::fprintf(
+        out,
+        "  contacts from the start of the shear to 0.1 %% (Fig. 6.35): %zu kept, %zu broken (%.0f %% within 45 "
+        "deg of the extension axis), %zu formed (%.0f %% within 45 deg of the compression axis)\n",
+        l.kept.size(), l.broken.size(), 100.0 * analysis::share_along(l.broken, {1.0, 0.0}), l.formed.size(),
+        100.0 * analysis::share_along(l.formed, {0.0, 1.0}));
+  }
+  print_contact_stresses(out, run.contact_stresses);
 }
 
 RandallMeasured measure_randall(const RandallRun& run) {
@@ -281,21 +305,40 @@ RandallMeasured measure_randall(const RandallRun& run) {
   const analysis::RegionMeasures& end = run.shear.back().regions[0];
   m.induced_anisotropy = induced(end) - induced(start);
   m.mean_stress_gain = start.mean_stress > 0.0 ? end.mean_stress / start.mean_stress : 0.0;
+  m.contact_stress = contact_stress_figures(run.contact_stresses);
+  if (run.lattice_taken) {
+    const analysis::ContactChanges& l = run.lattice;
+    const std::size_t at_start = l.kept.size() + l.broken.size();
+    m.broken_share = at_start > 0 ? static_cast<double>(l.broken.size()) / static_cast<double>(at_start) : 0.0;
+    // The shear shortens y and lengthens x (sigma_y's axis shortened).
+    m.broken_along_extension = analysis::share_along(l.broken, {1.0, 0.0});
+    m.formed_along_compression = analysis::share_along(l.formed, {0.0, 1.0});
+  }
   return m;
 }
 
 namespace {
 
 // The figures of a RandallMeasured, for the median and the table.
-constexpr double RandallMeasured::*kFigures[] = {
-    &RandallMeasured::box_stress,         &RandallMeasured::interior_stress,
-    &RandallMeasured::out_of_balance,     &RandallMeasured::anisotropy,
-    &RandallMeasured::sliding_at_rest,    &RandallMeasured::porosity,
-    &RandallMeasured::coordination,       &RandallMeasured::mechanical_coordination,
-    &RandallMeasured::force_ratio,        &RandallMeasured::largest_out_of_balance,
-    &RandallMeasured::peak_sin_phi,       &RandallMeasured::peak_strain,
-    &RandallMeasured::tangential_share,   &RandallMeasured::largest_sliding,
-    &RandallMeasured::induced_anisotropy, &RandallMeasured::mean_stress_gain};
+constexpr double RandallMeasured::*kFigures[] = {&RandallMeasured::box_stress,
+                                                 &RandallMeasured::interior_stress,
+                                                 &RandallMeasured::out_of_balance,
+                                                 &RandallMeasured::anisotropy,
+                                                 &RandallMeasured::sliding_at_rest,
+                                                 &RandallMeasured::porosity,
+                                                 &RandallMeasured::coordination,
+                                                 &RandallMeasured::mechanical_coordination,
+                                                 &RandallMeasured::force_ratio,
+                                                 &RandallMeasured::largest_out_of_balance,
+                                                 &RandallMeasured::peak_sin_phi,
+                                                 &RandallMeasured::peak_strain,
+                                                 &RandallMeasured::tangential_share,
+                                                 &RandallMeasured::largest_sliding,
+                                                 &RandallMeasured::induced_anisotropy,
+                                                 &RandallMeasured::mean_stress_gain,
+                                                 &RandallMeasured::broken_share,
+                                                 &RandallMeasured::broken_along_extension,
+                                                 &RandallMeasured::formed_along_compression};
 
 }  // namespace
 
@@ -306,6 +349,9 @@ RandallMeasured median_of(const std::vector<RandallMeasured>& packings) {
   m.compressed = std::ranges::all_of(packings, &RandallMeasured::compressed);
   m.sheared = std::ranges::all_of(packings, &RandallMeasured::sheared);
   set_medians(m, packings, kFigures);
+  std::vector<ContactStressFigures> contact_stresses;
+  for (const RandallMeasured& p : packings) contact_stresses.push_back(p.contact_stress);
+  m.contact_stress = median_of(contact_stresses);
   return m;
 }
 
@@ -383,6 +429,11 @@ Verdict judge_randall_shear(const RandallMeasured& m, const RandallFigures& f, c
   v.above("anisotropy Phi_yy - Phi_xx the shear induced", m.induced_anisotropy, 0.0);
   // "a smooth build up of isotropic stress" at constant volume (Fig. 6.25).
   v.above("mean stress at the end over at the start of the shear", m.mean_stress_gain, 1.0);
+  // Fig. 6.35: "the majority of contacts which are broken during shear are
+  // in the direction of extension" - within 45 degrees of it, by 0.1 %.
+  v.above("share of the contacts broken by 0.1 % that lie along the extension (Fig. 6.35)", m.broken_along_extension,
+          0.5);
+  v.add(judge_contact_stresses(m.contact_stress));
   return v;
 }
 

@@ -16,8 +16,10 @@
 #include <string>
 #include <vector>
 
+#include "dem/analysis/contact_changes.h"
 #include "dem/analysis/distributions.h"
 #include "dem/analysis/region_measures.h"
+#include "randall_contact_stresses.h"
 #include "verdict.h"
 
 namespace dem::validation {
@@ -70,13 +72,16 @@ struct RandallRun {
   std::vector<ShearSample> shear;
   std::vector<analysis::Bin> shear_rose, shear_weighted_rose;        // at 0.015 % (Figs. 6.36-6.37)
   std::vector<analysis::Bin> early_sliding_rose, late_sliding_rose;  // at 0.005 % and 0.2 % (Figs. 6.38-6.41)
+  std::vector<ContactStressState> contact_stresses;                  // at 0, 0.1 and 0.2 % (Figs. 6.42-6.43)
+  analysis::ContactChanges lattice;                                  // from the start of the shear to 0.1 % (Fig. 6.35)
+  bool lattice_taken = false;
 };
 
 // Runs the case's stages up to "friction", and "shear" too when `shear`,
 // on its own packing or on `packing_seed`'s; with `out`, writes the
 // figures' CSV files there (randall.csv, roses.csv, obliquity.csv, the
 // contacts and particles at 100 kPa and at 0.1 % deviator strain,
-// velocities at 0.005 %).
+// velocities at 0.005 %, the contact stresses at 0, 0.1 and 0.2 %).
 RandallRun run_randall(const std::filesystem::path& case_file, bool shear,
                        const std::optional<std::filesystem::path>& out = std::nullopt,
                        std::optional<std::uint64_t> packing_seed = std::nullopt);
@@ -106,6 +111,13 @@ struct RandallMeasured {
   double largest_sliding = 0.0;
   double induced_anisotropy = 0.0;  // Phi_yy - Phi_xx gained in the shear
   double mean_stress_gain = 0.0;    // the region's mean stress at the end over at the start
+  // Fig. 6.35: the contacts broken by 0.1 %, as a share of those at the
+  // start, and the shares of the broken ones within 45 degrees of the
+  // extension (x) axis and of the formed ones of the compression (y) axis.
+  double broken_share = 0.0;
+  double broken_along_extension = 0.0;
+  double formed_along_compression = 0.0;
+  ContactStressFigures contact_stress;  // Figs. 6.42-6.43
 };
 
 RandallMeasured measure_randall(const RandallRun& run);

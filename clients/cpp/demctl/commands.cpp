@@ -17,10 +17,11 @@
 #include <type_traits>
 
 #include "csv.h"
+#include "dem/cli/duration.h"
+#include "dem/cli/interrupt.h"
 #include "dem/client/errors.h"
 #include "dem/client/local_file.h"
 #include "exit_codes.h"
-#include "interrupt.h"
 #include "json.h"
 
 namespace demctl {
@@ -31,10 +32,6 @@ using dem::protocol::Status;
 using namespace std::chrono_literals;
 
 namespace {
-
-std::chrono::milliseconds milliseconds(double seconds) {
-  return std::chrono::milliseconds(static_cast<std::int64_t>(seconds * 1000.0));
-}
 
 Client connect(const Global& global) { return Client(connect_options(global)); }
 
@@ -73,7 +70,7 @@ class ProgressBar {
       const auto left =
           s.command_cycles_total > s.command_cycles_done ? s.command_cycles_total - s.command_cycles_done : 0;
       std::snprintf(pace, sizeof pace, ", %.0f cycles/s, %s%s left", rate_, s.command == "cycle" ? "" : "at most ",
-                    duration(static_cast<double>(left) / rate_).c_str());
+                    dem::cli::duration_text(static_cast<double>(left) / rate_).c_str());
     } else if (rate_ > 0.0) {
       std::snprintf(pace, sizeof pace, ", %.0f cycles/s", rate_);
     }
@@ -100,20 +97,6 @@ class ProgressBar {
   }
 
  private:
-  // "42 s", "3 min 05 s", "2 h 05 min".
-  static std::string duration(double seconds) {
-    const auto whole = static_cast<long long>(seconds + 0.5);
-    char text[48];
-    if (whole < 60) {
-      std::snprintf(text, sizeof text, "%lld s", whole);
-    } else if (whole < 3600) {
-      std::snprintf(text, sizeof text, "%lld min %02lld s", whole / 60, whole % 60);
-    } else {
-      std::snprintf(text, sizeof text, "%lld h %02lld min", whole / 3600, (whole % 3600) / 60);
-    }
-    return text;
-  }
-
   bool enabled_;
   bool shown_ = false;
   bool seen_ = false;  // a status of this run was shown
@@ -160,7 +143,7 @@ int follow_run(const Global& global, Client& client, std::uint64_t request, bool
       }
       return kOk;
     }
-    if (interrupted()) {
+    if (dem::cli::interrupted()) {
       bar.clear();
       std::cerr << "interrupted: stopping the run\n";
       client.stop();
@@ -183,27 +166,6 @@ double number(const std::string& text, const std::string& what) {
 }
 
 }  // namespace
-
-bool in_sweep(const std::string& server, const std::string& sweep) {
-  if (server.size() <= sweep.size() + 1 || server.compare(0, sweep.size(), sweep) != 0 || server[sweep.size()] != '_') {
-    return false;
-  }
-  return std::all_of(server.begin() + static_cast<std::ptrdiff_t>(sweep.size()) + 1, server.end(),
-                     [](unsigned char c) { return std::isdigit(c) != 0; });
-}
-
-dem::client::ConnectOptions connect_options(const Global& global) {
-  dem::client::ConnectOptions options;
-  options.server = global.server;
-  options.domain = global.domain;
-  options.dds_config = global.dds_config;
-  options.timeout = milliseconds(global.timeout);
-  options.reply_timeout = std::max(milliseconds(global.timeout), std::chrono::milliseconds(60s));
-  // A server whose interface is an older form, or whose telemetry this
-  // demctl cannot read, is said on stderr (commands work: it answered).
-  options.on_interface_note = [](const std::string& note) { std::cerr << "demctl: note: " << note << '\n'; };
-  return options;
-}
 
 int servers(const Global& global, double discovery, const std::string& sweep) {
   auto found = dem::client::list_servers(global.domain, global.dds_config, milliseconds(discovery));

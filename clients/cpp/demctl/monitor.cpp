@@ -3,6 +3,8 @@
 // contact statistics of the same cycle), until Ctrl-C or N rows - of one
 // server, or of every server of a sweep (or of the domain) at once, each
 // row naming its server, as they come and go.
+#include "monitor.h"
+
 #include <algorithm>
 #include <condition_variable>
 #include <cstdio>
@@ -14,12 +16,11 @@
 #include <set>
 #include <string_view>
 
-#include "commands.h"
 #include "csv.h"
+#include "dem/cli/interrupt.h"
 #include "dem/client/telemetry.h"
 #include "dem/dds/discovery.h"
 #include "exit_codes.h"
-#include "interrupt.h"
 #include "monitor_columns.h"
 
 namespace demctl {
@@ -211,7 +212,7 @@ int monitor_one(const Global& global, const MonitorOptions& options) {
                                                    .status = {}});
   RowWriter writer(options, 0);
   std::fprintf(stderr, "monitoring server %s (Ctrl-C to stop)\n", name.c_str());
-  while (!interrupted() && !enough(options, writer)) {
+  while (!dem::cli::interrupted() && !enough(options, writer)) {
     for (const Row& row : inbox.take(100ms)) {
       writer.write(row);
       if (enough(options, writer)) break;
@@ -245,7 +246,7 @@ int monitor_fleet(const Global& global, const MonitorOptions& options) {
   std::fprintf(stderr, "monitoring %s on DDS domain %u (Ctrl-C to stop)\n", what.c_str(), global.domain);
   auto seen = std::chrono::steady_clock::now();  // when a server of the fleet was last there
   auto refreshed = seen - 1s;
-  while (!interrupted() && !enough(options, writer)) {
+  while (!dem::cli::interrupted() && !enough(options, writer)) {
     const auto now = std::chrono::steady_clock::now();
     if (now - refreshed >= 500ms) {
       refreshed = now;

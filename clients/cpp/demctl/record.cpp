@@ -2,14 +2,15 @@
 // contact statistics) recorded as a ROS 2 bag holds it, in MCAP
 // (dem::client::TelemetryRecorder), until Ctrl-C, --samples plate forces
 // samples, --duration seconds, or the server stops.
+#include "record.h"
+
 #include <unistd.h>
 
 #include <cstdio>
 
-#include "commands.h"
+#include "dem/cli/interrupt.h"
 #include "dem/client/telemetry_recorder.h"
 #include "exit_codes.h"
-#include "interrupt.h"
 
 namespace demctl {
 
@@ -20,7 +21,7 @@ int record(const Global& global, const RecordOptions& options) {
   dem::client::TelemetryRecorder recorder(client.participant(), global.server, options.file);
   const bool terminal = !global.quiet && isatty(STDERR_FILENO) == 1;
   // Said once the subscriptions are matched: what the server publishes from then on is recorded.
-  if (!recorder.wait_for_publishers(std::chrono::milliseconds(static_cast<std::int64_t>(global.timeout * 1000)))) {
+  if (!recorder.wait_for_publishers(milliseconds(global.timeout))) {
     throw dem::client::ReplyTimeout("server \"" + global.server + "\" publishes no telemetry topics");
   }
   const auto start = std::chrono::steady_clock::now();
@@ -36,7 +37,7 @@ int record(const Global& global, const RecordOptions& options) {
           static_cast<unsigned long long>(counts.contact_stats),
           static_cast<unsigned long long>(counts.region_measures), static_cast<unsigned long long>(counts.status));
     }
-    if (interrupted()) break;
+    if (dem::cli::interrupted()) break;
     if (options.samples && counts.plate_forces >= *options.samples) {
       ended = "the samples asked for are in";
       break;

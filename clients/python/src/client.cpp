@@ -150,20 +150,17 @@ ClientHandle connect(const std::string& server, std::uint32_t domain, const std:
   return ClientHandle{std::make_shared<client::Client>(std::move(options))};
 }
 
-}  // namespace
-
-client::Client& ClientHandle::get() const {
-  if (!client) throw std::runtime_error("this client is closed");
-  return *client;
+// Shared by every command: timeout (s, None: the default), on_wait, wait_interval (s).
+struct WaitArgs {
+  py::arg_v timeout, on_wait, interval;
+};
+WaitArgs wait_args() {
+  return {py::arg("timeout") = py::none(), py::arg("on_wait") = py::none(), py::arg("wait_interval") = 0.1};
 }
 
-void bind_client(py::module_& m) {
-  // Shared by every command: timeout (s, None: the default), on_wait, wait_interval (s).
-  const auto timeout = py::arg("timeout") = py::none();
-  const auto on_wait = py::arg("on_wait") = py::none();
-  const auto interval = py::arg("wait_interval") = 0.1;
-
-  py::class_<ClientHandle>(m, "Client", "A connection to one dem_server (dem::client::Client)")
+// Connecting, and what the connection knows.
+void bind_connection(py::class_<ClientHandle>& handle_class) {
+  handle_class
       .def(py::init(&connect), py::arg("server"), py::arg("domain"), py::arg("dds_config"), py::arg("timeout"),
            py::arg("reply_timeout"), py::arg("client_id"))
       .def_property_readonly("server", [](const ClientHandle& h) { return h.get().server(); })
@@ -177,7 +174,13 @@ void bind_client(py::module_& m) {
              last.reset();
            })
       .def("status", [](const ClientHandle& h) { return h.get().status(); })
-      .def("server_alive", [](const ClientHandle& h) { return h.get().server_alive(); })
+      .def("server_alive", [](const ClientHandle& h) { return h.get().server_alive(); });
+}
+
+// Cases and snapshots, sent or read on the server.
+void bind_loads(py::class_<ClientHandle>& handle_class) {
+  const WaitArgs a = wait_args();
+  handle_class
       .def(
           "load_case_text",
           [](ClientHandle& h, std::string text, std::string source_name, Seconds t, py::object w, double i) {
@@ -186,7 +189,7 @@ void bind_client(py::module_& m) {
             c.load_case.source_name = std::move(source_name);
             return call(h, std::move(c), command_wait(h, t, std::move(w), i));
           },
-          py::arg("text"), py::arg("source_name"), timeout, on_wait, interval)
+          py::arg("text"), py::arg("source_name"), a.timeout, a.on_wait, a.interval)
       .def(
           "load_case_binary",
           [](ClientHandle& h, py::bytes bytes, std::string source_name, Seconds t, py::object w, double i) {
@@ -195,7 +198,7 @@ void bind_client(py::module_& m) {
             c.load_case.source_name = std::move(source_name);
             return call(h, std::move(c), command_wait(h, t, std::move(w), i));
           },
-          py::arg("data"), py::arg("source_name"), timeout, on_wait, interval)
+          py::arg("data"), py::arg("source_name"), a.timeout, a.on_wait, a.interval)
       .def(
           "load_case_path",
           [](ClientHandle& h, std::string path, Seconds t, py::object w, double i) {
@@ -203,29 +206,39 @@ void bind_client(py::module_& m) {
             c.load_case.path = std::move(path);
             return call(h, std::move(c), command_wait(h, t, std::move(w), i));
           },
-          py::arg("path"), timeout, on_wait, interval)
+          py::arg("path"), a.timeout, a.on_wait, a.interval)
       .def(
-          "set_wall_velocity",
-          [](ClientHandle& h, std::string wall, Vector velocity, Vector angular, Seconds t, py::object w, double i) {
-            protocol::Command c = command(CommandKind::kSetWallVelocity);
-            c.wall_velocity.wall = std::move(wall);
-            c.wall_velocity.twist.linear = vector3(velocity);
-            c.wall_velocity.twist.angular = vector3(angular);
-            return call(h, std::move(c), command_wait(h, t, std::move(w), i));
+          "save_snapshot",
+          [](ClientHandle& h, std::string path, bool transfer, Seconds t) {
+            protocol::Command c = command(CommandKind::kSaveSnapshot);
+            c.snapshot.path = std::move(path);
+            c.snapshot.transfer = transfer;
+            return call(h, std::move(c), command_wait(h, t, py::none(), 0.1));
           },
-          py::arg("wall"), py::arg("velocity"), py::arg("angular_velocity"), timeout, on_wait, interval)
+          py::arg("path"), py::arg("transfer"), a.timeout)
       .def(
-          "set_wall_servo",
-          [](ClientHandle& h, std::string wall, double stress, double gain, double max_speed, Seconds t, py::object w,
-             double i) {
-            protocol::Command c = command(CommandKind::kSetWallServo);
-            c.wall_servo.wall = std::move(wall);
-            c.wall_servo.target_stress = stress;
-            c.wall_servo.gain = gain;
-            c.wall_servo.max_speed = max_speed;
-            return call(h, std::move(c), command_wait(h, t, std::move(w), i));
+          "load_snapshot_path",
+          [](ClientHandle& h, std::string path, Seconds t) {
+            protocol::Command c = command(CommandKind::kLoadSnapshot);
+            c.snapshot.path = std::move(path);
+            return call(h, std::move(c), command_wait(h, t, py::none(), 0.1));
           },
-          py::arg("wall"), py::arg("target_stress"), py::arg("gain"), py::arg("max_speed"), timeout, on_wait, interval)
+          py::arg("path"), a.timeout)
+      .def(
+          "load_snapshot_bytes",
+          [](ClientHandle& h, py::bytes data, Seconds t) {
+            protocol::Command c = command(CommandKind::kLoadSnapshot);
+            c.snapshot.transfer = true;
+            c.snapshot.data = std::string(data);
+            return call(h, std::move(c), command_wait(h, t, py::none(), 0.1));
+          },
+          py::arg("data"), a.timeout);
+}
+
+// Runs: waited for (cycle, run_until, run_programme) or started and awaited later.
+void bind_runs(py::class_<ClientHandle>& handle_class) {
+  const WaitArgs a = wait_args();
+  handle_class
       .def(
           "cycle",
           [](ClientHandle& h, std::int64_t cycles, Seconds t, py::object w, double i) {
@@ -233,7 +246,7 @@ void bind_client(py::module_& m) {
             c.cycle.cycles = cycles;
             return call(h, std::move(c), run_wait(t, std::move(w), i));
           },
-          py::arg("cycles"), timeout, on_wait, interval)
+          py::arg("cycles"), a.timeout, a.on_wait, a.interval)
       .def(
           "start_cycle",
           [](ClientHandle& h, std::int64_t cycles) {
@@ -252,7 +265,7 @@ void bind_client(py::module_& m) {
             return call(h, std::move(c), run_wait(t, std::move(w), i));
           },
           py::arg("wall"), py::arg("stress"), py::arg("settlement"), py::arg("kinetic_energy"), py::arg("max_cycles"),
-          py::arg("check_interval"), timeout, on_wait, interval)
+          py::arg("check_interval"), a.timeout, a.on_wait, a.interval)
       .def(
           "start_run_until",
           [](ClientHandle& h, const std::string& wall, std::optional<double> stress, std::optional<double> settlement,
@@ -270,7 +283,7 @@ void bind_client(py::module_& m) {
             c.programme = {first_stage, stage_count};
             return call(h, std::move(c), run_wait(t, std::move(w), i));
           },
-          py::arg("first_stage"), py::arg("stage_count"), timeout, on_wait, interval)
+          py::arg("first_stage"), py::arg("stage_count"), a.timeout, a.on_wait, a.interval)
       .def(
           "start_run_programme",
           [](ClientHandle& h, std::uint32_t first_stage, std::uint32_t stage_count) {
@@ -285,25 +298,54 @@ void bind_client(py::module_& m) {
             const Wait wait = is_run ? run_wait(t, std::move(w), i) : command_wait(h, t, std::move(w), i);
             return await_reply(h.get(), id, "request " + std::to_string(id), wait);
           },
-          py::arg("request_id"), timeout, on_wait, interval, py::arg("is_run") = true)
+          py::arg("request_id"), a.timeout, a.on_wait, a.interval, py::arg("is_run") = true)
       .def(
           "stop",
           [](ClientHandle& h, Seconds t) {
             return call(h, command(CommandKind::kStop), command_wait(h, t, py::none(), 0.1));
           },
-          timeout)
+          a.timeout);
+}
+
+// Walls, parameters, queries and the server itself.
+void bind_controls(py::class_<ClientHandle>& handle_class) {
+  const WaitArgs a = wait_args();
+  handle_class
+      .def(
+          "set_wall_velocity",
+          [](ClientHandle& h, std::string wall, Vector velocity, Vector angular, Seconds t, py::object w, double i) {
+            protocol::Command c = command(CommandKind::kSetWallVelocity);
+            c.wall_velocity.wall = std::move(wall);
+            c.wall_velocity.twist.linear = vector3(velocity);
+            c.wall_velocity.twist.angular = vector3(angular);
+            return call(h, std::move(c), command_wait(h, t, std::move(w), i));
+          },
+          py::arg("wall"), py::arg("velocity"), py::arg("angular_velocity"), a.timeout, a.on_wait, a.interval)
+      .def(
+          "set_wall_servo",
+          [](ClientHandle& h, std::string wall, double stress, double gain, double max_speed, Seconds t, py::object w,
+             double i) {
+            protocol::Command c = command(CommandKind::kSetWallServo);
+            c.wall_servo.wall = std::move(wall);
+            c.wall_servo.target_stress = stress;
+            c.wall_servo.gain = gain;
+            c.wall_servo.max_speed = max_speed;
+            return call(h, std::move(c), command_wait(h, t, std::move(w), i));
+          },
+          py::arg("wall"), py::arg("target_stress"), py::arg("gain"), py::arg("max_speed"), a.timeout, a.on_wait,
+          a.interval)
       .def(
           "get_state",
           [](ClientHandle& h, Seconds t) {
             return call(h, command(CommandKind::kGetState), command_wait(h, t, py::none(), 0.1));
           },
-          timeout)
+          a.timeout)
       .def(
           "shutdown",
           [](ClientHandle& h, Seconds t) {
             return call(h, command(CommandKind::kShutdown), command_wait(h, t, py::none(), 0.1));
           },
-          timeout)
+          a.timeout)
       .def(
           "query_contacts",
           [](ClientHandle& h, std::optional<std::string> wall, std::optional<Vector> box_min,
@@ -328,33 +370,7 @@ void bind_client(py::module_& m) {
             return call(h, std::move(c), command_wait(h, t, py::none(), 0.1));
           },
           py::arg("wall"), py::arg("box_min"), py::arg("box_max"), py::arg("min_normal_force"), py::arg("particle"),
-          py::arg("chunk_size"), timeout)
-      .def(
-          "save_snapshot",
-          [](ClientHandle& h, std::string path, bool transfer, Seconds t) {
-            protocol::Command c = command(CommandKind::kSaveSnapshot);
-            c.snapshot.path = std::move(path);
-            c.snapshot.transfer = transfer;
-            return call(h, std::move(c), command_wait(h, t, py::none(), 0.1));
-          },
-          py::arg("path"), py::arg("transfer"), timeout)
-      .def(
-          "load_snapshot_path",
-          [](ClientHandle& h, std::string path, Seconds t) {
-            protocol::Command c = command(CommandKind::kLoadSnapshot);
-            c.snapshot.path = std::move(path);
-            return call(h, std::move(c), command_wait(h, t, py::none(), 0.1));
-          },
-          py::arg("path"), timeout)
-      .def(
-          "load_snapshot_bytes",
-          [](ClientHandle& h, py::bytes data, Seconds t) {
-            protocol::Command c = command(CommandKind::kLoadSnapshot);
-            c.snapshot.transfer = true;
-            c.snapshot.data = std::string(data);
-            return call(h, std::move(c), command_wait(h, t, py::none(), 0.1));
-          },
-          py::arg("data"), timeout)
+          py::arg("chunk_size"), a.timeout)
       .def(
           "set_parameter",
           [](ClientHandle& h, std::string name, double value, std::string material, Seconds t) {
@@ -364,7 +380,7 @@ void bind_client(py::module_& m) {
             c.parameter.material = std::move(material);
             return call(h, std::move(c), command_wait(h, t, py::none(), 0.1));
           },
-          py::arg("name"), py::arg("value"), py::arg("material"), timeout)
+          py::arg("name"), py::arg("value"), py::arg("material"), a.timeout)
       .def(
           "set_gravity",
           [](ClientHandle& h, Vector gravity, Seconds t) {
@@ -373,8 +389,22 @@ void bind_client(py::module_& m) {
             c.parameter.vector = vector3(gravity);
             return call(h, std::move(c), command_wait(h, t, py::none(), 0.1));
           },
-          py::arg("gravity"), timeout);
+          py::arg("gravity"), a.timeout);
+}
 
+}  // namespace
+
+client::Client& ClientHandle::get() const {
+  if (!client) throw std::runtime_error("this client is closed");
+  return *client;
+}
+
+void bind_client(py::module_& m) {
+  py::class_<ClientHandle> handle_class(m, "Client", "A connection to one dem_server (dem::client::Client)");
+  bind_connection(handle_class);
+  bind_loads(handle_class);
+  bind_runs(handle_class);
+  bind_controls(handle_class);
   m.def(
       "list_servers",
       [](std::uint32_t domain, const std::string& dds_config, double discovery) {

@@ -154,6 +154,10 @@ class BasicWorld {
   // Length (2D, times the out-of-plane depth) or area (3D) that turns a
   // wall's normal force into a normal stress.
   double wall_area(WallId id) const;
+  // A wall's normal stress: the compressive normal force of the last force
+  // pass over wall_area (0 for a wall of no extent). Telemetry, the tables,
+  // the analyses and the stop conditions all take a plate's stress here.
+  double wall_stress(WallId id) const;
   // Moves a wall's reference point there at once (placing a loading plate
   // on a sample); its contacts start afresh and its displacement
   // (settlement) counts from here.

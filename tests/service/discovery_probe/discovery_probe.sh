@@ -5,10 +5,13 @@
 # requests and damaged discovery messages; it must be alive after each,
 # still answer, and shut down cleanly with nothing reported by a
 # sanitizer. The issue's thousand rounds under ASan: ROUNDS=1000 with an
-# ASan build's dem_server (docs/RELIABILITY.md says how).
-#   discovery_probe.sh DEM_SERVER DEMCTL PROBE CASES_DIR WORK_DIR DOMAIN ROUNDS
+# ASan build's dem_server (docs/RELIABILITY.md says how). Options after
+# ROUNDS go to the probe (--no-peers: the hand-made messages alone, which
+# grow discovery past 256 endpoints within some 140 rounds).
+#   discovery_probe.sh DEM_SERVER DEMCTL PROBE CASES_DIR WORK_DIR DOMAIN ROUNDS [PROBE_OPTIONS...]
 set -uo pipefail
 server_program=$1 demctl=$2 probe=$3 cases=$4 work=$5 domain=$6 rounds=$7
+shift 7
 rm -rf "$work" && mkdir -p "$work"
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
@@ -21,7 +24,7 @@ server=$!
 ctl() { timeout 60 "$demctl" --server probed --domain "$domain" --timeout 15 "$@"; }
 ctl cycle 100000000 >"$work/cycle.out" 2>&1 || fail "starting a run: $(cat "$work/cycle.out")"
 
-"$probe" --domain "$domain" --server probed --server-pid "$server" --rounds "$rounds" --seed "${DEM_PROBE_SEED:-1}" \
+"$probe" --domain "$domain" --server probed --server-pid "$server" --rounds "$rounds" --seed "${DEM_PROBE_SEED:-1}" "$@" \
   2>"$work/probe.err" | tee "$work/probe.out"
 [ "${PIPESTATUS[0]}" -eq 0 ] || fail "the probe: $(tail -1 "$work/probe.out")"
 

@@ -16,7 +16,10 @@ axes (or a new headless figure) and writes a PNG when given a path:
   plot_stress_path, plot_discharge, plot_velocity_field: Randall's
   chapter 6 (granular.py); plot_contact_forces, plot_porosity_profile,
   plot_circle_series: its centripetal compaction, Figs. 6.4-6.8
-  (randall_centripetal.py);
+  (randall_centripetal.py); plot_contact_stress_histograms,
+  plot_size_contacts: its contact stresses, Figs. 6.42-6.43, and each
+  size's contacts (randall_contact_stresses.py); plot_contact_lattice:
+  its Fig. 6.35 (randall_lattice.py);
 - draw_miyata_directory: Miyata et al.'s Figs. 26-37 from a run's plate
   loading analyses (miyata.py, over miyata_loading, miyata_assembly,
   miyata_plates and miyata_moment).
@@ -29,14 +32,17 @@ from .contact_history import plot_contact_force_history
 from .figure import new_axes, save_png
 from .force_chains import plot_force_chains
 from .force_distribution import plot_force_distribution
-from .granular import (draw_randall_directory, plot_discharge, plot_obliquity_histogram, plot_rose, plot_shear_series,
-                       plot_stress_path, plot_velocity_field)
+from .granular import (plot_discharge, plot_obliquity_histogram, plot_rose, plot_shear_series, plot_stress_path,
+                       plot_velocity_field)
 from .miyata import draw_miyata_directory
 from .oblique_impact import plot_psi2_against_psi1
+from .randall_lattice import plot_contact_lattice
+from .randall_contact_stresses import plot_contact_stress_histograms, plot_size_contacts
 from .randall_centripetal import (draw_centripetal_directory, plot_circle_series, plot_contact_forces,
                                   plot_porosity_profile)
 from .stress_settlement import LiveStressSettlement, StressSettlementSeries, plot_stress_settlement
 from .sweep import plot_final_measure, plot_stress_settlement_family
+from .randall import draw_randall_directory
 
 __all__ = [
     "LiveStressSettlement",
@@ -47,11 +53,14 @@ __all__ = [
     "new_axes",
     "plot_circle_series",
     "plot_contact_forces",
+    "plot_contact_lattice",
+    "plot_contact_stress_histograms",
     "plot_discharge",
     "plot_obliquity_histogram",
     "plot_porosity_profile",
     "plot_rose",
     "plot_shear_series",
+    "plot_size_contacts",
     "plot_stress_path",
     "plot_velocity_field",
     "plot_contact_force_history",

@@ -8,7 +8,7 @@
 
 import sys
 
-from .granular import main as randall
+from .randall import main as randall
 from .miyata import main as miyata
 from .stress_settlement import main as stress_settlement
 

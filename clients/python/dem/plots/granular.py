@@ -17,19 +17,20 @@ regions.csv:
 - plot_velocity_field: each particle's velocity as an arrow, from a
   particles.csv (Fig. 6.31 at 0.005 % deviator strain; the hopper's flow
   patterns, Fig. 6.2);
-- the centripetal compaction's Figs. 6.4-6.8 (randall_centripetal.py).
 
-``python3 -m dem.plots randall DIR`` draws them all from a dem_validate
-output directory.
+The centripetal compaction's Figs. 6.4-6.8 are in randall_centripetal.py,
+the contact stresses of Figs. 6.42-6.43 in randall_contact_stresses.py,
+the contact lattice of Fig. 6.35 in randall_lattice.py; randall.py draws
+them all from a dem_validate output directory (``python3 -m dem.plots
+randall DIR``).
 """
 
 import csv
 import math
-import pathlib
 
 import numpy as np
 
-from .figure import finish, new_axes, save_png
+from .figure import finish, new_axes
 
 
 def read_rows(path):
@@ -178,50 +179,3 @@ def plot_velocity_field(rows, *, png=None, title=None):
     ax.set_ylabel("y, m")
     ax.set_title(title or f"particle velocities (largest {fastest:.3g} m/s)", fontsize="medium")
     return finish(figure, png)
-
-
-def draw_randall_directory(directory, out=None):
-    """Every figure a dem_validate randall-*, randall-centripetal or hopper directory holds;
-    returns the PNG paths written."""
-    directory = pathlib.Path(directory)
-    out = pathlib.Path(out) if out else directory
-    written = []
-    if (directory / "roses.csv").exists():
-        rows = read_rows(directory / "roses.csv")
-        groups = {}
-        for row in rows:
-            groups.setdefault((row["state"], row["kind"]), []).append(row)
-        for (state, kind), bins in groups.items():
-            if not any(float(b["share"]) > 0 for b in bins):
-                continue
-            name = f"rose_{state}_{kind}".replace(" ", "_").replace("%", "percent").replace(".", "_")
-            written.append(save_png(plot_rose(bins, title=f"{kind} at {state}"), out / f"{name}.png"))
-    if (directory / "obliquity.csv").exists():
-        bins = read_rows(directory / "obliquity.csv")
-        written.append(save_png(plot_obliquity_histogram(bins), out / "obliquity.png"))
-    if (directory / "randall.csv").exists():
-        rows = read_rows(directory / "randall.csv")
-        if rows:
-            written.append(save_png(plot_shear_series(rows), out / "shear.png"))
-            written.append(save_png(plot_stress_path(rows), out / "stress_path.png"))
-    if (directory / "centripetal.csv").exists():
-        from .randall_centripetal import draw_centripetal_directory  # it draws with this module's helpers
-
-        written.extend(draw_centripetal_directory(directory, out, say=print))
-    if (directory / "hopper.csv").exists():
-        written.append(save_png(plot_discharge(read_rows(directory / "hopper.csv")), out / "discharge.png"))
-    # The states dem_validate keeps (at_100_kPa, strain_0.005_percent, a
-    # hopper run part-way through its discharge), each a particles.csv.
-    for state in sorted(p for p in directory.iterdir() if (p / "particles.csv").is_file()):
-        rows = read_rows(state / "particles.csv")
-        name = "velocity_" + state.name.replace(" ", "_").replace(",", "").replace(".", "_")
-        written.append(save_png(plot_velocity_field(rows, title=f"velocities, {state.name}"), out / f"{name}.png"))
-    return written
-
-
-def main(argv):
-    """python3 -m dem.plots randall DIR [OUT]"""
-    if not argv:
-        raise SystemExit("usage: python3 -m dem.plots randall DIR [OUT]")
-    for path in draw_randall_directory(argv[0], argv[1] if len(argv) > 1 else None):
-        print(path)

@@ -11,6 +11,7 @@
 
 #include "dem/dds/entity.h"
 #include "dem/dds/participant.h"
+#include "dem/dds/topic.h"
 
 namespace dem::dds {
 
@@ -41,6 +42,7 @@ class EndpointMonitor {
  private:
   Kind kind_;
   Entity entity_;
+  mutable LoanSlots slots_;
 };
 
 // The writers (DCPSPublication).

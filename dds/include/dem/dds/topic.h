@@ -6,6 +6,8 @@
 
 #include <dds/dds.h>
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <string>
@@ -89,6 +91,38 @@ class Writer {
   Entity entity_;
 };
 
+// The pointer buffer of a read or take that borrows Cyclone's samples.
+// Cyclone 0.10.2 fills as many of its pointers as the largest loan the
+// reader has ever had, whatever the call asks for (dds_read.c: "This
+// ensures buf is properly initialized" - realloc_samples up to
+// m_loan_size), so a buffer sized to a smaller request than an earlier
+// one overflowed and corrupted the heap: dem_server died after some 140
+// rounds of tests/service/discovery_probe, once discovery had grown past
+// 256 endpoints and shrunk again (docs/RELIABILITY.md, "Discovery"). A
+// reader's buffers therefore keep the largest size it ever asked for.
+class LoanSlots {
+ public:
+  LoanSlots() = default;
+  // Moved with its reader (which keeps its loans).
+  LoanSlots(LoanSlots&& other) noexcept : largest_(other.largest_.load(std::memory_order_relaxed)) {}
+  LoanSlots& operator=(LoanSlots&& other) noexcept {
+    largest_.store(other.largest_.load(std::memory_order_relaxed), std::memory_order_relaxed);
+    return *this;
+  }
+
+  // A buffer of null pointers (null: Cyclone lends its own samples) for a
+  // call asking for `wanted` samples; pass its size() as the call's bufsz.
+  std::vector<void*> buffer(std::size_t wanted) {
+    std::size_t largest = largest_.load(std::memory_order_relaxed);
+    while (wanted > largest && !largest_.compare_exchange_weak(largest, wanted, std::memory_order_relaxed)) {
+    }
+    return std::vector<void*>(std::max(largest, wanted), nullptr);
+  }
+
+ private:
+  std::atomic<std::size_t> largest_{0};
+};
+
 // Returns a loan of received samples when it goes out of scope.
 class Loan {
  public:
@@ -117,10 +151,10 @@ class Reader {
   // Removes up to `max` samples from the reader's history and returns those
   // that carry data (not the notices that a writer went away), oldest first.
   std::vector<T> take(std::size_t max = 256) {
-    std::vector<void*> samples(max, nullptr);  // null: Cyclone lends its own buffers
+    std::vector<void*> samples = slots_.buffer(max);
     std::vector<dds_sample_info_t> infos(max);
     const auto count =
-        check(dds_take(entity_.handle(), samples.data(), infos.data(), max, static_cast<std::uint32_t>(max)),
+        check(dds_take(entity_.handle(), samples.data(), infos.data(), samples.size(), static_cast<std::uint32_t>(max)),
               "taking from " + topic_name_);
     Loan loan(entity_.handle(), samples, count);
     std::vector<T> values;
@@ -133,10 +167,10 @@ class Reader {
 
   // As take, with the writer of each sample.
   std::vector<Received<T>> take_with_writers(std::size_t max = 256) {
-    std::vector<void*> samples(max, nullptr);
+    std::vector<void*> samples = slots_.buffer(max);
     std::vector<dds_sample_info_t> infos(max);
     const auto count =
-        check(dds_take(entity_.handle(), samples.data(), infos.data(), max, static_cast<std::uint32_t>(max)),
+        check(dds_take(entity_.handle(), samples.data(), infos.data(), samples.size(), static_cast<std::uint32_t>(max)),
               "taking from " + topic_name_);
     Loan loan(entity_.handle(), samples, count);
     std::vector<Received<T>> values;
@@ -157,6 +191,7 @@ class Reader {
  private:
   std::string topic_name_;
   Entity entity_;
+  LoanSlots slots_;
 };
 
 }  // namespace dem::dds

@@ -24,7 +24,6 @@ class TelemetryPublisher {
   void publish(const protocol::RegionTelemetry& regions);
 
   std::uint64_t dropped() const { return dropped_; }
-  std::uint32_t matched_telemetry_readers() const { return plates_writer_.matched_readers(); }
   // Waits until subscribers acknowledged the status (the final one at shutdown).
   bool flush_status(std::chrono::milliseconds timeout);
 

@@ -45,7 +45,6 @@ class McapWriter {
   // Writes the last chunk, the data end, the summary and the footer.
   void close();
 
-  std::uint64_t message_count() const { return message_count_; }
   const std::filesystem::path& path() const { return path_; }
 
  private:
