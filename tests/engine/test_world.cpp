@@ -8,6 +8,7 @@
 #include "dem/world.h"
 #include "model_builders.h"
 #include "same_bits.h"
+#include "set_choices.h"
 
 namespace dem {
 namespace {

@@ -11,6 +11,7 @@
 #include "exact_continuation.h"
 #include "model_builders.h"
 #include "same_bits.h"
+#include "set_choices.h"
 
 namespace dem {
 namespace {
