@@ -1,7 +1,19 @@
 // The shared "plate compression" benchmark (../shared/bench/README.md, v1):
 // loads the case, runs the 200 warm-up steps, times the 2000 steps after
 // them, and prints the README's metrics beside the reference values.
-//   bench_plate_compression [--case FILE] [--threads N ...]
+//   bench_plate_compression [--case FILE] [--threads N ...] [--materials MIX]
+// MIX gives the same bed other materials with the same physics, to time
+// what a material mix costs (docs/PERFORMANCE.md):
+//   one        the case as it is: one material
+//   walls      the floor and the plate of a second material, a copy of the spheres'
+//   particles  every other sphere of a second material, a copy of the first
+//   few        as particles, and the pairs with the second material given a
+//              contact model that differs only in a linear stiffness the
+//              Hertz law does not read: two parameter sets in each table,
+//              each row chooses its own (parameter_sets.h)
+//   many       every third sphere of the first, second and third material,
+//              each pair of them with its own such model: six sets of
+//              sphere pairs, each row looks its own up
 // Figures are printed, not asserted.
 #include <sys/resource.h>
 #include <time.h>
@@ -12,6 +24,7 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "dem/io/case_conversion.h"
@@ -66,6 +79,39 @@ Metrics run(dem::WorldDef3 world_def, const std::vector<dem::StageDef3>& stages,
   return m;
 }
 
+// Gives the bed the material mix `mix` (see the top of the file).
+void apply_material_mix(dem::WorldDef3& def, const std::string& mix) {
+  if (mix == "one") return;
+  const dem::MaterialId second{static_cast<std::int32_t>(def.materials.size())};
+  def.materials.push_back(def.materials.at(0));
+  def.materials.back().name += "_copy";
+  if (mix == "walls") {
+    for (dem::WallDef3& wall : def.walls) wall.material = second;
+    return;
+  }
+  std::vector<dem::MaterialId> kinds{dem::MaterialId{0}, second};
+  if (mix == "many") {
+    kinds.push_back(dem::MaterialId{static_cast<std::int32_t>(def.materials.size())});
+    def.materials.push_back(def.materials.at(0));
+    def.materials.back().name += "_second_copy";
+  }
+  for (std::size_t i = 0; i < def.particles.size(); ++i) def.particles[i].material = kinds[i % kinds.size()];
+  if (mix == "particles") return;
+  // A model for each pair but the first material's own, each with another
+  // linear stiffness, which the linear laws alone read.
+  const dem::ContactModelDef model = def.contact_models.at(0);
+  double stiffness = model.linear.normal_stiffness;
+  for (std::size_t a = 0; a < kinds.size(); ++a) {
+    for (std::size_t b = std::max<std::size_t>(a, 1); b < kinds.size(); ++b) {
+      dem::ContactModelDef pair = model;
+      pair.material_a = kinds[a];
+      pair.material_b = kinds[b];
+      pair.linear.normal_stiffness = (stiffness *= 2.0);
+      def.contact_models.push_back(pair);
+    }
+  }
+}
+
 double peak_rss_mib() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
@@ -79,17 +125,21 @@ int main(int argc, char** argv) {
   std::filesystem::path case_file = DEM_CASES_DIR "/bench/plate_compression_10k.case.txtpb";
   std::vector<int> threads{1, 2};
   std::uint64_t cycles = 0;
+  std::string mix = "one";
   app.add_option("--case", case_file, "a plate-compression case (cases/bench/)")->check(CLI::ExistingFile);
   app.add_option("--threads", threads, "thread counts to time, one run each");
   app.add_option("--cycles", cycles, "timed cycles instead of the benchmark's 2000 (for profiling; not the benchmark)");
+  app.add_option("--materials", mix, "material mix: one, walls, particles, few or many (the same physics)")
+      ->check(CLI::IsMember({"one", "walls", "particles", "few", "many"}));
   CLI11_PARSE(app, argc, argv);
   try {
     const auto total_start = std::chrono::steady_clock::now();
     const dem::io::LoadedCase loaded = dem::io::load_case_file(case_file);
     dem::io::CaseDefinition3 def = dem::io::convert_case<3>(loaded.message, loaded.source);
+    apply_material_mix(def.world, mix);
     const double n = static_cast<double>(def.world.particles.size());
     const bool big = def.world.particles.size() > 50000;
-    std::printf("plate compression, %.0f spheres (%s)\n", n, case_file.c_str());
+    std::printf("plate compression, %.0f spheres (%s), materials %s\n", n, case_file.c_str(), mix.c_str());
     for (std::size_t k = 0; k < threads.size(); ++k) {
       const int t = threads[k];
       // The last run takes the definition over; the others copy it.

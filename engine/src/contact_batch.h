@@ -7,11 +7,13 @@
 // (one straight loop over arrays, which the compiler turns into vector
 // instructions, so several contacts share each chain), then the shares
 // added into the sums in row order. The law and the geometry are the same
-// functions as there, so each row comes out bit for bit as the row-by-row
-// pass and the reports compute it. The sums round differently: a
-// particle's run of rows as the first body is summed apart and added to
-// its sum once, where the row-by-row pass adds each share. A world takes
-// the same pass every step, for any number of threads.
+// functions as there, and the shares are added one by one as there, so
+// the pass comes out bit for bit as the row-by-row pass (contact_forces.cpp)
+// and the reports compute each row: a world gives the same bits whichever
+// pass its material mix, its law or its energy budget choose. (Summing a
+// particle's run of rows apart and adding it once, as this pass did until
+// its parameters could differ by row, ran no faster: 0.99-1.00 side by
+// side, docs/PERFORMANCE.md.)
 #pragma once
 
 #include <algorithm>
@@ -23,6 +25,7 @@
 #include "contact_blocks.h"
 #include "contact_row.h"
 #include "fetch_ahead.h"
+#include "parameter_sets.h"
 
 #if defined(__AVX512F__) && defined(__AVX512VL__)
 #include <immintrin.h>
@@ -31,18 +34,19 @@
 namespace dem {
 
 // The batched pass serves round particles whose law is branch-free enough
-// (Law::kBatchable), sharing one parameter set, without the energy
-// budget's bookkeeping (contact_forces.cpp chooses).
+// (Law::kBatchable), of any materials, without the energy budget's
+// bookkeeping (contact_forces.cpp chooses).
 template <typename Shape>
 constexpr bool kBatchableShape = Shape::round;
 
-// kPrefetch: a large bed's (kPrefetchParticles, contact_blocks.h): a row's
-// second particle, which lies anywhere ahead of the first in memory, is
-// fetched some rows early so that its misses overlap. kHot: the particles
-// are read from the pass's side-by-side copies (HotPlace, HotMotion in
+// kSets: how the law loop reads each row's parameter set, found by the
+// row's two materials (parameter_sets.h); the law's arithmetic is the same
+// whichever way, so equal sets give equal bits. kPrefetch: a large bed's (kPrefetchParticles, contact_blocks.h): a
+// row's second particle, which lies anywhere ahead of the first in memory, is fetched some rows early so that its
+// misses overlap. kHot: the particles are read from the pass's side-by-side copies (HotPlace, HotMotion in
 // contact_blocks.h), filled beforehand by the law of motion or by
 // copy_hot_particles; otherwise from the particle arrays.
-template <typename Law, int Dim, bool kPrefetch, bool kHot = kPrefetch>
+template <typename Law, int Dim, SetChoice kSets, bool kPrefetch, bool kHot = kPrefetch>
 void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows,
                         ContactBlocks<Dim>& blocks, int b) {
   // Rows per batch: 128 ran 1.018 (10k) and 1.025 (100k) against 64, 256 as
@@ -56,11 +60,10 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
   // of a miss per row; the rest are fetched row by row (docs/PERFORMANCE.md,
   // item 19).
   constexpr Slot kWindow = 1024;
-  // A copy, not a reference: its fields become loop invariants in registers.
-  // Read through a reference, the stores of the batch could alias them,
-  // and a field read under a condition (a dashpot off while sliding) becomes
-  // a masked load that stops the law loop from vectorising.
-  const ContactParams params = *in.shared_params;
+  const LoopSets<kSets> sets(*in.pair_sets);
+  const std::int32_t* set_of = in.pair_sets->set_of.data();
+  const std::int32_t materials = in.params.count();
+  const std::int32_t* material = p.material.data();
   const double dt = in.dt;
   // The packed rows of one batch, structure of arrays.
   alignas(64) double dx[Dim][kBatch], v1[Dim][kBatch], v2[Dim][kBatch];
@@ -72,6 +75,9 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
   alignas(64) double was_touching[kBatch], sliding[kBatch];
   std::int32_t row[kBatch];
   Slot first_of[kBatch], second_of[kBatch];
+  // The row's set number (kSets other than kOne), a double like the flags:
+  // 32-bit numbers would make the compiler take 16 contacts per vector step.
+  alignas(64) double parameter_set[kBatch];
   // The unpacked batch, before the touching rows are packed.
   alignas(64) double place1[Dim][kBatch], place2[Dim][kBatch], separation[Dim][kBatch], radius1[kBatch],
       radius2[kBatch], batch_distance2[kBatch], batch_touch[kBatch], batch_near[kBatch];
@@ -145,14 +151,6 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
 
   std::int32_t cross = blocks.cross_begin[b];
   const std::int32_t cross_end = blocks.cross_begin[b + 1];
-  Slot pending = -1;  // the first particle of the rows being summed
-  Vec<Dim> pending_force = Vec<Dim>::Zero();
-  Spin<Dim> pending_moment = Space<Dim>::zero_spin();
-  auto flush_pending = [&] {
-    if (pending < 0) return;
-    particle_force[pending] += pending_force;
-    particle_moment[pending] += pending_moment;
-  };
   // The block's rows crossing blocks set aside nothing until they touch:
   // zeroed here in one sweep, so that a touching row finds whether it
   // crosses from its second slot alone (about 0.8 crossing rows a particle
@@ -372,6 +370,7 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
         shear[0][j] = row_shear[r];
       }
       if constexpr (Law::kNormalHistory) normal_force[j] = row_normal_force[r];
+      if constexpr (kSets != SetChoice::kOne) parameter_set[j] = set_of[material[x] * materials + material[y]];
     }
     // 2. The contact law on the packed rows (Cundall & Strack eqs. 9-19).
     for (int j = 0; j < count; ++j) {
@@ -391,6 +390,7 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
       carry_shear(h.shear, g.normal);  // a row that did not touch has no shear to carry
       const PairProperties pair{g.effective_radius, mx[j] * my[j] / (mx[j] + my[j])};  // Randall 4.5-4.6
       const ContactKinematics<Dim> kin = kinematics(g.overlap, relative, g.normal);
+      const auto& params = sets[kSets == SetChoice::kOne ? 0.0 : parameter_set[j]];
       Law::advance(h, kin, pair, params, dt);
       const ContactForces<Dim> f = Law::forces(h, kin, pair, params);
       const ShearForce<Dim> total = f.shear + f.shear_damping;
@@ -419,17 +419,8 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
       Vec<Dim> on_first;
       for (int k = 0; k < Dim; ++k) on_first[k] = force[k][j];
       const Spin<Dim> turn = column_entry<Dim>(lever, j);
-      // A block's rows come grouped by their first particle: its shares
-      // are summed here and added to it once the group ends.
-      if (x != pending) {
-        flush_pending();
-        pending = x;
-        pending_force = on_first;
-        pending_moment = rx[j] * turn;
-      } else {
-        pending_force += on_first;
-        pending_moment += rx[j] * turn;
-      }
+      particle_force[x] += on_first;
+      particle_moment[x] += rx[j] * turn;
       if (static_cast<std::uint32_t>(y - block_first) >= block_size) {  // a crossing row (contact_blocks.h)
         while (cross_row[cross] != r) ++cross;
         deferred_force[cross_slot[cross]] = -on_first;
@@ -441,7 +432,6 @@ void batched_pair_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
       }
     }
   }
-  flush_pending();
   if (sort_out) blocks.near_count[b] = kept;
 }
 

@@ -130,8 +130,10 @@ struct ContactBlocks {
   Column<std::int32_t> near_rows;
   std::vector<std::int32_t> near_count;
   bool near_stale = true;
-  // The pass's copies of the particles it reads (HotPlace), by slot; filled
-  // at the start of each batched pass on large beds, empty otherwise.
+  // The batched pass's copies of the particles it reads (HotPlace), by
+  // slot: in 3D and on 2D beds past kPrefetchParticles, written by the law
+  // of motion or at the start of the pass (PERFORMANCE.md, item 28); empty
+  // when no batched pass runs.
   Column<HotPlace<Dim>> hot_place;
   Column<HotMotion<Dim>> hot_motion;
   // Whether the law of motion wrote those copies this step, after the

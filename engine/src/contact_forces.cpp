@@ -171,20 +171,44 @@ template <int Dim>
 using BlockFn = void (*)(const PassInputs<Dim>&, Particles<Dim>&, ContactRows<Dim>&, ContactBlocks<Dim>&, int,
                          ContactEnergy&, WallSum<Dim>*);
 
-// The one parameter set every pair of bodies uses, if they all share one
-// (a single material): the rows then skip the table lookup.
+// The parameter sets the rows of each table resolve to (parameter_sets.h),
+// found from the materials in use at each pass (a scan of the particles'
+// material ids, 4 bytes a particle), so no edit has to keep them up to date.
+struct PassSets {
+  RowSets pair, wall;
+};
+
 template <int Dim>
-const ContactParams* shared_params(const WorldState<Dim>& s) {
-  if (s.materials.size() != 1) return nullptr;
-  return &s.params(0, 0);
+PassSets pass_sets(const WorldState<Dim>& s) {
+  const Column<std::int32_t>& material = s.particles.material;
+  std::vector<std::int32_t> particle_materials;
+  if (!material.empty()) particle_materials.push_back(material[0]);
+  std::int32_t differ = 0;  // a vector loop: any id other than the first leaves a bit set
+  for (const std::int32_t m : material) differ |= m ^ material[0];
+  if (differ != 0) {
+    // A vector loop per material: marking each particle's in a table of
+    // flags, one store after another, cost the pass 1 % (10k bed, perf).
+    particle_materials.clear();
+    for (std::int32_t m = 0; m < static_cast<std::int32_t>(s.materials.size()); ++m) {
+      std::int32_t found = 0;
+      for (const std::int32_t id : material) found |= static_cast<std::int32_t>(id == m);
+      if (found != 0) particle_materials.push_back(m);
+    }
+  }
+  std::vector<std::int32_t> wall_materials;
+  for (const WallDefT<Dim>& wall : s.walls.def) wall_materials.push_back(wall.material.value());
+  return {row_sets(s.params, particle_materials, particle_materials),
+          row_sets(s.params, particle_materials, wall_materials)};
 }
 
 // What the rows of a pass read: the state's bodies and parameters, the
-// step's dt and cycle.
+// step's dt and cycle; the batched passes the tables' parameter sets.
 template <int Dim>
-PassInputs<Dim> inputs(const WorldState<Dim>& s, const StepContext& step, const std::vector<EllipsoidFrame>& frames) {
-  return {s.particles, s.walls,    s.periodic,     s.params,     shared_params(s),
-          step.dt,     step.cycle, near_margin(s), frames.data()};
+PassInputs<Dim> inputs(const WorldState<Dim>& s, const StepContext& step, const std::vector<EllipsoidFrame>& frames,
+                       const PassSets* sets = nullptr) {
+  return {
+      s.particles, s.walls,    s.periodic,     s.params,     sets ? &sets->pair : nullptr, sets ? &sets->wall : nullptr,
+      step.dt,     step.cycle, near_margin(s), frames.data()};
 }
 
 // Each ellipsoid's matrices, once per pass rather than once per contact
@@ -195,16 +219,33 @@ void frame_ellipsoids(const Particles<Dim>& p, std::vector<EllipsoidFrame>& fram
   if constexpr (Dim == 3) ellipsoid_frames_of(p, frames.data(), begin, end);
 }
 
-template <typename Law, int Dim, bool kPrefetch, bool kHot>
+template <typename Law, int Dim, SetChoice kSets, bool kPrefetch, bool kHot>
 void batched_pair_rows(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows, ContactBlocks<Dim>& blocks,
                        int b, ContactEnergy&, WallSum<Dim>*) {
-  batched_pair_block<Law, Dim, kPrefetch, kHot>(in, p, rows, blocks, b);
+  batched_pair_block<Law, Dim, kSets, kPrefetch, kHot>(in, p, rows, blocks, b);
 }
 
-template <typename Law, int Dim>
+template <typename Law, int Dim, SetChoice kSets>
 void batched_wall_rows(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows, ContactBlocks<Dim>& blocks,
                        int b, ContactEnergy&, WallSum<Dim>* wall_sums) {
-  batched_wall_block<Law, Dim>(in, p, rows, blocks, b, wall_sums);
+  batched_wall_block<Law, Dim, kSets>(in, p, rows, blocks, b, wall_sums);
+}
+
+// Calls run.template operator()<kSets>() with how a table's law loop reads
+// its rows' parameter sets.
+template <typename Run>
+void with_sets(const RowSets& sets, Run&& run) {
+  switch (sets.choice()) {
+    case SetChoice::kOne:
+      run.template operator()<SetChoice::kOne>();
+      break;
+    case SetChoice::kFew:
+      run.template operator()<SetChoice::kFew>();
+      break;
+    case SetChoice::kMany:
+      run.template operator()<SetChoice::kMany>();
+      break;
+  }
 }
 
 // Runs the chosen pass over every block, then adds the shares set aside,
@@ -213,7 +254,9 @@ template <Pass kPass, int Dim>
 ContactEnergy run_pass(WorldState<Dim>& s, const StepContext& step) {
   const bool ellipsoids = s.shape == ShapeKind::kEllipsoid;
   if (ellipsoids) s.ellipsoid_frames.resize(s.particles.size());
-  const PassInputs<Dim> in = inputs(s, step, s.ellipsoid_frames);
+  PassSets sets;
+  if constexpr (kPass == Pass::kAdvance) sets = pass_sets(s);
+  const PassInputs<Dim> in = inputs(s, step, s.ellipsoid_frames, &sets);
   BlockFn<Dim> pair_fn = nullptr;
   bool hot = false;  // the batched pass reads the particles' side-by-side copies (contact_batch.h)
   BlockFn<Dim> wall_fn = nullptr;
@@ -223,21 +266,24 @@ ContactEnergy run_pass(WorldState<Dim>& s, const StepContext& step) {
       with_law(s.pair_law, [&]<typename Law>() {
         pair_fn = &row_block<kPass, kEnergy, Law, Shape, PairShares<Dim>, Dim>;
         if constexpr (kPass == Pass::kAdvance && !kEnergy && kBatchableShape<Shape> && Law::kBatchable) {
-          if (in.shared_params) {
-            const bool large = static_cast<std::int64_t>(s.particles.size()) > kPrefetchParticles;
-            hot = large || Dim == 3;  // (contact_blocks.h, HotPlace)
+          const bool large = static_cast<std::int64_t>(s.particles.size()) > kPrefetchParticles;
+          hot = large || Dim == 3;  // (contact_blocks.h, HotPlace)
+          with_sets(sets.pair, [&]<SetChoice kSets>() {
             if (large) {
-              pair_fn = &batched_pair_rows<Law, Dim, true, true>;
+              pair_fn = &batched_pair_rows<Law, Dim, kSets, true, true>;
             } else {
-              pair_fn = hot ? &batched_pair_rows<Law, Dim, false, true> : &batched_pair_rows<Law, Dim, false, false>;
+              pair_fn = hot ? &batched_pair_rows<Law, Dim, kSets, false, true>
+                            : &batched_pair_rows<Law, Dim, kSets, false, false>;
             }
-          }
+          });
         }
       });
       with_law(s.wall_law, [&]<typename Law>() {
         wall_fn = &row_block<kPass, kEnergy, Law, Shape, WallShares<Dim>, Dim>;
         if constexpr (kPass == Pass::kAdvance && !kEnergy && kBatchableShape<Shape> && Law::kBatchable) {
-          if (in.shared_params && planar_walls(s.walls)) wall_fn = &batched_wall_rows<Law, Dim>;
+          if (planar_walls(s.walls)) {
+            with_sets(sets.wall, [&]<SetChoice kSets>() { wall_fn = &batched_wall_rows<Law, Dim, kSets>; });
+          }
         }
       });
     });

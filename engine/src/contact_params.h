@@ -36,6 +36,8 @@ struct ContactParams {
   // Rolling resistance (rolling_resistance.h): mu_r and eta_r.
   double rolling_friction = 0.0;
   double rolling_damping_ratio = 0.0;
+
+  bool operator==(const ContactParams&) const = default;
 };
 
 // A square table indexed by (material_a, material_b), symmetric. Indexed
@@ -47,6 +49,7 @@ class ContactParamTable {
   ContactParamTable(const std::vector<MaterialDef>& materials, const std::vector<ContactModelDef>& models,
                     const DampingDef& damping);
   const ContactParams& operator()(std::int32_t a, std::int32_t b) const { return params_[a * count_ + b]; }
+  int count() const { return count_; }  // materials
 
  private:
   int count_ = 0;

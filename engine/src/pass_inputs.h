@@ -7,6 +7,7 @@
 
 #include "contact_params.h"
 #include "ellipsoid.h"
+#include "parameter_sets.h"
 #include "particles.h"
 #include "periodic.h"
 #include "walls.h"
@@ -20,16 +21,18 @@ struct PassInputs {
   const Walls<Dim>& walls;
   const Periodic<Dim>& periodic;
   const ContactParamTable& params;
-  const ContactParams* shared_params;  // when every pair of bodies has the same parameters
+  // The distinct sets the rows of the pair table and of the wall table
+  // resolve to (parameter_sets.h), for the batched passes; null in the
+  // row-by-row passes, whose rows look theirs up in the table.
+  const RowSets* pair_sets;
+  const RowSets* wall_sets;
   double dt;
   std::uint64_t cycle;
   double near_margin;  // the gap within which a pair row counts as near (contact_blocks.h)
   // Ellipsoid worlds: each body's matrices for this pass, by slot.
   const EllipsoidFrame* ellipsoid_frames = nullptr;
 
-  const ContactParams& pair_params(std::int32_t a, std::int32_t b) const {
-    return shared_params ? *shared_params : params(a, b);
-  }
+  const ContactParams& pair_params(std::int32_t a, std::int32_t b) const { return params(a, b); }
 };
 
 }  // namespace dem

@@ -19,6 +19,7 @@
 #include "batch_columns.h"
 #include "contact_blocks.h"
 #include "contact_row.h"
+#include "parameter_sets.h"
 #include "walls.h"
 
 namespace dem {
@@ -61,15 +62,18 @@ bool planar_walls(const Walls<Dim>& walls) {
 }
 
 // Block b's wall rows, for round particles whose law is Law::kBatchable,
-// sharing one parameter set, without the energy budget, when the walls
-// are planar (contact_forces.cpp chooses); each wall's share into
-// sums[wall].
-template <typename Law, int Dim>
+// without the energy budget, when the walls are planar (contact_forces.cpp
+// chooses); each wall's share into sums[wall]. kSets: how the law loop
+// reads each row's parameter set, found by its particle's and its wall's
+// materials (parameter_sets.h).
+template <typename Law, int Dim, SetChoice kSets>
 void batched_wall_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRows<Dim>& rows,
                         const ContactBlocks<Dim>& blocks, int b, WallSum<Dim>* sums) {
   constexpr int kBatch = 64;
-  // A copy, not a reference: its fields stay in registers (contact_batch.h).
-  const ContactParams params = *in.shared_params;
+  const LoopSets<kSets> sets(*in.wall_sets);
+  const std::int32_t* set_of = in.wall_sets->set_of.data();
+  const std::int32_t materials = in.params.count();
+  const std::int32_t* particle_material = p.material.data();
   const double dt = in.dt;
   const std::uint64_t cycle = in.cycle;
   const Walls<Dim>& walls = in.walls;
@@ -82,6 +86,9 @@ void batched_wall_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
   alignas(64) double point[Dim][kBatch], force[Dim][kBatch], moment[3][kBatch], sliding[kBatch];
   std::int32_t row[kBatch], wall_of[kBatch];
   Slot particle[kBatch];
+  // The row's set number (kSets other than kOne), a double like the flags:
+  // 32-bit numbers would make the compiler take 16 contacts per vector step.
+  alignas(64) double parameter_set[kBatch];
 
   // Plain pointers: the flag bytes stored below could alias any vector's
   // own pointer (contact_batch.h).
@@ -150,6 +157,9 @@ void batched_wall_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
       mass[count] = particle_mass[x];
       if constexpr (Law::kNormalHistory) normal_force[count] = row_normal_force[r];
       was_touching[count] = touched ? 1.0 : 0.0;
+      if constexpr (kSets != SetChoice::kOne) {
+        parameter_set[count] = set_of[particle_material[x] * materials + wall.material.value()];
+      }
       count += touch;
     }
     // 2. The contact law on the packed rows: the rest of RoundShape::wall's
@@ -182,6 +192,7 @@ void batched_wall_block(const PassInputs<Dim>& in, Particles<Dim>& p, ContactRow
       carry_shear(h.shear, e);                 // a row that did not touch has no shear to carry
       const PairProperties pair{rx, mass[j]};  // a wall is infinitely large and heavy
       const ContactKinematics<Dim> kin = kinematics(ov, relative, e);
+      const auto& params = sets[kSets == SetChoice::kOne ? 0.0 : parameter_set[j]];
       Law::advance(h, kin, pair, params, dt);
       const ContactForces<Dim> f = Law::forces(h, kin, pair, params);
       const ShearForce<Dim> total = f.shear + f.shear_damping;

@@ -15,7 +15,19 @@ bool resumable(const StageDefT<Dim>& stage, std::uint64_t stage_cycles, const Wo
            stop_conditions_hold(*std::get<const BasicWorld<Dim>*>(world.view()), stage.until));
 }
 
+template <int Dim>
+CaseProgramme one_stage_of(std::uint64_t cycles, const StopConditions& until) {
+  StageDefT<Dim> stage;
+  stage.cycles = cycles;
+  stage.until = until;
+  return CaseProgramme(std::vector<StageDefT<Dim>>{std::move(stage)});
+}
+
 }  // namespace
+
+CaseProgramme CaseProgramme::one_stage(int dimension, std::uint64_t cycles, const StopConditions& until) {
+  return dimension == 3 ? one_stage_of<3>(cycles, until) : one_stage_of<2>(cycles, until);
+}
 
 std::size_t CaseProgramme::stage_count() const {
   return std::visit([](const auto& stages) { return stages.size(); }, stages_);
@@ -27,6 +39,10 @@ const std::string& CaseProgramme::stage_name(std::size_t stage) const {
 
 std::uint64_t CaseProgramme::stage_cycles(std::size_t stage) const {
   return std::visit([&](const auto& stages) { return stages.at(stage).cycles; }, stages_);
+}
+
+const StopConditions& CaseProgramme::stage_until(std::size_t stage) const {
+  return std::visit([&](const auto& stages) -> const StopConditions& { return stages.at(stage).until; }, stages_);
 }
 
 std::unique_ptr<StageStepper> CaseProgramme::begin_stage(std::size_t stage, WorldSession& world,

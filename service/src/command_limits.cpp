@@ -48,6 +48,28 @@ void cycles(const std::string& field, std::int64_t value, const CommandLimits& l
               std::to_string(limits.max_cycles) + " a command (--max-cycles)");
 }
 
+void check_run_until(const protocol::RunUntilArgs& r, const CommandLimits& limits) {
+  text("run_until.wall", r.wall, limits);
+  cycles("run_until.max_cycles", r.max_cycles, limits);
+  require(r.check_interval >= 0 && r.check_interval <= r.max_cycles,
+          "run_until.check_interval: must be from 0 to max_cycles, got " + std::to_string(r.check_interval));
+  if (r.stress) number("run_until.stress", *r.stress);
+  if (r.settlement) number("run_until.settlement", *r.settlement);
+  if (r.kinetic_energy) number("run_until.kinetic_energy", *r.kinetic_energy);
+}
+
+void check_query(const protocol::ContactQueryArgs& q, const CommandLimits& limits) {
+  text("query.wall", q.wall, limits);
+  if (q.box_set) {
+    vector("query.box_min", q.box_min);
+    vector("query.box_max", q.box_max);
+  }
+  if (q.min_normal_force) number("query.min_normal_force", *q.min_normal_force);
+  require(q.chunk_size <= limits.max_chunk_contacts, "query.chunk_size: " + std::to_string(q.chunk_size) +
+                                                         " contacts a chunk, more than the limit of " +
+                                                         std::to_string(limits.max_chunk_contacts));
+}
+
 }  // namespace
 
 void check_command(const protocol::Command& c, const CommandLimits& limits) {
@@ -75,30 +97,12 @@ void check_command(const protocol::Command& c, const CommandLimits& limits) {
     case CommandKind::kCycle:
       cycles("cycle.cycles", c.cycle.cycles, limits);
       break;
-    case CommandKind::kRunUntil: {
-      const protocol::RunUntilArgs& r = c.run_until;
-      text("run_until.wall", r.wall, limits);
-      cycles("run_until.max_cycles", r.max_cycles, limits);
-      require(r.check_interval >= 0 && r.check_interval <= r.max_cycles,
-              "run_until.check_interval: must be from 0 to max_cycles, got " + std::to_string(r.check_interval));
-      if (r.stress) number("run_until.stress", *r.stress);
-      if (r.settlement) number("run_until.settlement", *r.settlement);
-      if (r.kinetic_energy) number("run_until.kinetic_energy", *r.kinetic_energy);
+    case CommandKind::kRunUntil:
+      check_run_until(c.run_until, limits);
       break;
-    }
-    case CommandKind::kQueryContacts: {
-      const protocol::ContactQueryArgs& q = c.query;
-      text("query.wall", q.wall, limits);
-      if (q.box_set) {
-        vector("query.box_min", q.box_min);
-        vector("query.box_max", q.box_max);
-      }
-      if (q.min_normal_force) number("query.min_normal_force", *q.min_normal_force);
-      require(q.chunk_size <= limits.max_chunk_contacts, "query.chunk_size: " + std::to_string(q.chunk_size) +
-                                                             " contacts a chunk, more than the limit of " +
-                                                             std::to_string(limits.max_chunk_contacts));
+    case CommandKind::kQueryContacts:
+      check_query(c.query, limits);
       break;
-    }
     case CommandKind::kSaveSnapshot:
     case CommandKind::kLoadSnapshot:
       text("snapshot.path", c.snapshot.path, limits);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "dem/io/compression_state.h"
+#include "dem/io/earlier_run.h"
 #include "dem/io/file_access.h"
 
 namespace dem::service {
@@ -37,22 +38,14 @@ void OutputRecorder::claim(const std::string& case_name, bool overwrite) {
   } catch (const io::FileAccessError&) {
     return;
   }
-  std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
-    names.push_back(entry.path().filename().string());
-  }
+  const std::vector<std::string> names = io::earlier_run_entries(directory, io::RunEntries::kEvery);
   if (names.empty()) return;
-  std::sort(names.begin(), names.end());
   if (!overwrite) {
-    std::string listed;
-    for (std::size_t i = 0; i < names.size() && i < 4; ++i) listed += (i > 0 ? ", " : "") + names[i];
-    if (names.size() > 4) listed += ", ... (" + std::to_string(names.size()) + " in all)";
-    throw OutputInUse(directory.string() + " holds the output of an earlier run (" + listed +
+    throw OutputInUse(directory.string() + " holds the output of an earlier run (" + io::some_names(names) +
                       "), which a new run would cut: continue it with --resume (dem_server --case FILE --resume), "
                       "start the server with --overwrite to replace it, or give another --out");
   }
-  // remove_all takes a link itself away, never what it points to.
-  for (const std::string& name : names) std::filesystem::remove_all(directory / name, error);
+  io::remove_entries(directory, names);
   spdlog::warn("--overwrite: removed the {} files of an earlier run in {}", names.size(), directory.string());
 }
 

@@ -4,40 +4,42 @@
 
 namespace dem::service {
 
-ProgrammeRun::ProgrammeRun(const CaseProgramme& programme, const WorldSession& world, std::uint64_t output_interval,
-                           std::size_t first, std::size_t count, std::uint64_t first_done)
-    : stage_count_(programme.stage_count()),
-      output_interval_(std::max<std::uint64_t>(output_interval, 1)),
+ProgrammeRun::ProgrammeRun(RunPlan plan, const WorldSession& world, std::optional<ReceivedCommand> command)
+    : plan_(std::move(plan)),
+      command_(std::move(command)),
       start_cycle_(world.cycle_count()),
-      first_(first),
-      next_(first),
-      end_(first + count),
-      first_done_(first_done),
-      stage_(first),
+      next_(plan_.first),
+      stage_(plan_.first),
       stage_start_(world.cycle_count()),
       health_(world) {
-  for (std::size_t i = first; i < end_; ++i) total_ += programme.stage_cycles(i);
+  plan_.output_interval = std::max<std::uint64_t>(plan_.output_interval, 1);
+  for (std::size_t i = plan_.first; i < plan_.first + plan_.count; ++i) total_ += plan_.programme.stage_cycles(i);
 }
 
-std::uint64_t ProgrammeRun::next_stage(const WorldSession& world) {
+void ProgrammeRun::begin_next_stage(WorldSession& world) {
   stage_ = next_++;
-  stage_done_ = stage_ == first_ ? first_done_ : 0;
+  stage_done_ = stage_ == plan_.first ? plan_.first_done : 0;
   stage_start_ = world.cycle_count() - stage_done_;
-  return stage_done_;
+  stepper_ = plan_.programme.begin_stage(stage_, world, stage_done_);
+}
+
+std::uint64_t ProgrammeRun::cycles_to_next_stop(std::uint64_t cycle) const {
+  const std::uint64_t to_stop = stepper_->cycles_to_next_stop();
+  if (!plan_.of_case) return to_stop;
+  return std::min(to_stop, plan_.output_interval - stage_cycles(cycle) % plan_.output_interval);
 }
 
 double ProgrammeRun::progress(double stage_fraction) const {
-  const std::size_t count = end_ - first_;
-  if (count == 0 || stage_ >= end_) return 1.0;
-  const double before = static_cast<double>(stage_ - first_);
-  return std::clamp((before + (stage_running() ? stage_fraction : 0.0)) / static_cast<double>(count), 0.0, 1.0);
+  if (plan_.count == 0 || stage_ >= plan_.first + plan_.count) return 1.0;
+  const double before = static_cast<double>(stage_ - plan_.first);
+  return std::clamp((before + (stage_running() ? stage_fraction : 0.0)) / static_cast<double>(plan_.count), 0.0, 1.0);
 }
 
 StageResult ProgrammeRun::end_stage() {
-  StageResult result = stepper_->result();
-  result.cycles_run += stage_done_;
+  last_result_ = stepper_->result();
+  last_result_.cycles_run += stage_done_;
   stepper_.reset();
-  return result;
+  return last_result_;
 }
 
 void ProgrammeRun::stop(std::string reason) {
@@ -55,7 +57,7 @@ void ProgrammeRun::fail(std::string error) {
 }
 
 void ProgrammeRun::complete() {
-  stage_ = stage_count_;
+  stage_ = stage_count();
   if (outcome_ == ProgrammeOutcome::kRunning) outcome_ = ProgrammeOutcome::kCompleted;
 }
 

@@ -35,6 +35,21 @@ std::shared_ptr<const io::FileAccess> initial_case_access(const ServerOptions& o
   return std::make_shared<const io::FileAccess>(roots);
 }
 
+// The commands that change what get_state reads (a load, a run); the
+// others show only from the next cycle on.
+bool changes_readout(std::uint8_t kind) {
+  switch (protocol::command_kind(kind).value_or(CommandKind::kGetState)) {
+    case CommandKind::kLoadCase:
+    case CommandKind::kLoadSnapshot:
+    case CommandKind::kCycle:
+    case CommandKind::kRunUntil:
+    case CommandKind::kRunProgramme:
+      return true;
+    default:
+      return false;
+  }
+}
+
 }  // namespace
 
 SimulationRunner::SimulationRunner(const ServerOptions& options, CommandQueue& queue, ReplySender& replies,
@@ -93,7 +108,7 @@ void SimulationRunner::run() {
   serve(false);
 }
 
-void SimulationRunner::serve(bool until_programme_ends) {
+void SimulationRunner::serve(bool until_run_ends) {
   const auto take_waiting = [this] {
     for (ReceivedCommand& received : queue_.take_all()) {
       if (queue_.shutdown_requested()) {
@@ -103,7 +118,7 @@ void SimulationRunner::serve(bool until_programme_ends) {
       }
     }
   };
-  while (programme_going() || (!until_programme_ends && !queue_.shutdown_requested())) {
+  while (run_going() || (!until_run_ends && !queue_.shutdown_requested())) {
     try {
       serve_once(take_waiting);
     } catch (const std::exception& error) {
@@ -119,11 +134,7 @@ void SimulationRunner::serve_once(const std::function<void()>& take_waiting) {
     // Between two chunks: everything that arrived meanwhile, in order.
     take_waiting();
     if (!run_going() && !awaiting_refresh_.empty()) refresh_cache(true);  // the run ended among them
-    if (active_ && !queue_.shutdown_requested()) {
-      run_chunk();
-    } else if (programme_going()) {
-      step_programme();  // a shutdown request stops and ends it
-    }
+    if (run_going()) step_run();                                          // a stop or a shutdown request ends it
     if (run_going() && std::chrono::steady_clock::now() - last_status_ >= options_.progress_interval) {
       note_owner_left();
       publish_status();
@@ -143,7 +154,6 @@ void SimulationRunner::finish() {
   if (abandoned_) abandoned_->detach();
   abandoned_.reset();
   for (ReceivedCommand& received : queue_.take_all()) unanswered_.push_back(std::move(received));
-  if (active_) end_run(ReplyStatus::kCancelled, "the server is shutting down");
   for (const ReceivedCommand& received : unanswered_) {
     queue_.done(received.command.client_id);
     protocol::Reply reply;
@@ -159,7 +169,7 @@ void SimulationRunner::finish() {
   lifecycle_.take(Transition::kShutDown);
   // A one-shot server's last word keeps how its programme ended.
   message_ =
-      (programme_ ? message_ + "; " : std::string()) +
+      (run_ ? message_ + "; " : std::string()) +
       (simulation_.loaded() ? "shut down at cycle " + std::to_string(simulation_.world().cycle_count()) : "shut down");
   publish_status();
   using namespace std::chrono_literals;
@@ -174,20 +184,7 @@ void SimulationRunner::execute(ReceivedCommand received) {
   // However it ends - a reply now, or a run started - the client's command
   // stops counting as pending (CommandQueue::pending) once the StateCache
   // shows its effect: until then that client's get_state waits its turn.
-  // Only commands that change what get_state reads (a load, a run) wait
-  // for it; the others show only from the next cycle on.
-  const auto changes_readout = [](std::uint8_t kind) {
-    switch (protocol::command_kind(kind).value_or(CommandKind::kGetState)) {
-      case CommandKind::kLoadCase:
-      case CommandKind::kLoadSnapshot:
-      case CommandKind::kCycle:
-      case CommandKind::kRunUntil:
-      case CommandKind::kRunProgramme:
-        return true;
-      default:
-        return false;
-    }
-  };
+  // Only commands that change what get_state reads wait for it.
   struct Done {
     SimulationRunner& runner;
     std::string client;
@@ -201,68 +198,25 @@ void SimulationRunner::execute(ReceivedCommand received) {
     }
   } done{*this, received.command.client_id, changes_readout(received.command.kind)};
   protocol::Reply reply;
-  const protocol::Command& command = received.command;
   const ServerState state_before = lifecycle_.state();
   const std::string message_before = message_;
   try {
-    const std::optional<CommandKind> kind = protocol::command_kind(command.kind);
-    if (!kind) throw CommandError(ReplyStatus::kBadRequest, "unknown command kind " + std::to_string(command.kind));
+    const std::optional<CommandKind> kind = protocol::command_kind(received.command.kind);
+    if (!kind) {
+      throw CommandError(ReplyStatus::kBadRequest, "unknown command kind " + std::to_string(received.command.kind));
+    }
     if (const auto reason = lifecycle_.refusal(*kind)) {
       throw CommandError(ReplyStatus::kRefused, std::string(protocol::to_string(*kind)) + " refused: " + *reason);
     }
-    check_command(command, options_.limits);
+    check_command(received.command, options_.limits);
     if (*kind == CommandKind::kStop || *kind == CommandKind::kShutdown) {
       if (const auto reason = ownership_refusal(received)) {
         throw CommandError(ReplyStatus::kRefused, std::string(protocol::to_string(*kind)) + " refused: " + *reason);
       }
     }
-    switch (*kind) {
-      case CommandKind::kCycle:
-      case CommandKind::kRunUntil:
-        start_run(received, *kind);
-        return;  // its one reply comes when it ends
-      case CommandKind::kRunProgramme:
-        run_programme(received);
-        return;  // replied to when the stages end
-      case CommandKind::kLoadCase:
-        reply.message = install(prepare_in_background(
-            "load_case", [preparer = simulation_.preparer(), args = command.load_case](std::function<bool()> stopped) {
-              return preparer.stopped_by(std::move(stopped)).prepare_case(args);
-            }));
-        reply.path = command.load_case.path;
-        break;
-      case CommandKind::kSetWallVelocity:
-        reply.message = simulation_.set_wall_velocity(command.wall_velocity);
-        break;
-      case CommandKind::kSetWallServo:
-        reply.message = simulation_.set_wall_servo(command.wall_servo);
-        break;
-      case CommandKind::kStop:
-        reply.message = stop();
-        break;
-      case CommandKind::kGetState:
-        reply = get_state();
-        break;
-      case CommandKind::kShutdown:
-        queue_.request_shutdown();
-        reply.message = "shutting down";
-        break;
-      case CommandKind::kQueryContacts:
-        reply.contacts = simulation_.query_contacts(command.query);
-        reply.total_contacts = reply.contacts.size();
-        reply.message = std::to_string(reply.total_contacts) + " contacts at cycle " +
-                        std::to_string(simulation_.world().cycle_count());
-        break;
-      case CommandKind::kSaveSnapshot:
-        reply = save_snapshot(command.snapshot);
-        break;
-      case CommandKind::kLoadSnapshot:
-        reply.message = load_snapshot(command.snapshot);
-        break;
-      case CommandKind::kSetParameter:
-        reply.message = simulation_.set_parameter(command.parameter);
-        break;
-    }
+    std::optional<protocol::Reply> answer = dispatch(received, *kind);
+    if (!answer) return;  // a run started: its one reply comes when it ends
+    reply = std::move(*answer);
   } catch (const CommandError& error) {
     reply.status = error.status();
     reply.message = error.what();
@@ -278,6 +232,61 @@ void SimulationRunner::execute(ReceivedCommand received) {
   // their count with it, so a flood of them does not flood the topic.
   if (lifecycle_.state() != state_before || message_ != message_before) announce();
   send(received, std::move(reply));
+}
+
+// What each command does, once the lifecycle, the limits and the run's
+// owner have let it through.
+std::optional<protocol::Reply> SimulationRunner::dispatch(const ReceivedCommand& received, CommandKind kind) {
+  const protocol::Command& command = received.command;
+  protocol::Reply reply;
+  switch (kind) {
+    case CommandKind::kCycle:
+    case CommandKind::kRunUntil:
+      start_command_run(received, kind);
+      return std::nullopt;
+    case CommandKind::kRunProgramme:
+      run_programme(received);
+      return std::nullopt;
+    case CommandKind::kLoadCase:
+      reply.message = install(prepare_in_background(
+          "load_case", [preparer = simulation_.preparer(), args = command.load_case](std::function<bool()> stopped) {
+            return preparer.stopped_by(std::move(stopped)).prepare_case(args);
+          }));
+      reply.path = command.load_case.path;
+      break;
+    case CommandKind::kSetWallVelocity:
+      reply.message = simulation_.set_wall_velocity(command.wall_velocity);
+      break;
+    case CommandKind::kSetWallServo:
+      reply.message = simulation_.set_wall_servo(command.wall_servo);
+      break;
+    case CommandKind::kStop:
+      reply.message = stop();
+      break;
+    case CommandKind::kGetState:
+      reply = get_state();
+      break;
+    case CommandKind::kShutdown:
+      queue_.request_shutdown();
+      reply.message = "shutting down";
+      break;
+    case CommandKind::kQueryContacts:
+      reply.contacts = simulation_.query_contacts(command.query);
+      reply.total_contacts = reply.contacts.size();
+      reply.message = std::to_string(reply.total_contacts) + " contacts at cycle " +
+                      std::to_string(simulation_.world().cycle_count());
+      break;
+    case CommandKind::kSaveSnapshot:
+      reply = save_snapshot(command.snapshot);
+      break;
+    case CommandKind::kLoadSnapshot:
+      reply.message = load_snapshot(command.snapshot);
+      break;
+    case CommandKind::kSetParameter:
+      reply.message = simulation_.set_parameter(command.parameter);
+      break;
+  }
+  return reply;
 }
 
 }  // namespace dem::service

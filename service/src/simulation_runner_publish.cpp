@@ -34,38 +34,32 @@ protocol::Status SimulationRunner::status() const {
     s.time = world.time();
     s.time_step = world.time_step();
   }
-  if (active_) {
-    const protocol::Command& command = active_->command().command;
-    s.command = std::string(protocol::to_string(*protocol::command_kind(command.kind)));
-    s.command_client = command.client_id;
-    s.command_request_id = command.request_id;
-    s.command_cycles_done = active_->done();
-    s.command_cycles_total = active_->total();
-    s.progress =
-        active_->total() > 0 ? static_cast<double>(active_->done()) / static_cast<double>(active_->total()) : 0.0;
-  } else if (programme_ && lifecycle_.running()) {
-    // A one-shot run's programme shows as a running command of no client.
-    s.command = "programme";
-    if (programme_command_) {
-      s.command = "run_programme";
-      s.command_client = programme_command_->command.client_id;
-      s.command_request_id = programme_command_->command.request_id;
-    }
-    const WorldSession& world = simulation_.world();
-    s.command_cycles_done = programme_->done(world);
-    s.command_cycles_total = programme_->total();  // every stage's cap: a bound, not a forecast
-    // The stages' own measures of how far they are (the cap of a stage
-    // that ends on a stress would put its end at a few per cent).
-    if (programme_->stage_running() && !programme_->over()) {
-      const StageProgress stage =
-          simulation_.programme().progress(programme_->stage(), programme_->stage_cycles(world.cycle_count()), world);
-      s.progress = programme_->progress(stage.fraction);
-      s.message = stage_label(programme_->stage()) + ": " + stage.text;
-    } else {
-      s.progress = programme_->progress(0.0);
-    }
-  }
+  if (run_ && lifecycle_.running()) describe_run(s);
   return s;
+}
+
+// The run going on as the status shows it: the command that started it (a
+// one-shot run's programme shows as a running command of no client), its
+// cycles, and how far it is by its stages' own measures (the cap of a
+// stage that ends on a stress would put its end at a few per cent).
+void SimulationRunner::describe_run(protocol::Status& s) const {
+  const ProgrammeRun& run = *run_;
+  const WorldSession& world = simulation_.world();
+  s.command = "programme";
+  if (const ReceivedCommand* started = run.command()) {
+    s.command = std::string(protocol::to_string(*protocol::command_kind(started->command.kind)));
+    s.command_client = started->command.client_id;
+    s.command_request_id = started->command.request_id;
+  }
+  s.command_cycles_done = run.done(world);
+  s.command_cycles_total = run.total();  // every stage's length or cap: a bound, not a forecast
+  if (!run.stage_running() || run.over()) {
+    s.progress = run.progress(0.0);
+    return;
+  }
+  const StageProgress stage = run.programme().progress(run.stage(), run.stage_cycles(world.cycle_count()), world);
+  s.progress = run.progress(stage.fraction);
+  if (run.of_case()) s.message = stage_label(run.stage()) + ": " + stage.text;
 }
 
 // A new state goes to the cache before the status topic: a client that
@@ -153,8 +147,8 @@ void SimulationRunner::publish_telemetry(bool scheduled) {
     regions->stamp = plates.stamp;
     telemetry_.publish(*regions);
   }
-  // A one-shot run writes its rows at the case's output interval instead.
-  if (!programme_) recorder_.record(world.view());
+  // The case's stages write their rows at the case's output interval instead.
+  if (!run_ || !run_->of_case()) recorder_.record(world.view());
   if (scheduled) schedule_.published(world.cycle_count(), world.time());
   last_telemetry_cycle_ = world.cycle_count();
   telemetry_published_ = true;

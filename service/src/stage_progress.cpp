@@ -2,12 +2,14 @@
 // case_programme.h): the share of its target that a wall's stress or
 // settlement, or a box's deviator strain, has reached - the measures the
 // engine's stop rule compares (dem/programme.h StopConditions) - else the
-// share of its cycles.
+// share of its cycles; and what of a run's stop conditions holds, said
+// with the values reached (conditions_reached).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "dem/service/case_programme.h"
+#include "format_value.h"
 
 namespace dem::service {
 
@@ -81,6 +83,24 @@ StageProgress stage_progress(const std::vector<StageDefT<Dim>>& stages, std::siz
 }
 
 }  // namespace
+
+std::string conditions_reached(const StopConditions& until, const WorldSession& world) {
+  std::vector<std::string> held;
+  if (until.wall_stress_above) {
+    const protocol::WallForce plate = world.read_wall(until.wall_stress_above->wall);
+    held.push_back("the stress on " + plate.name + " reached " + format_value(plate.normal_stress) + " Pa");
+  }
+  if (until.wall_settlement_above) {
+    const protocol::WallForce plate = world.read_wall(until.wall_settlement_above->wall);
+    held.push_back("the settlement of " + plate.name + " reached " + format_value(plate.settlement) + " m");
+  }
+  if (until.kinetic_energy_below) {
+    held.push_back("the kinetic energy fell to " + format_value(world.kinetic_energy()) + " J");
+  }
+  std::string text;
+  for (const std::string& part : held) text += (text.empty() ? "" : " and ") + part;
+  return text;
+}
 
 StageProgress CaseProgramme::progress(std::size_t stage, std::uint64_t stage_cycles, const WorldSession& world) const {
   return std::visit([&](const auto& stages) { return stage_progress(stages, stage, stage_cycles, world); }, stages_);

@@ -73,7 +73,7 @@ void compare_rows() {
       orientation[k] = (turn(angle * unit(random)) * orientation[k]).normalized();
       frames[k] = ellipsoid_frame(axes, orientation[k]);
     }
-    const PassInputs<3> in{p, walls, periodic, params, nullptr, 1e-6, 0, 0.0, frames.data()};
+    const PassInputs<3> in{p, walls, periodic, params, nullptr, nullptr, 1e-6, 0, 0.0, frames.data()};
     for (int r = 0; r < rows; ++r)
       expected[r] = EllipsoidShape::pair<kApartGeometry>(in, first[r], second[r], one_by_one[r]);
     ellipsoid_pair_geometry<kApartGeometry>(in, first.data(), second.data(), batched.data(), rows, got.data());

@@ -8,6 +8,7 @@
 #include "dem/world.h"
 #include "model_builders.h"
 #include "same_bits.h"
+#include "set_choices.h"
 
 namespace dem {
 namespace {
@@ -52,6 +53,54 @@ TEST(World, SameStateHashForOneAndTwoThreads) {
               static_cast<unsigned long long>(parallel.state_hash()), serial.contacts().size());
   EXPECT_GT(serial.contacts().size(), 3000u);
   EXPECT_EQ(serial.state_hash(), parallel.state_hash());
+}
+
+// Discs of three materials whose friction and stiffnesses differ by pair
+// (the batched passes look each row's set up among six): one and two
+// threads agree, and so do the batched passes (energy budget off) and the
+// row-by-row passes (on), which add the same shares in the same order.
+TEST(World, DistinctMaterialsGiveOneHashForOneAndTwoThreadsAndTheRowByRowBits) {
+  WorldDef def = dense_box(80, 40);  // 3200 discs
+  def.materials.push_back(MaterialDef{"disc_b", 2650.0, 0.4, 0.0});
+  def.materials.push_back(MaterialDef{"disc_c", 2650.0, 0.6, 0.0});
+  testing::three_kinds_with_pair_models(def, {MaterialId{0}, MaterialId{2}, MaterialId{3}}, 1.0e6, 0.7e6);
+  EXPECT_EQ(testing::set_choices(def).pairs, SetChoice::kMany);
+  def.threads = 1;
+  World serial(def);
+  def.threads = 2;
+  World parallel(def);
+  def.threads = 1;
+  def.energy_budget = true;
+  World budget(def);
+  serial.cycle(300);
+  parallel.cycle(300);
+  budget.cycle(300);
+  std::printf("three disc materials, 300 cycles: 1 thread %016llx, 2 threads %016llx, row by row %016llx\n",
+              static_cast<unsigned long long>(serial.state_hash()),
+              static_cast<unsigned long long>(parallel.state_hash()),
+              static_cast<unsigned long long>(budget.state_hash()));
+  EXPECT_GT(serial.contacts().size(), 2000u);
+  EXPECT_EQ(serial.state_hash(), parallel.state_hash());
+  ASSERT_NO_FATAL_FAILURE(testing::expect_same_particles_and_walls(serial, budget));
+}
+
+// A box of one material, and the same box with copies of it (walls, every
+// other disc), then with copies whose parameter sets differ only in what
+// the linear law does not read: the same bits (World3's test says more).
+TEST(World, EqualMaterialsGiveTheSameBitsAsOne) {
+  WorldDef one_def = dense_box(30, 15);
+  one_def.materials.resize(1);
+  for (WallDef& wall : one_def.walls) wall.material = MaterialId{0};
+  World one(one_def);
+  one.cycle(400);
+  for (const auto& [materials, step] : {std::pair{2, 0.0}, std::pair{2, 1.0e9}, std::pair{3, 1.0e9}}) {
+    WorldDef def = one_def;
+    testing::spread_materials(def, materials, step);
+    World spread(def);
+    spread.cycle(400);
+    ASSERT_NO_FATAL_FAILURE(testing::expect_same_particles_and_walls(one, spread));
+    EXPECT_EQ(spread.state_hash(), one.state_hash());
+  }
 }
 
 TEST(World, SameCaseGivesSameHash) {
@@ -130,14 +179,13 @@ TEST(World, WallMeasuresSeeTheWeightOnTheFloor) {
 // The wall rows of round particles run through a batched pass
 // (wall_batch.h) when the energy budget is off, and through the general row
 // body (contact_row.h) when it is on: the same bits, the walls' sums with
-// them. The particles lie apart from each other, so the pair rows, whose
-// batched pass sums a particle's row group before adding it (contact_batch.h),
-// add nothing; they bounce on a turning floor (its velocity at the contact
+// them. The particles lie apart from each other, so the pair rows add
+// nothing; they bounce on a turning floor (its velocity at the contact
 // point enters the rows; contacts form and end) under a lid held by a servo,
 // which moves by the normal force it measures.
 TEST(World, BatchedWallRowsGiveTheSameBitsAsTheGeneralRows) {
   WorldDef plain_def = dense_box(12, 1);  // one row
-  plain_def.materials.resize(1);          // one parameter set, as the batched passes ask
+  plain_def.materials.resize(1);
   for (WallDef& wall : plain_def.walls) wall.material = MaterialId{0};
   for (ParticleDef& disc : plain_def.particles) disc.radius *= 0.7;
   plain_def.walls[0].motion.angular_velocity = 0.05;

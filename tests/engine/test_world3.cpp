@@ -8,8 +8,10 @@
 #include "contact_batch.h"
 #include "dem/packing.h"
 #include "dem/world.h"
+#include "exact_continuation.h"
 #include "model_builders.h"
 #include "same_bits.h"
+#include "set_choices.h"
 
 namespace dem {
 namespace {
@@ -182,14 +184,13 @@ TEST(World3, PlainLoopsGiveTheSameBitsAsTheGeneralStep) {
 // The wall rows of round particles run through a batched pass
 // (wall_batch.h) when the energy budget is off, and through the general row
 // body (contact_row.h) when it is on: the same bits, the walls' sums with
-// them. The particles lie apart from each other, so the pair rows, whose
-// batched pass sums a particle's row group before adding it (contact_batch.h),
-// add nothing; they bounce on a turning floor (its velocity at the contact
+// them. The particles lie apart from each other, so the pair rows add
+// nothing; they bounce on a turning floor (its velocity at the contact
 // point enters the rows; contacts form and end) under a lid held by a servo,
 // which moves by the normal force it measures.
 TEST(World3, BatchedWallRowsGiveTheSameBitsAsTheGeneralRows) {
   WorldDef3 plain_def = spheres_in_a_box(6, 1, 1);  // one layer
-  plain_def.materials.resize(1);                    // one parameter set, as the batched passes ask
+  plain_def.materials.resize(1);
   for (WallDef3& wall : plain_def.walls) wall.material = MaterialId{0};
   for (ParticleDef3& sphere : plain_def.particles) sphere.radius *= 0.8;
   plain_def.walls[0].motion.angular_velocity = {0.0, 0.0, 0.5};
@@ -212,9 +213,9 @@ TEST(World3, LargeBedsGiveTheSameStateHashForOneAndTwoThreads) {
   // Spheres a little larger than the lattice's spacing: every neighbour
   // touches from the first cycle.
   for (ParticleDef3& sphere : serial_def.particles) sphere.radius *= 1.015;
-  // One material and no walls: the batched pass serves only pairs that
-  // share one parameter set (contact_forces.cpp).
-  serial_def.materials.resize(1);
+  // Spheres of three materials whose parameter sets differ (each row
+  // finds its own, parameter_sets.h), and no walls.
+  testing::spread_materials(serial_def, 3, 1.0e9);
   serial_def.walls.clear();
   ASSERT_GT(static_cast<std::int64_t>(serial_def.particles.size()), kPrefetchParticles);
   WorldDef3 parallel_def = serial_def;
@@ -227,6 +228,74 @@ TEST(World3, LargeBedsGiveTheSameStateHashForOneAndTwoThreads) {
               static_cast<unsigned long long>(parallel.state_hash()));
   EXPECT_GT(serial.contacts().size(), 30000u) << "the copies must be read by touching rows";
   EXPECT_EQ(serial.state_hash(), parallel.state_hash());
+}
+
+// A bed of one material, and the same bed with its walls and every other
+// sphere given copies of that material: the same parameter sets, so the
+// same bits and the same hash (the hash reads no material ids). Then copies
+// that differ only in Young's modulus, which the linear law does not read:
+// the rows' sets differ, so the batched passes choose each row's set among
+// a few (two particle materials) or look it up among many (three; six sets
+// of sphere pairs), and must still give the one material's bits.
+TEST(World3, EqualMaterialsGiveTheSameBitsAsOne) {
+  WorldDef3 one_def = spheres_in_a_box(9, 1);  // 729 spheres
+  one_def.materials.resize(1);
+  for (WallDef3& wall : one_def.walls) wall.material = MaterialId{0};
+  World3 one(one_def);
+  one.cycle(600);
+  ASSERT_GT(one.contacts().size(), 500u);
+  struct Variant {
+    int particle_materials;
+    double modulus_step;
+    SetChoice pairs, walls;
+  };
+  for (const Variant& v :
+       {Variant{2, 0.0, SetChoice::kOne, SetChoice::kOne}, Variant{2, 1.0e9, SetChoice::kFew, SetChoice::kFew},
+        Variant{3, 1.0e9, SetChoice::kMany, SetChoice::kFew}}) {
+    WorldDef3 def = one_def;
+    testing::spread_materials(def, v.particle_materials, v.modulus_step);
+    const testing::SetChoices choices = testing::set_choices(def);
+    EXPECT_EQ(choices.pairs, v.pairs);
+    EXPECT_EQ(choices.walls, v.walls);
+    World3 spread(def);
+    spread.cycle(600);
+    std::printf("%d sphere materials, modulus step %g Pa: hash %016llx, one material %016llx\n", v.particle_materials,
+                v.modulus_step, static_cast<unsigned long long>(spread.state_hash()),
+                static_cast<unsigned long long>(one.state_hash()));
+    ASSERT_NO_FATAL_FAILURE(testing::expect_same_particles_and_walls(one, spread));
+    EXPECT_EQ(spread.state_hash(), one.state_hash());
+  }
+}
+
+// Spheres of three materials whose friction and stiffnesses differ by pair
+// (six sets of sphere pairs, three of sphere and wall): the batched passes
+// (energy budget off) and the row-by-row passes (on) add the same shares
+// in the same order, so they agree to the bit; one and two threads and a
+// restart from a snapshot agree with the uninterrupted run.
+WorldDef3 three_materials(int threads) {
+  WorldDef3 def = spheres_in_a_box(9, threads);
+  def.materials = {MaterialDef{"a", 2500.0, 0.5, 0.0}, MaterialDef{"wall", 1.0, 0.45, 0.0},
+                   MaterialDef{"b", 2500.0, 0.4, 0.0}, MaterialDef{"c", 2500.0, 0.6, 0.0}};
+  testing::three_kinds_with_pair_models(def, {MaterialId{0}, MaterialId{2}, MaterialId{3}}, 1.0e5, 0.8e5);
+  return def;
+}
+
+TEST(World3, DistinctMaterialsGiveTheRowByRowBits) {
+  WorldDef3 plain_def = three_materials(1), budget_def = plain_def;
+  budget_def.energy_budget = true;
+  const testing::SetChoices choices = testing::set_choices(plain_def);
+  EXPECT_EQ(choices.pairs, SetChoice::kMany);
+  EXPECT_EQ(choices.walls, SetChoice::kFew);
+  World3 plain(plain_def), budget(budget_def);
+  plain.cycle(600);
+  budget.cycle(600);
+  EXPECT_GT(plain.contacts().size(), 200u);
+  ASSERT_NO_FATAL_FAILURE(testing::expect_same_particles_and_walls(plain, budget));
+  EXPECT_EQ(plain.state_hash(), budget.state_hash());
+}
+
+TEST(World3, DistinctMaterialsRestartExactlyAndThreadsAgree) {
+  testing::expect_exact_continuation(three_materials(1), 300, 600, "three sphere materials");
 }
 
 TEST(World3, RectangleWallsAreValidated) {

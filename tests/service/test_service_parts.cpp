@@ -11,7 +11,7 @@
 
 #include "dem/io/case_conversion.h"
 #include "dem/io/case_loader.h"
-#include "dem/service/active_run.h"
+#include "dem/service/case_programme.h"
 #include "dem/service/command_error.h"
 #include "dem/service/engine_readout.h"
 #include "dem/service/lifecycle.h"
@@ -167,81 +167,94 @@ TEST(EngineReadout, ServoDefaultsKeepTheServoStable) {
   EXPECT_FALSE(service::default_servo_limits(world, top, models));
 }
 
+// A run_until command's stage: a programme of one stage of its own
+// (CaseProgramme::one_stage), stepped as the runner steps every run.
+struct CommandStage {
+  CommandStage(service::WorldSession& world, std::uint64_t cycles, const StopConditions& until)
+      : programme(service::CaseProgramme::one_stage(world.dimension(), cycles, until)),
+        stepper(programme.begin_stage(0, world)) {}
+  // Steps to the stage's end as the runner does, a stop at a time.
+  void run_to_end() {
+    do {
+      stepper->cycle(stepper->cycles_to_next_stop());
+    } while (!stepper->check());
+  }
+  service::CaseProgramme programme;
+  std::unique_ptr<service::StageStepper> stepper;
+};
+
 // run_until's conditions are the engine's stop rule (dem/programme.h):
 // stress reached from below, all conditions at once, at the checks.
-TEST(ActiveRun, ReachesAStressFromBelowAtItsChecks) {
+TEST(CommandStage, ReachesAStressFromBelowAtItsChecks) {
   const auto session = service::make_session(compressed_nine_discs());
   service::WorldSession& world = *session;
   const WallId top = world.find_wall("top");
   const double stress = world.read_wall(top).normal_stress;
   ASSERT_GT(stress, 0.0);
-  service::RunGoal loading;  // the top wall presses down: its stress rises
-  loading.max_cycles = 100000;
-  loading.until.wall_stress_above = WallThreshold{top, 1.5 * stress};
-  loading.until.check_interval = 5;
+  StopConditions loading;  // the top wall presses down: its stress rises
+  loading.wall_stress_above = WallThreshold{top, 1.5 * stress};
+  loading.check_interval = 5;
   world.set_wall_velocity(top, {0.0, -2.0, 0.0}, {});
-  service::ActiveRun run(service::ReceivedCommand{}, loading, world);
-  EXPECT_EQ(run.cycles_to_next_stop(), 5u);
-  bool done = false;
-  while (!done && run.done() < loading.max_cycles) {
-    done = run.step(run.cycles_to_next_stop(), world);
-  }
+  CommandStage run(world, 100000, loading);
+  EXPECT_EQ(run.stepper->cycles_to_next_stop(), 5u);
+  run.run_to_end();
+  const StageResult& result = run.stepper->result();
   std::printf("stress %.4g Pa -> %.4g Pa (target %.4g) after %llu cycles\n", stress, world.read_wall(top).normal_stress,
-              1.5 * stress, static_cast<unsigned long long>(run.done()));
-  EXPECT_TRUE(run.condition_met());
+              1.5 * stress, static_cast<unsigned long long>(result.cycles_run));
+  EXPECT_TRUE(result.condition_met);
   EXPECT_GE(world.read_wall(top).normal_stress, 1.5 * stress);
-  EXPECT_NE(run.condition().find("the stress on top reached"), std::string::npos) << run.condition();
-  EXPECT_EQ(run.done() % 5, 0u);
+  const std::string reached = service::conditions_reached(run.programme.stage_until(0), world);
+  EXPECT_NE(reached.find("the stress on top reached"), std::string::npos) << reached;
+  EXPECT_EQ(result.cycles_run % 5, 0u);
 }
 
 // The direction is the condition's, not inferred from the start: a stress
 // target below the stress now holds at the first check.
-TEST(ActiveRun, ATargetAlreadyPassedEndsAtTheFirstCheck) {
+TEST(CommandStage, ATargetAlreadyPassedEndsAtTheFirstCheck) {
   const auto session = service::make_session(compressed_nine_discs());
   service::WorldSession& world = *session;
   const WallId top = world.find_wall("top");
-  const double stress = world.read_wall(top).normal_stress;
-  service::RunGoal goal;
-  goal.max_cycles = 1000;
-  goal.until.wall_stress_above = WallThreshold{top, 0.5 * stress};
-  goal.until.check_interval = 5;
-  service::ActiveRun run(service::ReceivedCommand{}, goal, world);
-  EXPECT_TRUE(run.step(5, world));
-  EXPECT_TRUE(run.condition_met());
-  EXPECT_EQ(run.done(), 5u);
+  StopConditions until;
+  until.wall_stress_above = WallThreshold{top, 0.5 * world.read_wall(top).normal_stress};
+  until.check_interval = 5;
+  CommandStage run(world, 1000, until);
+  run.stepper->cycle(5);
+  EXPECT_TRUE(run.stepper->check());
+  EXPECT_TRUE(run.stepper->result().condition_met);
+  EXPECT_EQ(run.stepper->result().cycles_run, 5u);
 }
 
 // All conditions at once: a stress that holds does not end the run while
-// the kinetic energy is not below its (unreachable) bound.
-TEST(ActiveRun, EndsOnlyWhenEveryConditionHolds) {
+// the kinetic energy is not below its (unreachable) bound; what holds is
+// said of each condition.
+TEST(CommandStage, EndsOnlyWhenEveryConditionHolds) {
   const auto session = service::make_session(compressed_nine_discs());
   service::WorldSession& world = *session;
   const WallId top = world.find_wall("top");
-  service::RunGoal goal;
-  goal.max_cycles = 20;
-  goal.until.wall_stress_above = WallThreshold{top, 0.5 * world.read_wall(top).normal_stress};
-  goal.until.kinetic_energy_below = 0.0;  // never: the energy is not negative
-  goal.until.check_interval = 5;
-  service::ActiveRun run(service::ReceivedCommand{}, goal, world);
-  bool done = false;
-  while (!done) {
-    done = run.step(run.cycles_to_next_stop(), world);
-  }
-  EXPECT_FALSE(run.condition_met());
-  EXPECT_EQ(run.done(), 20u);
+  StopConditions until;
+  until.wall_stress_above = WallThreshold{top, 0.5 * world.read_wall(top).normal_stress};
+  until.kinetic_energy_below = 0.0;  // never: the energy is not negative
+  until.check_interval = 5;
+  CommandStage run(world, 20, until);
+  run.run_to_end();
+  EXPECT_FALSE(run.stepper->result().condition_met);
+  EXPECT_EQ(run.stepper->result().cycles_run, 20u);
+  const std::string said = service::conditions_reached(until, world);
+  EXPECT_NE(said.find("the stress on top reached "), std::string::npos) << said;
+  EXPECT_NE(said.find(" and the kinetic energy fell to "), std::string::npos) << said;
 }
 
-TEST(ActiveRun, StopsAtItsCapWithoutConditions) {
+TEST(CommandStage, StopsAtItsCapWithoutConditions) {
   const auto world = service::make_session(compressed_nine_discs());
-  service::RunGoal goal;
-  goal.max_cycles = 25;
-  service::ActiveRun run(service::ReceivedCommand{}, goal, *world);
-  EXPECT_EQ(run.cycles_to_next_stop(), 25u);
-  EXPECT_FALSE(run.step(20, *world));
-  EXPECT_EQ(run.cycles_to_next_stop(), 5u);
+  CommandStage run(*world, 25, {});
+  EXPECT_EQ(run.stepper->cycles_to_next_stop(), 25u);
+  run.stepper->cycle(20);
+  EXPECT_FALSE(run.stepper->check());
+  EXPECT_EQ(run.stepper->cycles_to_next_stop(), 5u);
   EXPECT_EQ(world->cycle_count(), 60u);  // 40 before, 20 by the run
-  EXPECT_TRUE(run.step(5, *world));
-  EXPECT_FALSE(run.condition_met());
+  run.stepper->cycle(5);
+  EXPECT_TRUE(run.stepper->check());
+  EXPECT_FALSE(run.stepper->result().condition_met);
 }
 
 TEST(TelemetrySchedule, CountsCyclesAndSimulatedTime) {

@@ -48,6 +48,7 @@ TEST(ProgrammeCommand, RunsTheStagesAsTheEngineDoesThenTakesCommandsAgain) {
   const protocol::Reply all = client.run_programme();
   EXPECT_TRUE(all.ok()) << all.message;
   EXPECT_EQ(all.cycles_run, 3000u);
+  EXPECT_FALSE(all.condition_met);  // hold is of fixed length: no stop condition ended it
   EXPECT_NE(all.message.find("programme complete at cycle 3000"), std::string::npos) << all.message;
   EXPECT_EQ(all.state.state, ServerState::kLoaded);
   EXPECT_EQ(client.get_state().state_hash, engine_hash(case_file("nine_disc_damped"), 0, 2));
@@ -85,6 +86,7 @@ TEST(ProgrammeCommand, MiyatasPlateLoadingRunsThroughTheCommandLoop) {
   const auto reply = client.await(loading, 120s);
   ASSERT_TRUE(reply);
   ASSERT_TRUE(reply->ok()) << reply->message;
+  EXPECT_TRUE(reply->condition_met);  // the last stage run ended on its stress, before its cap
   const protocol::Reply state = client.get_state();
   const auto& top = state.plates.walls.at(1);
   ASSERT_EQ(top.name, "top");

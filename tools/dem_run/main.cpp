@@ -1,8 +1,9 @@
 // dem_run CASE --out DIR [--threads N] [--vtk-interval N] [--quiet]: runs a 2D or 3D case.
-//        [--checkpoint-cycles N] [--checkpoint-seconds S] [--checkpoint-keep K] [--resume]
+//        [--checkpoint-cycles N] [--checkpoint-seconds S] [--checkpoint-keep K] [--resume | --overwrite]
 // Exit codes: 0 done; 1 a run that became numerically unhealthy (its last
 // good state is in DIR/last_good.snapshot) or any other failure (for
-// example an unwritable output directory); 2 bad command-line arguments;
+// example an unwritable output directory); 2 bad command-line arguments, or
+// DIR holding an earlier run's output without --resume or --overwrite;
 // 3 a case that cannot be read, parsed, validated or built (the message
 // names the file and the field); 130 interrupted (Ctrl-C or SIGTERM),
 // after writing the state reached.
@@ -42,7 +43,8 @@ int main(int argc, char** argv) {
       "ParaView files."};
   app.set_version_flag("--version", "dem_run " DEM_VERSION);
   app.footer(
-      "Exit codes: 0 done, 1 other failure, 2 bad arguments, 3 an invalid case (file, line and field named),\n"
+      "Exit codes: 0 done, 1 other failure, 2 bad arguments (or OUT holds an earlier run: --resume or --overwrite), 3 "
+      "an invalid case (file, line and field named),\n"
       "130 interrupted (Ctrl-C): the tables and final.snapshot hold the state reached.");
   dem::run::RunOptions options;
   int threads = 0;
@@ -68,8 +70,12 @@ int main(int argc, char** argv) {
   app.add_option("--checkpoint-keep", options.checkpoints.keep, "checkpoints kept (the newest)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  app.add_flag("--resume", options.resume,
-               "continue from the newest checkpoint in OUT/checkpoints, appending to its tables");
+  CLI::Option* resume = app.add_flag("--resume", options.resume,
+                                     "continue from the newest checkpoint in OUT/checkpoints, appending to its tables");
+  app.add_flag("--overwrite", options.overwrite,
+               "start afresh even though OUT holds an earlier run's output: its tables (.csv), snapshots, ParaView "
+               "files (.pvd, vtk/) and checkpoints are removed first; without it such a run is refused (exit 2)")
+      ->excludes(resume);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -93,6 +99,9 @@ int main(int argc, char** argv) {
 
   try {
     return dem::run::run_case(options) == dem::run::RunOutcome::kCompleted ? 0 : kInterrupted;
+  } catch (const dem::run::OutputInUse& error) {
+    std::cerr << "error: " << error.what() << '\n';
+    return kBadArguments;
   } catch (const dem::io::CaseError& error) {
     for (const auto& problem : error.problems()) std::cerr << "error: " << problem << '\n';
     return kBadCase;

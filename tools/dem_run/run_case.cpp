@@ -11,6 +11,7 @@
 #include "dem/cli/interrupt.h"
 #include "dem/io/case_conversion.h"
 #include "dem/io/case_loader.h"
+#include "dem/io/earlier_run.h"
 #include "dem/io/snapshot_file.h"
 #include "dem/io/world_checks.h"
 #include "dem/programme.h"
@@ -144,11 +145,28 @@ RunOutcome run_definition(io::CaseDefinitionT<Dim>& definition, const io::CaseSo
   return cli::interrupted() ? RunOutcome::kInterrupted : RunOutcome::kCompleted;
 }
 
+// A fresh run into a directory that holds an earlier run's outputs would
+// cut its tables: refused unless --overwrite, which removes them first (and
+// only them: --out is the user's directory and may hold other files).
+void claim_output(const RunOptions& options) {
+  if (options.resume) return;
+  const std::vector<std::string> names = io::earlier_run_entries(options.output_directory, io::RunEntries::kWritten);
+  if (names.empty()) return;
+  if (!options.overwrite) {
+    throw OutputInUse(options.output_directory.string() + " holds the output of an earlier run (" +
+                      io::some_names(names) +
+                      "), which a new run would cut: continue it with --resume, replace it with --overwrite, or give "
+                      "another --out");
+  }
+  io::remove_entries(options.output_directory, names);
+}
+
 }  // namespace
 
 RunOutcome run_case(const RunOptions& options) {
   const io::LoadedCase loaded = io::load_case_file(options.case_path);
   io::AnyCaseDefinition definition = io::convert_any_case(loaded.message, loaded.source);
+  claim_output(options);
   const std::string digest = io::file_digest(options.case_path);
   cli::watch_interrupts();
   return std::visit([&](auto& def) { return run_definition(def, loaded.source, options, digest); }, definition);

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 
 #include "dem/io/checkpoint_store.h"
 
@@ -19,6 +20,15 @@ struct RunOptions {
   io::CheckpointSettings checkpoints;
   // Continue from the newest checkpoint there into the same tables.
   bool resume = false;
+  // Start afresh into an output directory that holds an earlier run's
+  // tables, snapshots, ParaView files and checkpoints, removing them first.
+  bool overwrite = false;
+};
+
+// A fresh run (not resume, not overwrite) into a directory holding an
+// earlier run's outputs: refused before anything is written.
+struct OutputInUse : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 
 enum class RunOutcome {
@@ -34,7 +44,7 @@ enum class RunOutcome {
 // DefinitionError when the engine rejects it, std::runtime_error when an
 // output cannot be written or there is no checkpoint to resume (or it
 // belongs to another case), RunFailure when the run becomes numerically
-// unhealthy.
+// unhealthy, OutputInUse when --out holds an earlier run's outputs.
 RunOutcome run_case(const RunOptions& options);
 
 }  // namespace dem::run

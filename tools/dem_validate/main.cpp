@@ -12,7 +12,7 @@
 //   dem_validate hopper --case FILE --out DIR [--runs 45:10,30:10,...]  (Randall 1989, 6.2: discharge rates)
 //   dem_validate deposition --case FILE --out DIR [--seeds S,...]  (Randall 1989, 6.3: pluvial deposition)
 //   dem_validate rolling-to-rest --out DIR  (rolling resistance: a ball stops where the closed form says)
-//   dem_validate angle-of-repose --out DIR  (rolling resistance: the repose angle of a heap by mu_r)
+//   dem_validate angle-of-repose --out DIR [--packings N]  (rolling resistance: the repose angle of a heap by mu_r)
 //   dem_validate miyata-compression --case FILE --out DIR [--packings N | --seeds S,... | --runs DIR ...]
 //                                           (Miyata et al. 2002, 3.2-3.3: plate loading, Figs. 26-37)
 //   dem_validate miyata-surfaces --out DIR [--packings N] [--reduced]
@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -163,6 +164,9 @@ int main(int argc, char** argv) {
   auto* repose = app.add_subcommand("angle-of-repose", "rolling resistance: angle of repose of a collapsed column");
   repose->add_option("--out", out, "directory for angle_of_repose.csv")->required();
   repose->add_option("--rolling-friction", rolling_frictions, "the mu_r values, in rising order")->delimiter(',');
+  int repose_packings = 5;
+  repose->add_option("--packings", repose_packings, "packings of each heap (seeds 11, 12, ...); judged on the median")
+      ->check(CLI::Range(1, 1000));
   dem::validation::MiyataOptions miyata_options;
   auto* miyata = app.add_subcommand("miyata-compression",
                                     "a plate loading case of Miyata et al. (2002) 3.2-3.3 (cases/miyata): three "
@@ -226,7 +230,11 @@ int main(int argc, char** argv) {
       verdict = dem::validation::report_deposition(deposition_case, out, deposition_seeds);
     }
     if (*rolling_to_rest) verdict = dem::validation::report_rolling_to_rest(out);
-    if (*repose) verdict = dem::validation::report_angle_of_repose(out, rolling_frictions);
+    if (*repose) {
+      std::vector<std::uint64_t> seeds(static_cast<std::size_t>(repose_packings));
+      std::iota(seeds.begin(), seeds.end(), std::uint64_t{11});
+      verdict = dem::validation::report_angle_of_repose(out, rolling_frictions, seeds);
+    }
     if (*verification) {
       std::vector<dem::validation::VerificationRun> runs;
       if (!verification_case.empty()) {

@@ -4,6 +4,7 @@
 // repose of a small heap as the rolling friction grows.
 #pragma once
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <vector>
@@ -33,17 +34,21 @@ RollingToRest roll_to_rest(int dimension, double rolling_friction);
 // the walls are taken out and the column collapses; the discs that roll
 // off the base's edges fall away and are taken out. The slopes of the heap
 // left (least squares over the surface between a fifth and four fifths of
-// its height, both sides).
+// its height, both sides). One collapse is one draw: its angle moves by
+// several degrees with the packing (and with the last bits of a force sum),
+// so the trend is judged on the median over several packings.
 struct Repose {
   double rolling_friction = 0.0;
+  std::uint64_t packing_seed = 0;
   double angle_deg = 0.0;
   double height = 0.0;  // m, of the heap
   int discs_left = 0;   // on the base
   bool at_rest = false;
 };
-Repose angle_of_repose(double rolling_friction);
+Repose angle_of_repose(double rolling_friction, std::uint64_t packing_seed);
 
 Verdict report_rolling_to_rest(const std::filesystem::path& out);
-Verdict report_angle_of_repose(const std::filesystem::path& out, const std::vector<double>& rolling_frictions);
+Verdict report_angle_of_repose(const std::filesystem::path& out, const std::vector<double>& rolling_frictions,
+                               const std::vector<std::uint64_t>& packing_seeds);
 
 }  // namespace dem::validation

@@ -1,8 +1,8 @@
-// A case's loading programme as the service runs it: its stages as io
-// converted them (none for a world restored from a snapshot), each begun
-// on a session's world as a stage of the engine's (StageRunT) that the
-// runner steps chunk by chunk between the commands, as it steps a cycle or
-// run_until command (docs/SERVICE.md, "Programmes").
+// The stages a run steps: a case's loading programme as io converted it
+// (none for a world restored from a snapshot), or the one stage of a cycle
+// or run_until command (one_stage). Each is begun on a session's world as
+// a stage of the engine's (StageRunT) that the runner steps chunk by chunk
+// between the commands (docs/SERVICE.md, "Programmes").
 #pragma once
 
 #include <cstdint>
@@ -34,10 +34,15 @@ class CaseProgramme {
   CaseProgramme() = default;  // no stages
   template <int Dim>
   explicit CaseProgramme(std::vector<StageDefT<Dim>> stages) : stages_(std::move(stages)) {}
+  // A cycle or run_until command as a programme of one stage of the
+  // world's `dimension`: `cycles`, ended early by `until` (the engine's
+  // stop rule), with no start actions.
+  static CaseProgramme one_stage(int dimension, std::uint64_t cycles, const StopConditions& until);
 
   std::size_t stage_count() const;
   const std::string& stage_name(std::size_t stage) const;
   std::uint64_t stage_cycles(std::size_t stage) const;  // its length, or its cap when it has conditions
+  const StopConditions& stage_until(std::size_t stage) const;
 
   // Begins `stage` on `world` (a session of the programme's dimension):
   // its start actions, then its cycles. `done`: the stage's cycles run
@@ -58,5 +63,10 @@ class CaseProgramme {
  private:
   std::variant<std::vector<StageDefT<2>>, std::vector<StageDefT<3>>> stages_;
 };
+
+// What of `until` holds on `world`, said with the values reached: "the
+// stress on top reached 1.2e+07 Pa and the kinetic energy fell to 0.9 J"
+// (a run_until's reply when its conditions ended it; stage_progress.cpp).
+std::string conditions_reached(const StopConditions& until, const WorldSession& world);
 
 }  // namespace dem::service

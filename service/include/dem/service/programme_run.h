@@ -1,17 +1,20 @@
-// A case's loading programme as the server runs it (dem_server --case FILE
-// --run-and-exit, or the run_programme command): which stage is running,
-// its steps (the engine's stage runner, begun by CaseProgramme), when the
-// time series is due a row, the last state known to be good, and how the
-// programme ended. The runner steps the stage chunk by chunk from its
-// command loop; the engine's StageRunT decides each stage's end. This is
-// only the bookkeeping around it.
+// A run as the server drives it, whatever started it: a cycle or run_until
+// command (a programme of one stage of its own), a run_programme command
+// or the one-shot mode (dem_server --case FILE --run-and-exit: the case's
+// stages). Which stage is running, its steps (the engine's stage runner,
+// begun by CaseProgramme), when the time series is due a row, the last
+// state known to be good, and how the run ended. The runner steps the
+// stage chunk by chunk from its command loop; the engine's StageRunT
+// decides each stage's end. This is only the bookkeeping around it.
 #pragma once
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "dem/service/case_programme.h"
+#include "dem/service/command_queue.h"
 #include "dem/service/health_watch.h"
 #include "dem/service/world_session.h"
 
@@ -24,42 +27,63 @@ enum class ProgrammeOutcome {
   kFailed,     // the engine failed or blew up, or an output could not be written
 };
 
+// What a run runs: stages first .. first + count - 1 (from 0) of
+// `programme`, the first of them `first_done` cycles in already (a resumed
+// checkpoint's).
+struct RunPlan {
+  CaseProgramme programme;  // the case's stages, or a command's one (CaseProgramme::one_stage)
+  std::size_t first = 0;
+  std::size_t count = 1;
+  std::uint64_t first_done = 0;
+  // The case's own stages write the case's outputs as dem_run does - a row
+  // of the time series every `output_interval` cycles counted from each
+  // stage's start (the case's output.interval), a record per stage, the
+  // final snapshot - and checkpoint by the programme's settings. A
+  // command's stage leaves the tables to the telemetry's rhythm, as
+  // between runs, and writes no final snapshot.
+  bool of_case = false;
+  std::uint64_t output_interval = 1;
+};
+
 class ProgrammeRun {
  public:
-  // `output_interval`: cycles between rows of the time series, counted from
-  // each stage's start as dem_run counts them (the case's output.interval);
-  // the stages run are first .. first + count - 1 (from 0), the first of
-  // them `first_done` cycles in already (a resumed checkpoint's).
-  ProgrammeRun(const CaseProgramme& programme, const WorldSession& world, std::uint64_t output_interval,
-               std::size_t first, std::size_t count, std::uint64_t first_done = 0);
+  // Takes the world as it is now for the first good state (a whole copy:
+  // memory that cannot hold it throws, with nothing started). `command`:
+  // the command that started it, replied to when it ends; none in the
+  // one-shot mode.
+  ProgrammeRun(RunPlan plan, const WorldSession& world, std::optional<ReceivedCommand> command);
 
-  std::size_t stage_count() const { return stage_count_; }  // the case's
+  const CaseProgramme& programme() const { return plan_.programme; }
+  bool of_case() const { return plan_.of_case; }
+  const ReceivedCommand* command() const { return command_ ? &*command_ : nullptr; }
+
+  std::size_t stage_count() const { return plan_.programme.stage_count(); }
   std::size_t stage() const { return stage_; }  // the stage running or last run, or stage_count() after the last
 
   // Between stages: whether one is left to run.
   bool stage_running() const { return stepper_ != nullptr; }
-  bool stages_left() const { return next_ < end_; }
-  // Moves on to the next stage (stage() from now on), counted from
-  // where `world` is, less the cycles of it run already; returns those.
-  std::uint64_t next_stage(const WorldSession& world);
-  // The running stage's steps, begun by CaseProgramme::begin_stage.
-  void run(std::unique_ptr<StageStepper> stepper) { stepper_ = std::move(stepper); }
+  bool stages_left() const { return next_ < plan_.first + plan_.count; }
+  // Begins the next stage on `world` (stage() from now on), counted from
+  // where `world` is, less the cycles of it run already. Throws what the
+  // engine throws.
+  void begin_next_stage(WorldSession& world);
   StageStepper& stepper() { return *stepper_; }
   // The running stage is over (or cut short); what it ran, counting the
   // cycles of it run before a resume.
   StageResult end_stage();
+  // The last stage ended's result: whether its stop condition ended it.
+  const StageResult& last_result() const { return last_result_; }
 
   std::uint64_t stage_cycles(std::uint64_t cycle) const { return cycle - stage_start_; }
-  // Whether the time series is due a row at this cycle of the current
-  // stage, and the cycles to the next such row.
-  bool row_due(std::uint64_t cycle) const { return (cycle - stage_start_) % output_interval_ == 0; }
-  std::uint64_t cycles_to_row(std::uint64_t cycle) const {
-    return output_interval_ - (cycle - stage_start_) % output_interval_;
-  }
+  // Cycles the next chunk may run at most: to the stage's next condition
+  // check or end, and for the case's stages to the next row of the time series.
+  std::uint64_t cycles_to_next_stop(std::uint64_t cycle) const;
+  // Whether the time series is due a row at this cycle (only the case's stages write one).
+  bool row_due(std::uint64_t cycle) const { return plan_.of_case && stage_cycles(cycle) % plan_.output_interval == 0; }
 
-  // The share of the programme done, the running stage `stage_fraction` of
-  // the way (CaseProgramme::progress): each stage run counts alike, as
-  // their lengths are not known before they end.
+  // The share of the run done, the running stage `stage_fraction` of the
+  // way (CaseProgramme::progress): each stage run counts alike, as their
+  // lengths are not known before they end.
   double progress(double stage_fraction) const;
 
   std::uint64_t done(const WorldSession& world) const { return world.cycle_count() - start_cycle_; }
@@ -67,7 +91,7 @@ class ProgrammeRun {
   std::uint64_t total() const { return total_; }
 
   // The world's health, assessed `always` at the end of a stage, otherwise
-  // at a pace that costs at most about 5% of the run's time; each healthy
+  // at a pace that costs at most about 1% of the run's time; each healthy
   // state is kept, so a failure has a recent good state to write, whatever
   // the case's size.
   HealthWatch& health() { return health_; }
@@ -78,24 +102,22 @@ class ProgrammeRun {
   void complete();
   bool ending() const { return outcome_ == ProgrammeOutcome::kStopped || outcome_ == ProgrammeOutcome::kFailed; }
   ProgrammeOutcome outcome() const { return outcome_; }
-  // Its end is done (the final snapshot, the state): nothing runs any more.
+  // Its end is done (the snapshot, the state, the reply): nothing runs any more.
   void mark_over() { over_ = true; }
   bool over() const { return over_; }
   const std::string& reason() const { return reason_; }  // why it stopped or failed
 
  private:
-  std::size_t stage_count_;
-  std::uint64_t output_interval_;
+  RunPlan plan_;
+  std::optional<ReceivedCommand> command_;
   std::uint64_t start_cycle_;
   std::uint64_t total_ = 0;
-  std::size_t first_;
   std::size_t next_;
-  std::size_t end_;
-  std::uint64_t first_done_;
   std::size_t stage_;
   std::uint64_t stage_start_;
   std::uint64_t stage_done_ = 0;  // the running stage's cycles before a resume
   std::unique_ptr<StageStepper> stepper_;
+  StageResult last_result_;
   HealthWatch health_;
   ProgrammeOutcome outcome_ = ProgrammeOutcome::kRunning;
   bool over_ = false;

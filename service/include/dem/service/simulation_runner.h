@@ -12,7 +12,6 @@
 
 #include "dem/io/pacing.h"
 #include "dem/protocol/messages.h"
-#include "dem/service/active_run.h"
 #include "dem/service/background_load.h"
 #include "dem/service/command_queue.h"
 #include "dem/service/health_watch.h"
@@ -58,51 +57,63 @@ class SimulationRunner {
   void set_writer_check(std::function<bool(std::uint64_t)> alive) { writer_alive_ = std::move(alive); }
   // How the one-shot run ended; nothing when the server ran commands instead.
   std::optional<ProgrammeOutcome> programme_outcome() const;
-  // After run() and once no more commands arrive: stops the running command
-  // (a cancelled reply), answers every command still queued (shutting
-  // down), publishes the final telemetry and status, writes the end-of-run
-  // tables and waits briefly for subscribers to acknowledge.
+  // After run() (whose loop has ended a run going on: a cancelled reply)
+  // and once no more commands arrive: answers every command still queued
+  // (shutting down), publishes the final telemetry and status, writes the
+  // end-of-run tables and waits briefly for subscribers to acknowledge.
   void finish();
 
  private:
   // The command loop: commands as they arrive, and between them a chunk
   // of the run going (a cycle, run_until or programme). run() serves until
   // a shutdown request, the one-shot mode until its programme is over; a
-  // programme going when the shutdown comes is stopped and ended first.
-  void serve(bool until_programme_ends);
+  // run going when the shutdown comes is stopped and ended first.
+  void serve(bool until_run_ends);
   void serve_once(const std::function<void()>& take_waiting);
-  bool programme_going() const { return programme_ && !programme_->over(); }
-  bool run_going() const { return active_ || programme_going(); }  // a cycle, run_until or programme
+  bool run_going() const { return run_ && !run_->over(); }  // a cycle, run_until or programme
   void execute(ReceivedCommand received);
-  void start_run(ReceivedCommand& received, protocol::CommandKind kind);
-  void run_chunk();
+  // The command's reply, or nothing when it starts a run (replied to when the run ends).
+  std::optional<protocol::Reply> dispatch(const ReceivedCommand& received, protocol::CommandKind kind);
+
+  // Starting runs (simulation_runner_runs.cpp): a cycle or run_until is a
+  // programme of one stage of its own, run_programme and the one-shot mode
+  // run the case's; all are a ProgrammeRun that the one driver below steps.
+  void start_command_run(const ReceivedCommand& received, protocol::CommandKind kind);
+  void run_programme(const ReceivedCommand& received);
+  // The case's stages first .. first + count - 1; `first_done`: cycles of
+  // the first run already (a resumed checkpoint's).
+  RunPlan case_plan(std::size_t first, std::size_t count, std::uint64_t first_done = 0) const;
+  // `command`: the one that starts it (none in the one-shot mode), replied to when the run ends.
+  void start(RunPlan plan, const ReceivedCommand* command, std::string message);
   // Cycles for the next chunk: about options_.chunk_duration at the
   // measured rate, no further than `limit` (the run's next stop) or the
   // next telemetry.
   std::uint64_t chunk_cycles(std::uint64_t limit) const;
   // Runs `run`, a chunk of `cycles`, and measures the rate.
   void timed(std::uint64_t cycles, const std::function<void()>& run);
-  void complete_run();
-  // `transition`: kEndRun (completed, stopped) or kFailRun.
-  void end_run(protocol::ReplyStatus status, const std::string& message, Transition transition = Transition::kEndRun);
-  void fail_run(const std::string& message);
-  void fail_unhealthy(const StepHealth& problem);
 
-  // The one-shot mode and run_programme (simulation_runner_programme.cpp):
-  // the stages are stepped by the command loop as a cycle is, and the
-  // run_programme command's one reply comes when they end (completed,
-  // stopped or failed).
-  void run_programme(ReceivedCommand& received);
-  // Stages first .. first + count - 1; `first_done`: cycles of the first
-  // run already (a resumed checkpoint's).
-  void start_programme(std::size_t first, std::size_t count, std::uint64_t first_done = 0);
-  void step_programme();                  // a chunk of the programme, or its end
-  void programme_chunk();                 // the next stage begun if none runs, a chunk of it, a row, its end
-  bool programme_unhealthy(bool always);  // fails the programme when the world's health says so
-  void record_programme_row();
+  // The one driver (simulation_runner_stages.cpp): between the commands, a
+  // chunk of the stage running (the next begun if none runs), its row,
+  // telemetry, check and checkpoint, the stage's end; or the run's end.
+  void step_run();
+  void run_chunk();
+  bool run_unhealthy(bool always);  // fails the run when the world's health says so
+  void checkpoint_if_due();
+  void record_row();
   void end_stage();
-  void end_programme();
   std::string stage_label(std::size_t stage) const;
+  std::string in_stage() const;  // " in stage 2/3 compress" for the case's stages, else nothing
+
+  // The one end (simulation_runner_end.cpp): the last good snapshot after
+  // a failure and the world put back at it, the case's final snapshot, the
+  // state, the message, and the reply to the command that started the run.
+  void end_run();
+  std::string failure_message();
+  std::string programme_end_message();
+  std::string command_end_message(std::uint64_t cycles_run) const;
+  // Writes the snapshot `bytes` gives as `name` beside the case's tables:
+  // nothing, or why it could not be written.
+  std::optional<std::string> write_beside_tables(const std::string& name, const std::function<std::string()>& bytes);
 
   // `resume`: a checkpoint the prepared world was restored from; its tables carry on.
   std::string install(Simulation::Prepared prepared, const io::ResumePoint* resume = nullptr);
@@ -123,6 +134,7 @@ class SimulationRunner {
   const ReceivedCommand* run_owner() const;
   void note_owner_left();
   protocol::Status status() const;
+  void describe_run(protocol::Status& status) const;
   void announce();
   void publish_status();
   // `scheduled`: the schedule's sample, from which the next is counted; an
@@ -150,13 +162,11 @@ class SimulationRunner {
   OutputRecorder recorder_;
   TelemetrySchedule schedule_;
   Lifecycle lifecycle_;
-  std::optional<ActiveRun> active_;
-  std::optional<HealthWatch> active_health_;   // the running cycle or run_until's
   std::unique_ptr<BackgroundLoad> abandoned_;  // a load given up on, still running to its end
   ServerCheckpoints checkpoints_;
-  std::optional<io::ResumePoint> resumed_;            // the checkpoint --resume started from, until its programme runs
-  std::optional<ProgrammeRun> programme_;             // a one-shot run's programme, or run_programme's
-  std::optional<ReceivedCommand> programme_command_;  // run_programme's, while it runs
+  std::optional<io::ResumePoint> resumed_;  // the checkpoint --resume started from, until its programme runs
+  // The run going on; the one-shot mode keeps its programme once over, for how it ended.
+  std::optional<ProgrammeRun> run_;
   std::function<bool(std::uint64_t)> writer_alive_ = [](std::uint64_t) { return true; };
   bool owner_left_logged_ = false;
   std::vector<std::string> awaiting_refresh_;  // clients whose commands the StateCache does not show yet
