@@ -16,7 +16,9 @@ ReplySender::ReplySender(const dds::Participant& participant, std::string server
       contact_chunk_(std::max<std::uint32_t>(contact_chunk, 1)),
       data_chunk_(std::max<std::uint32_t>(data_chunk, 1)),
       topic_(participant, protocol::topic_name(server_name_, protocol::TopicKind::kReply)),
-      writer_(participant, topic_, protocol::reply_qos()) {}
+      writer_(participant, topic_, protocol::reply_qos()),
+      keyless_topic_(participant, topic_.name(), dds::Keys::kNone),
+      keyless_writer_(participant, keyless_topic_, protocol::reply_qos()) {}
 
 void ReplySender::send(const ReceivedCommand& received, protocol::Reply reply) {
   const protocol::Command& command = received.command;
@@ -62,7 +64,10 @@ void ReplySender::send(const ReceivedCommand& received, protocol::Reply reply) {
     // The writer keeps the last 256 samples of each client (protocol/src/qos.cpp): every
     // 32 chunks, let the readers catch up - for at most 2 s, as a stalled
     // reader never does.
-    if ((chunk + 1) % 32 == 0) writer_.wait_for_acks(std::chrono::seconds(2));
+    if ((chunk + 1) % 32 == 0) {
+      writer_.wait_for_acks(std::chrono::seconds(2));
+      if (keyless_writer_.matched_readers() > 0) keyless_writer_.wait_for_acks(std::chrono::seconds(2));
+    }
   }
 }
 
@@ -71,8 +76,19 @@ void ReplySender::write(protocol::Reply& reply) {
     spdlog::error("reply to request {} from {} given up: the client did not take it in time", reply.request_id,
                   reply.client_id);
   }
+  // A ROS 2 node's keyless reader: its replies keep the one history of 256
+  // for all such readers together (protocol/src/qos.cpp).
+  if (keyless_writer_.matched_readers() > 0 && !keyless_writer_.write(reply)) {
+    spdlog::error("reply to request {} from {} given up for keyless readers: one did not take it in time",
+                  reply.request_id, reply.client_id);
+  }
 }
 
-bool ReplySender::flush(std::chrono::milliseconds timeout) { return writer_.wait_for_acks(timeout); }
+bool ReplySender::flush(std::chrono::milliseconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  const bool keyed = writer_.wait_for_acks(timeout);
+  const auto left = std::max(std::chrono::nanoseconds(0), deadline - std::chrono::steady_clock::now());
+  return keyless_writer_.wait_for_acks(left) && keyed;
+}
 
 }  // namespace dem::service

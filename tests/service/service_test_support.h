@@ -129,7 +129,12 @@ static_assert(kLastRoundTwoLaterDomain <= 180, "issue 37's later tests take 175-
 
 // Issue 37's reply tests: 143 to 149 (a domain above 232 has no ports:
 // Cyclone's port of domain d is 7400 + 250 d).
-enum ReplyDomain : std::uint32_t { kLimitsFloodingClients = 143, kDdsInstanceFilter, kLastReplyDomain };
+enum ReplyDomain : std::uint32_t {
+  kLimitsFloodingClients = 143,
+  kDdsInstanceFilter,
+  kDdsKeylessReplies,
+  kLastReplyDomain
+};
 static_assert(kLastReplyDomain <= 150, "issue 37's reply tests take 143-149");
 
 std::filesystem::path case_file(const std::string& name);  // cases/ball/<name>.case.txtpb

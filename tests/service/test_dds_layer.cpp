@@ -8,6 +8,7 @@
 #include "dem/dds/discovery.h"
 #include "dem/dds/error.h"
 #include "dem/dds/instance_filter.h"
+#include "dem/dds/keyless_descriptor.h"
 #include "dem/dds/topic.h"
 #include "dem/dds/waitset.h"
 #include "dem/protocol/qos.h"
@@ -290,6 +291,67 @@ TEST(DdsLayer, AnInstanceFilterKeepsTheReadersOwnReplies) {
   restarted.write(reply_to("me", 4));
   server.write(reply_to("other", 6));
   EXPECT_EQ(received(1), std::vector<std::string>{"me/4"});
+}
+
+// The reply without its key is what idlc makes of the IDL without @key:
+// the same program but for the key member's flags, and no key list.
+TEST(DdsLayer, AKeylessDescriptorIsTheTypeWithoutItsKey) {
+  const dds_topic_descriptor_t& keyed = *dds::TypeSupport<protocol::Reply>::descriptor();
+  ASSERT_EQ(keyed.m_nkeys, 1u);
+  const dds::KeylessDescriptor keyless(keyed);
+  const dds_topic_descriptor_t& plain = keyless.get();
+  EXPECT_EQ(plain.m_nkeys, 0u);
+  EXPECT_EQ(plain.m_keys, nullptr);
+  EXPECT_STREQ(plain.m_typename, keyed.m_typename);
+  EXPECT_EQ(plain.m_size, keyed.m_size);
+  // The program before the key list (where the key descriptor points);
+  // word 2 is client_id's op (words 0 and 1: server's op and offset).
+  std::size_t differing = 0;
+  for (std::size_t word = 0; word < keyed.m_keys[0].m_offset; ++word) {
+    if (plain.m_ops[word] == keyed.m_ops[word]) continue;
+    ++differing;
+    EXPECT_EQ(word, 2u);
+    EXPECT_EQ(plain.m_ops[word], keyed.m_ops[word] & ~(DDS_OP_FLAG_KEY | DDS_OP_FLAG_MU));
+  }
+  EXPECT_EQ(differing, 1u);
+}
+
+// Cyclone keeps keyed and keyless endpoints of one topic and type name
+// apart: the server's keyless reply writer reaches keyless readers (a ROS 2
+// node's) and no keyed one, and its samples arrive whole.
+TEST(DdsLayer, AKeylessTopicOfAKeyedTypeMatchesKeylessEndpointsAlone) {
+  dds::Participant participant(kDdsKeylessReplies);
+  dds::Topic<protocol::Reply> keyed_topic(participant, "rt/test/keyless");
+  dds::Topic<protocol::Reply> keyless_topic(participant, "rt/test/keyless", dds::Keys::kNone);
+  dds::Writer<protocol::Reply> keyed_writer(participant, keyed_topic, protocol::reply_qos());
+  dds::Writer<protocol::Reply> keyless_writer(participant, keyless_topic, protocol::reply_qos());
+  dds::Reader<protocol::Reply> keyed_reader(participant, keyed_topic, protocol::reply_reader_qos());
+  dds::Reader<protocol::Reply> keyless_reader(participant, keyless_topic, protocol::reply_reader_qos());
+  ASSERT_TRUE(
+      eventually([&] { return keyed_writer.matched_readers() > 0 && keyless_writer.matched_readers() > 0; }, 10s));
+  std::this_thread::sleep_for(200ms);  // any other match would be made by now
+  EXPECT_EQ(keyed_writer.matched_readers(), 1u);
+  EXPECT_EQ(keyless_writer.matched_readers(), 1u);
+  EXPECT_EQ(dds::matched_writers(keyless_reader.handle()), 1u);
+
+  protocol::Reply keyless_reply = full_reply();
+  keyless_reply.request_id = 2;
+  ASSERT_TRUE(keyed_writer.write(full_reply()));
+  ASSERT_TRUE(keyless_writer.write(keyless_reply));
+  std::vector<protocol::Reply> keyed_got;
+  std::vector<protocol::Reply> keyless_got;
+  EXPECT_TRUE(eventually(
+      [&] {
+        for (protocol::Reply& reply : keyed_reader.take()) keyed_got.push_back(std::move(reply));
+        for (protocol::Reply& reply : keyless_reader.take()) keyless_got.push_back(std::move(reply));
+        return !keyed_got.empty() && !keyless_got.empty();
+      },
+      10s));
+  std::this_thread::sleep_for(200ms);
+  for (protocol::Reply& reply : keyed_reader.take()) keyed_got.push_back(std::move(reply));
+  for (protocol::Reply& reply : keyless_reader.take()) keyless_got.push_back(std::move(reply));
+  EXPECT_EQ(keyed_got, std::vector<protocol::Reply>{full_reply()});
+  EXPECT_EQ(keyless_got, std::vector<protocol::Reply>{keyless_reply});
 }
 
 TEST(DdsLayer, WaitSetWakesForDataAndGuardConditions) {

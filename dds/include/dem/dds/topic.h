@@ -15,6 +15,7 @@
 
 #include "dem/dds/entity.h"
 #include "dem/dds/error.h"
+#include "dem/dds/keyless_descriptor.h"
 #include "dem/dds/participant.h"
 #include "dem/dds/qos.h"
 #include "dem/dds/type_information_guard.h"
@@ -22,20 +23,34 @@
 
 namespace dem::dds {
 
+// Whether a topic has its type's keys (a history per key value) or none:
+// a keyless topic of a keyed type is for the peers that know the type
+// without its keys - ROS 2 nodes (KeylessDescriptor) - and matches their
+// endpoints alone.
+enum class Keys { kDeclared, kNone };
+
 template <SupportedType T>
 class Topic {
  public:
-  Topic(const Participant& participant, std::string name)
-      : name_(std::move(name)),
-        entity_((
-            protect_type_information(*TypeSupport<T>::descriptor()),
-            check(dds_create_topic(participant.handle(), TypeSupport<T>::descriptor(), name_.c_str(), nullptr, nullptr),
-                  "creating topic " + name_))) {}
+  Topic(const Participant& participant, std::string name, Keys keys = Keys::kDeclared)
+      : name_(std::move(name)), entity_(create(participant, keys)) {}
 
   dds_entity_t handle() const { return entity_.handle(); }
   const std::string& name() const { return name_; }
 
  private:
+  dds_entity_t create(const Participant& participant, Keys keys) const {
+    const dds_topic_descriptor_t& declared = *TypeSupport<T>::descriptor();
+    protect_type_information(declared);
+    // Cyclone copies what it needs of a descriptor into the topic's type.
+    const auto create_with = [&](const dds_topic_descriptor_t& descriptor) {
+      return check(dds_create_topic(participant.handle(), &descriptor, name_.c_str(), nullptr, nullptr),
+                   "creating topic " + name_);
+    };
+    if (keys == Keys::kNone) return create_with(KeylessDescriptor(declared).get());
+    return create_with(declared);
+  }
+
   std::string name_;
   Entity entity_;
 };

@@ -2,6 +2,14 @@
 // to its client (split into chunks - a sequence number and a last flag -
 // when it carries many contacts or a snapshot's bytes). Every reply is
 // logged with its status and how long the command took.
+//
+// The reply is keyed by client (idl/dem/command.idl) and reaches the
+// project's clients, whose readers are keyed. A ROS 2 node's reader knows
+// the type without its key, and Cyclone matches keyless readers with
+// keyless writers only: a second writer, of the type without its key, sends
+// the replies to such readers - only while one is matched, so the
+// project's clients cost nothing more (docs/DDS.md, "Replies to ROS 2
+// nodes").
 #pragma once
 
 #include <chrono>
@@ -36,6 +44,8 @@ class ReplySender {
   std::uint32_t data_chunk_;
   dds::Topic<protocol::Reply> topic_;
   dds::Writer<protocol::Reply> writer_;
+  dds::Topic<protocol::Reply> keyless_topic_;
+  dds::Writer<protocol::Reply> keyless_writer_;
 };
 
 }  // namespace dem::service
