@@ -64,6 +64,14 @@ Qos& Qos::user_data(std::string_view data) {
   return *this;
 }
 
+Qos& Qos::partitions(const std::vector<std::string>& names) {
+  std::vector<const char*> pointers;
+  pointers.reserve(names.size());
+  for (const std::string& name : names) pointers.push_back(name.c_str());
+  dds_qset_partition(qos_, static_cast<std::uint32_t>(pointers.size()), pointers.data());
+  return *this;
+}
+
 Qos& Qos::resource_limits(std::int32_t max_samples, std::int32_t max_instances, std::int32_t max_samples_per_instance) {
   dds_qset_resource_limits(qos_, max_samples, max_instances, max_samples_per_instance);
   return *this;

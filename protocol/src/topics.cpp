@@ -33,6 +33,14 @@ std::string topic_name(std::string_view server, TopicKind kind) {
   return name;
 }
 
+std::string reply_partition(std::string_view client_id) {
+  std::string name = "dem_reply_";
+  for (const char c : client_id) {
+    name += std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '-' || c == '.' ? c : '_';
+  }
+  return name;
+}
+
 bool valid_server_name(std::string_view name) {
   if (name.empty() || name.size() > 64 || std::isalpha(static_cast<unsigned char>(name.front())) == 0) return false;
   for (const char c : name) {

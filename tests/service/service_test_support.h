@@ -133,6 +133,7 @@ enum ReplyDomain : std::uint32_t {
   kLimitsFloodingClients = 143,
   kDdsInstanceFilter,
   kDdsKeylessReplies,
+  kLimitsRepliesToTheirClientAlone,
   kLastReplyDomain
 };
 static_assert(kLastReplyDomain <= 150, "issue 37's reply tests take 143-149");

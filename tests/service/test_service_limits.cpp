@@ -9,9 +9,13 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
+#include <map>
 #include <thread>
 #include <vector>
 
+#include "dem/dds/topic.h"
+#include "dem/protocol/qos.h"
+#include "dem/protocol/topics.h"
 #include "service_test_support.h"
 
 namespace dem::test {
@@ -216,6 +220,39 @@ TEST(Limits, TwentyThousandRequestsInOnePipelineEachGetTheirReply) {
   EXPECT_LE(most_outstanding, client.options().max_outstanding);
   EXPECT_TRUE(client.stop().ok());
   ASSERT_TRUE(client.await(running, 30s));
+}
+
+// Once the server's writer of a client's replies alone (in the client's
+// partition) has matched the client's reader, the client's replies travel
+// by it, and no other client's do: a reader in that partition receives the
+// client's replies and none of another client's (docs/DDS.md, "A client's
+// replies go to it alone").
+TEST(Limits, RepliesTravelToTheirClientAlone) {
+  const std::uint32_t domain = kLimitsRepliesToTheirClientAlone;
+  InProcessServer server(server_options("own", domain));
+  client::Client a(connect_options("own", domain));
+  client::Client b(connect_options("own", domain));
+  dds::Participant participant(domain);
+  dds::Topic<protocol::Reply> topic(participant, protocol::topic_name("own", protocol::TopicKind::kReply));
+  dds::Reader<protocol::Reply> in_b(
+      participant, topic,
+      dds::Qos(protocol::reply_reader_qos()).partitions({protocol::reply_partition(b.client_id())}));
+  // The server made b's writer at b's first command (the client pings as it connects).
+  ASSERT_TRUE(eventually([&] { return in_b.matched_writers() > 0; }, 10s));
+  for (int i = 0; i < 20; ++i) {
+    a.get_state();
+    b.get_state();
+  }
+  std::map<std::string, int> received;
+  const auto take = [&] {
+    for (const protocol::Reply& reply : in_b.take()) ++received[reply.client_id];
+    return received[b.client_id()] >= 20;
+  };
+  EXPECT_TRUE(eventually(take, 10s));
+  std::this_thread::sleep_for(200ms);
+  take();
+  EXPECT_EQ(received[a.client_id()], 0);
+  EXPECT_GE(received[b.client_id()], 20);
 }
 
 // Three clients flooding get_state (7,000 each, all sent before any is

@@ -41,6 +41,24 @@ std::string make_client_id() {
   return id + "-" + std::to_string(getpid()) + "-" + std::to_string(++counter);
 }
 
+// The reply reader reads in the default partition, where the server's
+// shared writer sends a client's first replies, and in the client's own,
+// where its writer of this client's replies alone sends the rest (docs/DDS.md,
+// "Replies"). DDS Security permissions without a <partitions> rule grant
+// the default partition alone: then the reader reads there only, and gets
+// its replies from the shared writer among everyone's.
+dds::Reader<protocol::Reply> make_reply_reader(const dds::Participant& participant,
+                                               const dds::Topic<protocol::Reply>& topic, const std::string& client_id) {
+  try {
+    return dds::Reader<protocol::Reply>(
+        participant, topic,
+        dds::Qos(protocol::reply_reader_qos()).partitions({"", protocol::reply_partition(client_id)}));
+  } catch (const dds::DdsError& error) {
+    if (error.code() != DDS_RETCODE_NOT_ALLOWED_BY_SECURITY) throw;
+    return dds::Reader<protocol::Reply>(participant, topic, protocol::reply_reader_qos());
+  }
+}
+
 ConnectOptions checked(ConnectOptions options) {
   if (!protocol::valid_server_name(options.server)) {
     throw std::invalid_argument("\"" + options.server +
@@ -61,7 +79,7 @@ Client::Client(ConnectOptions options)
       own_replies_(reply_topic_.handle()),
       status_topic_(participant_, protocol::topic_name(options_.server, TopicKind::kStatus)),
       command_writer_(participant_, command_topic_, protocol::command_qos()),
-      reply_reader_(participant_, reply_topic_, protocol::reply_reader_qos()),
+      reply_reader_(make_reply_reader(participant_, reply_topic_, options_.client_id)),
       status_reader_(participant_, status_topic_, protocol::status_qos()),
       reply_data_(reply_reader_.handle()),
       status_data_(status_reader_.handle()),

@@ -6,7 +6,9 @@
 
 #include <chrono>
 #include <cstdint>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace dem::dds {
 
@@ -38,6 +40,10 @@ class Qos {
   // USER_DATA: bytes discovery hands to every peer with the endpoint (ROS 2
   // puts its type hash there, "typehash=RIHS01_...;").
   Qos& user_data(std::string_view data);
+  // The partitions of the endpoint's implicit publisher or subscriber: a
+  // reader and a writer match only when they share one ("" is the default
+  // partition, where every endpoint is unless told).
+  Qos& partitions(const std::vector<std::string>& names);
 
   const dds_qos_t* get() const { return qos_; }
 

@@ -19,6 +19,13 @@ std::string topic_name(std::string_view server, TopicKind kind);
 // "rt/dem/<server>/": what every topic of the server begins with.
 std::string topics_of(std::string_view server);
 
+// The partition of a client's own replies, "dem_reply_<client_id>" (a
+// character other than a letter, digit, '_', '-' or '.' as '_', so no name
+// is a DDS partition pattern): the server writes a client's replies in it
+// once the client's reader is there, so a client receives no other
+// client's replies (docs/DDS.md, "Replies").
+std::string reply_partition(std::string_view client_id);
+
 // A server name is one ROS 2 name token: a letter, then letters, digits and
 // underscores (at most 64 characters), so every topic name is a valid ROS 2 name.
 bool valid_server_name(std::string_view name);

@@ -13,6 +13,9 @@
 #pragma once
 
 #include <chrono>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <string>
 
 #include "dem/dds/topic.h"
@@ -37,7 +40,19 @@ class ReplySender {
   bool flush(std::chrono::milliseconds timeout);
 
  private:
-  void write(protocol::Reply& reply);
+  // A client's own reply writer, in its partition (protocol::reply_partition).
+  struct OwnWriter {
+    dds::Writer<protocol::Reply> writer;
+    std::chrono::steady_clock::time_point made;
+    bool matched = false;  // its client's reader was matched once
+  };
+
+  // The client's own writer once its reader matched it, else none: its
+  // replies go by the shared writer (a new client's own writer is made
+  // then, for its next replies). Shared, as a sweep may forget it meanwhile.
+  std::shared_ptr<OwnWriter> own_writer(const std::string& client);
+  void forget_departed_clients(std::chrono::steady_clock::time_point now);
+  void write(dds::Writer<protocol::Reply>& writer, protocol::Reply& reply);
 
   std::string server_name_;
   std::uint32_t contact_chunk_;
@@ -46,6 +61,11 @@ class ReplySender {
   dds::Writer<protocol::Reply> writer_;
   dds::Topic<protocol::Reply> keyless_topic_;
   dds::Writer<protocol::Reply> keyless_writer_;
+  const dds::Participant& participant_;
+  std::mutex own_mutex_;  // the reception and engine threads both reply
+  std::map<std::string, std::shared_ptr<OwnWriter>> own_writers_;
+  std::chrono::steady_clock::time_point last_sweep_;
+  bool own_writers_refused_ = false;  // by DDS Security permissions
 };
 
 }  // namespace dem::service
