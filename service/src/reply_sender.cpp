@@ -34,8 +34,10 @@ std::shared_ptr<ReplySender::OwnWriter> ReplySender::own_writer(const std::strin
   if (now - last_sweep_ > std::chrono::seconds(1)) forget_departed_clients(now);
   const auto found = own_writers_.find(client);
   if (found != own_writers_.end()) {
+    // Read each time: a client that connects again under the same id has
+    // a new reader, which the writer may not have matched yet.
     OwnWriter& own = *found->second;
-    if (own.matched || own.writer.matched_readers() > 0) {
+    if (own.writer.matched_readers() > 0) {
       own.matched = true;
       return found->second;
     }
