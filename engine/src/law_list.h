@@ -8,12 +8,13 @@
 //   kHertz          stiffness from the materials' E and nu (Randall 3.6),
 //   kBatchable      branch-free enough for the batched passes,
 // and as static functions its parameter resolution (resolve), the checks
-// of its model (check), its critical time steps and its force law
-// (advance, forces). The engine's list is ContactLaws (law_dispatch.h); a
-// new law is its file and an entry there.
+// of its model (check_model), its critical time steps (critical_time_step,
+// undamped_critical_time_step) and its force law (advance, forces). The engine's list is ContactLaws (law_dispatch.h);
+// a new law is its file and an entry there.
 #pragma once
 
 #include <array>
+#include <concepts>
 #include <cstddef>
 #include <optional>
 #include <string_view>
@@ -23,7 +24,19 @@
 
 namespace dem {
 
-template <typename... Laws>
+// What a list asks of each law type at once; the functions are asked for
+// where they are called.
+template <typename Law>
+concept LawType = requires {
+  { Law::kLaw } -> std::convertible_to<ContactLaw>;
+  { Law::kName } -> std::convertible_to<const char*>;
+  { Law::kNormalHistory } -> std::convertible_to<bool>;
+  { Law::kMindlin } -> std::convertible_to<bool>;
+  { Law::kHertz } -> std::convertible_to<bool>;
+  { Law::kBatchable } -> std::convertible_to<bool>;
+};
+
+template <LawType... Laws>
 struct LawList {
   // The list with one more law (a test's own, test_law_list.cpp).
   template <typename Law>
