@@ -5,6 +5,7 @@
 #include "contact_history.h"
 #include "contact_params.h"
 #include "dem/error.h"
+#include "dem/law_traits.h"
 #include "law_dispatch.h"
 
 namespace dem {
@@ -59,8 +60,7 @@ double ContactDriver::tangential_force() const { return state_->forces.shear; }
 bool ContactDriver::sliding() const { return state_->history.sliding; }
 double ContactDriver::contact_radius() const {
   const State& s = *state_;
-  const bool hertz = s.params.law == ContactLaw::kHertzMindlin || s.params.law == ContactLaw::kHertzLinearTangential;
-  return hertz && s.overlap > 0.0 ? std::sqrt(s.pair.effective_radius * s.overlap) : 0.0;
+  return is_hertz(s.params.law) && s.overlap > 0.0 ? std::sqrt(s.pair.effective_radius * s.overlap) : 0.0;
 }
 
 }  // namespace dem

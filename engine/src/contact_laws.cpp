@@ -2,29 +2,35 @@
 
 #include <string>
 
+#include "dem/law_traits.h"
+#include "law_dispatch.h"
 #include "world_validation.h"
 
 namespace dem {
 
-namespace {
-
-const char* law_name(ContactLaw law) {
-  switch (law) {
-    case ContactLaw::kLinear:
-      return "linear";
-    case ContactLaw::kLinearRestitution:
-      return "linear_restitution";
-    case ContactLaw::kHertzMindlin:
-      return "hertz_mindlin";
-    case ContactLaw::kHertzLinearTangential:
-      return "hertz_linear_tangential";
-  }
-  return "?";
+std::span<const ContactLawTraits> contact_laws() {
+  static constexpr auto kLaws = every_law(ContactLaws{});
+  return kLaws;
 }
 
-}  // namespace
+std::optional<ContactLawTraits> contact_law_traits(ContactLaw law) { return law_traits_of<ContactLaws>(law); }
 
-bool is_hertz(ContactLaw law) { return law == ContactLaw::kHertzMindlin || law == ContactLaw::kHertzLinearTangential; }
+std::optional<ContactLaw> contact_law_named(std::string_view name) {
+  for (const ContactLawTraits& law : contact_laws()) {
+    if (name == law.name) return law.law;
+  }
+  return std::nullopt;
+}
+
+const char* contact_law_name(ContactLaw law) {
+  const std::optional<ContactLawTraits> traits = contact_law_traits(law);
+  return traits ? traits->name : "unknown";
+}
+
+bool is_hertz(ContactLaw law) {
+  const std::optional<ContactLawTraits> traits = contact_law_traits(law);
+  return traits && traits->hertz;
+}
 
 WorldLaws resolve_contact_laws(const std::vector<MaterialDef>& materials, const ContactParamTable& params,
                                std::span<const std::int32_t> particle_materials,
@@ -48,8 +54,8 @@ WorldLaws resolve_contact_laws(const std::vector<MaterialDef>& materials, const 
     }
     check(p.law == seen.law, std::string(kind) + " contacts must all use one contact law: materials " +
                                  quoted(materials[seen.a]) + " and " + quoted(materials[seen.b]) + " use " +
-                                 law_name(seen.law) + ", " + quoted(materials[a]) + " and " + quoted(materials[b]) +
-                                 " use " + law_name(p.law));
+                                 contact_law_name(seen.law) + ", " + quoted(materials[a]) + " and " +
+                                 quoted(materials[b]) + " use " + contact_law_name(p.law));
   };
   for (std::int32_t a = 0; a < count; ++a) {
     if (!particle_material[a]) continue;

@@ -24,6 +24,4 @@ WorldLaws resolve_contact_laws(const std::vector<MaterialDef>& materials, const 
                                std::span<const std::int32_t> particle_materials,
                                std::span<const std::int32_t> wall_materials);
 
-bool is_hertz(ContactLaw law);
-
 }  // namespace dem

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "dem/definitions.h"
+#include "law_list.h"
 
 namespace dem {
 
@@ -40,14 +41,39 @@ struct ContactParams {
   bool operator==(const ContactParams&) const = default;
 };
 
+// What every pair of materials resolves whatever its law: friction and
+// cohesion (eq. 19), the linear springs and BALL's dashpots (eqs. 16-17,
+// 28), the pair's E* and G* (Randall 3.6, 4.8-4.10), rolling resistance.
+// Every law's set holds them, so sets compare field by field
+// (parameter_sets.h) as the materials differ.
+ContactParams common_params(const MaterialDef& a, const MaterialDef& b, const ContactModelDef& model,
+                            const DampingDef& damping);
+
+// The parameters of a pair of materials a and b under `model`: the common
+// ones, then the law's own (Law::resolve) for a law of List.
+template <typename List>
+ContactParams resolve_params(const MaterialDef& a, const MaterialDef& b, const ContactModelDef& model,
+                             const DampingDef& damping) {
+  ContactParams p = common_params(a, b, model, damping);
+  with_law_of<List>(model.law, [&]<typename Law>() { Law::resolve(p, model); });
+  return p;
+}
+
+// How a table resolves a pair of materials (resolve_params of a list of laws).
+using ResolvePair = ContactParams (*)(const MaterialDef& a, const MaterialDef& b, const ContactModelDef& model,
+                                      const DampingDef& damping);
+
 // A square table indexed by (material_a, material_b), symmetric. Indexed
 // by the materials' plain values: the force pass looks it up per contact
 // from Particles::material.
 class ContactParamTable {
  public:
   ContactParamTable() = default;
+  // Each pair under the engine's laws (law_dispatch.h), or under `resolve`.
   ContactParamTable(const std::vector<MaterialDef>& materials, const std::vector<ContactModelDef>& models,
                     const DampingDef& damping);
+  ContactParamTable(const std::vector<MaterialDef>& materials, const std::vector<ContactModelDef>& models,
+                    const DampingDef& damping, ResolvePair resolve);
   const ContactParams& operator()(std::int32_t a, std::int32_t b) const { return params_[a * count_ + b]; }
   int count() const { return count_; }  // materials
 

@@ -5,11 +5,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "contact_history.h"
 #include "contact_params.h"
+#include "critical_step.h"
 #include "mindlin.h"
 #include "tangential.h"
+#include "world_validation.h"
 
 namespace dem {
 
@@ -47,7 +50,44 @@ DEM_INLINE ContactForces<Dim> hertz_forces(const ContactHistory<Dim>& h, const C
   return f;
 }
 
-struct HertzMindlinLaw {
+// What both Hertz laws share besides the normal force: their dashpots'
+// resolution and checks, and their time step.
+struct HertzLawBase {
+  static constexpr bool kHertz = true;
+
+  // The damping ratio beta (Randall 4.13), from a coefficient of restitution
+  // when one is given, and the dashpots' coefficients over sqrt(m* a)
+  // (ContactParams::normal_dashpot) from E* and G* of the pair.
+  static void resolve(ContactParams& p, const ContactModelDef& model) {
+    p.damping_ratio =
+        model.hertz.restitution ? damping_ratio_from_restitution(*model.hertz.restitution) : model.hertz.damping_ratio;
+    p.tangential_damping_ratio = model.hertz.tangential ? p.damping_ratio : 0.0;
+    p.normal_dashpot = 2.0 * p.damping_ratio * std::sqrt(2.0 * p.contact_modulus);
+    p.tangential_dashpot = 2.0 * p.tangential_damping_ratio * std::sqrt(8.0 * p.shear_modulus);
+  }
+  static void check_model(const ContactModelDef& model, const std::string& where) {
+    check(model.hertz.damping_ratio >= 0.0, where + ": damping ratio must be >= 0");
+    check(!model.hertz.restitution || (*model.hertz.restitution > 0.0 && *model.hertz.restitution <= 1.0),
+          where + ": restitution must be in (0, 1]");
+  }
+  // The Rayleigh step of the particle (Randall 4.33), as it is, damped or
+  // not: Randall takes it as the step itself, with dashpots at 10-20 % of
+  // critical (his hopper and pluvial runs). It is a wave's crossing time,
+  // not a contact's limit: a Hertz contact stiffens with its overlap
+  // (k_n = 2 E* a), and at the overlaps of such runs its own limit lies
+  // above the Rayleigh step - which a dashpot shortens, and a step set from
+  // the Rayleigh step does not follow.
+  static double critical_time_step(const StepParticle& particle, const ContactParams&, const DampingDef&) {
+    return rayleigh_time_step(particle.material, particle.radius);
+  }
+  static double undamped_critical_time_step(const StepParticle& particle, const ContactParams&) {
+    return rayleigh_time_step(particle.material, particle.radius);
+  }
+};
+
+struct HertzMindlinLaw : HertzLawBase {
+  static constexpr ContactLaw kLaw = ContactLaw::kHertzMindlin;
+  static constexpr const char* kName = "hertz_mindlin";
   static constexpr bool kNormalHistory = true;  // dN over the step
   static constexpr bool kMindlin = true;
   static constexpr bool kBatchable = false;  // the loading history branches per contact
@@ -125,7 +165,9 @@ struct HertzMindlinLaw {
   }
 };
 
-struct HertzLinearTangentialLaw {
+struct HertzLinearTangentialLaw : HertzLawBase {
+  static constexpr ContactLaw kLaw = ContactLaw::kHertzLinearTangential;
+  static constexpr const char* kName = "hertz_linear_tangential";
   static constexpr bool kNormalHistory = false;
   static constexpr bool kMindlin = false;
   static constexpr bool kBatchable = true;  // branch-free enough for contact_batch.h

@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "contact_forces.h"
+#include "dem/law_traits.h"
 #include "quasi_static.h"
 #include "tangential.h"
 #include "world_state.h"
@@ -19,9 +20,9 @@ struct Strain {
 };
 
 template <int Dim>
-Strain strain_energy(ContactLaw law, const ContactRecordT<Dim>& c, const ContactParams& p, double effective_radius) {
+Strain strain_energy(bool hertz, const ContactRecordT<Dim>& c, const ContactParams& p, double effective_radius) {
   const double shear = c.tangential_force.norm();
-  if (law == ContactLaw::kLinear || law == ContactLaw::kLinearRestitution) {
+  if (!hertz) {
     return {p.normal_stiffness > 0.0 ? 0.5 * c.normal_force * c.normal_force / p.normal_stiffness : 0.0,
             p.shear_stiffness > 0.0 ? 0.5 * shear * shear / p.shear_stiffness : 0.0};
   }
@@ -47,6 +48,7 @@ AssemblyMeasures measure_assembly(const WorldState<Dim>& s) {
   }
   Strain strain;
   double contact_forces = 0.0;
+  const bool pair_hertz = is_hertz(s.pair_law), wall_hertz = is_hertz(s.wall_law);
   visit_touching_contacts<Dim>(s, [&](const ContactRecordT<Dim>& c) {
     ++m.contacts;
     if (c.second_particle != kInvalidId) ++m.particle_contacts;
@@ -63,9 +65,9 @@ AssemblyMeasures measure_assembly(const WorldState<Dim>& s) {
     if (c.second_particle != kInvalidId) {
       const Slot y = p.slot_of(c.second_particle);
       effective_radius = p.radius[x] * p.radius[y] / (p.radius[x] + p.radius[y]);
-      held = strain_energy(s.pair_law, c, s.params(p.material[x], p.material[y]), effective_radius);
+      held = strain_energy(pair_hertz, c, s.params(p.material[x], p.material[y]), effective_radius);
     } else {
-      held = strain_energy(s.wall_law, c, s.params(p.material[x], s.walls.def[c.second_wall.index()].material.value()),
+      held = strain_energy(wall_hertz, c, s.params(p.material[x], s.walls.def[c.second_wall.index()].material.value()),
                            effective_radius);
     }
     strain.normal += held.normal;

@@ -6,17 +6,46 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <string>
 
 #include "contact_history.h"
 #include "contact_params.h"
+#include "critical_step.h"
+#include "linear_law.h"
 #include "tangential.h"
+#include "world_validation.h"
 
 namespace dem {
 
 struct RestitutionLaw {
+  static constexpr ContactLaw kLaw = ContactLaw::kLinearRestitution;
+  static constexpr const char* kName = "linear_restitution";
   static constexpr bool kNormalHistory = false;  // F_n = k_n delta (eq. 13)
   static constexpr bool kMindlin = false;
+  static constexpr bool kHertz = false;
   static constexpr bool kBatchable = true;  // branch-free enough for contact_batch.h
+
+  static void resolve(ContactParams& p, const ContactModelDef& model) {
+    if (model.restitution < 1.0) {
+      // Miyata eq. 17: c_n = 2 ln(1/e) sqrt(k_n m* / (pi^2 + ln^2(1/e))).
+      const double log_inverse = std::log(1.0 / model.restitution);
+      p.restitution_viscosity =
+          2.0 * log_inverse *
+          std::sqrt(p.normal_stiffness / (std::numbers::pi * std::numbers::pi + log_inverse * log_inverse));
+    }
+  }
+  static void check_model(const ContactModelDef& model, const std::string& where) {
+    check_linear_springs(model, where);
+    check(model.restitution > 0.0 && model.restitution <= 1.0, where + ": restitution must be in (0, 1]");
+  }
+  // Miyata eq. 17's dashpot with the mass against a wall (m* = m), no shear dashpot.
+  static double critical_time_step(const StepParticle& particle, const ContactParams& c, const DampingDef& damping) {
+    return linear_critical_step(particle, c, c.restitution_viscosity * std::sqrt(particle.mass), 0.0, damping);
+  }
+  static double undamped_critical_time_step(const StepParticle& particle, const ContactParams& c) {
+    return linear_undamped_critical_step(particle, c);
+  }
 
   template <int Dim>
   [[gnu::always_inline]] static void advance(ContactHistory<Dim>& h, const ContactKinematics<Dim>& k,

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "contact_forces.h"
+#include "dem/law_traits.h"
 #include "tangential.h"
 #include "world_state.h"
 
@@ -62,6 +63,7 @@ template <int Dim>
 void apply_rolling_resistance(WorldState<Dim>& s) {
   Particles<Dim>& p = s.particles;
   const double dt = s.time_step;
+  const bool pair_hertz = is_hertz(s.pair_law), wall_hertz = is_hertz(s.wall_law);
   for (const RollingRow& c : touching_rows(s)) {
     ContactRows<Dim>& rows = c.wall ? s.contacts.walls : s.contacts.pairs;
     Spin<Dim>& torque = rows.rolling[c.row];
@@ -69,7 +71,6 @@ void apply_rolling_resistance(WorldState<Dim>& s) {
     const Slot y = c.wall ? -1 : p.slot[static_cast<std::size_t>(c.second)];
     const std::int32_t other = c.wall ? s.walls.def[c.second].material.value() : p.material[y];
     const ContactParams& params = s.params(p.material[x], other);
-    const ContactLaw law = c.wall ? s.wall_law : s.pair_law;
     if (params.rolling_friction <= 0.0) {
       torque = Space<Dim>::zero_spin();
       continue;
@@ -78,7 +79,7 @@ void apply_rolling_resistance(WorldState<Dim>& s) {
     // rotational inertia of the pair about the contact.
     const double rx = p.radius[x], ry = c.wall ? 0.0 : p.radius[y];
     const double rolling_radius = c.wall ? rx : rx * ry / (rx + ry);
-    const bool hertz = law == ContactLaw::kHertzMindlin || law == ContactLaw::kHertzLinearTangential;
+    const bool hertz = c.wall ? wall_hertz : pair_hertz;
     const double normal_stiffness =
         hertz ? 2.0 * params.contact_modulus * std::sqrt(rolling_radius * c.overlap) : params.normal_stiffness;
     const double stiffness =

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "contact_laws.h"
+#include "dem/law_traits.h"
 #include "rolling_resistance.h"
 
 namespace dem {
@@ -11,8 +12,8 @@ namespace {
 
 // The columns a table needs for its law, the particles' shape and the energy budget.
 ContactColumns columns_for(ContactLaw law, ShapeKind shape, bool energy_budget) {
-  return {law == ContactLaw::kLinear || law == ContactLaw::kHertzMindlin, law == ContactLaw::kHertzMindlin,
-          shape != ShapeKind::kRound, energy_budget};
+  const ContactLawTraits traits = contact_law_traits(law).value();
+  return {traits.normal_history, traits.mindlin, shape != ShapeKind::kRound, energy_budget};
 }
 
 }  // namespace

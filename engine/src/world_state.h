@@ -143,12 +143,6 @@ template <int Dim>
 double estimate_critical_time_step(const WorldState<Dim>& state);
 template <int Dim>
 double estimate_undamped_critical_time_step(const WorldState<Dim>& state);
-// What a dashpot of damping ratio zeta acting on the last step's velocity
-// leaves of the undamped limit omega dt < 2: sqrt(1 + zeta^2) - zeta.
-double damped_step_factor(double zeta);
-// The critical step of a mass (or moment of inertia) on a spring with a
-// dashpot on the last step's velocity, under local damping `local`.
-double mode_critical_step(double mass, double stiffness, double dashpot, double local);
 
 template <int Dim>
 AssemblyMeasures measure_assembly(const WorldState<Dim>& state);

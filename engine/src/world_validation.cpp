@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "dem/error.h"
+#include "law_dispatch.h"
 
 namespace dem {
 
@@ -63,19 +64,8 @@ void validate_world(const WorldDefT<Dim>& def) {
     const bool both_valid = model.material_a.valid() && model.material_a.index() < materials &&
                             model.material_b.valid() && model.material_b.index() < materials;
     check(both_default || both_valid, where + ": unknown material id");
-    const bool linear = model.law == ContactLaw::kLinear || model.law == ContactLaw::kLinearRestitution;
-    if (linear) {
-      check(model.linear.normal_stiffness > 0.0, where + ": normal stiffness must be > 0");
-      check(model.linear.shear_stiffness >= 0.0, where + ": shear stiffness must be >= 0");
-    }
-    if (model.law == ContactLaw::kLinearRestitution) {
-      check(model.restitution > 0.0 && model.restitution <= 1.0, where + ": restitution must be in (0, 1]");
-    }
-    if (!linear) {
-      check(model.hertz.damping_ratio >= 0.0, where + ": damping ratio must be >= 0");
-      check(!model.hertz.restitution || (*model.hertz.restitution > 0.0 && *model.hertz.restitution <= 1.0),
-            where + ": restitution must be in (0, 1]");
-    }
+    const bool known = with_law(model.law, [&]<typename Law>() { Law::check_model(model, where); });
+    check(known, where + ": unknown contact law " + std::to_string(static_cast<int>(model.law)));
     check(model.friction.value_or(0.0) >= 0.0, where + ": friction must be >= 0");
     check(model.cohesion.value_or(0.0) >= 0.0, where + ": cohesion must be >= 0");
     check(model.rolling.friction >= 0.0 && std::isfinite(model.rolling.friction),

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <string>
 
+#include "case_laws.h"
 #include "dem/error.h"
 #include "dem/io/case_validation.h"
 #include "dem/io/file_access.h"
@@ -60,14 +61,6 @@ DampingDef to_damping(const proto::Damping& damping) {
   if (damping.has_global_alpha_rotation()) def.global_alpha_rotation = damping.global_alpha_rotation();
   def.local_alpha = damping.local_alpha();
   if (damping.has_local_alpha_rotation()) def.local_alpha_rotation = damping.local_alpha_rotation();
-  return def;
-}
-
-HertzDampingDef to_hertz_damping(const proto::HertzLaw& law) {
-  HertzDampingDef def;
-  if (law.has_damping_ratio()) def.damping_ratio = law.damping_ratio();
-  if (law.has_restitution()) def.restitution = law.restitution();
-  def.tangential = law.tangential_damping();
   return def;
 }
 
@@ -335,27 +328,10 @@ class Converter {
         def.material_a = materials_.at(model.materials(0));
         def.material_b = materials_.at(model.materials(model.materials_size() - 1));
       }
-      switch (model.law_case()) {
-        case proto::ContactModel::kLinear:
-          def.law = ContactLaw::kLinear;
-          def.linear = {model.linear().normal_stiffness(), model.linear().shear_stiffness()};
-          break;
-        case proto::ContactModel::kLinearRestitution:
-          def.law = ContactLaw::kLinearRestitution;
-          def.linear = {model.linear_restitution().normal_stiffness(), model.linear_restitution().shear_stiffness()};
-          def.restitution = model.linear_restitution().restitution();
-          break;
-        case proto::ContactModel::kHertzMindlin:
-          def.law = ContactLaw::kHertzMindlin;
-          def.hertz = to_hertz_damping(model.hertz_mindlin());
-          break;
-        case proto::ContactModel::kHertzLinearTangential:
-          def.law = ContactLaw::kHertzLinearTangential;
-          def.hertz = to_hertz_damping(model.hertz_linear_tangential());
-          break;
-        case proto::ContactModel::LAW_NOT_SET:
-          break;
-      }
+      // Validation has named a model without a law, or with one the engine lacks.
+      const CaseLaw law = case_law(model);
+      if (law.law) def.law = *law.law;
+      if (law.parameters != nullptr) set_law_parameters(*law.parameters, def);
       if (model.has_friction()) def.friction = model.friction();
       if (model.has_cohesion()) def.cohesion = model.cohesion();
       def.rolling = RollingResistanceDef{model.rolling().friction(), model.rolling().damping_ratio()};

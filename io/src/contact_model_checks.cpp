@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "case_laws.h"
+#include "dem/law_traits.h"
 #include "field_path.h"
 
 namespace dem::io {
@@ -14,14 +17,26 @@ namespace {
 // A pair of material indices in the order a contact model's key uses.
 std::pair<int, int> unordered_pair(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
 
-bool is_hertz(proto::ContactModel::LawCase law) {
-  return law == proto::ContactModel::kHertzMindlin || law == proto::ContactModel::kHertzLinearTangential;
+bool is_hertz(const proto::ContactModel& model) {
+  const std::optional<ContactLaw> law = case_law(model).law;
+  return law && dem::is_hertz(*law);
 }
 
 // The law's field name, as a case spells it ("hertz_mindlin").
 std::string law_name(const proto::ContactModel& model) {
   const auto* field = model.GetDescriptor()->FindFieldByNumber(model.law_case());
   return field != nullptr ? field->name() : std::string("no law");
+}
+
+// The engine's laws by name: "linear, ... or hertz_linear_tangential".
+std::string law_names() {
+  const auto laws = contact_laws();
+  std::string names;
+  for (std::size_t k = 0; k < laws.size(); ++k) {
+    if (k > 0) names += k + 1 == laws.size() ? " or " : ", ";
+    names += laws[k].name;
+  }
+  return names;
 }
 
 class ContactModelChecker {
@@ -76,30 +91,25 @@ class ContactModelChecker {
     if (pairs_hertz || walls_hertz) check_elastic_constants(touching.particle_ids);
   }
 
+  // Each law's parameters by the type of their message (case_laws.h).
   void check_law(const std::string& path, const proto::ContactModel& model) {
-    switch (model.law_case()) {
-      case proto::ContactModel::kLinear:
-        problems_.positive(path + ".linear.normal_stiffness", model.linear().normal_stiffness());
-        problems_.non_negative(path + ".linear.shear_stiffness", model.linear().shear_stiffness());
-        break;
-      case proto::ContactModel::kLinearRestitution: {
-        const proto::LinearRestitutionLaw& law = model.linear_restitution();
-        problems_.positive(path + ".linear_restitution.normal_stiffness", law.normal_stiffness());
-        problems_.non_negative(path + ".linear_restitution.shear_stiffness", law.shear_stiffness());
-        problems_.within(path + ".linear_restitution.restitution", law.restitution(), kRestitution);
-        break;
-      }
-      case proto::ContactModel::kHertzMindlin:
-        check_hertz(path + ".hertz_mindlin", model.hertz_mindlin());
-        break;
-      case proto::ContactModel::kHertzLinearTangential:
-        check_hertz(path + ".hertz_linear_tangential", model.hertz_linear_tangential());
-        break;
-      case proto::ContactModel::LAW_NOT_SET:
-        problems_.add(path,
-                      "has no law; set linear { normal_stiffness: ... shear_stiffness: ... }, linear_restitution, "
-                      "hertz_mindlin or hertz_linear_tangential");
-        break;
+    const CaseLaw law = case_law(model);
+    if (law.field == nullptr) {
+      problems_.add(
+          path, "has no law; set one of " + law_names() + ", as linear { normal_stiffness: ... shear_stiffness: ... }");
+      return;
+    }
+    const std::string where = path + "." + law.field->name();
+    if (!law.law) problems_.add(where, "is no contact law of this engine");
+    if (const auto* linear = dynamic_cast<const proto::LinearLaw*>(law.parameters)) {
+      problems_.positive(where + ".normal_stiffness", linear->normal_stiffness());
+      problems_.non_negative(where + ".shear_stiffness", linear->shear_stiffness());
+    } else if (const auto* restitution = dynamic_cast<const proto::LinearRestitutionLaw*>(law.parameters)) {
+      problems_.positive(where + ".normal_stiffness", restitution->normal_stiffness());
+      problems_.non_negative(where + ".shear_stiffness", restitution->shear_stiffness());
+      problems_.within(where + ".restitution", restitution->restitution(), kRestitution);
+    } else if (const auto* hertz = dynamic_cast<const proto::HertzLaw*>(law.parameters)) {
+      check_hertz(where, *hertz);
     }
   }
 
@@ -173,7 +183,7 @@ class ContactModelChecker {
                         pair_text(first_pair) + "; one law must serve every " + std::string(kind) +
                         " contact (particle-particle and particle-wall laws may differ)");
     }
-    return first_model >= 0 && is_hertz(case_.contact_model(first_model).law_case());
+    return first_model >= 0 && is_hertz(case_.contact_model(first_model));
   }
 
   // The Hertz laws take their stiffness from the particles' elastic

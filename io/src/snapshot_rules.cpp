@@ -4,6 +4,7 @@
 #include <set>
 #include <string>
 
+#include "dem/law_traits.h"
 #include "format_number.h"
 #include "problem_list.h"
 #include "snapshot_packing.h"
@@ -45,9 +46,8 @@ class Rules {
   Problems& problems_;
 };
 
-bool is_hertz(proto::SnapshotContactLaw law) {
-  return law == proto::SNAPSHOT_LAW_HERTZ_MINDLIN || law == proto::SNAPSHOT_LAW_HERTZ_LINEAR_TANGENTIAL;
-}
+// The schema's values are the engine's (SnapshotConversion.EveryContactLawKeepsItsSchemaValue).
+bool is_hertz(proto::SnapshotContactLaw law) { return dem::is_hertz(static_cast<ContactLaw>(law)); }
 
 // case_validation.cpp's check_materials and contact_model_checks.cpp's
 // check_law, over the snapshot's settings.

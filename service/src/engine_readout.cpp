@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "contact_entry.h"
+#include "dem/law_traits.h"
 #include "dem/service/command_error.h"
 
 namespace dem::service {
@@ -126,7 +127,7 @@ std::optional<ServoLimits> default_servo_limits(const BasicWorld<Dim>& world, Wa
                                                 const std::vector<ContactModelDef>& contact_models) {
   double stiffness = 0.0;
   for (const ContactModelDef& model : contact_models) {
-    if (model.law == ContactLaw::kLinear || model.law == ContactLaw::kLinearRestitution) {
+    if (!is_hertz(model.law)) {
       stiffness = std::max(stiffness, model.linear.normal_stiffness);
     }
   }

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "critical_step.h"
 #include "dem/world.h"
 #include "model_builders.h"
 #include "world_state.h"

@@ -9,8 +9,10 @@
 #include <string>
 #include <variant>
 
+#include "case_laws.h"
 #include "dem/io/case_conversion.h"
 #include "dem/io/world_checks.h"
+#include "dem/law_traits.h"
 #include "dem/programme.h"
 #include "dem/world.h"
 #include "io_test_support.h"
@@ -29,6 +31,24 @@ TEST_F(CaseConversion, NameAndDescription) {
   const CaseDefinition def = convert_case(case_);
   EXPECT_EQ(def.name, "nine_discs");
   EXPECT_EQ(def.description, "Nine discs in a box, then a compression");
+}
+
+// A case names its law by the field of ContactModel's `law` oneof, whose
+// name is the engine's name of the law (dem/law_traits.h): each field is a
+// law of the engine's list, each law of the list has its field, and a
+// model setting it reads as that law (case_laws.h).
+TEST_F(CaseConversion, EveryLawOfTheSchemaIsALawOfTheEngine) {
+  const google::protobuf::OneofDescriptor* laws = proto::ContactModel::descriptor()->FindOneofByName("law");
+  ASSERT_NE(laws, nullptr);
+  EXPECT_EQ(static_cast<std::size_t>(laws->field_count()), contact_laws().size());
+  for (const ContactLawTraits& law : contact_laws()) {
+    const google::protobuf::FieldDescriptor* field = proto::ContactModel::descriptor()->FindFieldByName(law.name);
+    ASSERT_NE(field, nullptr) << law.name << " is no field of ContactModel";
+    EXPECT_EQ(field->containing_oneof(), laws) << law.name;
+    proto::ContactModel model;
+    model.GetReflection()->MutableMessage(&model, field);  // the law set, its parameters at their defaults
+    EXPECT_EQ(case_law(model).law, law.law) << law.name;
+  }
 }
 
 TEST_F(CaseConversion, MaterialsMapByNameInOrder) {

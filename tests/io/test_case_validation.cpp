@@ -146,8 +146,8 @@ const Mistake kMistakes[] = {
     {"NegativeShearStiffness", [](auto& c) { c.mutable_contact_model(1)->mutable_linear()->set_shear_stiffness(-1); },
      "contact_model[1].linear.shear_stiffness: must be >= 0 (got -1)"},
     {"ContactModelWithoutLaw", [](auto& c) { c.mutable_contact_model(2)->clear_linear(); },
-     "contact_model[2]: has no law; set linear { normal_stiffness: ... shear_stiffness: ... }, linear_restitution, "
-     "hertz_mindlin or hertz_linear_tangential"},
+     "contact_model[2]: has no law; set one of linear, linear_restitution, hertz_mindlin or hertz_linear_tangential, "
+     "as linear { normal_stiffness: ... shear_stiffness: ... }"},
     {"RestitutionLawZeroStiffness",
      [](auto& c) { c.mutable_contact_model(0)->mutable_linear_restitution()->set_restitution(0.5); },
      "contact_model[0].linear_restitution.normal_stiffness: must be > 0 (got 0)"},

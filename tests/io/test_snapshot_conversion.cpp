@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "dem/io/snapshot_conversion.h"
+#include "dem/law_traits.h"
 #include "dem/snapshot_fields.h"
 #include "snapshot_conversion_fields.h"
 #include "snapshot_worlds.h"
@@ -499,23 +501,26 @@ TEST(SnapshotConversion, TheWalkerKeepsDefaultsForEmptyArraysAndRefusesOtherLeng
   }
 }
 
-// Enums go by number: every contact law lands on the schema's value of its
-// name, and comes back.
+// Enums go by number: every law of the engine's list (dem/law_traits.h)
+// has the schema's value of its name (SNAPSHOT_LAW_ and the name in
+// capitals), lands on it and comes back; the schema has no other value.
 TEST(SnapshotConversion, EveryContactLawKeepsItsSchemaValue) {
-  const std::vector<std::pair<ContactLaw, proto::SnapshotContactLaw>> laws = {
-      {ContactLaw::kLinear, proto::SNAPSHOT_LAW_LINEAR},
-      {ContactLaw::kLinearRestitution, proto::SNAPSHOT_LAW_LINEAR_RESTITUTION},
-      {ContactLaw::kHertzMindlin, proto::SNAPSHOT_LAW_HERTZ_MINDLIN},
-      {ContactLaw::kHertzLinearTangential, proto::SNAPSHOT_LAW_HERTZ_LINEAR_TANGENTIAL}};
-  for (const auto& [law, value] : laws) {
+  const google::protobuf::EnumDescriptor* schema = proto::SnapshotContactLaw_descriptor();
+  EXPECT_EQ(static_cast<std::size_t>(schema->value_count()), contact_laws().size());
+  for (const ContactLawTraits& law : contact_laws()) {
+    std::string name = std::string("SNAPSHOT_LAW_") + law.name;
+    for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    const google::protobuf::EnumValueDescriptor* value = schema->FindValueByName(name);
+    ASSERT_NE(value, nullptr) << name << " is missing from SnapshotContactLaw";
+    EXPECT_EQ(value->number(), static_cast<int>(law.law)) << name;
     ContactModelDef model;
-    model.law = law;
+    model.law = law.law;
     proto::SnapshotContactModel message;
     fields::put_struct(model, fields::Scope<google::protobuf::Message>(&message));
-    EXPECT_EQ(message.law(), value);
+    EXPECT_EQ(message.law(), value->number());
     ContactModelDef back;
     fields::get_struct(back, fields::Scope<const google::protobuf::Message>(&message));
-    EXPECT_EQ(back.law, law);
+    EXPECT_EQ(back.law, law.law);
   }
 }
 

@@ -14,6 +14,7 @@
 #include "dem/io/earlier_run.h"
 #include "dem/io/snapshot_file.h"
 #include "dem/io/world_checks.h"
+#include "dem/law_traits.h"
 #include "dem/programme.h"
 #include "dem/world.h"
 #include "progress_line.h"
@@ -82,9 +83,8 @@ RunOutcome run_definition(io::CaseDefinitionT<Dim>& definition, const io::CaseSo
   }
   BasicWorld<Dim>& world = *built;
   RunHealth<Dim> health(world);
-  const bool hertz = std::ranges::any_of(definition.world.contact_models, [](const ContactModelDef& m) {
-    return m.law == ContactLaw::kHertzMindlin || m.law == ContactLaw::kHertzLinearTangential;
-  });
+  const bool hertz =
+      std::ranges::any_of(definition.world.contact_models, [](const ContactModelDef& m) { return is_hertz(m.law); });
   RunRecorder<Dim> recorder(options.output_directory, definition.output, world, hertz, resumed ? &*resumed : nullptr);
   RunCheckpoints<Dim> checkpoints(options.output_directory, options.checkpoints, digest, world.cycle_count());
   const io::SnapshotInfo info{definition.name, definition.description};
