@@ -39,6 +39,7 @@ TYPE_NAMES = {
     "dem_interfaces/Snapshot": "SnapshotArgs",
     "dem_interfaces/Parameter": "ParameterArgs",
     "dem_interfaces/Programme": "ProgrammeArgs",
+    "dem_interfaces/ProgrammeSteps": "ProgrammeStepsArgs",
 }
 
 # <Name>_Constants modules as C++ enums: the struct they belong to -> the

@@ -32,6 +32,7 @@ int exit_code(ProgrammeOutcome outcome) {
     case ProgrammeOutcome::kStopped:
       return kServerStopped;
     case ProgrammeOutcome::kRunning:
+    case ProgrammeOutcome::kPaused:  // a one-shot run never samples
     case ProgrammeOutcome::kFailed:
       break;
   }

@@ -13,6 +13,7 @@ ProgrammeRun::ProgrammeRun(RunPlan plan, const WorldSession& world, std::optiona
       stage_start_(world.cycle_count()),
       health_(world) {
   plan_.output_interval = std::max<std::uint64_t>(plan_.output_interval, 1);
+  last_stage_ = plan_.first;
   for (std::size_t i = plan_.first; i < plan_.first + plan_.count; ++i) total_ += plan_.programme.stage_cycles(i);
 }
 
@@ -24,9 +25,16 @@ void ProgrammeRun::begin_next_stage(WorldSession& world) {
 }
 
 std::uint64_t ProgrammeRun::cycles_to_next_stop(std::uint64_t cycle) const {
-  const std::uint64_t to_stop = stepper_->cycles_to_next_stop();
+  std::uint64_t to_stop = stepper_->cycles_to_next_stop();
+  if (plan_.sample_every > 0)
+    to_stop = std::min(to_stop, plan_.sample_every - stage_cycles(cycle) % plan_.sample_every);
   if (!plan_.of_case) return to_stop;
   return std::min(to_stop, plan_.output_interval - stage_cycles(cycle) % plan_.output_interval);
+}
+
+RunPosition ProgrammeRun::position(std::uint64_t cycle) const {
+  if (stage_running()) return {.stage = stage_, .stage_cycles = stage_cycles(cycle), .stage_ended = false};
+  return {.stage = last_stage_, .stage_cycles = last_result_.cycles_run, .stage_ended = next_ > plan_.first};
 }
 
 double ProgrammeRun::progress(double stage_fraction) const {
@@ -38,6 +46,7 @@ double ProgrammeRun::progress(double stage_fraction) const {
 StageResult ProgrammeRun::end_stage() {
   last_result_ = stepper_->result();
   last_result_.cycles_run += stage_done_;
+  last_stage_ = stage_;
   stepper_.reset();
   return last_result_;
 }
@@ -54,6 +63,10 @@ void ProgrammeRun::fail(std::string error) {
   if (outcome_ == ProgrammeOutcome::kFailed) return;
   outcome_ = ProgrammeOutcome::kFailed;
   reason_ = std::move(error);
+}
+
+void ProgrammeRun::pause() {
+  if (outcome_ == ProgrammeOutcome::kRunning) outcome_ = ProgrammeOutcome::kPaused;
 }
 
 void ProgrammeRun::complete() {

@@ -47,8 +47,9 @@ Simulation::Prepared prepared_case(const io::CaseDefinitionT<Dim>& definition, c
   prepared.contact_models = definition.world.contact_models;
   const WorldSession& world = *prepared.world;
   prepared.message = "loaded case " + prepared.case_name + " from " + source + ": " + std::to_string(Dim) + "D, " +
-                     std::to_string(world.particle_count()) + " particles, " + std::to_string(world.wall_count()) +
-                     " walls, time step " + format_value(world.time_step()) + " s";
+                     std::to_string(world.particle_count()) + " particles, " +
+                     std::to_string(wall_count(world.view())) + " walls, time step " + format_value(world.time_step()) +
+                     " s";
   return prepared;
 }
 
@@ -138,8 +139,8 @@ Simulation::Prepared Simulation::Preparer::prepare_snapshot(std::string_view byt
       const WorldSession& world = *prepared.world;
       prepared.message = "loaded snapshot of " + prepared.case_name + " from " + source + " at cycle " +
                          std::to_string(world.cycle_count()) + ": " + std::to_string(kDim) + "D, " +
-                         std::to_string(world.particle_count()) + " particles, " + std::to_string(world.wall_count()) +
-                         " walls";
+                         std::to_string(world.particle_count()) + " particles, " +
+                         std::to_string(wall_count(world.view())) + " walls";
       return prepared;
     };
     if (message.dimension() == 3) return restore(std::integral_constant<int, 3>{});
@@ -160,20 +161,20 @@ void Simulation::drop() {
 std::string Simulation::snapshot_bytes() const { return service::snapshot_bytes(world(), snapshot_info()); }
 
 WallId Simulation::find_wall(const std::string& name, std::int32_t id) const {
-  const WorldSession& w = world();
+  const WorldView w = world().view();
   std::string known;
-  for (int i = 0; i < w.wall_count(); ++i) known += (i == 0 ? "" : ", ") + w.wall_name(WallId{i});
+  for (int i = 0; i < wall_count(w); ++i) known += (i == 0 ? "" : ", ") + wall_name(w, WallId{i});
   if (!name.empty()) {
-    const WallId found = w.find_wall(name);
+    const WallId found = service::find_wall(w, name);
     if (found == kInvalidId) {
       throw CommandError(ReplyStatus::kNotFound, "no wall \"" + name + "\" (walls: " + known + ")");
     }
     return found;
   }
-  if (id < 0 || id >= w.wall_count()) {
+  if (id < 0 || id >= wall_count(w)) {
     throw CommandError(ReplyStatus::kNotFound, id < 0 ? "no wall given (walls: " + known + ")"
                                                       : "no wall with id " + std::to_string(id) + " (there are " +
-                                                            std::to_string(w.wall_count()) + " walls: " + known + ")");
+                                                            std::to_string(wall_count(w)) + " walls: " + known + ")");
   }
   return WallId{id};
 }
@@ -184,7 +185,7 @@ std::string Simulation::set_wall_velocity(const protocol::WallVelocityArgs& args
   world().set_wall_velocity(wall, args.twist.linear, args.twist.angular);
   const protocol::Vector3& v = args.twist.linear;
   const protocol::Vector3& w = args.twist.angular;
-  return "wall " + world().wall_name(wall) + " moves at (" + format_value(v.x) + ", " + format_value(v.y) +
+  return "wall " + wall_name(world().view(), wall) + " moves at (" + format_value(v.x) + ", " + format_value(v.y) +
          (dimension() == 3 ? ", " + format_value(v.z) + ") m/s, (" + format_value(w.x) + ", " + format_value(w.y) +
                                  ", " + format_value(w.z) + ")"
                            : ") m/s, " + format_value(w.z)) +
@@ -197,8 +198,8 @@ std::string Simulation::set_wall_servo(const protocol::WallServoArgs& args) {
   require(std::isfinite(args.gain) && args.gain >= 0.0, "the servo gain must be >= 0 (0: the server chooses)");
   require(std::isfinite(args.max_speed) && args.max_speed >= 0.0,
           "the servo's max speed must be >= 0 (0: the server chooses)");
-  const double area = world().wall_area(wall);
-  const std::optional<ServoLimits> defaults = world().default_servo_limits(wall, contact_models_);
+  const double area = wall_area(world().view(), wall);
+  const std::optional<ServoLimits> defaults = default_servo_limits(world().view(), wall, contact_models_);
   if ((args.gain == 0.0 || args.max_speed == 0.0) && !defaults) {
     throw CommandError(ReplyStatus::kBadRequest,
                        "give the servo's gain and max speed: the defaults need a linear contact law's stiffness");
@@ -213,8 +214,9 @@ std::string Simulation::set_wall_servo(const protocol::WallServoArgs& args) {
   } catch (const DefinitionError& error) {
     throw CommandError(ReplyStatus::kBadRequest, error.what());
   }
-  return "wall " + world().wall_name(wall) + " servo-controlled to " + format_value(args.target_stress) + " Pa (gain " +
-         format_value(servo.gain * area) + " m/(Pa s), at most " + format_value(servo.max_speed) + " m/s)";
+  return "wall " + wall_name(world().view(), wall) + " servo-controlled to " + format_value(args.target_stress) +
+         " Pa (gain " + format_value(servo.gain * area) + " m/(Pa s), at most " + format_value(servo.max_speed) +
+         " m/s)";
 }
 
 namespace {
@@ -222,9 +224,9 @@ namespace {
 // Damping moves the critical step (the dashpots shorten it); a damping
 // that would leave the step above it is refused, and stays as it was.
 std::string set_damping_keeping_a_stable_step(WorldSession& w, const DampingDef& damping, const std::string& name) {
-  const DampingDef before = w.damping();
+  const DampingDef before = service::damping(w.view());
   w.set_damping(damping);
-  const double critical = w.critical_time_step();
+  const double critical = critical_time_step(w.view());
   if (w.time_step() > critical * (1.0 + 1e-9)) {
     w.set_damping(before);
     throw CommandError(ReplyStatus::kBadRequest,
@@ -233,6 +235,23 @@ std::string set_damping_keeping_a_stable_step(WorldSession& w, const DampingDef&
                            " s: central differences would be unstable; set a smaller time_step_fraction first");
   }
   return "; time step " + format_value(w.time_step()) + " s, critical step " + format_value(critical) + " s";
+}
+
+// A fraction of the undamped critical step whose step the damping leaves
+// above the critical one is refused, naming the largest that is not.
+std::string set_stable_time_step_fraction(WorldSession& w, double fraction) {
+  require(fraction > 0.0 && fraction <= 1.0, "time_step_fraction must be in (0, 1]");
+  const double critical = critical_time_step(w.view());
+  const double undamped = undamped_critical_time_step(w.view());
+  const double step = fraction * undamped;
+  require(step <= critical * (1.0 + 1e-9),
+          "time_step_fraction: " + format_value(fraction) + " gives " + format_value(step) +
+              " s, above the critical step " + format_value(critical) +
+              " s with the damping: central differences would be unstable; use at most " +
+              format_value(critical / undamped));
+  w.set_time_step_fraction(fraction);
+  return "time step now " + format_value(w.time_step()) + " s (" + format_value(fraction) +
+         " of the undamped critical step; the critical step is " + format_value(critical) + " s)";
 }
 
 }  // namespace
@@ -245,33 +264,22 @@ std::string Simulation::set_parameter(const protocol::ParameterArgs& args) {
   try {
     if (name == "contact_damping" || name == "global_damping") {
       require(args.value >= 0.0, name + " must be >= 0");
-      DampingDef damping = w.damping();
+      DampingDef damping = service::damping(w.view());
       (name == "contact_damping" ? damping.contact_beta : damping.global_alpha) = args.value;
       const std::string step = set_damping_keeping_a_stable_step(w, damping, name);
       return name + " set to " + format_value(args.value) + (name == "contact_damping" ? " s" : " 1/s") + step;
     }
     if (name == "local_damping") {
       require(args.value >= 0.0 && args.value < 1.0, "local_damping must be in [0, 1)");
-      DampingDef damping = w.damping();
+      DampingDef damping = service::damping(w.view());
       damping.local_alpha = args.value;
       const std::string step = set_damping_keeping_a_stable_step(w, damping, name);
       return "local_damping set to " + format_value(args.value) + step;
     }
-    if (name == "time_step_fraction") {
-      require(args.value > 0.0 && args.value <= 1.0, "time_step_fraction must be in (0, 1]");
-      const double step = args.value * w.undamped_critical_time_step();
-      require(step <= w.critical_time_step() * (1.0 + 1e-9),
-              "time_step_fraction: " + format_value(args.value) + " gives " + format_value(step) +
-                  " s, above the critical step " + format_value(w.critical_time_step()) +
-                  " s with the damping: central differences would be unstable; use at most " +
-                  format_value(w.critical_time_step() / w.undamped_critical_time_step()));
-      w.set_time_step_fraction(args.value);
-      return "time step now " + format_value(w.time_step()) + " s (" + format_value(args.value) +
-             " of the undamped critical step; the critical step is " + format_value(w.critical_time_step()) + " s)";
-    }
+    if (name == "time_step_fraction") return set_stable_time_step_fraction(w, args.value);
     if (name == "friction") {
       require(args.value >= 0.0, "friction must be >= 0");
-      const auto& materials = w.materials();
+      const auto& materials = service::materials(w.view());
       std::string known;
       for (std::size_t i = 0; i < materials.size(); ++i) {
         if (materials[i].name == args.material) {
@@ -311,7 +319,7 @@ std::vector<protocol::ContactEntry> Simulation::query_contacts(const protocol::C
     require(std::isfinite(*args.min_normal_force), "the force threshold must be finite");
     filter.min_normal_force = args.min_normal_force;
   }
-  std::vector<protocol::ContactEntry> contacts = world().query_contacts(filter);
+  std::vector<protocol::ContactEntry> contacts = service::query_contacts(world().view(), filter);
   if (contacts.size() > max_query_contacts_) {
     throw CommandError(ReplyStatus::kBadRequest,
                        "the query matches " + std::to_string(contacts.size()) + " contacts, more than the " +

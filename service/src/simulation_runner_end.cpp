@@ -17,8 +17,11 @@ void SimulationRunner::end_run() {
   ProgrammeRun& run = *run_;
   run.mark_over();
   const std::uint64_t cycles_run = run.done(simulation_.world());  // before a failed run's world goes back
+  const RunPosition position = run.position(simulation_.world().cycle_count());
   if (run.outcome() == ProgrammeOutcome::kFailed) {
     message_ = failure_message();
+  } else if (run.outcome() == ProgrammeOutcome::kPaused) {
+    message_ = pause_message(position);
   } else if (run.of_case()) {
     message_ = programme_end_message();  // which fails the run when its snapshot cannot be written
   } else {
@@ -26,28 +29,48 @@ void SimulationRunner::end_run() {
   }
   const ProgrammeOutcome outcome = run.outcome();
   lifecycle_.take(outcome == ProgrammeOutcome::kFailed ? Transition::kFailRun : Transition::kEndRun);
-  const auto level = outcome == ProgrammeOutcome::kCompleted ? spdlog::level::info
-                     : outcome == ProgrammeOutcome::kStopped ? spdlog::level::warn
-                                                             : spdlog::level::err;
-  // A command's end is in its reply's log line; a failure is said here too.
-  if (run.of_case() || outcome == ProgrammeOutcome::kFailed) spdlog::log(level, "{}", message_);
+  const auto level = outcome == ProgrammeOutcome::kStopped  ? spdlog::level::warn
+                     : outcome == ProgrammeOutcome::kFailed ? spdlog::level::err
+                                                            : spdlog::level::info;
+  // A command's end is in its reply's log line; a failure is said here too,
+  // and a programme's end unless it merely paused at a sample.
+  if ((run.of_case() && outcome != ProgrammeOutcome::kPaused) || outcome == ProgrammeOutcome::kFailed) {
+    spdlog::log(level, "{}", message_);
+  }
   drop_lost_world();
   if (!run.command()) {
     publish_status();  // the one-shot mode: the server ends with it
     return;
   }
-  protocol::Reply reply;
-  reply.status = outcome == ProgrammeOutcome::kCompleted ? ReplyStatus::kOk
-                 : outcome == ProgrammeOutcome::kStopped ? ReplyStatus::kCancelled
-                                                         : ReplyStatus::kFailed;
-  reply.message = message_;
-  reply.cycles_run = cycles_run;
-  reply.condition_met = run.last_result().condition_met;
+  protocol::Reply reply = run_reply(outcome, cycles_run, position);
   const ReceivedCommand received = *run.command();
   if (run.of_case()) checkpoints_.end_programme(simulation_.loaded() ? simulation_.world().cycle_count() : 0);
   run_.reset();  // cycle and run_until record the tables at the telemetry interval again
   announce();    // before the reply: who reads it sees the run ended
   send(received, std::move(reply));
+}
+
+protocol::Reply SimulationRunner::run_reply(ProgrammeOutcome outcome, std::uint64_t cycles_run,
+                                            const RunPosition& position) const {
+  protocol::Reply reply;
+  reply.status = outcome == ProgrammeOutcome::kStopped  ? ReplyStatus::kCancelled
+                 : outcome == ProgrammeOutcome::kFailed ? ReplyStatus::kFailed
+                                                        : ReplyStatus::kOk;
+  reply.message = message_;
+  reply.cycles_run = cycles_run;
+  reply.condition_met = run_->last_result().condition_met;
+  if (run_->of_case()) {
+    reply.stage = static_cast<std::uint32_t>(position.stage + 1);
+    reply.stage_cycles = position.stage_cycles;
+    reply.stage_ended = position.stage_ended;
+  }
+  return reply;
+}
+
+std::string SimulationRunner::pause_message(const RunPosition& position) const {
+  return "programme paused at cycle " + std::to_string(simulation_.world().cycle_count()) + ", " +
+         std::to_string(position.stage_cycles) + " cycles into " + stage_label(position.stage) +
+         (position.stage_ended ? ", which ended there" : "");
 }
 
 // The state at a failure is not good: the last one known to be is written

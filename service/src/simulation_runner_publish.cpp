@@ -29,7 +29,7 @@ protocol::Status SimulationRunner::status() const {
     s.case_name = simulation_.case_name();
     s.dimension = simulation_.dimension();
     s.particles = world.particle_count();
-    s.walls = world.wall_count();
+    s.walls = wall_count(world.view());
     s.cycle = world.cycle_count();
     s.time = world.time();
     s.time_step = world.time_step();
@@ -86,8 +86,8 @@ const SimulationRunner::Readout& SimulationRunner::readout() const {
     readout.plates.server = options_.name;
     readout.plates.cycle = world.cycle_count();
     readout.plates.time = world.time();
-    readout.plates.walls = world.read_walls();
-    readout.stats = world.read_contact_stats();
+    readout.plates.walls = read_walls(world.view());
+    readout.stats = read_contact_stats(world.view());
     readout.stats.server = options_.name;
     readout.stats.cycle = world.cycle_count();
     readout.stats.time = world.time();

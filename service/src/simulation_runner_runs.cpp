@@ -43,6 +43,37 @@ StopConditions run_until_conditions(const protocol::RunUntilArgs& until, const S
   return conditions;
 }
 
+std::string stage_named(const CaseProgramme& programme, std::size_t stage) {
+  const std::string& name = programme.stage_name(stage);
+  return "stage " + std::to_string(stage + 1) + (name.empty() ? std::string() : " (\"" + name + "\")");
+}
+
+// run_programme in steps: a run resumes, and returns to sample, only where
+// the stages go on as if never interrupted - before a stage's end, and in a
+// stage with stop conditions on one of its checks (counted from its start).
+void check_steps(const protocol::ProgrammeStepsArgs& steps, const CaseProgramme& programme, std::size_t first,
+                 std::size_t count) {
+  const auto check_interval = [&](std::size_t stage) -> std::uint64_t {
+    const StopConditions& until = programme.stage_until(stage);
+    return has_stop_condition(until) ? std::max<std::uint64_t>(until.check_interval, 1) : 1;
+  };
+  const std::uint64_t done = steps.stage_cycles_done;
+  require_argument(steps.resume || done == 0, "stage_cycles_done is for a resumed run: set resume");
+  require_argument(done == 0 || done < programme.stage_cycles(first),
+                   stage_named(programme, first) + " runs at most " + std::to_string(programme.stage_cycles(first)) +
+                       " cycles: it cannot be resumed after " + std::to_string(done));
+  require_argument(done % check_interval(first) == 0,
+                   stage_named(programme, first) + " resumes only on one of its condition checks, every " +
+                       std::to_string(check_interval(first)) + " cycles, not after " + std::to_string(done));
+  if (steps.sample_every == 0) return;
+  for (std::size_t stage = first; stage < first + count; ++stage) {
+    require_argument(steps.sample_every % check_interval(stage) == 0,
+                     "sample_every " + std::to_string(steps.sample_every) + " is not a multiple of " +
+                         stage_named(programme, stage) + "'s condition check interval, " +
+                         std::to_string(check_interval(stage)) + " cycles: a run returns only where it resumes");
+  }
+}
+
 }  // namespace
 
 // --- starting runs -----------------------------------------------------------
@@ -96,8 +127,13 @@ void SimulationRunner::run_programme(const ReceivedCommand& received) {
                                                      std::to_string(stages) + " of " + simulation_.case_name());
   }
   const std::size_t count = args.stage_count == 0 ? stages - first : args.stage_count;
-  start(case_plan(first, count), &received, "programme of " + std::to_string(count) + " stages running");
-  record_row();
+  const protocol::ProgrammeStepsArgs& steps = received.command.programme_steps;
+  check_steps(steps, simulation_.programme(), first, count);
+  RunPlan plan = case_plan(first, count, steps.resume ? steps.stage_cycles_done : 0);
+  plan.sample_every = steps.sample_every;
+  plan.stage_ends = steps.stage_ends;
+  start(std::move(plan), &received, "programme of " + std::to_string(count) + " stages running");
+  if (!steps.resume) record_row();  // a resumed run's series has its rows up to here
 }
 
 RunPlan SimulationRunner::case_plan(std::size_t first, std::size_t count, std::uint64_t first_done) const {

@@ -58,13 +58,27 @@ void SimulationRunner::run_chunk() {
   }
   if (schedule_.due(world.cycle_count(), world.time())) publish_telemetry();
   if (!stage.check()) {
+    if (run.sample_due(world.cycle_count())) return pause_run();
     checkpoint_if_due();
     refresh_cache();
     return;
   }
   if (run_unhealthy(true)) return;
   end_stage();
-  if (!run.ending() && !run.stages_left()) run.complete();
+  if (run.ending()) return;
+  if (!run.stages_left()) {
+    run.complete();
+  } else if (run.pauses()) {
+    run.pause();  // its client learns each stage's result
+  }
+}
+
+// A sample point: the run returns with the world as it is here, for its
+// client to read, and a run_programme that resumes it goes on as if never
+// interrupted. Only a healthy state is handed over.
+void SimulationRunner::pause_run() {
+  if (run_unhealthy(true)) return;
+  run_->pause();
 }
 
 bool SimulationRunner::run_unhealthy(bool always) {

@@ -87,15 +87,15 @@ StageProgress stage_progress(const std::vector<StageDefT<Dim>>& stages, std::siz
 std::string conditions_reached(const StopConditions& until, const WorldSession& world) {
   std::vector<std::string> held;
   if (until.wall_stress_above) {
-    const protocol::WallForce plate = world.read_wall(until.wall_stress_above->wall);
+    const protocol::WallForce plate = read_wall(world.view(), until.wall_stress_above->wall);
     held.push_back("the stress on " + plate.name + " reached " + format_value(plate.normal_stress) + " Pa");
   }
   if (until.wall_settlement_above) {
-    const protocol::WallForce plate = world.read_wall(until.wall_settlement_above->wall);
+    const protocol::WallForce plate = read_wall(world.view(), until.wall_settlement_above->wall);
     held.push_back("the settlement of " + plate.name + " reached " + format_value(plate.settlement) + " m");
   }
   if (until.kinetic_energy_below) {
-    held.push_back("the kinetic energy fell to " + format_value(world.kinetic_energy()) + " J");
+    held.push_back("the kinetic energy fell to " + format_value(kinetic_energy(world.view())) + " J");
   }
   std::string text;
   for (const std::string& part : held) text += (text.empty() ? "" : " and ") + part;

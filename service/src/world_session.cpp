@@ -50,31 +50,14 @@ class WorldSessionT final : public WorldSession {
   std::uint64_t cycle_count() const override { return world_.cycle_count(); }
   double time() const override { return world_.time(); }
   double time_step() const override { return world_.time_step(); }
-  double critical_time_step() const override { return world_.critical_time_step(); }
-  double undamped_critical_time_step() const override { return world_.undamped_critical_time_step(); }
   int particle_count() const override { return world_.particle_count(); }
-  int wall_count() const override { return world_.wall_count(); }
   std::uint64_t state_hash() const override { return world_.state_hash(); }
-  double kinetic_energy() const override { return world_.assembly_measures().kinetic_energy; }
   bool motion_suspect() const override { return health_.motion_suspect(world_); }
   StepHealth assess_health() override { return health_.assess(world_); }
 
-  WallId find_wall(std::string_view name) const override { return world_.find_wall(name); }
-  std::string wall_name(WallId wall) const override { return world_.wall(wall).name; }
-  double wall_area(WallId wall) const override { return world_.wall_area(wall); }
-  protocol::WallForce read_wall(WallId wall) const override { return service::read_wall(world_, wall); }
-  std::vector<protocol::WallForce> read_walls() const override { return service::read_walls(world_); }
-  protocol::ContactStats read_contact_stats() const override { return service::read_contact_stats(world_); }
   std::optional<protocol::RegionTelemetry> read_regions() const override {
     if (regions_.empty()) return std::nullopt;
     return service::read_regions(world_, regions_);
-  }
-  std::vector<protocol::ContactEntry> query_contacts(const ContactFilter& filter) const override {
-    return service::query_contacts(world_, filter);
-  }
-  std::optional<ServoLimits> default_servo_limits(WallId wall,
-                                                  const std::vector<ContactModelDef>& models) const override {
-    return service::default_servo_limits(world_, wall, models);
   }
 
   void set_wall_velocity(WallId wall, const protocol::Vector3& velocity,
@@ -89,10 +72,8 @@ class WorldSessionT final : public WorldSession {
     motion.servo = servo;
     world_.set_wall_motion(wall, motion);
   }
-  DampingDef damping() const override { return world_.damping(); }
   void set_damping(const DampingDef& damping) override { world_.set_damping(damping); }
   void set_time_step_fraction(double fraction) override { world_.set_time_step_fraction(fraction); }
-  const std::vector<MaterialDef>& materials() const override { return world_.materials(); }
   void set_friction(MaterialId material, double friction) override { world_.set_friction(material, friction); }
   void set_gravity(const protocol::Vector3& gravity) override {
     world_.set_gravity(vector_of(gravity, kDim, "gravity"));
@@ -113,12 +94,6 @@ class WorldSessionT final : public WorldSession {
 
   std::unique_ptr<StageStepper> begin_stage(AnyStageDef stage) override {
     return std::make_unique<StageStepperT<Dim>>(world_, std::get<StageDefT<Dim>>(std::move(stage)));
-  }
-  std::unique_ptr<StageStepper> begin_run(std::uint64_t cycles, const StopConditions& until) override {
-    StageDefT<Dim> stage;
-    stage.cycles = cycles;
-    stage.until = until;
-    return std::make_unique<StageStepperT<Dim>>(world_, std::move(stage));
   }
 
  private:

@@ -7,13 +7,13 @@ namespace dem::service {
 namespace {
 
 AnyWorldSnapshot snapshot_of(const WorldSession& world) {
-  return std::visit([](const auto* w) { return AnyWorldSnapshot(w->snapshot()); }, world.view());
+  return on_world(world.view(), [](const auto& w) { return AnyWorldSnapshot(w.snapshot()); });
 }
 
 }  // namespace
 
 std::string snapshot_bytes(const WorldSession& world, const io::SnapshotInfo& info) {
-  return std::visit([&](const auto* w) { return io::serialize_snapshot(w->snapshot(), info); }, world.view());
+  return on_world(world.view(), [&](const auto& w) { return io::serialize_snapshot(w.snapshot(), info); });
 }
 
 void restore_bytes(WorldSession& world, std::string_view bytes, const std::string& source) {

@@ -38,7 +38,7 @@ dem::service::CommandLimits command_limits() {
 
 // A few cycles as the server runs them: a one-stage programme of the engine's.
 void cycle(dem::service::WorldSession& world, std::uint64_t cycles) {
-  const auto run = world.begin_run(cycles, {});
+  const auto run = dem::service::CaseProgramme::one_stage(world.dimension(), cycles, {}).begin_stage(0, world);
   run->cycle(run->cycles_to_next_stop());
 }
 

@@ -116,6 +116,10 @@ int main() {
   c.parameter.material = "disc";
   c.parameter.value = 0.3;
   write(commands / "set_parameter.cdr", protocol::encode_command(c));
+  c = command(CommandKind::kRunProgramme);
+  c.programme = {2, 1};
+  c.programme_steps = {.sample_every = 10, .stage_ends = true, .resume = true, .stage_cycles_done = 20};
+  write(commands / "run_programme_steps.cdr", protocol::encode_command(c));
   for (const auto kind :
        {CommandKind::kStop, CommandKind::kGetState, CommandKind::kShutdown, CommandKind::kRunProgramme}) {
     write(commands / (std::string(protocol::to_string(kind)) + ".cdr"), protocol::encode_command(command(kind)));

@@ -22,7 +22,7 @@ DOMAINS = {
     "errors_timeouts_and_interrupts": 165,
     "errors_no_server": 166,
     "experiment_nine_disc": 167,
-    "experiment_programme_refusals": 168,
+    "experiment_programme_steps": 168,
     "experiment_one_shot_compression": 172,
     "experiment_server_programme": 173,
     "telemetry_iteration": 169,

@@ -1,6 +1,6 @@
 """A whole small experiment from Python: Cundall & Strack's nine-disc test
-(damped, Figs. 5-6) run through dem_server stage by stage with
-dem.run_programme, the force at contact C read every 10 cycles - and every
+(damped, Figs. 5-6) run by dem_server's programme (dem.run_programme), paused
+every 10 cycles to read the force at contact C - and every
 value equal to the probe dem_run writes running the same case in-process."""
 
 import csv
@@ -69,32 +69,45 @@ def test_nine_disc_through_the_service_equals_dem_run(serve, out):
     assert (out / "fig6.png").stat().st_size > 10000
 
 
-def test_a_stage_the_service_cannot_run_is_refused_by_name(serve):
-    client = serve("experiment_programme_refusals")
-    case = dem.cases.load_case_file(case_file("nine_disc_damped"))
-    client.load_case(case)
-    stage = case.stage.add(name="rotating damping", cycles=10)
-    stage.damping.global_alpha_rotation = 1.0
-    with pytest.raises(dem.ProgrammeError, match='stage 2 \\("rotating damping"\\) sets damping.global_alpha_rotation'):
-        dem.run_programme(client, case)
-    assert client.status.cycle == 0, "nothing ran: the stages are checked first"
-    if "trim" in dem.cases.Stage.DESCRIPTOR.fields_by_name:
-        case.stage[2].ClearField("damping")
-        case.stage[2].trim.height = 1.0
-        with pytest.raises(dem.ProgrammeError, match="trims the sample"):
-            dem.run_programme(client, case)
+def test_the_programme_in_steps_trims_places_the_plate_and_samples_at_exact_cycles(serve):
+    """Miyata's reduced case CS through dem.run_programme: the stages that
+    trim the sample and place the plate run on the server like any other,
+    sampled every 1000 cycles of a stage; bad steps are refused by name."""
+    client = serve("experiment_programme_steps")
+    case = dem.cases.load_case_file(CASES / "miyata" / "cs_reduced.case.txtpb")
+    before = client.load_case(case).state.particles
+    with pytest.raises(dem.ServerError, match="sample_every 150 is not a multiple of stage 1 .*check interval, 100"):
+        dem.run_programme(client, case, sample_every=150)
+    with pytest.raises(dem.ProgrammeError, match="not consecutive"):
+        dem.run_programme(client, case, stages=[0, 2])
+    assert client.state().state.cycle == 0, "nothing ran"
+
+    samples = []
+    outcomes = dem.run_programme(client, case, stages=[0, 1], sample_every=1000,
+                                 on_sample=lambda stage, cycle: samples.append((stage, cycle)))
+    assert [o.name for o in outcomes] == ["settle", "trim and settle"]
+    assert all(o.condition_met and o.cycles_run % 100 == 0 for o in outcomes), outcomes
+    settled = outcomes[0].cycles_run
+    assert samples == [(0, c) for c in range(1000, settled + 1, 1000)] + \
+        [(1, settled + c) for c in range(1000, outcomes[1].cycles_run + 1, 1000)]
+    assert client.state().state.cycle == settled + outcomes[1].cycles_run
+    assert client.state().state.particles < before, "the trim removed particles"
+
+    loaded = dem.run_programme(client, case, stages=[2])
+    top = next(w for w in client.state().plates.walls if w.name == "top")
+    assert loaded[0].condition_met and loaded[0].cycles_run > 0
+    assert 900e3 <= top.normal_stress < 950e3  # the stage's stop condition (Miyata 3.2: 900 kPa)
 
 
 def test_the_server_runs_a_programme_that_trims_and_places_the_plate(serve):
-    """Miyata's reduced case CS through the run_programme command: the stages
-    dem.run_programme cannot send (trim, place the plate) run on the server."""
+    """Miyata's reduced case CS through the run_programme command, stage
+    ranges of the loaded case in one command each."""
     client = serve("experiment_server_programme")
     case = dem.cases.load_case_file(CASES / "miyata" / "cs_reduced.case.txtpb")
     client.load_case(case)
-    with pytest.raises(dem.ProgrammeError, match="Client.run_programme runs the stages on the server"):
-        dem.run_programme(client, case)
     prepared = client.run_programme(first_stage=1, stage_count=2, timeout=120)
     assert prepared.cycles_run > 0 and prepared.state.state == "loaded"  # the reply's status: the latest published may lag
+    assert (prepared.stage, prepared.stage_ended) == (2, True)
     loaded = client.run_programme(first_stage=3, timeout=120)
     top = next(w for w in client.state().plates.walls if w.name == "top")
     assert loaded.cycles_run > 0

@@ -23,7 +23,7 @@ wait "$server" || fail "dem_server exited $?"
 trap - EXIT
 log="$out/dem_server.log"
 warned() { grep -F "[warning]" "$log" | grep -qF -- "$1" || fail "the server's log lacks a warning: $1"; }
-warned "rt/dem/older/command: a writer of Command built from dem_interfaces 0.1.0 as of 0308f76, whose Command lacks force, query.particle_set, query.particle: its samples cannot be read by this server (dem_interfaces 0.2.0) and are dropped; rebuild it from dem_interfaces 0.2.0"
+warned "rt/dem/older/command: a writer of Command built from dem_interfaces 0.1.0 as of 0308f76, whose Command lacks force, programme_steps, query.particle_set, query.particle: its samples cannot be read by this server (dem_interfaces 0.3.0) and are dropped; rebuild it from dem_interfaces 0.3.0"
 warned "rt/dem/older/reply: a reader of Reply built from dem_interfaces 0.1.0 as of 0308f76 to 0ff9d3e"
 if grep -E "rt/dem/older/(status|plate_forces):" "$log" | grep -q "built from"; then
   fail "the server reported the node's Status or PlateForces readers, which meet"

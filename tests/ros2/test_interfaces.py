@@ -160,9 +160,9 @@ def test_the_recorded_history_holds_this_wire_as_this_version():
 
 def test_a_field_appended_to_telemetry_needs_a_version_and_is_judged(tmp_path):
     # What appending to ContactStats means: the check fails until the
-    # version is bumped and recorded; then a 0.2.0 reader of ContactStats
+    # version is bumped and recorded; then a 0.3.0 reader of ContactStats
     # still reads the new samples (the fields are at its end), while Reply,
-    # which embeds ContactStats before other fields, no longer meets 0.2.0.
+    # which embeds ContactStats before other fields, no longer meets 0.3.0.
     idl = tmp_path / "idl"
     idl.mkdir()
     for path in (SOURCE / "idl" / "dem").glob("*.idl"):
@@ -179,12 +179,12 @@ def test_a_field_appended_to_telemetry_needs_a_version_and_is_judged(tmp_path):
 
     unchanged_version = generate("--check", "--history", history, "--package-xml", package, idl_dir=idl)
     assert unchanged_version.returncode == 1
-    assert "the wire changed (ContactStats, Reply) while the interface version stayed 0.2.0: bump <version>" in \
+    assert "the wire changed (ContactStats, Reply) while the interface version stayed 0.3.0: bump <version>" in \
         unchanged_version.stdout
 
-    package.write_text(package.read_text().replace("<version>0.2.0</version>", "<version>0.3.0</version>"))
+    package.write_text(package.read_text().replace("<version>0.3.0</version>", "<version>0.4.0</version>"))
     unrecorded = generate("--check", "--history", history, "--package-xml", package, idl_dir=idl)
-    assert unrecorded.returncode == 1 and "dem_interfaces 0.3.0 (package.xml) is not in the interface history" in \
+    assert unrecorded.returncode == 1 and "dem_interfaces 0.4.0 (package.xml) is not in the interface history" in \
         unrecorded.stdout
     assert generate("--record", "--history", history, "--package-xml", package, idl_dir=idl).returncode == 0
     assert generate("--check", "--history", history, "--package-xml", package, idl_dir=idl).returncode == 0
@@ -192,10 +192,10 @@ def test_a_field_appended_to_telemetry_needs_a_version_and_is_judged(tmp_path):
     header = tmp_path / "interface_version.h"
     assert generate("--cpp-interface", header, "--history", history, "--package-xml", package,
                     idl_dir=idl).returncode == 0
-    forms = [line for line in header.read_text().splitlines() if '"0.1.0' in line or '"0.2.0' in line]
-    stats = [line for line in forms if "ContactStats_" in line and '"0.2.0"' in line]
+    forms = [line for line in header.read_text().splitlines() if '"0.1.0' in line or '0.3.0"' in line]
+    stats = [line for line in forms if "ContactStats_" in line and '0.3.0"' in line]
     assert stats and stats[0].endswith('"lacks coordination_without_rattlers", true, false},'), forms
-    reply = [line for line in forms if "Reply_" in line and '"0.2.0"' in line]
+    reply = [line for line in forms if "Reply_" in line and '0.3.0"' in line]
     assert reply and reply[0].endswith('"lacks stats.coordination_without_rattlers", false, false},'), forms
 
 

@@ -126,6 +126,9 @@ enum ReliabilityRoundTwoLaterDomain : std::uint32_t {
   kLastRoundTwoLaterDomain
 };
 static_assert(kLastRoundTwoLaterDomain <= 180, "issue 37's later tests take 175-179 (180 on belong to others)");
+// Issue 35's: 228 to 232.
+enum SessionsDomain : std::uint32_t { kProgrammeSteps = 228, kLastSessionsDomain };
+static_assert(kLastSessionsDomain <= 233, "issue 35's tests take 228-232 (Cyclone's domains end at 232)");
 
 // Issue 37's reply tests: 143 to 149 (a domain above 232 has no ports:
 // Cyclone's port of domain d is 7400 + 250 d).

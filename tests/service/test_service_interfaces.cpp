@@ -84,8 +84,9 @@ TEST(Interfaces, AServerLogsAClientOfAnOlderInterfaceWhenDiscoveryFindsIt) {
                  user_data_of_010("dem_interfaces::msg::dds_::Command_", "0.1.0 as of 0308f76"), true);
     const std::string expected =
         "rt/dem/wire/command: a writer of Command built from dem_interfaces 0.1.0 as of 0308f76, whose Command lacks "
-        "force, query.particle_set, query.particle: its samples cannot be read by this server (dem_interfaces "
-        "0.2.0) and are dropped; rebuild it from dem_interfaces 0.2.0";
+        "force, programme_steps, query.particle_set, query.particle: its samples cannot be read by this server "
+        "(dem_interfaces "
+        "0.3.0) and are dropped; rebuild it from dem_interfaces 0.3.0";
     EXPECT_TRUE(eventually([&] { return warned(expected); }, 10s));
     dds_delete(writer);
   }
@@ -121,10 +122,12 @@ TEST(Interfaces, AClientIsToldAtConnectionThatTheServerIsOfAnOlderInterface) {
     const std::string text = error.what();
     std::printf("%s\n", text.c_str());
     EXPECT_TRUE(text.starts_with("server \"old\" cannot meet this client: ")) << text;
-    EXPECT_NE(text.find("rt/dem/old/command: a reader of Command built from dem_interfaces 0.1.0 as of 0308f76, whose "
-                        "Command lacks force, query.particle_set, query.particle: it cannot read the samples of "
-                        "this client (dem_interfaces 0.2.0)"),
-              std::string::npos)
+    EXPECT_NE(
+        text.find(
+            "rt/dem/old/command: a reader of Command built from dem_interfaces 0.1.0 as of 0308f76, whose "
+            "Command lacks force, programme_steps, query.particle_set, query.particle: it cannot read the samples of "
+            "this client (dem_interfaces 0.3.0)"),
+        std::string::npos)
         << text;
     EXPECT_NE(text.find("rt/dem/old/reply: a writer of Reply built from dem_interfaces 0.1.0"), std::string::npos)
         << text;

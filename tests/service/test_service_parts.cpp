@@ -188,8 +188,8 @@ struct CommandStage {
 TEST(CommandStage, ReachesAStressFromBelowAtItsChecks) {
   const auto session = service::make_session(compressed_nine_discs());
   service::WorldSession& world = *session;
-  const WallId top = world.find_wall("top");
-  const double stress = world.read_wall(top).normal_stress;
+  const WallId top = service::find_wall(world.view(), "top");
+  const double stress = service::read_wall(world.view(), top).normal_stress;
   ASSERT_GT(stress, 0.0);
   StopConditions loading;  // the top wall presses down: its stress rises
   loading.wall_stress_above = WallThreshold{top, 1.5 * stress};
@@ -199,10 +199,11 @@ TEST(CommandStage, ReachesAStressFromBelowAtItsChecks) {
   EXPECT_EQ(run.stepper->cycles_to_next_stop(), 5u);
   run.run_to_end();
   const StageResult& result = run.stepper->result();
-  std::printf("stress %.4g Pa -> %.4g Pa (target %.4g) after %llu cycles\n", stress, world.read_wall(top).normal_stress,
-              1.5 * stress, static_cast<unsigned long long>(result.cycles_run));
+  std::printf("stress %.4g Pa -> %.4g Pa (target %.4g) after %llu cycles\n", stress,
+              service::read_wall(world.view(), top).normal_stress, 1.5 * stress,
+              static_cast<unsigned long long>(result.cycles_run));
   EXPECT_TRUE(result.condition_met);
-  EXPECT_GE(world.read_wall(top).normal_stress, 1.5 * stress);
+  EXPECT_GE(service::read_wall(world.view(), top).normal_stress, 1.5 * stress);
   const std::string reached = service::conditions_reached(run.programme.stage_until(0), world);
   EXPECT_NE(reached.find("the stress on top reached"), std::string::npos) << reached;
   EXPECT_EQ(result.cycles_run % 5, 0u);
@@ -213,9 +214,9 @@ TEST(CommandStage, ReachesAStressFromBelowAtItsChecks) {
 TEST(CommandStage, ATargetAlreadyPassedEndsAtTheFirstCheck) {
   const auto session = service::make_session(compressed_nine_discs());
   service::WorldSession& world = *session;
-  const WallId top = world.find_wall("top");
+  const WallId top = service::find_wall(world.view(), "top");
   StopConditions until;
-  until.wall_stress_above = WallThreshold{top, 0.5 * world.read_wall(top).normal_stress};
+  until.wall_stress_above = WallThreshold{top, 0.5 * service::read_wall(world.view(), top).normal_stress};
   until.check_interval = 5;
   CommandStage run(world, 1000, until);
   run.stepper->cycle(5);
@@ -230,9 +231,9 @@ TEST(CommandStage, ATargetAlreadyPassedEndsAtTheFirstCheck) {
 TEST(CommandStage, EndsOnlyWhenEveryConditionHolds) {
   const auto session = service::make_session(compressed_nine_discs());
   service::WorldSession& world = *session;
-  const WallId top = world.find_wall("top");
+  const WallId top = service::find_wall(world.view(), "top");
   StopConditions until;
-  until.wall_stress_above = WallThreshold{top, 0.5 * world.read_wall(top).normal_stress};
+  until.wall_stress_above = WallThreshold{top, 0.5 * service::read_wall(world.view(), top).normal_stress};
   until.kinetic_energy_below = 0.0;  // never: the energy is not negative
   until.check_interval = 5;
   CommandStage run(world, 20, until);
@@ -375,17 +376,17 @@ TEST(Simulation, ChecksArgumentsAndChangesNothingWhenTheyAreWrong) {
             ReplyStatus::kBadRequest);
   EXPECT_EQ(status_of([&] { simulation.set_parameter({"viscosity", "", 1.0, {}}); }), ReplyStatus::kNotFound);
   EXPECT_EQ(world.state_hash(), hash);
-  EXPECT_EQ(world.damping().contact_beta, 0.01);
+  EXPECT_EQ(service::damping(world.view()).contact_beta, 0.01);
   EXPECT_EQ(status_of([&] { simulation.set_parameter({"global_damping", "", 3.0, {}}); }), ReplyStatus::kOk);
-  EXPECT_EQ(world.damping().global_alpha, 3.0);
+  EXPECT_EQ(service::damping(world.view()).global_alpha, 3.0);
   EXPECT_EQ(status_of([&] { simulation.set_wall_servo({"top", -1, 1e6, 0.0, 0.0}); }), ReplyStatus::kOk);
   // The servo holds the top wall at 1e6 Pa over its 400 length: it moves in
   // until it does (2000 cycles, a one-stage programme as a cycle command runs).
-  const auto run = world.begin_run(2000, {});
+  const auto run = service::CaseProgramme::one_stage(world.dimension(), 2000, {}).begin_stage(0, world);
   run->cycle(run->cycles_to_next_stop());
   EXPECT_TRUE(run->check());
   EXPECT_EQ(world.cycle_count(), 2000u);
-  EXPECT_GT(world.read_wall(world.find_wall("top")).normal_stress, 0.5e6);
+  EXPECT_GT(service::read_wall(world.view(), service::find_wall(world.view(), "top")).normal_stress, 0.5e6);
 }
 
 }  // namespace

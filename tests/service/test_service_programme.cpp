@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <fstream>
 #include <mutex>
+#include <tuple>
+#include <vector>
 
 #include "dem/client/telemetry.h"
 #include "dem/io/case_conversion.h"
@@ -116,6 +118,51 @@ TEST(ProgrammeCommand, MiyatasPlateLoadingRunsThroughTheCommandLoop) {
   EXPECT_EQ(lines("compression_states.csv") - 1, 3);
   EXPECT_GT(lines("plate_contacts.csv"), 1);
   EXPECT_GT(lines("force_tail.csv"), 1);
+}
+
+// run_programme in steps (programme_steps): the run returns every
+// sample_every cycles of a stage and at each stage's end, the world waiting
+// there; resumed from each reply it ends bit for bit where one run does.
+TEST(ProgrammeCommand, InStepsReturnsAtExactCyclesAndEndsWhereOneRunDoes) {
+  InProcessServer server(server_options("steps", kProgrammeSteps));
+  client::Client client(connect_options("steps", kProgrammeSteps));
+  client.load_case_file(case_file("nine_disc_damped"));  // compress (40 cycles), hold (2960)
+  protocol::ProgrammeStepsArgs steps{.sample_every = 30};
+  std::vector<std::tuple<std::uint32_t, std::uint64_t, bool, std::uint64_t>> returns;
+  std::uint32_t stage = 1;
+  for (int step = 0; step < 200; ++step) {
+    const protocol::Reply reply = client.run_programme(stage, 0, 60s, steps);
+    ASSERT_TRUE(reply.ok()) << reply.message;
+    returns.emplace_back(reply.stage, reply.stage_cycles, reply.stage_ended, reply.state.cycle);
+    EXPECT_EQ(reply.state.state, ServerState::kLoaded);
+    if (reply.stage == 2 && reply.stage_ended) break;
+    stage = reply.stage_ended ? reply.stage + 1 : reply.stage;
+    steps.resume = true;
+    steps.stage_cycles_done = reply.stage_ended ? 0 : reply.stage_cycles;
+  }
+  using Return = std::tuple<std::uint32_t, std::uint64_t, bool, std::uint64_t>;
+  ASSERT_EQ(returns.size(), 2u + 98u + 1u);  // 30, 40 (compress's end), then 30 ... 2940 and 2960 of hold
+  EXPECT_EQ(returns[0], Return(1, 30, false, 30));
+  EXPECT_EQ(returns[1], Return(1, 40, true, 40));
+  EXPECT_EQ(returns[2], Return(2, 30, false, 70));
+  EXPECT_EQ(returns[99], Return(2, 2940, false, 2980));
+  EXPECT_EQ(returns[100], Return(2, 2960, true, 3000));
+  EXPECT_EQ(client.get_state().state_hash, engine_hash(case_file("nine_disc_damped"), 0, 2));
+
+  // Bad steps are refused with nothing run.
+  EXPECT_EQ(error_reply([&] { client.run_programme(2, 0, 10s, {.stage_cycles_done = 10}); }).message,
+            "stage_cycles_done is for a resumed run: set resume");
+  EXPECT_EQ(error_reply([&] { client.run_programme(2, 0, 10s, {.resume = true, .stage_cycles_done = 2960}); }).message,
+            "stage 2 (\"hold\") runs at most 2960 cycles: it cannot be resumed after 2960");
+  client.load_case_file(std::filesystem::path(DEM_CASES_DIR) / "miyata" / "cs_reduced.case.txtpb");
+  const protocol::Reply off_check = error_reply([&] { client.run_programme(1, 0, 10s, {.sample_every = 150}); });
+  EXPECT_EQ(off_check.status, ReplyStatus::kBadRequest);
+  EXPECT_EQ(off_check.message,
+            "sample_every 150 is not a multiple of stage 1 (\"settle\")'s condition check interval, 100 cycles: a "
+            "run returns only where it resumes");
+  EXPECT_EQ(error_reply([&] { client.run_programme(1, 0, 10s, {.resume = true, .stage_cycles_done = 50}); }).message,
+            "stage 1 (\"settle\") resumes only on one of its condition checks, every 100 cycles, not after 50");
+  EXPECT_EQ(client.get_state().state.cycle, 0u);
 }
 
 TEST(ProgrammeCommand, AStopEndsItCancelledAndBadRangesAreRefused) {

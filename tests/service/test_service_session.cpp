@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <memory>
 #include <variant>
 
 #include "dem/io/case_conversion.h"
@@ -31,6 +32,11 @@ StageResult step_through(service::StageStepper& stage, std::uint64_t chunk) {
     over = stage.check();
   }
   return stage.result();
+}
+
+// `count` cycles as a cycle command runs them: a one-stage programme.
+std::unique_ptr<service::StageStepper> cycles(service::WorldSession& session, std::uint64_t count) {
+  return service::CaseProgramme::one_stage(session.dimension(), count, {}).begin_stage(0, session);
 }
 
 TEST(CaseProgramme, StagesSteppedInChunksEndAsTheEnginesRunStage) {
@@ -109,12 +115,12 @@ TEST(WorldSnapshots, ASnapshotPutBackGoesOnAsTheWorldItWasTakenFrom) {
   const io::SnapshotInfo info{"nine_disc_damped", ""};
   const std::string bytes = service::snapshot_bytes(*first, info);
   EXPECT_EQ(service::StateCheckpoint(*first).bytes(info), bytes);
-  step_through(*first->begin_run(500, {}), 500);
+  step_through(*cycles(*first, 500), 500);
 
   const auto second = service::make_session(World(definition.world));
   service::restore_bytes(*second, bytes, "<test>");
   EXPECT_EQ(second->cycle_count(), 40u);
-  step_through(*second->begin_run(500, {}), 500);
+  step_through(*cycles(*second, 500), 500);
   EXPECT_EQ(second->state_hash(), first->state_hash());
 }
 
@@ -126,18 +132,18 @@ TEST(WorldSnapshots, ThreeDimensionalSessionsTooAndNotAcrossDimensions) {
   const auto session = service::make_session(World3(definition.world));
   EXPECT_EQ(session->dimension(), 3);
   EXPECT_TRUE(std::holds_alternative<const World3*>(session->view()));
-  step_through(*session->begin_run(20, {}), 20);
+  step_through(*cycles(*session, 20), 20);
   const service::StateCheckpoint checkpoint(*session);
   const std::string bytes = service::snapshot_bytes(*session, {});
-  step_through(*session->begin_run(30, {}), 30);
+  step_through(*cycles(*session, 30), 30);
   const std::uint64_t uninterrupted = session->state_hash();
 
   checkpoint.restore(*session);
-  step_through(*session->begin_run(30, {}), 30);
+  step_through(*cycles(*session, 30), 30);
   EXPECT_EQ(session->state_hash(), uninterrupted);
   service::restore_bytes(*session, bytes, "<test>");
   EXPECT_EQ(session->cycle_count(), 20u);
-  step_through(*session->begin_run(30, {}), 30);
+  step_through(*cycles(*session, 30), 30);
   EXPECT_EQ(session->state_hash(), uninterrupted);
 
   const auto flat = service::make_session(World(nine_discs().world));

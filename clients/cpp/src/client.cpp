@@ -408,16 +408,19 @@ protocol::Reply Client::run_until(const protocol::RunUntilArgs& args, std::chron
   return call(std::move(c), timeout);
 }
 
-std::uint64_t Client::start_run_programme(std::uint32_t first_stage, std::uint32_t stage_count) {
+std::uint64_t Client::start_run_programme(std::uint32_t first_stage, std::uint32_t stage_count,
+                                          const protocol::ProgrammeStepsArgs& steps) {
   protocol::Command c = command(CommandKind::kRunProgramme);
   c.programme = {first_stage, stage_count};
+  c.programme_steps = steps;
   return send(std::move(c));
 }
 
 protocol::Reply Client::run_programme(std::uint32_t first_stage, std::uint32_t stage_count,
-                                      std::chrono::milliseconds timeout) {
+                                      std::chrono::milliseconds timeout, const protocol::ProgrammeStepsArgs& steps) {
   protocol::Command c = command(CommandKind::kRunProgramme);
   c.programme = {first_stage, stage_count};
+  c.programme_steps = steps;
   return call(std::move(c), timeout);
 }
 

@@ -167,15 +167,27 @@ class Client:
         return self._native.start_run_until(wall, _optional(stress), _optional(settlement),
                                             _optional(kinetic_energy), int(max_cycles), int(check_interval))
 
-    def run_programme(self, *, first_stage=0, stage_count=0, timeout=None, on_wait=None, wait_interval=0.1):
+    def run_programme(self, *, first_stage=0, stage_count=0, sample_every=0, stage_ends=False, resume=False,
+                      stage_cycles_done=0, timeout=None, on_wait=None, wait_interval=0.1):
         """Runs the loaded case's stages on the server as dem_run does - trims,
         wall placements, wall motions, damping, stop conditions - from
         ``first_stage`` (counted from 1; 0 = the first) for ``stage_count``
-        stages (0 = to the last), and returns the reply when they end."""
-        return self._native.run_programme(int(first_stage), int(stage_count), timeout, on_wait, wait_interval)
+        stages (0 = to the last), and returns the reply when they end.
 
-    def start_run_programme(self, *, first_stage=0, stage_count=0):
-        return self._native.start_run_programme(int(first_stage), int(stage_count))
+        In steps: with ``sample_every`` > 0 the run returns every that many
+        cycles of a stage (counted from its start) and at each stage's end,
+        with ``stage_ends`` at each stage's end; the reply's ``stage`` (from
+        1), ``stage_cycles`` and ``stage_ended`` say where, the world waits
+        there, and a run with ``resume`` - ``first_stage`` the stage it was
+        in (the next when it ended), ``stage_cycles_done`` its cycles run -
+        carries on as if never interrupted. dem.run_programme does the loop."""
+        return self._native.run_programme(int(first_stage), int(stage_count), int(sample_every), bool(stage_ends),
+                                          bool(resume), int(stage_cycles_done), timeout, on_wait, wait_interval)
+
+    def start_run_programme(self, *, first_stage=0, stage_count=0, sample_every=0, stage_ends=False, resume=False,
+                            stage_cycles_done=0):
+        return self._native.start_run_programme(int(first_stage), int(stage_count), int(sample_every),
+                                                bool(stage_ends), bool(resume), int(stage_cycles_done))
 
     def await_run(self, request_id, *, timeout=None, on_wait=None, wait_interval=0.1):
         """The reply to a run started with start_cycle, start_run_until or start_run_programme."""

@@ -46,4 +46,4 @@ class CaseFileError(DemError):
 
 
 class ProgrammeError(DemError):
-    """A case's stage asks for something the service cannot do."""
+    """A programme's stages asked for do not make a run (dem.run_programme)."""

@@ -9,15 +9,14 @@ plates are taken at evenly spaced stresses and pooled into the distribution
 of the normalised contact force (Miyata et al. 2002, 3.2-3.3).
 
 Preparation (--preparation):
-  case    the case's own stages before the one that moves the plate, sent
-          as commands (run_programme);
+  case    the case's own stages before the one that moves the plate, run
+          by the server's programme (dem.run_programme) (default; auto is
+          the same);
   server  the server runs the case's whole programme itself, loading
-          included (dem_server --case FILE --run-and-exit): what a stage that
-          trims the sample or places the plate needs, since no command does
-          either. The script follows the telemetry and takes the plates'
-          contacts as the stress passes each snapshot stress; the force
-          chains come from the server's final.snapshot;
-  auto    case when every stage can be sent as commands, else server (default);
+          included (dem_server --case FILE --run-and-exit); the script
+          follows the telemetry and takes the plates' contacts as the
+          stress passes each snapshot stress; the force chains come from
+          the server's final.snapshot;
   settle  only let the sample settle under gravity until its kinetic energy
           falls below a value (the case's first kinetic_energy_below);
   none    load as it is.
@@ -44,7 +43,7 @@ import numpy as np
 import dem
 from dem.force_distribution import ForceDistribution, mueth_density, q_model_density
 from dem.plots import LiveStressSettlement, plot_force_chains, plot_force_distribution
-from dem.programme import check_stage_supported, has
+from dem.programme import has
 from dem.snapshot import State
 from example_support import Stopwatch, argument_parser, case_path, fail, say, service
 
@@ -83,11 +82,8 @@ def prepare(client, case, plate, how, settle_energy, on_wait):
     loading = loading_stage(case, plate)
     if how == "case":
         indices = list(range(len(stages) if loading is None else loading))
-        try:
-            for outcome in dem.run_programme(client, case, stages=indices, on_wait=on_wait):
-                say(f'  stage {outcome.index} "{outcome.name}": {outcome.cycles_run} cycles')
-        except dem.ProgrammeError as error:
-            raise SystemExit(f"{error}; run with --preparation settle to settle the sample and load it as it is")
+        for outcome in dem.run_programme(client, case, stages=indices, on_wait=on_wait):
+            say(f'  stage {outcome.index} "{outcome.name}": {outcome.cycles_run} cycles')
     elif how == "settle":
         energy = settle_energy
         if energy is None:
@@ -133,7 +129,7 @@ def main():
     plates = [plate] + ([bottom] if bottom and bottom != plate else [])
 
     if args.preparation == "auto":
-        args.preparation = "case" if commands_suffice(case) else "server"
+        args.preparation = "case"
     if args.preparation == "server":
         return compress_on_server(args, case, plate, plates, clock)
 
@@ -231,16 +227,6 @@ def write_results(args, case, snapshot_rows, distributions, snapshots, state, co
     plot_force_chains(state, contacts, png=args.out / "force_chains.png")
     say(f"wrote {args.out}: stress_settlement.csv/.png, plate_contacts.csv, force_distribution.csv/.png, "
         f"force_chains.png ({clock})")
-
-
-def commands_suffice(case):
-    """Whether every stage of the case can be sent as commands (run_programme)."""
-    try:
-        for index in range(len(case.stage)):
-            check_stage_supported(case, index)
-    except dem.ProgrammeError:
-        return False
-    return True
 
 
 def snapshot_window(case, args, target):

@@ -278,20 +278,26 @@ void bind_runs(py::class_<ClientHandle>& handle_class) {
           py::arg("check_interval"))
       .def(
           "run_programme",
-          [](ClientHandle& h, std::uint32_t first_stage, std::uint32_t stage_count, Seconds t, py::object w, double i) {
+          [](ClientHandle& h, std::uint32_t first_stage, std::uint32_t stage_count, std::uint64_t sample_every,
+             bool stage_ends, bool resume, std::uint64_t stage_cycles_done, Seconds t, py::object w, double i) {
             protocol::Command c = command(CommandKind::kRunProgramme);
             c.programme = {first_stage, stage_count};
+            c.programme_steps = {sample_every, stage_ends, resume, stage_cycles_done};
             return call(h, std::move(c), run_wait(t, std::move(w), i));
           },
-          py::arg("first_stage"), py::arg("stage_count"), a.timeout, a.on_wait, a.interval)
+          py::arg("first_stage"), py::arg("stage_count"), py::arg("sample_every"), py::arg("stage_ends"),
+          py::arg("resume"), py::arg("stage_cycles_done"), a.timeout, a.on_wait, a.interval)
       .def(
           "start_run_programme",
-          [](ClientHandle& h, std::uint32_t first_stage, std::uint32_t stage_count) {
+          [](ClientHandle& h, std::uint32_t first_stage, std::uint32_t stage_count, std::uint64_t sample_every,
+             bool stage_ends, bool resume, std::uint64_t stage_cycles_done) {
             protocol::Command c = command(CommandKind::kRunProgramme);
             c.programme = {first_stage, stage_count};
+            c.programme_steps = {sample_every, stage_ends, resume, stage_cycles_done};
             return send(h.get(), std::move(c));
           },
-          py::arg("first_stage"), py::arg("stage_count"))
+          py::arg("first_stage"), py::arg("stage_count"), py::arg("sample_every"), py::arg("stage_ends"),
+          py::arg("resume"), py::arg("stage_cycles_done"))
       .def(
           "await_reply",
           [](ClientHandle& h, std::uint64_t id, Seconds t, py::object w, double i, bool is_run) {

@@ -84,15 +84,15 @@ class OutputRecorder {
   // the regions.
   void start(const std::string& case_name, WorldView world, const io::OutputSettings& output,
              const io::ResumePoint* resume = nullptr) {
-    std::visit(
-        [&](const auto* w) { start(case_name, *w, output.compression, output.vtk_interval, resume, output.regions); },
-        world);
+    on_world(world, [&](const auto& w) {
+      start(case_name, w, output.compression, output.vtk_interval, resume, output.regions);
+    });
   }
   void record(WorldView world, std::optional<std::size_t> stage = std::nullopt) {
-    std::visit([&](const auto* w) { record(*w, stage); }, world);
+    on_world(world, [&](const auto& w) { record(w, stage); });
   }
   void finish(WorldView world) {
-    std::visit([&](const auto* w) { finish(*w); }, world);
+    on_world(world, [&](const auto& w) { finish(w); });
   }
 
   // <output>/<case>/ of the case loaded last: its tables and a one-shot

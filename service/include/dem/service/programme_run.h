@@ -25,6 +25,7 @@ enum class ProgrammeOutcome {
   kCompleted,  // every stage ran
   kStopped,    // ended early by a stop or shutdown command, SIGINT or SIGTERM
   kFailed,     // the engine failed or blew up, or an output could not be written
+  kPaused,     // returned at a sample point or a stage's end (RunPlan::sample_every), to be resumed
 };
 
 // What a run runs: stages first .. first + count - 1 (from 0) of
@@ -43,6 +44,19 @@ struct RunPlan {
   // between runs, and writes no final snapshot.
   bool of_case = false;
   std::uint64_t output_interval = 1;
+  // > 0: the run returns every `sample_every` cycles of a stage, counted
+  // from its start, and at each stage's end, so its client reads the world
+  // at exact cycles (run_programme's programme_steps, docs/SERVICE.md).
+  std::uint64_t sample_every = 0;
+  bool stage_ends = false;  // the run returns at each stage's end (implied by sample_every)
+};
+
+// Where a run is, or returned: its stage (from 0), that stage's cycles run
+// (counting those before a resume) and whether it is over.
+struct RunPosition {
+  std::size_t stage = 0;
+  std::uint64_t stage_cycles = 0;
+  bool stage_ended = false;
 };
 
 class ProgrammeRun {
@@ -80,6 +94,13 @@ class ProgrammeRun {
   std::uint64_t cycles_to_next_stop(std::uint64_t cycle) const;
   // Whether the time series is due a row at this cycle (only the case's stages write one).
   bool row_due(std::uint64_t cycle) const { return plan_.of_case && stage_cycles(cycle) % plan_.output_interval == 0; }
+  // Whether the run returns here: a sample point of the running stage.
+  bool sample_due(std::uint64_t cycle) const {
+    return plan_.sample_every > 0 && stage_cycles(cycle) % plan_.sample_every == 0;
+  }
+  // Whether the run returns at each stage's end.
+  bool pauses() const { return plan_.stage_ends || plan_.sample_every > 0; }
+  RunPosition position(std::uint64_t cycle) const;
 
   // The share of the run done, the running stage `stage_fraction` of the
   // way (CaseProgramme::progress): each stage run counts alike, as their
@@ -100,6 +121,7 @@ class ProgrammeRun {
   void stop(std::string reason);
   void fail(std::string error);
   void complete();
+  void pause();
   bool ending() const { return outcome_ == ProgrammeOutcome::kStopped || outcome_ == ProgrammeOutcome::kFailed; }
   ProgrammeOutcome outcome() const { return outcome_; }
   // Its end is done (the snapshot, the state, the reply): nothing runs any more.
@@ -118,6 +140,7 @@ class ProgrammeRun {
   std::uint64_t stage_done_ = 0;  // the running stage's cycles before a resume
   std::unique_ptr<StageStepper> stepper_;
   StageResult last_result_;
+  std::size_t last_stage_ = 0;  // the stage last_result_ is of
   HealthWatch health_;
   ProgrammeOutcome outcome_ = ProgrammeOutcome::kRunning;
   bool over_ = false;

@@ -97,6 +97,7 @@ class SimulationRunner {
   // telemetry, check and checkpoint, the stage's end; or the run's end.
   void step_run();
   void run_chunk();
+  void pause_run();
   bool run_unhealthy(bool always);  // fails the run when the world's health says so
   void checkpoint_if_due();
   void record_row();
@@ -110,6 +111,8 @@ class SimulationRunner {
   void end_run();
   std::string failure_message();
   std::string programme_end_message();
+  std::string pause_message(const RunPosition& position) const;
+  protocol::Reply run_reply(ProgrammeOutcome outcome, std::uint64_t cycles_run, const RunPosition& position) const;
   std::string command_end_message(std::uint64_t cycles_run) const;
   // Writes the snapshot `bytes` gives as `name` beside the case's tables:
   // nothing, or why it could not be written.

@@ -1,11 +1,11 @@
 // The engine behind the service, whatever its dimension: the one interface
-// the runner and the commands use to step, steer and read a 2D World or a
-// 3D World3. WorldSessionT<Dim> implements it over the engine and the
-// readout functions (engine_readout.h); a call per command or per chunk of
-// cycles, never per particle. What else the service does with a world
-// works on its read view (view()) in helpers of its own: the case's tables
-// (OutputRecorder), snapshots and checkpoints (world_snapshots.h) and the
-// case's loading programme (case_programme.h).
+// the runner and the commands use to step and steer a 2D World or a 3D
+// World3 and to hold its state (its cycle, time, hash, health; a state put
+// back). WorldSessionT<Dim> implements it over the engine; a call per
+// command or per chunk of cycles, never per particle. What only reads a
+// world works on its read view (view()): the readers of world_view.h, the
+// case's tables (OutputRecorder), snapshots and checkpoints
+// (world_snapshots.h) and the case's loading programme (case_programme.h).
 #pragma once
 
 #include <cstdint>
@@ -20,15 +20,12 @@
 #include "dem/io/case_definition.h"
 #include "dem/programme.h"
 #include "dem/protocol/messages.h"
-#include "dem/service/engine_readout.h"
+#include "dem/service/world_view.h"
 #include "dem/snapshot.h"
 #include "dem/world.h"
 
 namespace dem::service {
 
-// A read view of a session's world in its dimension, valid while the
-// session is and until its world is replaced (WorldSession::restore).
-using WorldView = std::variant<const BasicWorld<2>*, const BasicWorld<3>*>;
 // A whole state of either dimension, as the engine copies it.
 using AnyWorldSnapshot = std::variant<WorldSnapshotT<2>, WorldSnapshotT<3>>;
 // A stage of the engine's of either dimension.
@@ -49,18 +46,14 @@ class WorldSession {
  public:
   virtual ~WorldSession() = default;
 
-  // Reading.
+  // State.
   virtual std::uint8_t dimension() const = 0;
   virtual WorldView view() const = 0;
   virtual std::uint64_t cycle_count() const = 0;
-  virtual double time() const = 0;                         // s
-  virtual double time_step() const = 0;                    // s
-  virtual double critical_time_step() const = 0;           // s, with the damping now
-  virtual double undamped_critical_time_step() const = 0;  // s, what a time step fraction is of
+  virtual double time() const = 0;       // s
+  virtual double time_step() const = 0;  // s
   virtual int particle_count() const = 0;
-  virtual int wall_count() const = 0;
   virtual std::uint64_t state_hash() const = 0;
-  virtual double kinetic_energy() const = 0;  // J (a pass over the particles and the contacts)
   // A motion not finite or a particle flung out (HealthMonitorT::
   // motion_suspect): a pass over the particles alone, cheap enough after
   // every chunk, for what a blow-up reaches between two paced health
@@ -69,20 +62,8 @@ class WorldSession {
   // The engine's health status of the state now (a pass over the particles
   // and contacts: HealthWatch paces it).
   virtual StepHealth assess_health() = 0;
-
-  virtual WallId find_wall(std::string_view name) const = 0;  // kInvalidId when unknown
-  virtual std::string wall_name(WallId wall) const = 0;
-  virtual double wall_area(WallId wall) const = 0;
-  virtual protocol::WallForce read_wall(WallId wall) const = 0;
-  virtual std::vector<protocol::WallForce> read_walls() const = 0;
-  virtual protocol::ContactStats read_contact_stats() const = 0;
   // The measures of the case's regions; nothing when it names none.
   virtual std::optional<protocol::RegionTelemetry> read_regions() const = 0;
-  virtual std::vector<protocol::ContactEntry> query_contacts(const ContactFilter& filter) const = 0;
-  virtual std::optional<ServoLimits> default_servo_limits(WallId wall,
-                                                          const std::vector<ContactModelDef>& models) const = 0;
-  virtual DampingDef damping() const = 0;
-  virtual const std::vector<MaterialDef>& materials() const = 0;
 
   // Steering. A 2D world refuses out-of-plane vectors (CommandError); the
   // engine's own checks throw DefinitionError.
@@ -107,9 +88,6 @@ class WorldSession {
   // dimension). The stepper steps this session's world (valid while this
   // session is).
   virtual std::unique_ptr<StageStepper> begin_stage(AnyStageDef stage) = 0;
-  // A cycle or run_until command as a one-stage programme: `cycles`, ended
-  // early by `until` (the engine's stop rule), no start actions.
-  virtual std::unique_ptr<StageStepper> begin_run(std::uint64_t cycles, const StopConditions& until) = 0;
 };
 
 // `regions`: the case's measurement regions (output.region), read for the

@@ -112,10 +112,14 @@ class Client {
                             std::chrono::milliseconds timeout = std::chrono::hours(24));
   std::uint64_t start_run_until(const protocol::RunUntilArgs& args);
   // Runs the loaded case's stages (all, or from `first_stage`, counted from
-  // 1, for `stage_count` stages; 0 = to the last) and waits for the end.
+  // 1, for `stage_count` stages; 0 = to the last) and waits for the end -
+  // or, with `steps`, for the next sample point or stage end, from where a
+  // run with steps.resume carries on (docs/SERVICE.md, "Programmes").
   protocol::Reply run_programme(std::uint32_t first_stage = 0, std::uint32_t stage_count = 0,
-                                std::chrono::milliseconds timeout = std::chrono::hours(24));
-  std::uint64_t start_run_programme(std::uint32_t first_stage = 0, std::uint32_t stage_count = 0);
+                                std::chrono::milliseconds timeout = std::chrono::hours(24),
+                                const protocol::ProgrammeStepsArgs& steps = {});
+  std::uint64_t start_run_programme(std::uint32_t first_stage = 0, std::uint32_t stage_count = 0,
+                                    const protocol::ProgrammeStepsArgs& steps = {});
   // `force`: also when another client's run is going on (docs/SERVICE.md).
   protocol::Reply stop(bool force = false);
   protocol::Reply get_state();
