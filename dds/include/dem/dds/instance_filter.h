@@ -10,6 +10,7 @@
 
 #include <dds/dds.h>
 
+#include <atomic>
 #include <map>
 #include <mutex>
 
@@ -29,6 +30,7 @@ class OwnInstanceFilter {
   bool accepts(dds_instance_handle_t writer, dds_instance_handle_t instance) const;
 
  private:
+  std::atomic<bool> published_{false};  // set before the filter is handed to Cyclone
   mutable std::mutex mutex_;
   // Each writer's handle in this participant with the reader's own
   // instance's handle. Cyclone gives a writer a new handle when it is
