@@ -12,7 +12,7 @@ bool accepts_sample(const dds_sample_info_t* info, void* filter) {
 
 }  // namespace
 
-OwnInstanceFilter::OwnInstanceFilter(dds_entity_t topic) {
+OwnInstanceFilter::OwnInstanceFilter(dds_entity_t topic) : topic_(topic) {
   // Cyclone hands `this` to the thread that delivers samples (in-process,
   // a writer's) through its own locks, which a ThreadSanitizer build does
   // not see: this release, read by accepts' acquire, is the hand-over the
@@ -26,6 +26,16 @@ OwnInstanceFilter::OwnInstanceFilter(dds_entity_t topic) {
   filter.f.sampleinfo_arg = &accepts_sample;
   filter.arg = this;
   check(dds_set_topic_filter_extended(topic, &filter), "setting a topic's instance filter");
+}
+
+OwnInstanceFilter::~OwnInstanceFilter() {
+  // Taken off the topic first (its readers are gone by now), then the mutex
+  // taken once: the last accepts, run on Cyclone's delivering thread, has
+  // ended before the object does, and is seen to (as in the constructor).
+  dds_topic_filter none{};
+  none.mode = DDS_TOPIC_FILTER_NONE;
+  (void)dds_set_topic_filter_extended(topic_, &none);
+  std::lock_guard lock(mutex_);
 }
 
 void OwnInstanceFilter::learn(dds_instance_handle_t writer, dds_instance_handle_t instance) {

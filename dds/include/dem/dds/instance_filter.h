@@ -20,6 +20,7 @@ class OwnInstanceFilter {
  public:
   // Filters the samples of `topic`'s readers; lives as long as they do.
   explicit OwnInstanceFilter(dds_entity_t topic);
+  ~OwnInstanceFilter();
   OwnInstanceFilter(const OwnInstanceFilter&) = delete;
   OwnInstanceFilter& operator=(const OwnInstanceFilter&) = delete;
 
@@ -30,6 +31,7 @@ class OwnInstanceFilter {
   bool accepts(dds_instance_handle_t writer, dds_instance_handle_t instance) const;
 
  private:
+  dds_entity_t topic_;
   std::atomic<bool> published_{false};  // set before the filter is handed to Cyclone
   mutable std::mutex mutex_;
   // Each writer's handle in this participant with the reader's own
