@@ -16,7 +16,12 @@
 // fast as the client library lets them (each with its 64 requests in
 // flight, client::ConnectOptions::max_outstanding): the load of issue 37,
 // where get_state's p99 beside them was 35.7 ms.
-//   bench_responsiveness [--seconds 60] [--baseline 15] [--rate 1000] [--flood] [--domain 126]
+// With --clients-apart, B, C and D are each a process of their own (this
+// program again, --as-client), as three other users' tools would be; by
+// default they are threads of this process beside A, sharing its DDS
+// receive thread, so A's small replies queue behind their contact lists.
+//   bench_responsiveness [--seconds 60] [--baseline 15] [--rate 1000] [--flood] [--clients-apart]
+//                        [--domain 126]
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -123,6 +128,130 @@ struct Results {
   std::vector<std::string> lost_requests;  // "request N from CLIENT", as the server's log names them
 };
 
+// One of clients B, C and D (c = 0, 1, 2) until `done`: pipelined commands at
+// its share of the rate, or contact queries as fast as replies come (flood),
+// the replies collected by a second thread as they arrive.
+void load_client(int c, bool flood, std::chrono::duration<double> per_client, const std::atomic<bool>& done,
+                 Results& results) {
+  dem::client::Client client(connect_options());
+  std::mutex mutex;
+  std::deque<std::uint64_t> outstanding;
+  std::atomic<bool> sending{true};
+  std::thread collector([&] {
+    for (;;) {
+      std::uint64_t id = 0;
+      {
+        std::lock_guard lock(mutex);
+        if (outstanding.empty()) {
+          if (!sending) return;
+          id = 0;
+        } else {
+          id = outstanding.front();
+          outstanding.pop_front();
+        }
+      }
+      if (id == 0) {
+        std::this_thread::sleep_for(1ms);
+        continue;
+      }
+      // A reply not here in 10 s is lost (2 s once the load is over: its stragglers).
+      const std::optional<dem::protocol::Reply> reply = client.await(id, done ? 2s : 10s);
+      std::lock_guard lock(results.mutex);
+      if (!reply) {
+        ++results.lost;
+        results.lost_requests.push_back("request " + std::to_string(id) + " from " + client.client_id());
+        continue;
+      }
+      ++results.answered;
+      if (reply->status == dem::protocol::ReplyStatus::kBusy)
+        ++results.busy;
+      else if (!reply->ok())
+        ++results.errors;
+      const auto kind = dem::protocol::command_kind(reply->kind);
+      results.server_ms[std::string(kind ? dem::protocol::to_string(*kind) : "unknown")].push_back(reply->duration *
+                                                                                                   1e3);
+    }
+  });
+  auto next = Clock::now();
+  for (int i = 0; !done; ++i) {
+    dem::protocol::Command command;
+    if (flood) {  // as fast as replies come: send waits while 64 are unanswered
+      command.kind = static_cast<std::uint8_t>(dem::protocol::CommandKind::kQueryContacts);
+      command.query.wall_set = true;
+      command.query.wall = "bottom";
+      const std::uint64_t id = client.send(command);
+      std::lock_guard lock(mutex);
+      outstanding.push_back(id);
+      std::lock_guard count(results.mutex);
+      ++results.sent;
+      continue;
+    }
+    next += std::chrono::duration_cast<Clock::duration>(per_client);
+    std::this_thread::sleep_until(next);
+    switch ((i + c) % 10) {
+      case 0:
+      case 1:
+        command.kind = static_cast<std::uint8_t>(dem::protocol::CommandKind::kSetWallVelocity);
+        command.wall_velocity.wall = "top";
+        break;
+      case 2:
+        command.kind = static_cast<std::uint8_t>(dem::protocol::CommandKind::kQueryContacts);
+        command.query.wall_set = true;
+        command.query.wall = "bottom";
+        break;
+      default:
+        command.kind = static_cast<std::uint8_t>(dem::protocol::CommandKind::kGetState);
+    }
+    const std::uint64_t id = client.send(command);
+    std::lock_guard lock(mutex);
+    outstanding.push_back(id);
+    std::lock_guard count(results.mutex);
+    ++results.sent;
+  }
+  sending = false;
+  collector.join();
+}
+
+// A client's figures to the parent (--as-client): one line of counts, one
+// line per request without reply, one per reply's time on the server.
+void write_report(const std::string& path, const Results& results) {
+  std::ofstream out(path);
+  out << results.sent << ' ' << results.answered << ' ' << results.busy << ' ' << results.errors << ' ' << results.lost
+      << '\n';
+  for (const std::string& lost : results.lost_requests) out << "lost " << lost << '\n';
+  for (const auto& [kind, ms] : results.server_ms) {
+    for (const double value : ms) out << kind << ' ' << value << '\n';
+  }
+}
+
+void add_report(const std::string& path, Results& results) {
+  std::ifstream in(path);
+  std::uint64_t sent = 0, answered = 0, busy = 0, errors = 0, lost = 0;
+  if (!(in >> sent >> answered >> busy >> errors >> lost)) throw std::runtime_error("no report in " + path);
+  results.sent += sent;
+  results.answered += answered;
+  results.busy += busy;
+  results.errors += errors;
+  results.lost += lost;
+  std::string word;
+  while (in >> word) {
+    std::string rest;
+    std::getline(in, rest);
+    if (word == "lost") {
+      results.lost_requests.push_back(rest.substr(1));
+    } else {
+      results.server_ms[word].push_back(std::stod(rest));
+    }
+  }
+}
+
+std::string self_path() {
+  std::vector<char> path(4096);
+  const ssize_t length = ::readlink("/proc/self/exe", path.data(), path.size() - 1);
+  if (length <= 0) throw std::runtime_error("readlink /proc/self/exe");
+  return std::string(path.data(), static_cast<std::size_t>(length));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -135,11 +264,29 @@ int main(int argc, char** argv) {
   bool flood = false, stalled = true;
   app.add_flag("!--no-stalled-monitor", stalled, "leave out the monitor stopped with SIGSTOP");
   app.add_flag("--flood", flood, "clients B, C and D query contacts without pause instead of at the rate");
+  bool clients_apart = false;
+  app.add_flag("--clients-apart", clients_apart, "clients B, C and D each in a process of their own");
+  int as_client = -1;
+  std::string report;
+  app.add_option("--as-client", as_client, "run as client B, C or D (0-2) of a parent's run, for --seconds")
+      ->check(CLI::Range(0, 2));
+  app.add_option("--report", report, "with --as-client: the file the client's figures go to");
   std::string log_level = "warn";
   app.add_option("--server-log-level", log_level,
                  "the server's log level (info logs every reply: which of those without reply it sent)")
       ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
+  const auto per_client = std::chrono::duration<double>(4.0 / rate);
+  if (as_client >= 0) {
+    Results results;
+    std::atomic<bool> done{false};
+    std::thread client([&] { load_client(as_client, flood, per_client, done, results); });
+    std::this_thread::sleep_for(std::chrono::seconds(seconds));
+    done = true;
+    client.join();
+    write_report(report, results);
+    return 0;
+  }
 
   const pid_t server = spawn({DEM_SERVER_PROGRAM, "--name", "responsive", "--domain", std::to_string(domain_id),
                               "--threads", "1", "--log-level", log_level, "--no-csv", "--telemetry-cycles", "100",
@@ -164,7 +311,6 @@ int main(int argc, char** argv) {
 
   Results results;
   std::atomic<bool> done{false};
-  const auto per_client = std::chrono::duration<double>(4.0 / rate);
   std::vector<std::thread> threads;
   // A: synchronous get_state, its round trip.
   threads.emplace_back([&] {
@@ -184,86 +330,19 @@ int main(int argc, char** argv) {
     }
   });
   // B, C, D: pipelined mixed commands, replies collected by a second thread each.
+  std::vector<pid_t> apart;
+  std::vector<std::string> reports;
   for (int c = 0; c < 3; ++c) {
-    threads.emplace_back([&, c] {
-      dem::client::Client client(connect_options());
-      std::mutex mutex;
-      std::deque<std::uint64_t> outstanding;
-      std::atomic<bool> sending{true};
-      std::thread collector([&] {
-        for (;;) {
-          std::uint64_t id = 0;
-          {
-            std::lock_guard lock(mutex);
-            if (outstanding.empty()) {
-              if (!sending) return;
-              id = 0;
-            } else {
-              id = outstanding.front();
-              outstanding.pop_front();
-            }
-          }
-          if (id == 0) {
-            std::this_thread::sleep_for(1ms);
-            continue;
-          }
-          // A reply not here in 10 s is lost (2 s once the load is over: its stragglers).
-          const std::optional<dem::protocol::Reply> reply = client.await(id, done ? 2s : 10s);
-          std::lock_guard lock(results.mutex);
-          if (!reply) {
-            ++results.lost;
-            results.lost_requests.push_back("request " + std::to_string(id) + " from " + client.client_id());
-            continue;
-          }
-          ++results.answered;
-          if (reply->status == dem::protocol::ReplyStatus::kBusy)
-            ++results.busy;
-          else if (!reply->ok())
-            ++results.errors;
-          const auto kind = dem::protocol::command_kind(reply->kind);
-          results.server_ms[std::string(kind ? dem::protocol::to_string(*kind) : "unknown")].push_back(reply->duration *
-                                                                                                       1e3);
-        }
-      });
-      auto next = Clock::now();
-      for (int i = 0; !done; ++i) {
-        dem::protocol::Command command;
-        if (flood) {  // as fast as replies come: send waits while 64 are unanswered
-          command.kind = static_cast<std::uint8_t>(dem::protocol::CommandKind::kQueryContacts);
-          command.query.wall_set = true;
-          command.query.wall = "bottom";
-          const std::uint64_t id = client.send(command);
-          std::lock_guard lock(mutex);
-          outstanding.push_back(id);
-          std::lock_guard count(results.mutex);
-          ++results.sent;
-          continue;
-        }
-        next += std::chrono::duration_cast<Clock::duration>(per_client);
-        std::this_thread::sleep_until(next);
-        switch ((i + c) % 10) {
-          case 0:
-          case 1:
-            command.kind = static_cast<std::uint8_t>(dem::protocol::CommandKind::kSetWallVelocity);
-            command.wall_velocity.wall = "top";
-            break;
-          case 2:
-            command.kind = static_cast<std::uint8_t>(dem::protocol::CommandKind::kQueryContacts);
-            command.query.wall_set = true;
-            command.query.wall = "bottom";
-            break;
-          default:
-            command.kind = static_cast<std::uint8_t>(dem::protocol::CommandKind::kGetState);
-        }
-        const std::uint64_t id = client.send(command);
-        std::lock_guard lock(mutex);
-        outstanding.push_back(id);
-        std::lock_guard count(results.mutex);
-        ++results.sent;
-      }
-      sending = false;
-      collector.join();
-    });
+    if (clients_apart) {
+      reports.push_back(std::string(DEM_BENCH_OUTPUT) + "/responsive/client_" + std::to_string(c) + ".txt");
+      std::vector<std::string> arguments{self_path(),          "--as-client", std::to_string(c),        "--report",
+                                         reports.back(),       "--seconds",   std::to_string(seconds),  "--rate",
+                                         std::to_string(rate), "--domain",    std::to_string(domain_id)};
+      if (flood) arguments.emplace_back("--flood");
+      apart.push_back(spawn(arguments));
+    } else {
+      threads.emplace_back([&, c] { load_client(c, flood, per_client, done, results); });
+    }
   }
   const auto load_start = Clock::now();
   std::vector<Rate> rates;
@@ -274,6 +353,8 @@ int main(int argc, char** argv) {
   }
   done = true;
   for (std::thread& thread : threads) thread.join();
+  for (const pid_t client : apart) waitpid(client, nullptr, 0);
+  for (const std::string& path : reports) add_report(path, results);
   const double load_seconds = std::chrono::duration<double>(Clock::now() - load_start).count();
 
   Rate loaded;
