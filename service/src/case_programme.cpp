@@ -7,12 +7,12 @@ namespace dem::service {
 namespace {
 
 template <int Dim>
-bool resumable(const StageDefT<Dim>& stage, std::uint64_t stage_cycles, const WorldSession& world) {
+bool resumable(const StageDefT<Dim>& stage, std::uint64_t stage_cycles, const WorldSession& session) {
   if (stage_cycles >= stage.cycles || stage_cycles % std::max<std::uint64_t>(stage.until.check_interval, 1) != 0) {
     return false;
   }
   return !(has_stop_condition(stage.until) && stage_cycles >= stage.until.min_cycles &&
-           stop_conditions_hold(*std::get<const BasicWorld<Dim>*>(world.view()), stage.until));
+           stop_conditions_hold(session.world<Dim>(), stage.until));
 }
 
 template <int Dim>
@@ -45,8 +45,7 @@ const StopConditions& CaseProgramme::stage_until(std::size_t stage) const {
   return std::visit([&](const auto& stages) -> const StopConditions& { return stages.at(stage).until; }, stages_);
 }
 
-std::unique_ptr<StageStepper> CaseProgramme::begin_stage(std::size_t stage, WorldSession& world,
-                                                         std::uint64_t done) const {
+StageStepper CaseProgramme::begin_stage(std::size_t stage, WorldSession& world, std::uint64_t done) const {
   return std::visit(
       [&](const auto& stages) {
         // Resumed: the start actions are done and in the state.

@@ -12,6 +12,8 @@
 #include "dem/io/world_checks.h"
 #include "dem/service/command_error.h"
 #include "dem/service/world_snapshots.h"
+#include "dem/service/world_steering.h"
+#include "dem/service/world_view.h"
 #include "format_value.h"
 
 namespace dem::service {
@@ -39,7 +41,7 @@ Simulation::Prepared prepared_case(const io::CaseDefinitionT<Dim>& definition, c
   Simulation::Prepared prepared;
   BasicWorld<Dim> built(definition.world);
   io::check_built_world(built, definition.stages, case_source);
-  prepared.world = make_session(std::move(built), definition.output.regions);
+  prepared.world = std::make_unique<WorldSession>(std::move(built), definition.output.regions);
   prepared.programme = CaseProgramme(definition.stages);
   prepared.output = definition.output;
   prepared.case_name = definition.name.empty() ? std::string("unnamed") : definition.name;
@@ -47,9 +49,8 @@ Simulation::Prepared prepared_case(const io::CaseDefinitionT<Dim>& definition, c
   prepared.contact_models = definition.world.contact_models;
   const WorldSession& world = *prepared.world;
   prepared.message = "loaded case " + prepared.case_name + " from " + source + ": " + std::to_string(Dim) + "D, " +
-                     std::to_string(world.particle_count()) + " particles, " +
-                     std::to_string(wall_count(world.view())) + " walls, time step " + format_value(world.time_step()) +
-                     " s";
+                     std::to_string(world.particle_count()) + " particles, " + std::to_string(wall_count(world)) +
+                     " walls, time step " + format_value(world.time_step()) + " s";
   return prepared;
 }
 
@@ -63,7 +64,7 @@ Simulation::Simulation(std::optional<int> threads, io::ResourceLimits limits, st
       max_query_contacts_(max_query_contacts) {}
 
 std::string Simulation::install(Prepared prepared) {
-  if (threads_) prepared.world->set_threads(*threads_);
+  if (threads_) on_world(*prepared.world, [&](auto& world) { world.set_threads(*threads_); });
   world_ = std::move(prepared.world);
   case_name_ = std::move(prepared.case_name);
   description_ = std::move(prepared.description);
@@ -133,14 +134,14 @@ Simulation::Prepared Simulation::Preparer::prepare_snapshot(std::string_view byt
       }
       Prepared prepared;
       prepared.contact_models = snapshot.def.contact_models;
-      prepared.world = make_session(BasicWorld<kDim>(snapshot));
+      prepared.world = std::make_unique<WorldSession>(BasicWorld<kDim>(snapshot));
       prepared.case_name = info.case_name;
       prepared.description = info.description;
       const WorldSession& world = *prepared.world;
       prepared.message = "loaded snapshot of " + prepared.case_name + " from " + source + " at cycle " +
                          std::to_string(world.cycle_count()) + ": " + std::to_string(kDim) + "D, " +
-                         std::to_string(world.particle_count()) + " particles, " +
-                         std::to_string(wall_count(world.view())) + " walls";
+                         std::to_string(world.particle_count()) + " particles, " + std::to_string(wall_count(world)) +
+                         " walls";
       return prepared;
     };
     if (message.dimension() == 3) return restore(std::integral_constant<int, 3>{});
@@ -161,7 +162,7 @@ void Simulation::drop() {
 std::string Simulation::snapshot_bytes() const { return service::snapshot_bytes(world(), snapshot_info()); }
 
 WallId Simulation::find_wall(const std::string& name, std::int32_t id) const {
-  const WorldView w = world().view();
+  const WorldSession& w = world();
   std::string known;
   for (int i = 0; i < wall_count(w); ++i) known += (i == 0 ? "" : ", ") + wall_name(w, WallId{i});
   if (!name.empty()) {
@@ -182,10 +183,10 @@ WallId Simulation::find_wall(const std::string& name, std::int32_t id) const {
 std::string Simulation::set_wall_velocity(const protocol::WallVelocityArgs& args) {
   const WallId wall = find_wall(args.wall, args.wall_id);
   require(finite(args.twist.linear) && finite(args.twist.angular), "the wall velocity must be finite");
-  world().set_wall_velocity(wall, args.twist.linear, args.twist.angular);
+  service::set_wall_velocity(world(), wall, args.twist.linear, args.twist.angular);
   const protocol::Vector3& v = args.twist.linear;
   const protocol::Vector3& w = args.twist.angular;
-  return "wall " + wall_name(world().view(), wall) + " moves at (" + format_value(v.x) + ", " + format_value(v.y) +
+  return "wall " + wall_name(world(), wall) + " moves at (" + format_value(v.x) + ", " + format_value(v.y) +
          (dimension() == 3 ? ", " + format_value(v.z) + ") m/s, (" + format_value(w.x) + ", " + format_value(w.y) +
                                  ", " + format_value(w.z) + ")"
                            : ") m/s, " + format_value(w.z)) +
@@ -198,8 +199,8 @@ std::string Simulation::set_wall_servo(const protocol::WallServoArgs& args) {
   require(std::isfinite(args.gain) && args.gain >= 0.0, "the servo gain must be >= 0 (0: the server chooses)");
   require(std::isfinite(args.max_speed) && args.max_speed >= 0.0,
           "the servo's max speed must be >= 0 (0: the server chooses)");
-  const double area = wall_area(world().view(), wall);
-  const std::optional<ServoLimits> defaults = default_servo_limits(world().view(), wall, contact_models_);
+  const double area = wall_area(world(), wall);
+  const std::optional<ServoLimits> defaults = default_servo_limits(world(), wall, contact_models_);
   if ((args.gain == 0.0 || args.max_speed == 0.0) && !defaults) {
     throw CommandError(ReplyStatus::kBadRequest,
                        "give the servo's gain and max speed: the defaults need a linear contact law's stiffness");
@@ -210,11 +211,11 @@ std::string Simulation::set_wall_servo(const protocol::WallServoArgs& args) {
   servo.gain = args.gain > 0.0 ? args.gain / area : defaults->gain;
   servo.max_speed = args.max_speed > 0.0 ? args.max_speed : defaults->max_speed;
   try {
-    world().set_wall_servo(wall, servo);
+    service::set_wall_servo(world(), wall, servo);
   } catch (const DefinitionError& error) {
     throw CommandError(ReplyStatus::kBadRequest, error.what());
   }
-  return "wall " + wall_name(world().view(), wall) + " servo-controlled to " + format_value(args.target_stress) +
+  return "wall " + wall_name(world(), wall) + " servo-controlled to " + format_value(args.target_stress) +
          " Pa (gain " + format_value(servo.gain * area) + " m/(Pa s), at most " + format_value(servo.max_speed) +
          " m/s)";
 }
@@ -224,11 +225,11 @@ namespace {
 // Damping moves the critical step (the dashpots shorten it); a damping
 // that would leave the step above it is refused, and stays as it was.
 std::string set_damping_keeping_a_stable_step(WorldSession& w, const DampingDef& damping, const std::string& name) {
-  const DampingDef before = service::damping(w.view());
-  w.set_damping(damping);
-  const double critical = critical_time_step(w.view());
+  const DampingDef before = service::damping(w);
+  service::set_damping(w, damping);
+  const double critical = critical_time_step(w);
   if (w.time_step() > critical * (1.0 + 1e-9)) {
-    w.set_damping(before);
+    service::set_damping(w, before);
     throw CommandError(ReplyStatus::kBadRequest,
                        name + ": with it the critical step would be " + format_value(critical) +
                            " s, below the time step " + format_value(w.time_step()) +
@@ -241,15 +242,15 @@ std::string set_damping_keeping_a_stable_step(WorldSession& w, const DampingDef&
 // above the critical one is refused, naming the largest that is not.
 std::string set_stable_time_step_fraction(WorldSession& w, double fraction) {
   require(fraction > 0.0 && fraction <= 1.0, "time_step_fraction must be in (0, 1]");
-  const double critical = critical_time_step(w.view());
-  const double undamped = undamped_critical_time_step(w.view());
+  const double critical = critical_time_step(w);
+  const double undamped = undamped_critical_time_step(w);
   const double step = fraction * undamped;
   require(step <= critical * (1.0 + 1e-9),
           "time_step_fraction: " + format_value(fraction) + " gives " + format_value(step) +
               " s, above the critical step " + format_value(critical) +
               " s with the damping: central differences would be unstable; use at most " +
               format_value(critical / undamped));
-  w.set_time_step_fraction(fraction);
+  service::set_time_step_fraction(w, fraction);
   return "time step now " + format_value(w.time_step()) + " s (" + format_value(fraction) +
          " of the undamped critical step; the critical step is " + format_value(critical) + " s)";
 }
@@ -264,14 +265,14 @@ std::string Simulation::set_parameter(const protocol::ParameterArgs& args) {
   try {
     if (name == "contact_damping" || name == "global_damping") {
       require(args.value >= 0.0, name + " must be >= 0");
-      DampingDef damping = service::damping(w.view());
+      DampingDef damping = service::damping(w);
       (name == "contact_damping" ? damping.contact_beta : damping.global_alpha) = args.value;
       const std::string step = set_damping_keeping_a_stable_step(w, damping, name);
       return name + " set to " + format_value(args.value) + (name == "contact_damping" ? " s" : " 1/s") + step;
     }
     if (name == "local_damping") {
       require(args.value >= 0.0 && args.value < 1.0, "local_damping must be in [0, 1)");
-      DampingDef damping = service::damping(w.view());
+      DampingDef damping = service::damping(w);
       damping.local_alpha = args.value;
       const std::string step = set_damping_keeping_a_stable_step(w, damping, name);
       return "local_damping set to " + format_value(args.value) + step;
@@ -279,11 +280,11 @@ std::string Simulation::set_parameter(const protocol::ParameterArgs& args) {
     if (name == "time_step_fraction") return set_stable_time_step_fraction(w, args.value);
     if (name == "friction") {
       require(args.value >= 0.0, "friction must be >= 0");
-      const auto& materials = service::materials(w.view());
+      const auto& materials = service::materials(w);
       std::string known;
       for (std::size_t i = 0; i < materials.size(); ++i) {
         if (materials[i].name == args.material) {
-          w.set_friction(MaterialId::from_index(i), args.value);
+          service::set_friction(w, MaterialId::from_index(i), args.value);
           return "friction of " + args.material + " set to " + format_value(args.value);
         }
         known += (i == 0 ? "" : ", ") + materials[i].name;
@@ -292,7 +293,7 @@ std::string Simulation::set_parameter(const protocol::ParameterArgs& args) {
     }
     if (name == "gravity") {
       const protocol::Vector3& g = args.vector;
-      w.set_gravity(g);
+      service::set_gravity(w, g);
       return "gravity set to (" + format_value(g.x) + ", " + format_value(g.y) +
              (dimension() == 3 ? ", " + format_value(g.z) : "") + ") m/s^2";
     }
@@ -319,7 +320,7 @@ std::vector<protocol::ContactEntry> Simulation::query_contacts(const protocol::C
     require(std::isfinite(*args.min_normal_force), "the force threshold must be finite");
     filter.min_normal_force = args.min_normal_force;
   }
-  std::vector<protocol::ContactEntry> contacts = service::query_contacts(world().view(), filter);
+  std::vector<protocol::ContactEntry> contacts = service::query_contacts(world(), filter);
   if (contacts.size() > max_query_contacts_) {
     throw CommandError(ReplyStatus::kBadRequest,
                        "the query matches " + std::to_string(contacts.size()) + " contacts, more than the " +

@@ -164,7 +164,7 @@ void SimulationRunner::finish() {
   unanswered_.clear();
   if (simulation_.loaded()) {
     if (simulation_.world().cycle_count() != last_telemetry_cycle_ || !telemetry_published_) publish_telemetry();
-    recorder_.finish(simulation_.world().view());
+    recorder_.finish(simulation_.world());
   }
   lifecycle_.take(Transition::kShutDown);
   // A one-shot server's last word keeps how its programme ended.

@@ -24,14 +24,14 @@ std::string SimulationRunner::install(Simulation::Prepared prepared, const io::R
       throw CommandError(ReplyStatus::kRefused, error.what());
     }
   }
-  if (simulation_.loaded()) recorder_.finish(simulation_.world().view());
+  if (simulation_.loaded()) recorder_.finish(simulation_.world());
   std::string message = simulation_.install(std::move(prepared));
   ++world_generation_;
   lifecycle_.take(Transition::kInstall);
   message_ = message;
   const WorldSession& world = simulation_.world();
   schedule_.published(world.cycle_count(), world.time());
-  recorder_.start(simulation_.case_name(), world.view(), simulation_.output(), resume);
+  recorder_.start(simulation_.case_name(), world, simulation_.output(), resume);
   if (const auto& problem = recorder_.directory_problem()) spdlog::error("no tables or checkpoints: {}", *problem);
   checkpoints_.begin(recorder_.directory_problem() ? std::filesystem::path() : recorder_.case_directory(),
                      simulation_.case_digest(), world.cycle_count());

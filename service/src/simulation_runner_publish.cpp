@@ -2,6 +2,7 @@
 // StateCache's get_state), the telemetry topics and get_state's readout -
 // built here and nowhere else, from one sample of the world.
 #include "dem/service/simulation_runner.h"
+#include "dem/service/world_view.h"
 
 namespace dem::service {
 
@@ -29,7 +30,7 @@ protocol::Status SimulationRunner::status() const {
     s.case_name = simulation_.case_name();
     s.dimension = simulation_.dimension();
     s.particles = world.particle_count();
-    s.walls = wall_count(world.view());
+    s.walls = wall_count(world);
     s.cycle = world.cycle_count();
     s.time = world.time();
     s.time_step = world.time_step();
@@ -86,8 +87,8 @@ const SimulationRunner::Readout& SimulationRunner::readout() const {
     readout.plates.server = options_.name;
     readout.plates.cycle = world.cycle_count();
     readout.plates.time = world.time();
-    readout.plates.walls = read_walls(world.view());
-    readout.stats = read_contact_stats(world.view());
+    readout.plates.walls = read_walls(world);
+    readout.stats = read_contact_stats(world);
     readout.stats.server = options_.name;
     readout.stats.cycle = world.cycle_count();
     readout.stats.time = world.time();
@@ -148,7 +149,7 @@ void SimulationRunner::publish_telemetry(bool scheduled) {
     telemetry_.publish(*regions);
   }
   // The case's stages write their rows at the case's output interval instead.
-  if (!run_ || !run_->of_case()) recorder_.record(world.view());
+  if (!run_ || !run_->of_case()) recorder_.record(world);
   if (scheduled) schedule_.published(world.cycle_count(), world.time());
   last_telemetry_cycle_ = world.cycle_count();
   telemetry_published_ = true;

@@ -108,7 +108,7 @@ void SimulationRunner::checkpoint_if_due() {
 }
 
 void SimulationRunner::record_row() {
-  recorder_.record(simulation_.world().view(), run_->stage());
+  recorder_.record(simulation_.world(), run_->stage());
   if (recorder_.failed()) run_->fail("an output file could not be written (see the error above)");
 }
 

@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "dem/service/case_programme.h"
+#include "dem/service/world_view.h"
 #include "format_value.h"
 
 namespace dem::service {
@@ -44,7 +45,7 @@ template <int Dim>
 StageProgress stage_progress(const std::vector<StageDefT<Dim>>& stages, std::size_t index, std::uint64_t stage_cycles,
                              const WorldSession& session) {
   const StageDefT<Dim>& stage = stages.at(index);
-  const BasicWorld<Dim>& world = *std::get<const BasicWorld<Dim>*>(session.view());
+  const BasicWorld<Dim>& world = session.world<Dim>();
   const StopConditions& until = stage.until;
   StageProgress progress;
   progress.fraction = 1.0;
@@ -87,15 +88,15 @@ StageProgress stage_progress(const std::vector<StageDefT<Dim>>& stages, std::siz
 std::string conditions_reached(const StopConditions& until, const WorldSession& world) {
   std::vector<std::string> held;
   if (until.wall_stress_above) {
-    const protocol::WallForce plate = read_wall(world.view(), until.wall_stress_above->wall);
+    const protocol::WallForce plate = read_wall(world, until.wall_stress_above->wall);
     held.push_back("the stress on " + plate.name + " reached " + format_value(plate.normal_stress) + " Pa");
   }
   if (until.wall_settlement_above) {
-    const protocol::WallForce plate = read_wall(world.view(), until.wall_settlement_above->wall);
+    const protocol::WallForce plate = read_wall(world, until.wall_settlement_above->wall);
     held.push_back("the settlement of " + plate.name + " reached " + format_value(plate.settlement) + " m");
   }
   if (until.kinetic_energy_below) {
-    held.push_back("the kinetic energy fell to " + format_value(kinetic_energy(world.view())) + " J");
+    held.push_back("the kinetic energy fell to " + format_value(kinetic_energy(world)) + " J");
   }
   std::string text;
   for (const std::string& part : held) text += (text.empty() ? "" : " and ") + part;

@@ -4,16 +4,8 @@
 
 namespace dem::service {
 
-namespace {
-
-AnyWorldSnapshot snapshot_of(const WorldSession& world) {
-  return on_world(world.view(), [](const auto& w) { return AnyWorldSnapshot(w.snapshot()); });
-}
-
-}  // namespace
-
 std::string snapshot_bytes(const WorldSession& world, const io::SnapshotInfo& info) {
-  return on_world(world.view(), [&](const auto& w) { return io::serialize_snapshot(w.snapshot(), info); });
+  return on_world(world, [&](const auto& w) { return io::serialize_snapshot(w.snapshot(), info); });
 }
 
 void restore_bytes(WorldSession& world, std::string_view bytes, const std::string& source) {
@@ -24,10 +16,15 @@ void restore_bytes(WorldSession& world, std::string_view bytes, const std::strin
   }
 }
 
-StateCheckpoint::StateCheckpoint(const WorldSession& world) : state_(snapshot_of(world)) {}
+StateCheckpoint::StateCheckpoint(const WorldSession& world)
+    : state_(on_world(world, [](const auto& w) { return decltype(state_)(w.snapshot()); })) {}
 
 std::uint64_t StateCheckpoint::cycle() const {
   return std::visit([](const auto& state) { return state.cycle; }, state_);
+}
+
+void StateCheckpoint::restore(WorldSession& world) const {
+  std::visit([&](const auto& state) { world.restore(state); }, state_);
 }
 
 std::string StateCheckpoint::bytes(const io::SnapshotInfo& info) const {

@@ -38,8 +38,8 @@ dem::service::CommandLimits command_limits() {
 
 // A few cycles as the server runs them: a one-stage programme of the engine's.
 void cycle(dem::service::WorldSession& world, std::uint64_t cycles) {
-  const auto run = dem::service::CaseProgramme::one_stage(world.dimension(), cycles, {}).begin_stage(0, world);
-  run->cycle(run->cycles_to_next_stop());
+  auto run = dem::service::CaseProgramme::one_stage(world.dimension(), cycles, {}).begin_stage(0, world);
+  run.cycle(run.cycles_to_next_stop());
 }
 
 void apply(dem::service::Simulation& simulation, const dem::protocol::Command& c) {
@@ -92,7 +92,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     dem::service::Simulation simulation(1, dem::fuzz::limits(), command_limits().max_query_contacts,
                                         dem::fuzz::files());
     dem::service::Simulation::Prepared prepared;
-    prepared.world = dem::service::make_session(dem::World(nine_discs().world));
+    prepared.world = std::make_unique<dem::service::WorldSession>(dem::World(nine_discs().world));
     prepared.programme = dem::service::CaseProgramme(nine_discs().stages);
     prepared.case_name = "nine_discs";
     prepared.contact_models = nine_discs().world.contact_models;

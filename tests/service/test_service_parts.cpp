@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <stdexcept>
 #include <tuple>
 #include <vector>
@@ -17,6 +18,8 @@
 #include "dem/service/lifecycle.h"
 #include "dem/service/simulation.h"
 #include "dem/service/telemetry_schedule.h"
+#include "dem/service/world_steering.h"
+#include "dem/service/world_view.h"
 #include "service_test_support.h"
 
 namespace dem::test {
@@ -176,34 +179,34 @@ struct CommandStage {
   // Steps to the stage's end as the runner does, a stop at a time.
   void run_to_end() {
     do {
-      stepper->cycle(stepper->cycles_to_next_stop());
-    } while (!stepper->check());
+      stepper.cycle(stepper.cycles_to_next_stop());
+    } while (!stepper.check());
   }
   service::CaseProgramme programme;
-  std::unique_ptr<service::StageStepper> stepper;
+  service::StageStepper stepper;
 };
 
 // run_until's conditions are the engine's stop rule (dem/programme.h):
 // stress reached from below, all conditions at once, at the checks.
 TEST(CommandStage, ReachesAStressFromBelowAtItsChecks) {
-  const auto session = service::make_session(compressed_nine_discs());
+  const auto session = std::make_unique<service::WorldSession>(compressed_nine_discs());
   service::WorldSession& world = *session;
-  const WallId top = service::find_wall(world.view(), "top");
-  const double stress = service::read_wall(world.view(), top).normal_stress;
+  const WallId top = service::find_wall(world, "top");
+  const double stress = service::read_wall(world, top).normal_stress;
   ASSERT_GT(stress, 0.0);
   StopConditions loading;  // the top wall presses down: its stress rises
   loading.wall_stress_above = WallThreshold{top, 1.5 * stress};
   loading.check_interval = 5;
-  world.set_wall_velocity(top, {0.0, -2.0, 0.0}, {});
+  service::set_wall_velocity(world, top, {0.0, -2.0, 0.0}, {});
   CommandStage run(world, 100000, loading);
-  EXPECT_EQ(run.stepper->cycles_to_next_stop(), 5u);
+  EXPECT_EQ(run.stepper.cycles_to_next_stop(), 5u);
   run.run_to_end();
-  const StageResult& result = run.stepper->result();
+  const StageResult& result = run.stepper.result();
   std::printf("stress %.4g Pa -> %.4g Pa (target %.4g) after %llu cycles\n", stress,
-              service::read_wall(world.view(), top).normal_stress, 1.5 * stress,
+              service::read_wall(world, top).normal_stress, 1.5 * stress,
               static_cast<unsigned long long>(result.cycles_run));
   EXPECT_TRUE(result.condition_met);
-  EXPECT_GE(service::read_wall(world.view(), top).normal_stress, 1.5 * stress);
+  EXPECT_GE(service::read_wall(world, top).normal_stress, 1.5 * stress);
   const std::string reached = service::conditions_reached(run.programme.stage_until(0), world);
   EXPECT_NE(reached.find("the stress on top reached"), std::string::npos) << reached;
   EXPECT_EQ(result.cycles_run % 5, 0u);
@@ -212,50 +215,50 @@ TEST(CommandStage, ReachesAStressFromBelowAtItsChecks) {
 // The direction is the condition's, not inferred from the start: a stress
 // target below the stress now holds at the first check.
 TEST(CommandStage, ATargetAlreadyPassedEndsAtTheFirstCheck) {
-  const auto session = service::make_session(compressed_nine_discs());
+  const auto session = std::make_unique<service::WorldSession>(compressed_nine_discs());
   service::WorldSession& world = *session;
-  const WallId top = service::find_wall(world.view(), "top");
+  const WallId top = service::find_wall(world, "top");
   StopConditions until;
-  until.wall_stress_above = WallThreshold{top, 0.5 * service::read_wall(world.view(), top).normal_stress};
+  until.wall_stress_above = WallThreshold{top, 0.5 * service::read_wall(world, top).normal_stress};
   until.check_interval = 5;
   CommandStage run(world, 1000, until);
-  run.stepper->cycle(5);
-  EXPECT_TRUE(run.stepper->check());
-  EXPECT_TRUE(run.stepper->result().condition_met);
-  EXPECT_EQ(run.stepper->result().cycles_run, 5u);
+  run.stepper.cycle(5);
+  EXPECT_TRUE(run.stepper.check());
+  EXPECT_TRUE(run.stepper.result().condition_met);
+  EXPECT_EQ(run.stepper.result().cycles_run, 5u);
 }
 
 // All conditions at once: a stress that holds does not end the run while
 // the kinetic energy is not below its (unreachable) bound; what holds is
 // said of each condition.
 TEST(CommandStage, EndsOnlyWhenEveryConditionHolds) {
-  const auto session = service::make_session(compressed_nine_discs());
+  const auto session = std::make_unique<service::WorldSession>(compressed_nine_discs());
   service::WorldSession& world = *session;
-  const WallId top = service::find_wall(world.view(), "top");
+  const WallId top = service::find_wall(world, "top");
   StopConditions until;
-  until.wall_stress_above = WallThreshold{top, 0.5 * service::read_wall(world.view(), top).normal_stress};
+  until.wall_stress_above = WallThreshold{top, 0.5 * service::read_wall(world, top).normal_stress};
   until.kinetic_energy_below = 0.0;  // never: the energy is not negative
   until.check_interval = 5;
   CommandStage run(world, 20, until);
   run.run_to_end();
-  EXPECT_FALSE(run.stepper->result().condition_met);
-  EXPECT_EQ(run.stepper->result().cycles_run, 20u);
+  EXPECT_FALSE(run.stepper.result().condition_met);
+  EXPECT_EQ(run.stepper.result().cycles_run, 20u);
   const std::string said = service::conditions_reached(until, world);
   EXPECT_NE(said.find("the stress on top reached "), std::string::npos) << said;
   EXPECT_NE(said.find(" and the kinetic energy fell to "), std::string::npos) << said;
 }
 
 TEST(CommandStage, StopsAtItsCapWithoutConditions) {
-  const auto world = service::make_session(compressed_nine_discs());
+  const auto world = std::make_unique<service::WorldSession>(compressed_nine_discs());
   CommandStage run(*world, 25, {});
-  EXPECT_EQ(run.stepper->cycles_to_next_stop(), 25u);
-  run.stepper->cycle(20);
-  EXPECT_FALSE(run.stepper->check());
-  EXPECT_EQ(run.stepper->cycles_to_next_stop(), 5u);
+  EXPECT_EQ(run.stepper.cycles_to_next_stop(), 25u);
+  run.stepper.cycle(20);
+  EXPECT_FALSE(run.stepper.check());
+  EXPECT_EQ(run.stepper.cycles_to_next_stop(), 5u);
   EXPECT_EQ(world->cycle_count(), 60u);  // 40 before, 20 by the run
-  run.stepper->cycle(5);
-  EXPECT_TRUE(run.stepper->check());
-  EXPECT_FALSE(run.stepper->result().condition_met);
+  run.stepper.cycle(5);
+  EXPECT_TRUE(run.stepper.check());
+  EXPECT_FALSE(run.stepper.result().condition_met);
 }
 
 TEST(TelemetrySchedule, CountsCyclesAndSimulatedTime) {
@@ -376,17 +379,17 @@ TEST(Simulation, ChecksArgumentsAndChangesNothingWhenTheyAreWrong) {
             ReplyStatus::kBadRequest);
   EXPECT_EQ(status_of([&] { simulation.set_parameter({"viscosity", "", 1.0, {}}); }), ReplyStatus::kNotFound);
   EXPECT_EQ(world.state_hash(), hash);
-  EXPECT_EQ(service::damping(world.view()).contact_beta, 0.01);
+  EXPECT_EQ(service::damping(world).contact_beta, 0.01);
   EXPECT_EQ(status_of([&] { simulation.set_parameter({"global_damping", "", 3.0, {}}); }), ReplyStatus::kOk);
-  EXPECT_EQ(service::damping(world.view()).global_alpha, 3.0);
+  EXPECT_EQ(service::damping(world).global_alpha, 3.0);
   EXPECT_EQ(status_of([&] { simulation.set_wall_servo({"top", -1, 1e6, 0.0, 0.0}); }), ReplyStatus::kOk);
   // The servo holds the top wall at 1e6 Pa over its 400 length: it moves in
   // until it does (2000 cycles, a one-stage programme as a cycle command runs).
-  const auto run = service::CaseProgramme::one_stage(world.dimension(), 2000, {}).begin_stage(0, world);
-  run->cycle(run->cycles_to_next_stop());
-  EXPECT_TRUE(run->check());
+  auto run = service::CaseProgramme::one_stage(world.dimension(), 2000, {}).begin_stage(0, world);
+  run.cycle(run.cycles_to_next_stop());
+  EXPECT_TRUE(run.check());
   EXPECT_EQ(world.cycle_count(), 2000u);
-  EXPECT_GT(service::read_wall(world.view(), service::find_wall(world.view(), "top")).normal_stress, 0.5e6);
+  EXPECT_GT(service::read_wall(world, service::find_wall(world, "top")).normal_stress, 0.5e6);
 }
 
 }  // namespace

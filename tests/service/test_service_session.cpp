@@ -34,9 +34,10 @@ StageResult step_through(service::StageStepper& stage, std::uint64_t chunk) {
   return stage.result();
 }
 
-// `count` cycles as a cycle command runs them: a one-stage programme.
-std::unique_ptr<service::StageStepper> cycles(service::WorldSession& session, std::uint64_t count) {
-  return service::CaseProgramme::one_stage(session.dimension(), count, {}).begin_stage(0, session);
+// `count` cycles as a cycle command runs them: a one-stage programme, stepped to its end.
+void run_cycles(service::WorldSession& session, std::uint64_t count) {
+  auto stage = service::CaseProgramme::one_stage(session.dimension(), count, {}).begin_stage(0, session);
+  step_through(stage, count);
 }
 
 TEST(CaseProgramme, StagesSteppedInChunksEndAsTheEnginesRunStage) {
@@ -49,10 +50,10 @@ TEST(CaseProgramme, StagesSteppedInChunksEndAsTheEnginesRunStage) {
   EXPECT_EQ(programme.stage_name(0), "compress");
   EXPECT_EQ(programme.stage_cycles(0), 40u);
   EXPECT_EQ(programme.stage_cycles(1), 2960u);
-  const auto session = service::make_session(World(definition.world));
+  const auto session = std::make_unique<service::WorldSession>(World(definition.world));
   for (std::size_t i = 0; i < programme.stage_count(); ++i) {
-    const auto stage = programme.begin_stage(i, *session);
-    EXPECT_EQ(step_through(*stage, 7).cycles_run, programme.stage_cycles(i));
+    auto stage = programme.begin_stage(i, *session);
+    EXPECT_EQ(step_through(stage, 7).cycles_run, programme.stage_cycles(i));
   }
   std::printf("engine %016llx, stepped in chunks of 7 cycles %016llx, at cycle %llu\n",
               static_cast<unsigned long long>(engine.state_hash()),
@@ -67,20 +68,21 @@ TEST(CaseProgramme, StagesSteppedInChunksEndAsTheEnginesRunStage) {
 TEST(CaseProgramme, AStageResumedFromACheckpointEndsAsOneNeverInterrupted) {
   const io::CaseDefinition definition = nine_discs();
   const service::CaseProgramme programme(definition.stages);
-  const auto session = service::make_session(World(definition.world));
-  step_through(*programme.begin_stage(0, *session), 40);
-  const auto hold = programme.begin_stage(1, *session);
-  hold->cycle(1000);
-  hold->check();
+  const auto session = std::make_unique<service::WorldSession>(World(definition.world));
+  auto compress = programme.begin_stage(0, *session);
+  step_through(compress, 40);
+  auto hold = programme.begin_stage(1, *session);
+  hold.cycle(1000);
+  hold.check();
   const service::StateCheckpoint checkpoint(*session);
   EXPECT_EQ(checkpoint.cycle(), 1040u);
-  step_through(*hold, 100);
+  step_through(hold, 100);
   const std::uint64_t whole = session->state_hash();
 
   checkpoint.restore(*session);
   EXPECT_EQ(session->cycle_count(), 1040u);
-  const auto rest = programme.begin_stage(1, *session, 1000);
-  EXPECT_EQ(step_through(*rest, 100).cycles_run, 1960u);
+  auto rest = programme.begin_stage(1, *session, 1000);
+  EXPECT_EQ(step_through(rest, 100).cycles_run, 1960u);
   EXPECT_EQ(session->cycle_count(), 3000u);
   EXPECT_EQ(session->state_hash(), whole);
 }
@@ -96,7 +98,7 @@ TEST(CaseProgramme, ACheckpointIsResumableOnlyOnAChecksCycleWhereTheStageGoesOn)
   StageDef at_once = never;
   at_once.until.kinetic_energy_below = 1e300;
   const service::CaseProgramme programme(std::vector<StageDef>{never, at_once});
-  const auto session = service::make_session(World(definition.world));
+  const auto session = std::make_unique<service::WorldSession>(World(definition.world));
   EXPECT_TRUE(programme.resumable_at(0, 10, *session));
   EXPECT_FALSE(programme.resumable_at(0, 15, *session));   // between two checks
   EXPECT_FALSE(programme.resumable_at(0, 100, *session));  // the stage's end
@@ -110,17 +112,18 @@ TEST(CaseProgramme, ACheckpointIsResumableOnlyOnAChecksCycleWhereTheStageGoesOn)
 TEST(WorldSnapshots, ASnapshotPutBackGoesOnAsTheWorldItWasTakenFrom) {
   const io::CaseDefinition definition = nine_discs();
   const service::CaseProgramme programme(definition.stages);
-  const auto first = service::make_session(World(definition.world));
-  step_through(*programme.begin_stage(0, *first), 40);
+  const auto first = std::make_unique<service::WorldSession>(World(definition.world));
+  auto compress = programme.begin_stage(0, *first);
+  step_through(compress, 40);
   const io::SnapshotInfo info{"nine_disc_damped", ""};
   const std::string bytes = service::snapshot_bytes(*first, info);
   EXPECT_EQ(service::StateCheckpoint(*first).bytes(info), bytes);
-  step_through(*cycles(*first, 500), 500);
+  run_cycles(*first, 500);
 
-  const auto second = service::make_session(World(definition.world));
+  const auto second = std::make_unique<service::WorldSession>(World(definition.world));
   service::restore_bytes(*second, bytes, "<test>");
   EXPECT_EQ(second->cycle_count(), 40u);
-  step_through(*cycles(*second, 500), 500);
+  run_cycles(*second, 500);
   EXPECT_EQ(second->state_hash(), first->state_hash());
 }
 
@@ -129,24 +132,25 @@ TEST(WorldSnapshots, ThreeDimensionalSessionsTooAndNotAcrossDimensions) {
   const io::LoadedCase loaded = io::load_case_file(box);
   auto definition = std::get<io::CaseDefinition3>(io::convert_any_case(loaded.message, loaded.source));
   definition.world.threads = 1;
-  const auto session = service::make_session(World3(definition.world));
+  const auto session = std::make_unique<service::WorldSession>(World3(definition.world));
   EXPECT_EQ(session->dimension(), 3);
-  EXPECT_TRUE(std::holds_alternative<const World3*>(session->view()));
-  step_through(*cycles(*session, 20), 20);
+  EXPECT_EQ(session->world<3>().particle_count(), session->particle_count());
+  EXPECT_THROW(session->world<2>(), std::bad_variant_access);
+  run_cycles(*session, 20);
   const service::StateCheckpoint checkpoint(*session);
   const std::string bytes = service::snapshot_bytes(*session, {});
-  step_through(*cycles(*session, 30), 30);
+  run_cycles(*session, 30);
   const std::uint64_t uninterrupted = session->state_hash();
 
   checkpoint.restore(*session);
-  step_through(*cycles(*session, 30), 30);
+  run_cycles(*session, 30);
   EXPECT_EQ(session->state_hash(), uninterrupted);
   service::restore_bytes(*session, bytes, "<test>");
   EXPECT_EQ(session->cycle_count(), 20u);
-  step_through(*cycles(*session, 30), 30);
+  run_cycles(*session, 30);
   EXPECT_EQ(session->state_hash(), uninterrupted);
 
-  const auto flat = service::make_session(World(nine_discs().world));
+  const auto flat = std::make_unique<service::WorldSession>(World(nine_discs().world));
   EXPECT_THROW(checkpoint.restore(*flat), std::bad_variant_access);
 }
 

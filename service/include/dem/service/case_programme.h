@@ -6,7 +6,6 @@
 #pragma once
 
 #include <cstdint>
-#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
@@ -44,12 +43,13 @@ class CaseProgramme {
   std::uint64_t stage_cycles(std::size_t stage) const;  // its length, or its cap when it has conditions
   const StopConditions& stage_until(std::size_t stage) const;
 
-  // Begins `stage` on `world` (a session of the programme's dimension):
+  // Begins `stage` on `world` (a session of the programme's dimension;
+  // std::bad_variant_access for the other):
   // its start actions, then its cycles. `done`: the stage's cycles run
   // already (a resumed checkpoint's): its start actions are in the state,
   // its length and minimum count from there (stage_remainder), and the
   // stepper counts only the rest. Throws what the engine throws.
-  std::unique_ptr<StageStepper> begin_stage(std::size_t stage, WorldSession& world, std::uint64_t done = 0) const;
+  StageStepper begin_stage(std::size_t stage, WorldSession& world, std::uint64_t done = 0) const;
 
   // Whether a checkpoint `stage_cycles` into `stage`, with `world` as it is
   // now, can be resumed as if never interrupted: before the stage's end, on

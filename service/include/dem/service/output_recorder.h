@@ -78,20 +78,19 @@ class OutputRecorder {
   template <int Dim>
   void finish(const BasicWorld<Dim>& world);  // before a new load and at shutdown
 
-  // The same for a session's world, whatever its dimension (its read view,
-  // WorldSession::view); `output`: the case's output settings, of which
-  // the tables take the plate loading analyses, the ParaView interval and
-  // the regions.
-  void start(const std::string& case_name, WorldView world, const io::OutputSettings& output,
+  // The same for a session's world, whatever its dimension; `output`: the
+  // case's output settings, of which the tables take the plate loading
+  // analyses, the ParaView interval and the regions.
+  void start(const std::string& case_name, const WorldSession& world, const io::OutputSettings& output,
              const io::ResumePoint* resume = nullptr) {
     on_world(world, [&](const auto& w) {
       start(case_name, w, output.compression, output.vtk_interval, resume, output.regions);
     });
   }
-  void record(WorldView world, std::optional<std::size_t> stage = std::nullopt) {
+  void record(const WorldSession& world, std::optional<std::size_t> stage = std::nullopt) {
     on_world(world, [&](const auto& w) { record(w, stage); });
   }
-  void finish(WorldView world) {
+  void finish(const WorldSession& world) {
     on_world(world, [&](const auto& w) { finish(w); });
   }
 

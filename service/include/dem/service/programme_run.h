@@ -9,7 +9,6 @@
 #pragma once
 
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <string>
 
@@ -75,7 +74,7 @@ class ProgrammeRun {
   std::size_t stage() const { return stage_; }  // the stage running or last run, or stage_count() after the last
 
   // Between stages: whether one is left to run.
-  bool stage_running() const { return stepper_ != nullptr; }
+  bool stage_running() const { return stepper_.has_value(); }
   bool stages_left() const { return next_ < plan_.first + plan_.count; }
   // Begins the next stage on `world` (stage() from now on), counted from
   // where `world` is, less the cycles of it run already. Throws what the
@@ -138,7 +137,7 @@ class ProgrammeRun {
   std::size_t stage_;
   std::uint64_t stage_start_;
   std::uint64_t stage_done_ = 0;  // the running stage's cycles before a resume
-  std::unique_ptr<StageStepper> stepper_;
+  std::optional<StageStepper> stepper_;
   StageResult last_result_;
   std::size_t last_stage_ = 0;  // the stage last_result_ is of
   HealthWatch health_;

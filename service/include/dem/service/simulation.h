@@ -1,4 +1,4 @@
-// The simulation a server owns: the world (2D or 3D, behind WorldSession)
+// The simulation a server owns: the world (2D or 3D, a WorldSession)
 // and what the service knows about it beyond the engine (the case's name
 // and description, its contact models, its loading programme and its
 // output settings). Every operation a command asks for

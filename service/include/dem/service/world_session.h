@@ -1,18 +1,18 @@
-// The engine behind the service, whatever its dimension: the one interface
-// the runner and the commands use to step and steer a 2D World or a 3D
-// World3 and to hold its state (its cycle, time, hash, health; a state put
-// back). WorldSessionT<Dim> implements it over the engine; a call per
-// command or per chunk of cycles, never per particle. What only reads a
-// world works on its read view (view()): the readers of world_view.h, the
-// case's tables (OutputRecorder), snapshots and checkpoints
-// (world_snapshots.h) and the case's loading programme (case_programme.h).
+// The engine behind the service, whatever its dimension: a session holds a
+// 2D World or a 3D World3 - one std::variant, the one place the dimension
+// is hidden - with what the service keeps beside it (the engine's health
+// monitor, the case's measurement regions). on_world(session, act) is the
+// one visit over it: the readers (world_view.h), the steering
+// (world_steering.h), the tables (OutputRecorder), snapshots
+// (world_snapshots.h) and the programme (case_programme.h) each act on the
+// world in its own dimension through it. The session itself only steps (a stage begun on
+// its world) and holds the state (its cycle, time, hash, health; a state
+// put back). A call per command or per chunk of cycles, never per particle.
 #pragma once
 
 #include <cstdint>
-#include <memory>
 #include <optional>
-#include <string>
-#include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -20,79 +20,83 @@
 #include "dem/io/case_definition.h"
 #include "dem/programme.h"
 #include "dem/protocol/messages.h"
-#include "dem/service/world_view.h"
+#include "dem/service/stage_stepper.h"
 #include "dem/snapshot.h"
 #include "dem/world.h"
 
 namespace dem::service {
 
-// A whole state of either dimension, as the engine copies it.
-using AnyWorldSnapshot = std::variant<WorldSnapshotT<2>, WorldSnapshotT<3>>;
-// A stage of the engine's of either dimension.
-using AnyStageDef = std::variant<StageDefT<2>, StageDefT<3>>;
-
-// A stage of the engine's (StageRunT) stepped by the runner between the
-// commands: cycle() and check() in turn until the stage is over.
-class StageStepper {
- public:
-  virtual ~StageStepper() = default;
-  virtual std::uint64_t cycles_to_next_stop() const = 0;
-  virtual void cycle(std::uint64_t cycles) = 0;
-  virtual bool check() = 0;
-  virtual const StageResult& result() const = 0;
-};
-
 class WorldSession {
  public:
-  virtual ~WorldSession() = default;
+  // `regions`: the case's measurement regions (output.region), read for the
+  // telemetry (read_regions).
+  template <int Dim>
+  explicit WorldSession(BasicWorld<Dim> world, const std::vector<io::MeasurementRegion>& regions = {});
+  // Its world keeps its address: a stage begun on it steps it in place.
+  WorldSession(const WorldSession&) = delete;
+  WorldSession& operator=(const WorldSession&) = delete;
+
+  // `act(world)` on the session's world, whatever its dimension.
+  template <class Act>
+  friend decltype(auto) on_world(const WorldSession& session, Act&& act) {
+    return std::visit([&](const auto& held) -> decltype(auto) { return act(held.world); }, session.held_);
+  }
+  template <class Act>
+  friend decltype(auto) on_world(WorldSession& session, Act&& act) {
+    return std::visit([&](auto& held) -> decltype(auto) { return act(held.world); }, session.held_);
+  }
+
+  // The world, for what knows its dimension already (a stage of the
+  // programme's): std::bad_variant_access when it is of the other.
+  template <int Dim>
+  const BasicWorld<Dim>& world() const {
+    return std::get<Held<Dim>>(held_).world;
+  }
 
   // State.
-  virtual std::uint8_t dimension() const = 0;
-  virtual WorldView view() const = 0;
-  virtual std::uint64_t cycle_count() const = 0;
-  virtual double time() const = 0;       // s
-  virtual double time_step() const = 0;  // s
-  virtual int particle_count() const = 0;
-  virtual std::uint64_t state_hash() const = 0;
+  std::uint8_t dimension() const { return held_.index() == 0 ? 2 : 3; }
+  std::uint64_t cycle_count() const;
+  double time() const;       // s
+  double time_step() const;  // s
+  int particle_count() const;
+  std::uint64_t state_hash() const;
   // A motion not finite or a particle flung out (HealthMonitorT::
   // motion_suspect): a pass over the particles alone, cheap enough after
   // every chunk, for what a blow-up reaches between two paced health
   // assessments.
-  virtual bool motion_suspect() const = 0;
+  bool motion_suspect() const;
   // The engine's health status of the state now (a pass over the particles
   // and contacts: HealthWatch paces it).
-  virtual StepHealth assess_health() = 0;
+  StepHealth assess_health();
   // The measures of the case's regions; nothing when it names none.
-  virtual std::optional<protocol::RegionTelemetry> read_regions() const = 0;
+  std::optional<protocol::RegionTelemetry> read_regions() const;
 
-  // Steering. A 2D world refuses out-of-plane vectors (CommandError); the
-  // engine's own checks throw DefinitionError.
-  virtual void set_wall_velocity(WallId wall, const protocol::Vector3& velocity,
-                                 const protocol::Vector3& angular_velocity) = 0;
-  virtual void set_wall_servo(WallId wall, const ServoDef& servo) = 0;
-  virtual void set_damping(const DampingDef& damping) = 0;
-  virtual void set_time_step_fraction(double fraction) = 0;
-  virtual void set_friction(MaterialId material, double friction) = 0;
-  virtual void set_gravity(const protocol::Vector3& gravity) = 0;
-  virtual void set_threads(int threads) = 0;
   // Replaces the world by a state of its dimension (std::bad_variant_access
-  // for the other); its threads stay and the health monitor starts afresh
-  // from it. The old world is freed first, so going back to a state needs
-  // no more memory than that state; if building the new one throws
-  // (std::bad_alloc), the session is left without a world and must be
-  // dropped (Simulation::drop).
-  virtual void restore(const AnyWorldSnapshot& state) = 0;
+  // for the other, with nothing changed); its threads stay and the health
+  // monitor starts afresh from it. The old world is freed first, so going
+  // back to a state needs no more memory than that state; if building the
+  // new one throws (std::bad_alloc), the session is left without a world
+  // and must be dropped (Simulation::drop).
+  template <int Dim>
+  void restore(const WorldSnapshotT<Dim>& state);
 
   // Stepping: a stage of the engine's on this session's world, its start
   // actions done (std::bad_variant_access for a stage of the other
-  // dimension). The stepper steps this session's world (valid while this
-  // session is).
-  virtual std::unique_ptr<StageStepper> begin_stage(AnyStageDef stage) = 0;
-};
+  // dimension). The stepper steps this session's world in place (valid
+  // while this session is and its world is not restored).
+  template <int Dim>
+  StageStepper begin_stage(StageDefT<Dim> stage);
 
-// `regions`: the case's measurement regions (output.region), read for the
-// telemetry (read_regions).
-template <int Dim>
-std::unique_ptr<WorldSession> make_session(BasicWorld<Dim> world, std::vector<io::MeasurementRegion> regions = {});
+ private:
+  // The world of one dimension and what is kept beside it.
+  template <int Dim>
+  struct Held {
+    Held(BasicWorld<Dim> w, const std::vector<io::MeasurementRegion>& case_regions);
+    BasicWorld<Dim> world;
+    HealthMonitorT<Dim> health;
+    std::vector<analysis::RegionT<Dim>> regions;
+  };
+  std::variant<Held<2>, Held<3>> held_;
+};
 
 }  // namespace dem::service

@@ -2,13 +2,14 @@
 // of the state now (save_snapshot, checkpoints, a programme's final
 // snapshot), a copy kept in memory to write or go back to later (a run's
 // last good state), and a snapshot's state put back into the session. They
-// read the world through the session's view and replace it only through
+// read the world through on_world and replace it only through
 // WorldSession::restore.
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <variant>
 
 #include "dem/io/snapshot_conversion.h"
 #include "dem/service/world_session.h"
@@ -32,10 +33,12 @@ class StateCheckpoint {
   std::uint64_t cycle() const;
   std::string bytes(const io::SnapshotInfo& info) const;  // a serialized dem.proto.Snapshot
   // Puts `world` (the session it was taken from) back to it.
-  void restore(WorldSession& world) const { world.restore(state_); }
+  // std::bad_variant_access, with nothing changed, for a session of the
+  // other dimension.
+  void restore(WorldSession& world) const;
 
  private:
-  AnyWorldSnapshot state_;
+  std::variant<WorldSnapshotT<2>, WorldSnapshotT<3>> state_;
 };
 
 }  // namespace dem::service
