@@ -14,7 +14,15 @@ measures the round trip of a cache line between the two cores
 hours, and two threads' speed-up with it (docs/PERFORMANCE.md).
 
   bench/peer_comparison.py [--sizes 10k,100k] [--threads 1,2] [--repeats 2]
+                           [--builds build[,build-v3]] [--materials one[,many]]
                            [--million] [--markdown FILE]
+
+--builds puts several builds of this engine in the same run (say one for
+x86-64-v4 and one configured with -DDEM_ARCH=x86-64-v3, docs/INSTALL.md),
+--materials several material mixes of bench_plate_compression (the same
+physics with the walls' and particles' materials copied): each build and
+mix is a column of its own, with its ratio to LIGGGHTS, all taking turns
+with it.
 
 --million also runs this engine on a 1,000,000-sphere bed: ten copies of
 the 100k periodic packing side by side along x (a 1.0 m x 0.1 m periodic
@@ -82,14 +90,17 @@ def bench_rate(out):
 
 
 class Ours:
-    def __init__(self, build):
+    def __init__(self, build, materials="one"):
         self.program = build / "bench" / "bench_plate_compression"
         if not self.program.exists():
             sys.exit(f"peer_comparison: {self.program} not found: build first (bash scripts/build.sh)")
+        self.materials = materials
+        self.label = f"{build_level(build)}" + ("" if materials == "one" else f", materials {materials}")
 
     def run(self, case, threads):
         env = dict(os.environ, OMP_WAIT_POLICY="active")
-        out, rss = run_timed([*TIME, str(self.program), "--case", str(case), "--threads", str(threads)], env=env)
+        out, rss = run_timed([*TIME, str(self.program), "--case", str(case), "--threads", str(threads),
+                              "--materials", self.materials], env=env)
         return {"rate": bench_rate(out), "cpp": float(re.search(r"contacts/particle ([0-9.]+)", out).group(1)),
                 "fz": float(re.search(r"plate Fz ([0-9.e+-]+) N", out).group(1)), "rss": rss, "text": out}
 
@@ -131,6 +142,17 @@ class Liggghts:
                 "fz": float(re.search(r"^DENSE_PLATE_FZ ([0-9.e+-]+)", text, re.M).group(1)), "rss": rss}
 
 
+def build_level(build):
+    """The instruction set a build was configured for (its DEM_ARCH; "auto" resolved as CMake did)."""
+    cache = build / "CMakeCache.txt"
+    text = cache.read_text() if cache.exists() else ""
+    arch = re.search(r"^DEM_ARCH:STRING=(.*)$", text, re.M)
+    arch = arch.group(1) if arch else "auto"
+    if arch == "auto":
+        arch = "x86-64-v4" if re.search(r"^DEM_ARCH_SUPPORTED_x86-64-v4:INTERNAL=1$", text, re.M) else "x86-64-v3"
+    return arch
+
+
 def best(runs):
     """The fastest run's figures (physics is identical between repeats)."""
     return max(runs, key=lambda r: r["rate"])
@@ -166,7 +188,9 @@ def main():
     parser.add_argument("--threads", default="1,2")
     parser.add_argument("--repeats", type=int, default=2)
     parser.add_argument("--million", action="store_true", help="also run this engine on 1,000,000 spheres")
-    parser.add_argument("--build", type=Path, default=ROOT / "build")
+    parser.add_argument("--build", type=Path, default=ROOT / "build", help="the build whose core_round_trip runs")
+    parser.add_argument("--builds", help="builds of this engine side by side, comma-separated (default: --build)")
+    parser.add_argument("--materials", default="one", help="material mixes side by side: one, walls, particles, few, many")
     parser.add_argument("--work", type=Path, default=ROOT / "build" / "peer_comparison")
     parser.add_argument("--markdown", type=Path, help="also write the table here (Markdown)")
     args = parser.parse_args()
@@ -175,20 +199,25 @@ def main():
 
     install_packages()
     args.work.mkdir(parents=True, exist_ok=True)
-    ours, peer = Ours(args.build), Liggghts(args.work)
+    builds = [Path(b) for b in args.builds.split(",")] if args.builds else [args.build]
+    variants = [Ours(b, m) for b in builds for m in args.materials.split(",")]
+    ours, peer = variants[0], Liggghts(args.work)
     round_trips = [core_round_trip(args.build)]
-    rows = []
+    rows, side_rows = [], []
     for size in sizes:
         peer.prepare(size)
         case = case_file(size)
         for t in threads:
-            runs_ours, runs_peer = [], []
+            runs_ours, runs_peer = [[] for _ in variants], []
             for r in range(args.repeats):
-                runs_ours.append(ours.run(case, t))
+                for runs, variant in zip(runs_ours, variants):
+                    runs.append(variant.run(case, t))
                 runs_peer.append(peer.run(size, t))
-                print(f"  {size} {t} thread(s)/rank(s), repeat {r + 1}: ours {runs_ours[-1]['rate'] / 1e6:.2f} M/s, "
-                      f"LIGGGHTS {runs_peer[-1]['rate'] / 1e6:.2f} M/s", flush=True)
-            rows.append((size, t, best(runs_ours), best(runs_peer)))
+                print(f"  {size} {t} thread(s)/rank(s), repeat {r + 1}: "
+                      + ", ".join(f"ours ({v.label}) {runs[-1]['rate'] / 1e6:.2f} M/s" for v, runs in zip(variants, runs_ours))
+                      + f", LIGGGHTS {runs_peer[-1]['rate'] / 1e6:.2f} M/s", flush=True)
+            rows.append((size, t, best(runs_ours[0]), best(runs_peer)))
+            side_rows.append((size, t, [best(runs) for runs in runs_ours], best(runs_peer)))
 
     million = []
     if args.million:
@@ -211,6 +240,18 @@ def main():
                      f"| {o['cpp']:.4f} / {p['cpp']:.4f} ({100 * (o['cpp'] / p['cpp'] - 1):+.2f} %) "
                      f"| {o['fz']:.5f} / {p['fz']:.5f} ({100 * (o['fz'] / p['fz'] - 1):+.1f} %) "
                      f"| {o['rss']:.0f} MiB / {p['rss']:.0f} MiB |")
+    if len(variants) > 1:
+        lines += ["", f"Side by side in the same run (the first column is the table's above; {cpu_flags()}):", "",
+                  "| N | threads / ranks | " + " | ".join(f"ours, {v.label}" for v in variants) + " | LIGGGHTS |",
+                  "|---|---|" + "---|" * (len(variants) + 1)]
+        for size, t, results, p in side_rows:
+            cells = [f"{o['rate'] / 1e6:.2f} M ({o['rate'] / p['rate']:.2f}x)" for o in results]
+            lines.append(f"| {size} | {t} | " + " | ".join(cells) + f" | {p['rate'] / 1e6:.2f} M |")
+        differing = [(size, t, v.label) for size, t, results, _ in side_rows for v, o in zip(variants, results)
+                     if o["cpp"] != results[0]["cpp"] or o["fz"] != results[0]["fz"]]
+        lines.append("\nEvery column's contacts per particle and plate force equal the first's to the printed digit."
+                     if not differing else "\nOther physics than the first column's: "
+                     + ", ".join(f"{size} {t} ({label})" for size, t, label in differing))
     for size, t, o, _ in rows:
         if t != 1 and one_thread.get(size):
             lines.append(f"\n{size}: {t} threads run at {o['rate'] / one_thread[size]:.2f}x our one-thread rate.")
@@ -237,6 +278,19 @@ def core_round_trip(build):
     out = subprocess.run([str(program)], capture_output=True, text=True).stdout
     found = re.search(r": ([0-9]+ ns)", out)
     return found.group(1) if found else "not measured"
+
+
+def cpu_flags():
+    """The vector instruction sets /proc/cpuinfo lists, as text."""
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("flags"):
+                have = set(line.split(":", 1)[1].split())
+                wanted = ["avx2", "fma", "avx512f", "avx512vl", "avx512bw", "avx512dq", "avx512cd"]
+                return "flags " + " ".join(f for f in wanted if f in have)
+    except OSError:
+        pass
+    return "flags unknown"
 
 
 def platform_name():
