@@ -43,6 +43,8 @@ void apply_shear_setting(StageDef& stage, const DampingDef& in_effect, const She
 }
 
 std::optional<ContinuumPerturbation> continuum_perturbation(const World& world) {
+  // A box without the field lays none (and spares the snapshot's copy).
+  if (!world.box_control() || !world.box_control()->continuum) return std::nullopt;
   const std::optional<ContinuumFieldT<2>> field = world.snapshot().continuum;
   if (!field || world.particle_count() == 0) return std::nullopt;
   const ParticleViewT<2> particles = world.particles();
