@@ -309,6 +309,45 @@ def test_randall_contact_lattice_from_the_two_states_dem_validate_keeps(tmp_path
     assert "2 kept, 1 broken (dashed), 1 new (thick)" in figure.axes[0].get_title()
 
 
+def test_randall_con1_sweep_figure_from_a_dem_validate_directory(tmp_path):
+    """Fig. 6.22 (sin phi and the isotropic stress for each CON1, with Delta
+    F / F and the perturbation velocities over the field's) from the tables
+    dem_validate randall-shear --con1 writes: con1.csv naming each run's
+    directory, and its randall.csv and perturbation.csv."""
+    with open(tmp_path / "con1.csv", "w", newline="") as out:
+        summary = csv.writer(out)
+        summary.writerow(["con1", "packing_seed", "directory", "end_strain", "peak_sin_phi", "peak_strain",
+                          "mean_stress_start", "mean_stress_end", "largest_out_of_balance", "smallest_ratio",
+                          "largest_ratio", "ratio_0.05_percent", "ratio_0.1_percent", "ratio_0.2_percent",
+                          "ratio_0.5_percent", "ratio_2_percent"])
+        for con1 in (0.99, 0.25):
+            for seed in (1989, 1):
+                directory = tmp_path / f"con1_{con1:g}" / f"packing_{seed}"
+                directory.mkdir(parents=True)
+                summary.writerow([con1, seed, f"con1_{con1:g}/packing_{seed}", 0.002, 0.3, 0.001, 9e4, 1.3e5, 0.01,
+                                  0.01, 0.2, 0.1, 0.05, 0.03, "", ""])
+                with open(directory / "randall.csv", "w", newline="") as table:
+                    rows = csv.writer(table)
+                    rows.writerow(["cycle", "deviator_strain", "volumetric_strain", "out_of_balance", "region",
+                                   "stress_1", "stress_2", "sin_phi"])
+                    for k in range(20):
+                        strain = 1e-4 * k
+                        for region in ("circle_74", "all"):
+                            rows.writerow([1000 * k, strain, 0, 0.01, region, 1e5 * (1 + (3 - con1) * strain),
+                                           1e5 * (1 - strain), 0.3 * (1 - np.exp(-k / 4))])
+                with open(directory / "perturbation.csv", "w", newline="") as table:
+                    rows = csv.writer(table)
+                    rows.writerow(["cycle", "deviator_strain", "out_of_balance", "perturbation_rms", "field_rms",
+                                   "perturbation_ratio"])
+                    for k in range(1, 20):
+                        rows.writerow([1000 * k, 1e-4 * k, 0.01 * con1, 1e-5 / k, 1e-4, 0.1 * con1 / k])
+    from dem.plots import draw_randall_directory
+
+    written = draw_randall_directory(tmp_path, tmp_path / "png")
+    assert {p.name for p in written} == {"fig6_22_con1.png"}
+    assert_png(written[0])
+
+
 def test_randall_centripetal_figures_from_a_dem_validate_directory(tmp_path):
     """Randall's 6.4.2 (Figs. 6.4-6.8) from the tables dem_validate
     randall-centripetal writes: the contact forces after the compaction and

@@ -11,13 +11,16 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
 
 #include "deposition.h"
 #include "hopper.h"
 #include "randall_assembly.h"
 #include "randall_centripetal.h"
+#include "randall_damping.h"
 
 namespace dem::validation {
 namespace {
@@ -123,6 +126,38 @@ TEST(Randall, AWiderOrificeDischargesFaster) {
   const Verdict verdict = judge_hopper(runs);
   verdict.print(stdout, "hopper");
   EXPECT_TRUE(verdict.passed()) << verdict;
+}
+
+// Randall 6.5.1's CON1 ("When CON1 equals 1.0 then no damping is applied.
+// For a CON1 value of 0.0 then the perturbation velocities are completely
+// damped out") as the engine's global damping at the shear's step: the
+// Fig. 6.23 case's 4.62e+06 /s is CON1 0.75 at 6.19e-08 s, and a --con1
+// sweep sets the shear stage to it. The sweep itself (Fig. 6.22) is
+// print-only, dem_validate randall-shear --con1: its isotropic stress
+// ordering holds on two packings of three (docs/VALIDATION.md 6.5.1).
+TEST(Randall, Con1IsThePerturbationVelocityKeptAStep) {
+  const double dt = 6.19e-08;
+  EXPECT_NEAR(global_alpha_for_con1(0.75, dt), 4.62e+06, 0.005e+06);
+  EXPECT_DOUBLE_EQ(global_alpha_for_con1(1.0, dt), 0.0);
+  for (const double con1 : {0.0, 0.25, 0.5, 0.8, 0.99}) {
+    EXPECT_NEAR(con1_for_global_alpha(global_alpha_for_con1(con1, dt), dt), con1, 1e-12) << con1;
+  }
+  StageDef shear;
+  shear.name = "shear";
+  shear.time_step = TimeStepSetting{0.0, dt};
+  shear.cycles = 600000;
+  shear.until.deviator_strain_above = 0.002;
+  DampingDef in_effect;
+  in_effect.contact_beta = 1e-6;
+  apply_shear_setting(shear, in_effect, ShearSetting{0.25, 0.02});
+  ASSERT_TRUE(shear.damping.has_value());
+  EXPECT_DOUBLE_EQ(shear.damping->global_alpha, global_alpha_for_con1(0.25, dt));
+  EXPECT_DOUBLE_EQ(shear.damping->contact_beta, 1e-6);  // the rest of the damping kept
+  EXPECT_EQ(shear.cycles, 6000000u);                    // the cap scaled with the strain
+  EXPECT_DOUBLE_EQ(*shear.until.deviator_strain_above, 0.02);
+  StageDef fraction_step = shear;
+  fraction_step.time_step = TimeStepSetting{0.1, 0.0};
+  EXPECT_THROW(apply_shear_setting(fraction_step, in_effect, ShearSetting{0.5, std::nullopt}), std::runtime_error);
 }
 
 }  // namespace

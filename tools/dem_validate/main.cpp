@@ -8,6 +8,8 @@
 //   dem_validate verification --out DIR [--seeds S,...]      (Cundall & Strack 1979, Tables 1-3: stages A and B)
 //   dem_validate randall-compression --case FILE --out DIR [--seeds S,...]  (Randall 1989, 6.4.3: 100 kPa)
 //   dem_validate randall-shear --case FILE --out DIR [--seeds S,...]        (6.5.2: constant-volume shear)
+//   dem_validate randall-shear --case FILE --out DIR --con1 C,... [--seeds S,...] [--to-strain E]
+//                                           (6.5.1, Fig. 6.22: the continuum shear by mass-proportional damping)
 //   dem_validate randall-centripetal --case FILE --out DIR [--seeds S,...]  (6.4.2: centripetal compaction)
 //   dem_validate hopper --case FILE --out DIR [--runs 45:10,30:10,...]  (Randall 1989, 6.2: discharge rates)
 //   dem_validate deposition --case FILE --out DIR [--seeds S,...]  (Randall 1989, 6.3: pluvial deposition)
@@ -37,6 +39,7 @@
 #include "nine_disc.h"
 #include "randall_assembly.h"
 #include "randall_centripetal.h"
+#include "randall_damping.h"
 #include "rolling.h"
 #include "verification.h"
 
@@ -131,6 +134,18 @@ int main(int argc, char** argv) {
       "randall-compression", "Randall (1989) 6.4.3: a cases/randall assembly compressed to 100 kPa, then friction");
   auto* randall_shear =
       app.add_subcommand("randall-shear", "Randall (1989) 6.5.2: the same, then sheared at constant volume");
+  std::vector<double> randall_con1;
+  std::optional<double> randall_to_strain;
+  randall_shear
+      ->add_option("--con1", randall_con1,
+                   "6.5.1, Fig. 6.22: shear once for each of Randall's CON1 values (the velocity kept a step, 1 "
+                   "no damping), each into OUT/con1_VALUE/, and print the sweep")
+      ->delimiter(',')
+      ->check(CLI::Range(0.0, 1.0));
+  randall_shear
+      ->add_option("--to-strain", randall_to_strain,
+                   "with --con1: shear to this deviator strain (0.02 = 2 %) instead of the case's")
+      ->check(CLI::PositiveNumber);
   auto* randall_centripetal = app.add_subcommand(
       "randall-centripetal",
       "Randall (1989) 6.4.2: centripetal compaction, 100 kPa, shear at constant mean stress in three circles");
@@ -208,7 +223,10 @@ int main(int argc, char** argv) {
     if (*restitution) verdict = dem::validation::report_restitution(out);
     if (*mindlin) verdict = dem::validation::report_mindlin_loading(out);
     if (*box) verdict = dem::validation::report_box_settle(cases / "validation" / "box_settle.case.txtpb", out);
-    if (*randall_compression || *randall_shear) {
+    if (*randall_shear && !randall_con1.empty()) {
+      verdict = dem::validation::report_con1_sweep(randall_case, randall_con1, out, randall_seeds, randall_to_strain);
+    } else if (*randall_compression || *randall_shear) {
+      if (randall_to_strain) throw std::runtime_error("--to-strain goes with --con1");
       verdict = dem::validation::report_randall(randall_case, static_cast<bool>(*randall_shear), out, randall_seeds);
     }
     if (*randall_centripetal) verdict = dem::validation::report_centripetal(randall_case, out, randall_seeds);

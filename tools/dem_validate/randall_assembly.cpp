@@ -13,6 +13,7 @@
 #include "dem/io/regions_csv.h"
 #include "dem/programme.h"
 #include "packings.h"
+#include "randall_damping.h"
 
 namespace dem::validation {
 
@@ -47,10 +48,16 @@ RandallFigures randall_figures(const std::string& case_name) {
 }
 
 RandallRun run_randall(const std::filesystem::path& case_file, bool shear,
-                       const std::optional<std::filesystem::path>& out, std::optional<std::uint64_t> packing_seed) {
+                       const std::optional<std::filesystem::path>& out, std::optional<std::uint64_t> packing_seed,
+                       const ShearSetting& setting) {
   io::LoadedCase loaded = io::load_case_file(case_file);
   if (packing_seed) reseed_packings(loaded.message, *packing_seed);
-  const io::CaseDefinition def = io::convert_case(loaded.message, loaded.source);
+  io::CaseDefinition def = io::convert_case(loaded.message, loaded.source);
+  DampingDef damping = def.world.damping;  // the damping in effect as each stage starts
+  for (StageDef& stage : def.stages) {
+    if (stage.name == "shear") apply_shear_setting(stage, damping, setting);
+    if (stage.damping) damping = *stage.damping;
+  }
   std::vector<analysis::Region> regions;
   for (const io::MeasurementRegion& r : def.output.regions) regions.push_back(io::region_for<2>(r));
   if (regions.empty()) throw std::runtime_error(case_file.string() + ": the case names no output.region");
@@ -81,6 +88,10 @@ RandallRun run_randall(const std::filesystem::path& case_file, bool shear,
         s.deviator_strain = box.deviator_strain;
         s.volumetric_strain = box.volumetric_strain;
         s.out_of_balance = w.assembly_measures().out_of_balance;
+        if (const std::optional<ContinuumPerturbation> p = continuum_perturbation(w)) {
+          s.perturbation_rms = p->perturbation_rms;
+          s.field_rms = p->field_rms;
+        }
         for (const analysis::Region& region : regions) {
           s.regions.push_back(analysis::measure_region(sample, region));
           if (series) {

@@ -31,6 +31,9 @@ struct ShearSample {
   double volumetric_strain = 0.0;
   double out_of_balance = 0.0;                    // Delta F / F
   std::vector<analysis::RegionMeasures> regions;  // the case's regions, in order
+  // Under a continuum field (6.5.1): the particles' perturbation velocities
+  // against the field's (randall_damping.h); none without a field.
+  std::optional<double> perturbation_rms, field_rms;  // m/s
 };
 
 // What Randall measured on one of his two assemblies (6.4.3, 6.5.2,
@@ -77,6 +80,15 @@ struct RandallRun {
   bool lattice_taken = false;
 };
 
+// What a run may change in the case's shear stage (6.5.1's sweep): the
+// mass-proportional damping as Randall's CON1, the velocity kept per step
+// (randall_damping.h), and the deviator strain the shear runs to (its
+// cycle cap scaled with it).
+struct ShearSetting {
+  std::optional<double> con1;
+  std::optional<double> to_strain;
+};
+
 // Runs the case's stages up to "friction", and "shear" too when `shear`,
 // on its own packing or on `packing_seed`'s; with `out`, writes the
 // figures' CSV files there (randall.csv, roses.csv, obliquity.csv, the
@@ -84,7 +96,7 @@ struct RandallRun {
 // velocities at 0.005 %, the contact stresses at 0, 0.1 and 0.2 %).
 RandallRun run_randall(const std::filesystem::path& case_file, bool shear,
                        const std::optional<std::filesystem::path>& out = std::nullopt,
-                       std::optional<std::uint64_t> packing_seed = std::nullopt);
+                       std::optional<std::uint64_t> packing_seed = std::nullopt, const ShearSetting& setting = {});
 
 void print_randall(std::FILE* out, const RandallRun& run);
 

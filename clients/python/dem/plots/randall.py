@@ -1,7 +1,7 @@
 """Randall's (1989) chapter 6 figures, every one a dem_validate randall-*,
 randall-centripetal or hopper directory holds (``python3 -m dem.plots
 randall DIR [OUT]``): the plots of granular.py, randall_centripetal.py,
-randall_contact_stresses.py and randall_lattice.py."""
+randall_contact_stresses.py, randall_damping.py and randall_lattice.py."""
 
 import pathlib
 
@@ -10,6 +10,7 @@ from .granular import (plot_discharge, plot_obliquity_histogram, plot_rose, plot
                        plot_velocity_field, read_rows)
 from .randall_centripetal import draw_centripetal_directory
 from .randall_contact_stresses import plot_contact_stress_histograms, plot_size_contacts
+from .randall_damping import plot_con1_sweep
 from .randall_lattice import plot_contact_lattice
 
 
@@ -48,6 +49,8 @@ def draw_randall_directory(directory, out=None):
     if all(path.is_file() for path in lattice):
         written.append(save_png(plot_contact_lattice(*(read_rows(path) for path in lattice)),
                                 out / "fig6_35_contact_lattice.png"))
+    if (directory / "con1.csv").exists():
+        written.append(save_png(plot_con1_sweep(directory), out / "fig6_22_con1.png"))
     if (directory / "centripetal.csv").exists():
         written.extend(draw_centripetal_directory(directory, out, say=print))
     if (directory / "hopper.csv").exists():
