@@ -105,10 +105,10 @@ constexpr bool contains(Cache set, Cache cache) {
   return (static_cast<unsigned>(set) & static_cast<unsigned>(cache)) != 0;
 }
 
-// Marks the caches out of date: the next step (or pass) redoes them. Only
-// when they would change: a rebuild comes earlier than the travel alone
-// would have called it, and a float sum's order follows the table's
-// rebuilds (sorted_cycle), so an extra one changes the trajectory's bits.
+// Marks the caches out of date; the next step (or pass) redoes them. Only
+// for what an edit changed: a table rebuilt earlier than the travel calls
+// moves the next re-sort (sorted_cycle) and so the order of the float sums,
+// so a needless invalidation changes the trajectory's bits.
 template <int Dim>
 void invalidate(WorldState<Dim>& state, Cache caches) {
   if (contains(caches, Cache::kContactTable)) state.contacts_stale = true;
