@@ -12,6 +12,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string_view>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #if defined(__AVX__)
@@ -19,7 +22,10 @@
 #endif
 
 #include "contact_table.h"
+#include "inline.h"
 #include "large_pages.h"
+#include "particle_fields.h"
+#include "particles.h"
 
 namespace dem {
 
@@ -51,24 +57,102 @@ struct alignas(64) HotMotion {
   Spin<Dim> angular_velocity;
 };
 
+// Each field's place in the copies comes from the field list
+// (particle_fields.h: HotLane): the first double of the field in its
+// record. The members the pass reads by name lie where the list puts them.
+template <HotRecord kRecord, int Dim>
+using HotRecordOf = std::conditional_t<kRecord == HotRecord::kPlace, HotPlace<Dim>, HotMotion<Dim>>;
+
+template <typename T>
+constexpr int lane_width() {
+  if constexpr (std::is_arithmetic_v<T>) {
+    return 1;
+  } else {
+    return static_cast<int>(T::SizeAtCompileTime);
+  }
+}
+
+// The first double of the field `name` in its record, -1 if it has none.
+template <int Dim>
+constexpr int hot_lane(std::string_view name) {
+  int lane = -1;
+  for_each_particle_field<Dim>([&](const ParticleFieldInfo& info, auto, auto, auto hot) {
+    if (decltype(hot)::record != HotRecord::kNone && std::string_view(info.name) == name) lane = decltype(hot)::lane;
+  });
+  return lane;
+}
+
+// The fields of a record lie apart and inside it.
+template <int Dim, HotRecord kRecord>
+constexpr bool hot_lanes_fit() {
+  constexpr int kWidth = sizeof(HotRecordOf<kRecord, Dim>) / sizeof(double);
+  bool used[kWidth] = {};
+  bool fit = true;
+  for_each_particle_field<Dim>([&](const ParticleFieldInfo&, auto column, auto, auto hot) {
+    using Hot = decltype(hot);
+    if constexpr (Hot::record == kRecord) {
+      using Value = std::remove_cvref_t<decltype(column(std::declval<const Particles<Dim>&>())[0])>;
+      for (int k = Hot::lane; k < Hot::lane + lane_width<Value>(); ++k) {
+        if (k >= kWidth || used[k]) {
+          fit = false;
+        } else {
+          used[k] = true;
+        }
+      }
+    }
+  });
+  return fit;
+}
+
+template <int Dim>
+constexpr bool hot_lanes_match() {
+  constexpr auto at = [](std::size_t offset) { return static_cast<int>(offset / sizeof(double)); };
+  return hot_lanes_fit<Dim, HotRecord::kPlace>() && hot_lanes_fit<Dim, HotRecord::kMotion>() &&
+         hot_lane<Dim>("position") == at(offsetof(HotPlace<Dim>, position)) &&
+         hot_lane<Dim>("radius") == at(offsetof(HotPlace<Dim>, radius)) &&
+         hot_lane<Dim>("velocity") == at(offsetof(HotMotion<Dim>, velocity)) &&
+         hot_lane<Dim>("mass") == at(offsetof(HotMotion<Dim>, mass)) &&
+         hot_lane<Dim>("angular_velocity") == at(offsetof(HotMotion<Dim>, angular_velocity));
+}
+static_assert(hot_lanes_match<2>() && hot_lanes_match<3>(),
+              "the side-by-side copies (HotPlace, HotMotion) and the field list's HotLanes disagree");
+
+// The doubles of one field at their lanes.
+template <typename T>
+DEM_INLINE void put_lanes(double* lanes, const T& value) {
+  if constexpr (std::is_arithmetic_v<T>) {
+    lanes[0] = value;
+  } else {
+    for (int k = 0; k < lane_width<T>(); ++k) lanes[k] = value[k];
+  }
+}
+
+// Slot i's fields of record kRecord at their lanes of `record`.
+template <HotRecord kRecord, int Dim>
+DEM_INLINE void put_hot_fields(const Particles<Dim>& p, std::int64_t i, double* record) {
+  for_each_particle_field<Dim>([&](const ParticleFieldInfo&, auto column, auto, auto hot) DEM_INLINE_LAMBDA {
+    using Hot = decltype(hot);
+    if constexpr (Hot::record == kRecord) put_lanes(record + Hot::lane, column(p)[i]);
+  });
+}
+
 // Slots [begin, end) of the particles into the side-by-side copies: by the
 // force pass, or by the law of motion while each particle's new values
 // are still in the core's cache (motion.cpp, motion_plain.h). In 3D with
-// AVX each record is written whole, four lanes at a time. kStream (the law
-// of motion on large beds): with streaming stores, which go to memory
-// without first reading in the lines they fill, where a plain store reads
-// each line it writes (96 bytes a particle more); the pass fetches the
-// records ahead when it needs them (contact_batch.h). Call
+// AVX each record is written whole, four lanes at a time (its unused lanes
+// zero). kStream (the law of motion on large beds): with streaming stores,
+// which go to memory without first reading in the lines they fill, where a
+// plain store reads each line it writes (96 bytes a particle more); the
+// pass fetches the records ahead when it needs them (contact_batch.h). Call
 // finish_streaming before another thread reads them.
 template <bool kStream = false, int Dim>
 void copy_hot_particles(const Particles<Dim>& p, HotPlace<Dim>* place, HotMotion<Dim>* motion, std::int64_t begin,
                         std::int64_t end) {
 #if defined(__AVX__)
   if constexpr (Dim == 3) {
-    static_assert(sizeof(HotPlace<3>) == 32 && offsetof(HotPlace<3>, radius) == 24);
-    static_assert(sizeof(HotMotion<3>) == 64 && offsetof(HotMotion<3>, mass) == 24 &&
-                  offsetof(HotMotion<3>, angular_velocity) == 32);
-    const auto put = [](double* to, __m256d value) {
+    static_assert(sizeof(HotPlace<3>) == 32 && sizeof(HotMotion<3>) == 64);
+    const auto put = [](double* to, const double* lanes) DEM_INLINE_LAMBDA {
+      const __m256d value = _mm256_setr_pd(lanes[0], lanes[1], lanes[2], lanes[3]);
       if constexpr (kStream) {
         _mm256_stream_pd(to, value);
       } else {
@@ -76,23 +160,20 @@ void copy_hot_particles(const Particles<Dim>& p, HotPlace<Dim>* place, HotMotion
       }
     };
     for (std::int64_t i = begin; i < end; ++i) {
-      const Vec3& x = p.position[i];
-      const Vec3& v = p.velocity[i];
-      const Vec3& w = p.angular_velocity[i];
+      double place_lanes[4] = {}, motion_lanes[8] = {};
+      put_hot_fields<HotRecord::kPlace>(p, i, place_lanes);
+      put_hot_fields<HotRecord::kMotion>(p, i, motion_lanes);
       double* record = reinterpret_cast<double*>(&motion[i]);
-      put(reinterpret_cast<double*>(&place[i]), _mm256_setr_pd(x[0], x[1], x[2], p.radius[i]));
-      put(record, _mm256_setr_pd(v[0], v[1], v[2], p.mass[i]));
-      put(record + 4, _mm256_setr_pd(w[0], w[1], w[2], 0.0));
+      put(reinterpret_cast<double*>(&place[i]), place_lanes);
+      put(record, motion_lanes);
+      put(record + 4, motion_lanes + 4);
     }
     return;
   }
 #endif
   for (std::int64_t i = begin; i < end; ++i) {
-    place[i].position = p.position[i];
-    place[i].radius = p.radius[i];
-    motion[i].velocity = p.velocity[i];
-    motion[i].mass = p.mass[i];
-    motion[i].angular_velocity = p.angular_velocity[i];
+    put_hot_fields<HotRecord::kPlace>(p, i, reinterpret_cast<double*>(&place[i]));
+    put_hot_fields<HotRecord::kMotion>(p, i, reinterpret_cast<double*>(&motion[i]));
   }
 }
 

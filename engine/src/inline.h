@@ -6,3 +6,6 @@
 #pragma once
 
 #define DEM_INLINE [[gnu::always_inline]] inline
+// The same for a lambda (written after its parameters): a visitor of a
+// field list (particle_fields.h) in a loop that must stay free of calls.
+#define DEM_INLINE_LAMBDA __attribute__((always_inline))

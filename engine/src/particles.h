@@ -5,7 +5,8 @@
 // `slot` translate. Hot data (what every contact reads, what the law of
 // motion writes) is apart from cold data (shapes, ids). Written once over
 // the dimension. The arrays are Columns (large_pages.h): the long ones lie
-// on large pages.
+// on large pages. Each has its line in the field list (particle_fields.h),
+// which says whether it is saved, hashed and copied for the force pass.
 #pragma once
 
 #include <cstddef>
@@ -16,6 +17,7 @@
 #include "dem/ids.h"
 #include "dem/math.h"
 #include "large_pages.h"
+#include "particle_fields.h"
 
 namespace dem {
 
@@ -60,24 +62,11 @@ struct Particles {
   std::size_t size() const { return position.size(); }
 
   // Every per-slot array, so that reordering and removing particles touch
-  // them all: visit(array) for each (empty optional arrays included).
+  // them all: visit(array) for each (empty optional arrays included), in
+  // the order of the field list (particle_fields.h).
   template <typename Visit>
   void for_each_slot_array(Visit&& visit) {
-    visit(position);
-    visit(velocity);
-    visit(angular_velocity);
-    visit(radius);
-    visit(mass);
-    visit(material);
-    visit(force);
-    visit(moment);
-    visit(inertia);
-    visit(rotation);
-    visit(previous_force);
-    visit(reference_position);
-    visit(shape);
-    visit(principal_inertia);
-    visit(id);
+    for_each_particle_field<Dim>([&](const ParticleFieldInfo&, auto column, auto, auto) { visit(column(*this)); });
   }
 
   // Rebuilds `slot` and `ids` from `id`; `id_count` is the number of ids
@@ -114,6 +103,20 @@ struct Particles {
     }
   }
 };
+
+// Every per-slot array has its line in the field list, and every member of
+// ParticleDefT a definition field: a new member - a bool that fits in
+// padding too - fails the build here until it has its line in
+// for_each_particle_field (particle_fields.h). `slot` and `ids` are by id,
+// not by slot, and derived from `id` (index_ids).
+static_assert(detail::member_count<Particles<2>>() == particle_field_count<2>() + 2,
+              "Particles changed: give the new array its line in for_each_particle_field");
+static_assert(detail::member_count<Particles<3>>() == particle_field_count<3>() + 2,
+              "Particles changed: give the new array its line in for_each_particle_field");
+static_assert(detail::member_count<ParticleDefT<2>>() == particle_definition_field_count<2>(),
+              "ParticleDefT changed: give the new member its column and its line in for_each_particle_field");
+static_assert(detail::member_count<ParticleDefT<3>>() == particle_definition_field_count<3>(),
+              "ParticleDefT changed: give the new member its column and its line in for_each_particle_field");
 
 // Reorders every per-slot array: new slot k holds what slot order[k] held.
 template <typename T, typename Allocator>

@@ -5,6 +5,7 @@
 #include "contact_forces.h"
 #include "contact_history.h"
 #include "dem/error.h"
+#include "particle_fields.h"
 #include "particle_order.h"
 #include "world_state.h"
 
@@ -34,6 +35,65 @@ void restore_row(const ContactSnapshotT<Dim>& c, ContactRows<Dim>& rows, std::si
 
 void check(bool ok, const std::string& message) {
   if (!ok) throw DefinitionError("snapshot: " + message);
+}
+
+// A column's value as its definition field holds it: material indices as ids.
+template <typename T>
+void save_value(T& saved, const T& value) {
+  saved = value;
+}
+template <typename Tag>
+void save_value(Id<Tag>& saved, std::int32_t value) {
+  saved = Id<Tag>{value};
+}
+
+// Whether every saved per-particle vector of `role` has an entry per particle.
+template <int Dim>
+bool columns_match(const WorldSnapshotT<Dim>& snap, std::size_t n, ParticleFieldRole role) {
+  bool match = true;
+  for_each_particle_field<Dim>([&](const ParticleFieldInfo& info, auto, auto saved, auto) {
+    if constexpr (kInSnapshot<decltype(saved)>) {
+      if (info.role == role && saved.field(snap).size() != n) match = false;
+    }
+  });
+  return match;
+}
+
+// The saved per-particle vectors of `role` into their columns: the k-th
+// entry is the particle of the k-th id.
+template <int Dim>
+void restore_columns(Particles<Dim>& p, const WorldSnapshotT<Dim>& snap, ParticleFieldRole role) {
+  for_each_particle_field<Dim>([&](const ParticleFieldInfo& info, auto column, auto saved, auto) {
+    if constexpr (kInSnapshot<decltype(saved)>) {
+      if (info.role != role) return;
+      auto& values = column(p);
+      const auto& from = saved.field(snap);
+      for (std::size_t k = 0; k < p.ids.size(); ++k) values[static_cast<std::size_t>(p.slot_of(p.ids[k]))] = from[k];
+    }
+  });
+}
+
+// Each particle by id into the definition's particles and the snapshot's
+// per-particle vectors, as the field list says (particle_fields.h).
+template <int Dim>
+void save_particles(const Particles<Dim>& p, WorldSnapshotT<Dim>& snap) {
+  const std::size_t n = p.size();
+  snap.def.particles.reserve(n);
+  for_each_particle_field<Dim>([&](const ParticleFieldInfo&, auto, auto saved, auto) {
+    if constexpr (kInSnapshot<decltype(saved)>) saved.field(snap).reserve(n);
+  });
+  for (const ParticleId id : p.ids) {
+    const auto i = static_cast<std::size_t>(p.slot_of(id));
+    ParticleDefT<Dim>& d = snap.def.particles.emplace_back();
+    for_each_particle_field<Dim>([&](const ParticleFieldInfo&, auto column, auto saved, auto) {
+      const auto& values = column(p);
+      if constexpr (kInDefinition<decltype(saved)>) {
+        if (!values.empty()) save_value(saved.field(d), values[i]);  // an empty optional column: the default
+      } else if constexpr (kInSnapshot<decltype(saved)>) {
+        saved.field(snap).push_back(values[i]);
+      }
+    });
+  }
 }
 
 // The row of a key in a sorted table.
@@ -79,7 +139,7 @@ void restore_contact_table(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) 
   const bool saved_rows = !snap.reference_positions.empty();
   ContactTable<Dim>& t = s.contacts;
   if (saved_rows) {
-    check(snap.reference_positions.size() == p.size(),
+    check(columns_match(snap, p.size(), ParticleFieldRole::kBookkeeping),
           "reference positions do not match the " + std::to_string(n) + " particles");
     std::vector<ContactKey> pairs, walls;
     for (const ContactSnapshotT<Dim>& c : snap.contacts) (c.with_wall ? walls : pairs).push_back(key(c));
@@ -90,9 +150,7 @@ void restore_contact_table(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) 
     }
     merge_rows(t.pairs, pairs);
     merge_rows(t.walls, walls);
-    for (std::int32_t k = 0; k < n; ++k) {
-      s.particles.reference_position[p.slot_of(p.ids[k])] = snap.reference_positions[k];
-    }
+    restore_columns(s.particles, snap, ParticleFieldRole::kBookkeeping);
     s.particle_travel = snap.particle_travel;
     s.wall_travel = snap.wall_travel;
     s.contacts_stale = snap.contacts_stale;
@@ -166,20 +224,7 @@ WorldSnapshotT<Dim> save_snapshot(const WorldState<Dim>& s) {
   def.energy_budget = s.energy_budget;
   const Particles<Dim>& p = s.particles;
   const std::size_t n = p.size();
-  def.particles.reserve(n);
-  snap.rotation.reserve(n);
-  snap.force.reserve(n);
-  snap.moment.reserve(n);
-  snap.reference_positions.reserve(n);
-  for (const ParticleId id : p.ids) {
-    const auto i = static_cast<std::size_t>(p.slot_of(id));
-    def.particles.push_back(ParticleDefT<Dim>{p.position[i], p.radius[i], MaterialId{p.material[i]}, p.velocity[i],
-                                              p.angular_velocity[i], p.shape.empty() ? ShapeDefT<Dim>{} : p.shape[i]});
-    snap.rotation.push_back(p.rotation[i]);
-    snap.force.push_back(p.force[i]);
-    snap.moment.push_back(p.moment[i]);
-    snap.reference_positions.push_back(p.reference_position[i]);
-  }
+  save_particles(p, snap);
   // Ids are saved once something was removed (they are 0 .. n-1 before).
   if (p.slot.size() != n) {
     snap.particle_ids = p.ids;
@@ -230,21 +275,15 @@ WorldSnapshotT<Dim> save_snapshot(const WorldState<Dim>& s) {
 template <int Dim>
 void restore_snapshot(WorldState<Dim>& s, const WorldSnapshotT<Dim>& snap) {
   const std::size_t n = s.particles.size();
-  check(snap.rotation.size() == n && snap.force.size() == n && snap.moment.size() == n,
+  check(columns_match(snap, n, ParticleFieldRole::kState),
         "per-particle arrays do not match the " + std::to_string(n) + " particles");
   check(snap.walls.size() == s.walls.def.size(), "per-wall records do not match the walls");
   check(snap.time_step > 0.0 && snap.critical_time_step > 0.0, "time step must be > 0");
   restore_ids(s, snap);
   restore_order(s, snap);
-  Particles<Dim>& p = s.particles;
   // The per-particle arrays follow def.particles: the k-th entry is the
   // particle of the k-th id.
-  for (std::size_t k = 0; k < n; ++k) {
-    const auto i = static_cast<std::size_t>(p.slot_of(p.ids[k]));
-    p.rotation[i] = snap.rotation[k];
-    p.force[i] = snap.force[k];
-    p.moment[i] = snap.moment[k];
-  }
+  restore_columns(s.particles, snap, ParticleFieldRole::kState);
   for (std::size_t w = 0; w < snap.walls.size(); ++w) {
     const WallSnapshotT<Dim>& ws = snap.walls[w];
     s.walls.initial_point[w] = ws.initial_point;

@@ -1,5 +1,6 @@
 #include <cstdint>
 #include <type_traits>
+#include <utility>
 
 #include "contact_fields.h"
 #include "world_state.h"
@@ -32,6 +33,25 @@ class Hasher {
   std::uint64_t hash_ = 14695981039346656037ULL;
 };
 
+// A value the hasher takes (a field of another type cannot be hashed).
+template <typename T>
+concept Hashable = requires(Hasher h, const T& value) {
+  h.add(value);
+};
+
+// Each hashed particle field is of such a type (particle_fields.h).
+template <int Dim>
+constexpr bool hashed_particle_fields_hashable() {
+  bool hashable = true;
+  for_each_particle_field<Dim>([&](const ParticleFieldInfo& info, auto column, auto, auto) {
+    using Value = std::remove_cvref_t<decltype(column(std::declval<const Particles<Dim>&>())[0])>;
+    if (info.hashed && !Hashable<Value>) hashable = false;
+  });
+  return hashable;
+}
+static_assert(hashed_particle_fields_hashable<2>() && hashed_particle_fields_hashable<3>(),
+              "a hashed particle field has a type the state hash cannot add");
+
 // Every touching row's key (by particle id), then its hashed fields in the
 // order of the field list (dem/snapshot.h), each only where the table keeps
 // its column.
@@ -55,14 +75,16 @@ std::uint64_t hash_state(const WorldState<Dim>& s) {
   h.add(s.cycle);
   h.add(s.time);
   const Particles<Dim>& p = s.particles;
-  // By id, so the hash names the physical state whatever the storage order.
+  // By id, so the hash names the physical state whatever the storage order;
+  // each particle's hashed fields in the order of the field list
+  // (particle_fields.h).
   for (const ParticleId id : p.ids) {
-    const Slot i = p.slot_of(id);
-    h.add(p.position[i]);
-    h.add(p.velocity[i]);
-    h.add(p.angular_velocity[i]);
-    h.add(p.rotation[i]);
-    h.add(p.force[i]);
+    const auto i = static_cast<std::size_t>(p.slot_of(id));
+    for_each_particle_field<Dim>([&](const ParticleFieldInfo& info, auto column, auto, auto) {
+      if constexpr (Hashable<std::remove_cvref_t<decltype(column(p)[i])>>) {
+        if (info.hashed) h.add(column(p)[i]);
+      }
+    });
   }
   add_rows(h, s.contacts.pairs, p, false);
   add_rows(h, s.contacts.walls, p, true);

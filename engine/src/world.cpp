@@ -63,7 +63,7 @@ void particle_motion(WorldState<Dim>& s, const StepContext& step) {
   s.blocks.hot_fresh = hot;
   s.particle_travel = motion.max_travel;
   s.near_slack -= 2.0 * motion.max_speed * step.dt;
-  if (s.near_slack < 0.0) s.blocks.near_stale = true;
+  if (s.near_slack < 0.0) invalidate(s, Cache::kNearRows);
   s.energy.gravity_work += motion.gravity_work;
   s.energy.global_damping += motion.global_damping;
   s.energy.local_damping += motion.local_damping;
@@ -139,7 +139,7 @@ void find_contacts(WorldState<Dim>& s, const StepContext& step) {
     double max_radius = 0.0;
     for (double r : p.radius) max_radius = std::max(max_radius, r);
     reorder_particles(p, s.contacts, spatial_order(p, s.periodic, 2.0 * max_radius + s.contact_tolerance));
-    s.blocks.hot_fresh = false;  // the copies are in the old order
+    invalidate(s, Cache::kHotCopies);  // the copies are in the old order
     s.sorted_cycle = step.cycle;
   }
   merge_rows(s.contacts.pairs, find_pair_keys(p, s.periodic, s.contact_tolerance, step.threads));

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <type_traits>
 
 #include "box_control.h"
 #include "ellipsoid.h"
@@ -35,6 +36,18 @@ MassProperties mass_properties(double density, double radius, bool disc) {
   }
   const double m = density * 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
   return {m, 0.4 * m * radius * radius};
+}
+
+// Zero of a column's values (a rotation's is the identity).
+template <typename T>
+T zero_value() {
+  if constexpr (requires { T::Zero(); }) {
+    return T::Zero();
+  } else if constexpr (requires { T::Identity(); }) {
+    return T::Identity();
+  } else {
+    return T{};
+  }
 }
 
 template <int Dim>
@@ -97,9 +110,14 @@ void add_particles(WorldState<Dim>& s, const WorldDefT<Dim>& def) {
     p.material.push_back(d.material.value());
     if (shaped) p.shape.push_back(d.shape);
   }
-  p.force.assign(n, Vec<Dim>::Zero());
-  p.moment.assign(n, Space<Dim>::zero_spin());
-  p.previous_force.assign(n, 0.0);
+  // The state and scratch arrays the definitions do not give start at
+  // zero: the force sums before the first pass (particle_fields.h).
+  for_each_particle_field<Dim>([&](const ParticleFieldInfo& info, auto column, auto, auto) {
+    auto& values = column(p);
+    using Value = typename std::remove_cvref_t<decltype(values)>::value_type;
+    const bool zeroed = info.role == ParticleFieldRole::kState || info.role == ParticleFieldRole::kScratch;
+    if (zeroed && values.size() != n) values.assign(n, zero_value<Value>());
+  });
   p.reference_position = p.position;
   p.id.resize(n);
   for (std::size_t i = 0; i < n; ++i) p.id[i] = ParticleId::from_index(i);

@@ -91,7 +91,7 @@ void BasicWorld<Dim>::remove_particles(std::span<const ParticleId> ids) {
   plan_blocks(s.blocks, s.contacts, p.size(), block_size(s));
   evaluate_contacts(s);
   if (s.rolling) add_rolling_moments(s);
-  s.contacts_stale = true;
+  invalidate(s, Cache::kAll);  // the particles moved slots, and the table lost rows
   if (s.energy_budget) s.energy.removed += held_before - held_energy(s);
 }
 
@@ -107,7 +107,7 @@ void BasicWorld<Dim>::place_wall(WallId id, const Vec<Dim>& point) {
   s.walls.last_angular_velocity[w] = Space<Dim>::zero_spin();
   // Its contacts start afresh where it now stands.
   drop_wall_contacts(s, id);
-  s.contacts_stale = true;
+  invalidate(s, Cache::kAll);  // the wall jumped, not moved: the travel does not call the rebuild
 }
 
 template <int Dim>

@@ -80,6 +80,42 @@ struct WorldState {
   double time_step_ratio = 0.0;
 };
 
+// What the engine keeps worked out from the particles and the contact
+// table between cycles, each redone when next needed once invalidated.
+// Every edit that makes one out of date says so through invalidate(); the
+// builders mark their own work done (find_contacts, the force pass,
+// plan_blocks, the law of motion that writes the copies).
+enum class Cache : unsigned {
+  // The contact table's rows: rebuilt before the next force pass
+  // (contacts_stale; find_contacts), as when the particles or walls moved
+  // the tolerance.
+  kContactTable = 1U << 0U,
+  // The batched pass's near rows: sorted out again by the next pass
+  // (ContactBlocks::near_stale, contact_blocks.h).
+  kNearRows = 1U << 1U,
+  // The batched pass's side-by-side copies: written again by the next pass
+  // (ContactBlocks::hot_fresh, contact_blocks.h).
+  kHotCopies = 1U << 2U,
+  kAll = kContactTable | kNearRows | kHotCopies,
+};
+constexpr Cache operator|(Cache a, Cache b) {
+  return static_cast<Cache>(static_cast<unsigned>(a) | static_cast<unsigned>(b));
+}
+constexpr bool contains(Cache set, Cache cache) {
+  return (static_cast<unsigned>(set) & static_cast<unsigned>(cache)) != 0;
+}
+
+// Marks the caches out of date; the next step (or pass) redoes them. Only
+// for what an edit changed: a table rebuilt earlier than the travel calls
+// moves the next re-sort (sorted_cycle) and so the order of the float sums,
+// so a needless invalidation changes the trajectory's bits.
+template <int Dim>
+void invalidate(WorldState<Dim>& state, Cache caches) {
+  if (contains(caches, Cache::kContactTable)) state.contacts_stale = true;
+  if (contains(caches, Cache::kNearRows)) state.blocks.near_stale = true;
+  if (contains(caches, Cache::kHotCopies)) state.blocks.hot_fresh = false;
+}
+
 // The body force per unit mass on a particle at x: gravity and Randall's
 // centripetal field (the law of motion adds the same, motion.cpp).
 template <int Dim>
