@@ -15,6 +15,7 @@
 #include "contact_blocks.h"
 #include "dem/snapshot.h"
 #include "dem/world.h"
+#include "distinct_value.h"
 #include "particle_fields.h"
 #include "particles.h"
 #include "snapshot_worlds.h"
@@ -23,22 +24,9 @@
 namespace dem {
 namespace {
 
+using testing::distinct;
 using testing::settling_box;
 using testing::sphere_stack;
-
-// A value unlike v (k differs per field); a rotation stays a rotation.
-template <typename T>
-T distinct(const T& v, int k) {
-  if constexpr (std::is_floating_point_v<T>) {
-    return v + 0.125 * (k + 1);
-  } else if constexpr (std::is_same_v<T, Quaternion>) {
-    return (v * Quaternion(Eigen::AngleAxisd(0.125 * (k + 1), Vec3::UnitZ()))).normalized();
-  } else {
-    T out = v;
-    for (Eigen::Index i = 0; i < out.size(); ++i) out[i] += 0.125 * (k + 1) + 0.0078125 * static_cast<double>(i);
-    return out;
-  }
-}
 
 template <int Dim>
 WorldDefT<Dim> rich_world() {

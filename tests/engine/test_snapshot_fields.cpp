@@ -9,29 +9,15 @@
 
 #include "dem/snapshot.h"
 #include "dem/world.h"
+#include "distinct_value.h"
 #include "snapshot_worlds.h"
 
 namespace dem {
 namespace {
 
+using testing::distinct;
 using testing::settling_box;
 using testing::sphere_stack;
-
-// A value unlike v and unlike the value of any other field (k differs per field).
-template <typename T>
-T distinct(const T& v, int k) {
-  if constexpr (std::is_same_v<T, bool>) {
-    return !v;
-  } else if constexpr (std::is_integral_v<T>) {
-    return v + static_cast<T>(100 + k);
-  } else if constexpr (std::is_floating_point_v<T>) {
-    return v + 0.125 * (k + 1);
-  } else {
-    T out = v;
-    for (Eigen::Index i = 0; i < out.size(); ++i) out[i] += 0.125 * (k + 1) + 0.0078125 * static_cast<double>(i);
-    return out;
-  }
-}
 
 // Hertz-Mindlin with rolling resistance and the energy budget: every
 // column but the contact search's.
