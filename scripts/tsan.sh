@@ -25,4 +25,11 @@ cd "$build"
 # Not dds_security: what it adds is Cyclone's security plugins and OpenSSL
 # handing key material between their own threads, none of it instrumented
 # (TSan reports their locks); it runs in the ordinary suite.
-ctest -L service -E '^dds_security$' --output-on-failure -j"$(nproc)"
+# Nor the element test killed in its shear and resumed: two whole runs of
+# 1.5 million cycles are 670 s under ThreadSanitizer (37 s in Release; a
+# third of this pass on an Intel Xeon guest, 2026-11-29), and its threads
+# - checkpoints written while a one-shot programme runs, a kill, --resume -
+# are those of Checkpoints.*, which run here; it runs in the ordinary suite.
+# (CMakePresets.json's tsan test preset leaves out the same two.)
+ctest -L service -E '^(dds_security|Regions\.AnElementTestKilledInItsShearAndResumedEndsAsOneNeverInterrupted)$' \
+  --output-on-failure -j"$(nproc)"
