@@ -4,7 +4,9 @@
 // walker converts a case.proto message by those lists (read_fields) and
 // one checks it by those rules (check_fields), each finding its field by
 // the entry's name, so a problem names the field as a case spells it:
-// "material[1].friction: must be >= 0 (got -1)".
+// "material[1].friction: must be >= 0 (got -1)". The snapshot's settings
+// are checked by the same rules (check_snapshot_fields, snapshot_rules.cpp),
+// so a snapshot holds exactly what a case may.
 //
 // A new member of a struct below is its struct member, its list line
 // (the build fails until it has one), its rule line here (the build fails
@@ -147,15 +149,24 @@ constexpr const FieldRule& rule_for(std::string_view name) {
   throw std::logic_error("no case rule for " + std::string(name));  // rules_match_list rules it out
 }
 
-// The case.proto field a list entry meets; a list line whose field the
-// schema lacks is a programming error, named.
-inline const FieldDescriptor& case_field(const Message& m, const FieldRule& rule) {
-  const std::string name(rule.field.empty() ? rule.name : rule.field);
+// How a schema spells a list entry's field: case.proto as the rule says
+// (the member's name unless the rule gives another), snapshot.proto by the
+// member's name behind the prefix of a flattened struct ("hertz_").
+struct Naming {
+  bool snapshot = false;
+  std::string_view prefix{};
+};
+
+// The field a list entry meets; a list line whose field the schema lacks
+// is a programming error, named.
+inline const FieldDescriptor& field_of(const Message& m, const FieldRule& rule, const Naming& naming = {}) {
+  const std::string name = naming.snapshot ? std::string(naming.prefix) + std::string(rule.name)
+                                           : std::string(rule.field.empty() ? rule.name : rule.field);
   const FieldDescriptor* field = m.GetDescriptor()->FindFieldByName(name);
   if (field == nullptr) {
     throw std::logic_error(m.GetDescriptor()->full_name() + " has no field " + name +
-                           ", which a field list names (dem/snapshot_fields.h, io/src/case_fields.h): add it to "
-                           "idl/dem/case.proto");
+                           ", which a field list names (dem/snapshot_fields.h, io/src/case_fields.h): add it to " +
+                           (naming.snapshot ? "idl/dem/snapshot.proto" : "idl/dem/case.proto"));
   }
   return *field;
 }
@@ -164,7 +175,7 @@ template <class T, class Entry>
 void read_member(const Message& m, const Entry& entry, T& def) {
   using Member = fields::MemberOf<Entry>;
   const FieldRule& rule = rule_for<T>(entry.name);
-  const FieldDescriptor& field = case_field(m, rule);
+  const FieldDescriptor& field = field_of(m, rule);
   if (const char* problem = fields::type_problem<Member>(field)) {
     throw std::logic_error("field " + field.full_name() + " cannot carry its list entry: " + problem);
   }
@@ -176,21 +187,46 @@ void read_member(const Message& m, const Entry& entry, T& def) {
   def.*entry.member = std::move(value);
 }
 
-// ProblemList's check the rule names; whether the value passed.
-inline bool apply_rule(ProblemList& problems, const std::string& path, double value, const FieldRule& rule) {
+// The checker's check the rule names: ProblemList's for a case, the
+// snapshot's range checks for a snapshot (snapshot_rules.cpp).
+template <class Checker>
+void apply_rule(Checker& checker, const std::string& path, double value, const FieldRule& rule) {
   switch (rule.check) {
     case Check::kNone:
-      return true;
+      break;
     case Check::kFinite:
-      return problems.finite(path, value);
+      checker.finite(path, value);
+      break;
     case Check::kNonNegative:
-      return problems.non_negative(path, value);
+      checker.non_negative(path, value);
+      break;
     case Check::kPositive:
-      return problems.positive(path, value);
+      checker.positive(path, value);
+      break;
     case Check::kWithin:
-      return problems.within(path, value, rule.interval);
+      checker.within(path, value, rule.interval);
+      break;
   }
-  return true;
+}
+
+template <class T, class Checker>
+void check_named(const Message& message, const std::string& path, Checker& checker, const Naming& naming) {
+  std::apply(
+      [&](const auto&... entry) {
+        const auto check = [&](std::string_view name) {
+          const FieldRule& rule = rule_for<T>(name);
+          if (rule.check == Check::kNone) return;
+          const FieldDescriptor& field = field_of(message, rule, naming);
+          if (field.cpp_type() != FieldDescriptor::CPPTYPE_DOUBLE || field.is_repeated()) {
+            throw std::logic_error("field " + field.full_name() + " has a rule for numbers but is not a double");
+          }
+          const google::protobuf::Reflection& r = *message.GetReflection();
+          if (field.has_presence() && !r.HasField(message, &field)) return;
+          apply_rule(checker, path + '.' + field.name(), r.GetDouble(message, &field), rule);
+        };
+        (check(entry.name), ...);
+      },
+      SnapshotFields<T>::list);
 }
 
 }  // namespace case_fields
@@ -204,26 +240,19 @@ void read_fields(const google::protobuf::Message& message, T& def) {
              SnapshotFields<T>::list);
 }
 
-// Each of the message's numbers checked by its rule, a problem named
+// Each of the case message's numbers checked by its rule, a problem named
 // path.field; a field with presence left out is not checked.
 template <class T>
 void check_fields(const google::protobuf::Message& message, const std::string& path, ProblemList& problems) {
-  std::apply(
-      [&](const auto&... entry) {
-        const auto check = [&](std::string_view name) {
-          const FieldRule& rule = case_fields::rule_for<T>(name);
-          if (rule.check == Check::kNone) return;
-          const google::protobuf::FieldDescriptor& field = case_fields::case_field(message, rule);
-          if (field.cpp_type() != google::protobuf::FieldDescriptor::CPPTYPE_DOUBLE || field.is_repeated()) {
-            throw std::logic_error("field " + field.full_name() + " has a rule for numbers but is not a double");
-          }
-          const google::protobuf::Reflection& r = *message.GetReflection();
-          if (field.has_presence() && !r.HasField(message, &field)) return;
-          case_fields::apply_rule(problems, path + '.' + field.name(), r.GetDouble(message, &field), rule);
-        };
-        (check(entry.name), ...);
-      },
-      SnapshotFields<T>::list);
+  case_fields::check_named<T>(message, path, problems, {});
+}
+
+// The same rules over a snapshot's message, whose fields are named as the
+// members behind `prefix` (the snapshot holds exactly what a case may).
+template <class T, class Checker>
+void check_snapshot_fields(const google::protobuf::Message& message, const std::string& path, Checker& checker,
+                           std::string_view prefix = {}) {
+  case_fields::check_named<T>(message, path, checker, {.snapshot = true, .prefix = prefix});
 }
 
 }  // namespace dem::io

@@ -11,6 +11,7 @@
 
 #include "case_fields.h"
 #include "dem/case.pb.h"
+#include "dem/snapshot.pb.h"
 
 // A made-up struct of one member, whose list names a field
 // proto::Material has (friction), and one whose list names a field it lacks.
@@ -60,6 +61,29 @@ TEST(CaseFields, EveryListedFieldHasItsCaseField) {
   expect_every_field_found<RollingResistanceDef>(proto::RollingResistance());
   expect_every_field_found<DampingDef>(proto::Damping());
   expect_every_field_found<ServoDef>(proto::Servo());
+}
+
+// The snapshot's settings are checked by the same rules, its fields named
+// as the members behind a flattened struct's prefix.
+TEST(CaseFields, TheSnapshotsFieldsMeetTheSameRules) {
+  ProblemList problems;
+  proto::SnapshotMaterial material;
+  material.set_poisson_ratio(0.5);
+  check_snapshot_fields<MaterialDef>(material, "settings.materials[0]", problems);
+  proto::SnapshotContactModel model;
+  model.set_linear_normal_stiffness(1e6);
+  model.set_rolling_friction(-1);
+  model.set_hertz_restitution(2);
+  check_snapshot_fields<LinearLawDef>(model, "m", problems, "linear_");
+  check_snapshot_fields<RollingResistanceDef>(model, "m", problems, "rolling_");
+  check_snapshot_fields<HertzDampingDef>(model, "m", problems, "hertz_");
+  EXPECT_NO_THROW(check_snapshot_fields<DampingDef>(proto::SnapshotDamping(), "settings.damping", problems));
+  const std::vector<CaseProblem> found = problems.take();
+  ASSERT_EQ(found.size(), 3u);
+  EXPECT_EQ(found[0].path + ": " + found[0].message,
+            "settings.materials[0].poisson_ratio: must be in (-1, 0.5) (got 0.5)");
+  EXPECT_EQ(found[1].path + ": " + found[1].message, "m.rolling_friction: must be >= 0 (got -1)");
+  EXPECT_EQ(found[2].path + ": " + found[2].message, "m.hertz_restitution: must be in (0, 1] (got 2)");
 }
 
 TEST(CaseFields, AListLineAndItsRuleAreConversionAndValidation) {
