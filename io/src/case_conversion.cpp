@@ -303,7 +303,7 @@ class Converter {
     for (int i = 0; i < case_.material_size(); ++i) {
       const proto::Material& material = case_.material(i);
       MaterialDef def;
-      read_fields(material, def);  // a wall material's density left out keeps the default (case_fields.h)
+      read_fields(material, def);  // a wall material's density left out keeps the default (case_rules.h)
       world.materials.push_back(def);
       materials_.emplace(material.name(), i);
     }
@@ -322,7 +322,7 @@ class Converter {
       if (law.parameters != nullptr) set_law_parameters(*law.parameters, def);
       if (model.has_friction()) def.friction = model.friction();
       if (model.has_cohesion()) def.cohesion = model.cohesion();
-      def.rolling = RollingResistanceDef{model.rolling().friction(), model.rolling().damping_ratio()};
+      read_fields(model.rolling(), def.rolling);  // none (zeros) when the model leaves it out
       world.contact_models.push_back(def);
     }
   }

@@ -52,7 +52,7 @@ class Rules {
 // The schema's values are the engine's (SnapshotConversion.EveryContactLawKeepsItsSchemaValue).
 bool is_hertz(proto::SnapshotContactLaw law) { return dem::is_hertz(static_cast<ContactLaw>(law)); }
 
-// The case's rules (case_fields.h) over the snapshot's settings, and the
+// The case's rules (case_rules.h) over the snapshot's settings, and the
 // checks across fields that case_validation.cpp and
 // contact_model_checks.cpp make.
 void check_settings(Rules& rules, const proto::Snapshot& m) {

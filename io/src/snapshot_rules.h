@@ -3,7 +3,7 @@
 // between it and a world built from values no case could give (a zero or
 // negative stiffness, Poisson's ratio 2, a zero quaternion). Each problem
 // names the snapshot's field; the ranges are the case validation's
-// (the rules of case_fields.h and problem_list.h), so a snapshot holds
+// (the rules of case_rules.h and problem_list.h), so a snapshot holds
 // exactly what a case may.
 #pragma once
 

@@ -1,5 +1,5 @@
 // The case's flat structs converted and checked by their field lists and
-// rules (io/src/case_fields.h): every list entry meets its case.proto
+// rules (io/src/case_fields.h, case_rules.h): every list entry meets its case.proto
 // field, and a list line with its rule is all a field needs.
 #include <gtest/gtest.h>
 
