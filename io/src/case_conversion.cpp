@@ -9,6 +9,7 @@
 #include <numbers>
 #include <string>
 
+#include "case_fields.h"
 #include "case_laws.h"
 #include "dem/error.h"
 #include "dem/io/case_validation.h"
@@ -48,19 +49,13 @@ WallMotionT<Dim> to_motion(const proto::WallMotion& motion) {
   WallMotionT<Dim> def;
   def.velocity = to_vec<Dim>(motion.velocity());
   def.angular_velocity = to_spin<Dim>(motion.angular_velocity(), motion.angular_velocity_3d());
-  if (motion.has_servo()) {
-    def.servo = ServoDef{motion.servo().target_force(), motion.servo().gain(), motion.servo().max_speed()};
-  }
+  if (motion.has_servo()) read_fields(motion.servo(), def.servo.emplace());
   return def;
 }
 
 DampingDef to_damping(const proto::Damping& damping) {
   DampingDef def;
-  def.contact_beta = damping.contact_beta();
-  def.global_alpha = damping.global_alpha();
-  if (damping.has_global_alpha_rotation()) def.global_alpha_rotation = damping.global_alpha_rotation();
-  def.local_alpha = damping.local_alpha();
-  if (damping.has_local_alpha_rotation()) def.local_alpha_rotation = damping.local_alpha_rotation();
+  read_fields(damping, def);
   return def;
 }
 
@@ -308,14 +303,7 @@ class Converter {
     for (int i = 0; i < case_.material_size(); ++i) {
       const proto::Material& material = case_.material(i);
       MaterialDef def;
-      def.name = material.name();
-      // Density only matters for particles, and validation demands it there;
-      // a wall material may leave it out.
-      if (material.density() > 0) def.density = material.density();
-      def.friction = material.friction();
-      def.cohesion = material.cohesion();
-      def.youngs_modulus = material.youngs_modulus();
-      def.poisson_ratio = material.poisson_ratio();
+      read_fields(material, def);  // a wall material's density left out keeps the default (case_rules.h)
       world.materials.push_back(def);
       materials_.emplace(material.name(), i);
     }
@@ -334,7 +322,7 @@ class Converter {
       if (law.parameters != nullptr) set_law_parameters(*law.parameters, def);
       if (model.has_friction()) def.friction = model.friction();
       if (model.has_cohesion()) def.cohesion = model.cohesion();
-      def.rolling = RollingResistanceDef{model.rolling().friction(), model.rolling().damping_ratio()};
+      read_fields(model.rolling(), def.rolling);  // none (zeros) when the model leaves it out
       world.contact_models.push_back(def);
     }
   }

@@ -1,20 +1,9 @@
 #include "case_laws.h"
 
+#include "case_fields.h"
 #include "dem/law_traits.h"
 
 namespace dem::io {
-
-namespace {
-
-HertzDampingDef to_hertz_damping(const proto::HertzLaw& law) {
-  HertzDampingDef def;
-  if (law.has_damping_ratio()) def.damping_ratio = law.damping_ratio();
-  if (law.has_restitution()) def.restitution = law.restitution();
-  def.tangential = law.tangential_damping();
-  return def;
-}
-
-}  // namespace
 
 CaseLaw case_law(const proto::ContactModel& model) {
   CaseLaw found;
@@ -26,13 +15,13 @@ CaseLaw case_law(const proto::ContactModel& model) {
 }
 
 void set_law_parameters(const google::protobuf::Message& parameters, ContactModelDef& def) {
-  if (const auto* linear = dynamic_cast<const proto::LinearLaw*>(&parameters)) {
-    def.linear = {linear->normal_stiffness(), linear->shear_stiffness()};
+  if (dynamic_cast<const proto::LinearLaw*>(&parameters) != nullptr) {
+    read_fields(parameters, def.linear);
   } else if (const auto* restitution = dynamic_cast<const proto::LinearRestitutionLaw*>(&parameters)) {
-    def.linear = {restitution->normal_stiffness(), restitution->shear_stiffness()};
+    read_fields(parameters, def.linear);  // its stiffnesses, by LinearLawDef's list
     def.restitution = restitution->restitution();
-  } else if (const auto* hertz = dynamic_cast<const proto::HertzLaw*>(&parameters)) {
-    def.hertz = to_hertz_damping(*hertz);
+  } else if (dynamic_cast<const proto::HertzLaw*>(&parameters) != nullptr) {
+    read_fields(parameters, def.hertz);
   }
 }
 

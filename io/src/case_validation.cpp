@@ -10,6 +10,7 @@
 #include <string_view>
 #include <utility>
 
+#include "case_fields.h"
 #include "case_names.h"
 #include "compression_output_checks.h"
 #include "contact_model_checks.h"
@@ -44,7 +45,7 @@ class CaseChecker {
     check_contact_models(case_, {materials_, particle_materials_, wall_materials_}, problems_);
     check_particle_sources();
     check_walls();
-    check_damping("damping", case_.damping());
+    check_fields<DampingDef>(case_.damping(), "damping", problems_);
     check_periodic();
     check_time_step();
     vector("gravity", case_.gravity());
@@ -129,14 +130,11 @@ class CaseChecker {
         problems_.add(path + ".name", "duplicate material name " + in_quotes(material.name()) + " (" +
                                           indexed("material", first->second) + " has it too)");
       }
-      if (problems_.non_negative(path + ".density", material.density()) && material.density() == 0 &&
-          particle_materials_.contains(material.name())) {
+      check_fields<MaterialDef>(material, path, problems_);
+      // 0 passed its rule (a wall material may leave it out); a particle's cannot.
+      if (material.density() == 0 && particle_materials_.contains(material.name())) {
         problems_.add(path + ".density", "must be > 0 for a material particles are made of (got 0)");
       }
-      problems_.non_negative(path + ".friction", material.friction());
-      problems_.non_negative(path + ".cohesion", material.cohesion());
-      problems_.non_negative(path + ".youngs_modulus", material.youngs_modulus());
-      problems_.within(path + ".poisson_ratio", material.poisson_ratio(), kPoissonRatio);
     }
   }
 
@@ -516,27 +514,12 @@ class CaseChecker {
     check_spin(path + ".angular_velocity", motion.angular_velocity(), motion.has_angular_velocity_3d(),
                motion.angular_velocity_3d());
     if (!motion.has_servo()) return;
-    problems_.finite(path + ".servo.target_force", motion.servo().target_force());
-    problems_.positive(path + ".servo.gain", motion.servo().gain());
-    problems_.positive(path + ".servo.max_speed", motion.servo().max_speed());
+    check_fields<ServoDef>(motion.servo(), path + ".servo", problems_);
     const proto::Vector& v = motion.velocity();
     const proto::Vector& spin = motion.angular_velocity_3d();
     if (v.x() != 0 || v.y() != 0 || v.z() != 0 || motion.angular_velocity() != 0 || spin.x() != 0 || spin.y() != 0 ||
         spin.z() != 0) {
       problems_.add(path, "sets both servo and velocity/angular_velocity; the servo replaces them, so drop one");
-    }
-  }
-
-  void check_damping(const std::string& path, const proto::Damping& damping) {
-    problems_.non_negative(path + ".contact_beta", damping.contact_beta());
-    problems_.non_negative(path + ".global_alpha", damping.global_alpha());
-    if (damping.has_global_alpha_rotation()) {
-      problems_.non_negative(path + ".global_alpha_rotation", damping.global_alpha_rotation());
-    }
-    const Interval fraction{0.0, 1.0, false, true};  // [0, 1)
-    problems_.within(path + ".local_alpha", damping.local_alpha(), fraction);
-    if (damping.has_local_alpha_rotation()) {
-      problems_.within(path + ".local_alpha_rotation", damping.local_alpha_rotation(), fraction);
     }
   }
 
@@ -600,7 +583,7 @@ class CaseChecker {
       if (stage.has_box_control() && stage.release_box_control()) {
         problems_.add(path + ".release_box_control", "a stage sets box_control or releases it, not both");
       }
-      if (stage.has_damping()) check_damping(path + ".damping", stage.damping());
+      if (stage.has_damping()) check_fields<DampingDef>(stage.damping(), path + ".damping", problems_);
       if (stage.has_body_force()) {
         vector(path + ".body_force.gravity", stage.body_force().gravity());
         if (stage.body_force().has_centripetal()) {

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "case_fields.h"
 #include "case_laws.h"
 #include "dem/law_traits.h"
 #include "field_path.h"
@@ -64,10 +65,7 @@ class ContactModelChecker {
       check_law(path, model);
       if (model.has_friction()) problems_.non_negative(path + ".friction", model.friction());
       if (model.has_cohesion()) problems_.non_negative(path + ".cohesion", model.cohesion());
-      if (model.has_rolling()) {
-        problems_.non_negative(path + ".rolling.friction", model.rolling().friction());
-        problems_.non_negative(path + ".rolling.damping_ratio", model.rolling().damping_ratio());
-      }
+      if (model.has_rolling()) check_fields<RollingResistanceDef>(model.rolling(), path + ".rolling", problems_);
 
       if (named > 2 || std::ranges::count(ids, -1) > 0) continue;
       const std::pair<int, int> pair = named == 0   ? std::pair{-1, -1}
@@ -101,21 +99,14 @@ class ContactModelChecker {
     }
     const std::string where = path + "." + law.field->name();
     if (!law.law) problems_.add(where, "is no contact law of this engine");
-    if (const auto* linear = dynamic_cast<const proto::LinearLaw*>(law.parameters)) {
-      problems_.positive(where + ".normal_stiffness", linear->normal_stiffness());
-      problems_.non_negative(where + ".shear_stiffness", linear->shear_stiffness());
+    if (dynamic_cast<const proto::LinearLaw*>(law.parameters) != nullptr) {
+      check_fields<LinearLawDef>(*law.parameters, where, problems_);
     } else if (const auto* restitution = dynamic_cast<const proto::LinearRestitutionLaw*>(law.parameters)) {
-      problems_.positive(where + ".normal_stiffness", restitution->normal_stiffness());
-      problems_.non_negative(where + ".shear_stiffness", restitution->shear_stiffness());
+      check_fields<LinearLawDef>(*law.parameters, where, problems_);  // its stiffnesses
       problems_.within(where + ".restitution", restitution->restitution(), kRestitution);
-    } else if (const auto* hertz = dynamic_cast<const proto::HertzLaw*>(law.parameters)) {
-      check_hertz(where, *hertz);
+    } else if (dynamic_cast<const proto::HertzLaw*>(law.parameters) != nullptr) {
+      check_fields<HertzDampingDef>(*law.parameters, where, problems_);
     }
-  }
-
-  void check_hertz(const std::string& path, const proto::HertzLaw& law) {
-    if (law.has_damping_ratio()) problems_.non_negative(path + ".damping_ratio", law.damping_ratio());
-    if (law.has_restitution()) problems_.within(path + ".restitution", law.restitution(), kRestitution);
   }
 
   // Pairs of material indices that can touch: particle with particle

@@ -33,9 +33,9 @@ struct Interval {
 };
 
 // Poisson's ratio of an isotropic elastic solid (positive shear and bulk moduli).
-inline const Interval kPoissonRatio{-1.0, 0.5, true, true};
+inline constexpr Interval kPoissonRatio{-1.0, 0.5, true, true};
 // A coefficient of restitution: 1 is elastic; 0 has no logarithm (Miyata eq. 17).
-inline const Interval kRestitution{0.0, 1.0, true, false};
+inline constexpr Interval kRestitution{0.0, 1.0, true, false};
 
 // The numbers a case may hold. Beyond 1e30 products in the force and
 // energy arithmetic (stiffness x overlap, density x radius^3 x speed^2)

@@ -4,6 +4,7 @@
 #include <set>
 #include <string>
 
+#include "case_fields.h"
 #include "dem/law_traits.h"
 #include "format_number.h"
 #include "problem_list.h"
@@ -14,12 +15,14 @@ namespace {
 
 std::string item(const std::string& path, int index) { return path + '[' + std::to_string(index) + ']'; }
 
-// The checks of ProblemList (problem_list.h), phrased as a case's are, for
-// a snapshot's Problems.
+// The range checks of ProblemList (problem_list.h), phrased as a case's
+// are, for a snapshot's Problems; a number's finiteness and magnitude the
+// structure checks judged already (snapshot_structure_checks.cpp).
 class Rules {
  public:
   explicit Rules(Problems& problems) : problems_(problems) {}
 
+  void finite(const std::string&, double) {}
   void positive(const std::string& path, double value) {
     if (!(value > 0)) problems_.add(path, "must be > 0 (got " + format_number(value) + ")");
   }
@@ -49,8 +52,9 @@ class Rules {
 // The schema's values are the engine's (SnapshotConversion.EveryContactLawKeepsItsSchemaValue).
 bool is_hertz(proto::SnapshotContactLaw law) { return dem::is_hertz(static_cast<ContactLaw>(law)); }
 
-// case_validation.cpp's check_materials and contact_model_checks.cpp's
-// check_law, over the snapshot's settings.
+// The case's rules (case_rules.h) over the snapshot's settings, and the
+// checks across fields that case_validation.cpp and
+// contact_model_checks.cpp make.
 void check_settings(Rules& rules, const proto::Snapshot& m) {
   const proto::SnapshotSettings& s = m.settings();
   const std::set<int> particle_materials(m.particles().material().begin(), m.particles().material().end());
@@ -60,53 +64,30 @@ void check_settings(Rules& rules, const proto::Snapshot& m) {
     const std::string path = item("settings.contact_models", i);
     if (is_hertz(model.law())) {
       hertz = true;
-      rules.non_negative(path + ".hertz_damping_ratio", model.hertz_damping_ratio());
-      if (model.has_hertz_restitution()) {
-        rules.within(path + ".hertz_restitution", model.hertz_restitution(), kRestitution);
-      }
+      check_snapshot_fields<HertzDampingDef>(model, path, rules, "hertz_");
     } else {
-      rules.positive(path + ".linear_normal_stiffness", model.linear_normal_stiffness());
-      rules.non_negative(path + ".linear_shear_stiffness", model.linear_shear_stiffness());
+      check_snapshot_fields<LinearLawDef>(model, path, rules, "linear_");
       if (model.law() == proto::SNAPSHOT_LAW_LINEAR_RESTITUTION) {
         rules.within(path + ".restitution", model.restitution(), kRestitution);
       }
     }
     if (model.has_friction()) rules.non_negative(path + ".friction", model.friction());
     if (model.has_cohesion()) rules.non_negative(path + ".cohesion", model.cohesion());
-    rules.non_negative(path + ".rolling_friction", model.rolling_friction());
-    rules.non_negative(path + ".rolling_damping_ratio", model.rolling_damping_ratio());
+    check_snapshot_fields<RollingResistanceDef>(model, path, rules, "rolling_");
   }
   for (int i = 0; i < s.materials_size(); ++i) {
     const proto::SnapshotMaterial& material = s.materials(i);
     const std::string path = item("settings.materials", i);
-    const bool particles_of_it = particle_materials.contains(i);
-    if (particles_of_it) {
-      rules.positive(path + ".density", material.density());
-    } else {
-      rules.non_negative(path + ".density", material.density());
+    check_snapshot_fields<MaterialDef>(material, path, rules);
+    // 0 passes the rules (a wall's); a particle material's density cannot
+    // be, nor, under a Hertz law, its E (Randall 1989, 3.6 and 4.8-4.10; a
+    // wall of E = 0 is rigid).
+    if (particle_materials.contains(i)) {
+      if (material.density() == 0) rules.positive(path + ".density", 0.0);
+      if (hertz && material.youngs_modulus() == 0) rules.positive(path + ".youngs_modulus", 0.0);
     }
-    rules.non_negative(path + ".friction", material.friction());
-    rules.non_negative(path + ".cohesion", material.cohesion());
-    // The Hertz laws take their stiffness from the particles' E and nu
-    // (Randall 1989, 3.6 and 4.8-4.10); a wall of E = 0 is rigid.
-    if (hertz && particles_of_it) {
-      rules.positive(path + ".youngs_modulus", material.youngs_modulus());
-    } else {
-      rules.non_negative(path + ".youngs_modulus", material.youngs_modulus());
-    }
-    rules.within(path + ".poisson_ratio", material.poisson_ratio(), kPoissonRatio);
   }
-  const proto::SnapshotDamping& d = s.damping();
-  rules.non_negative("settings.damping.contact_beta", d.contact_beta());
-  rules.non_negative("settings.damping.global_alpha", d.global_alpha());
-  if (d.has_global_alpha_rotation()) {
-    rules.non_negative("settings.damping.global_alpha_rotation", d.global_alpha_rotation());
-  }
-  const Interval local{0.0, 1.0, false, true};
-  rules.within("settings.damping.local_alpha", d.local_alpha(), local);
-  if (d.has_local_alpha_rotation()) {
-    rules.within("settings.damping.local_alpha_rotation", d.local_alpha_rotation(), local);
-  }
+  check_snapshot_fields<DampingDef>(s.damping(), "settings.damping", rules);
   rules.within("settings.time_step_fraction", s.time_step_fraction(), Interval{0.0, 1.0, true, false});
   rules.non_negative("settings.fixed_time_step", s.fixed_time_step());
   rules.non_negative("settings.contact_tolerance", s.contact_tolerance());

@@ -3,7 +3,8 @@
 // between it and a world built from values no case could give (a zero or
 // negative stiffness, Poisson's ratio 2, a zero quaternion). Each problem
 // names the snapshot's field; the ranges are the case validation's
-// (problem_list.h), so a snapshot holds exactly what a case may.
+// (the rules of case_rules.h and problem_list.h), so a snapshot holds
+// exactly what a case may.
 #pragma once
 
 #include <cstdint>

@@ -1,0 +1,145 @@
+// The case's flat structs from one definition: the engine's field list of
+// each (SnapshotFields, dem/snapshot_fields.h, the list the snapshot walks)
+// and its rules (case_rules.h). One walker converts a case.proto message
+// by those lists (read_fields) and one checks it by those rules
+// (check_fields), each finding its field by the entry's name, so a problem
+// names the field as a case spells it: "material[1].friction: must be >= 0
+// (got -1)". The snapshot's settings are checked by the same rules
+// (check_snapshot_fields, snapshot_rules.cpp), so a snapshot holds exactly
+// what a case may.
+//
+// A new member of MaterialDef, LinearLawDef, HertzDampingDef,
+// RollingResistanceDef, DampingDef or ServoDef is its struct member, its
+// list line (the build fails until it has one), its rule line (the build
+// fails until it has one), a field of its name in idl/dem/case.proto
+// (CaseFields.EveryListedFieldHasItsCaseField names a missing one) and one
+// in idl/dem/snapshot.proto; nothing here.
+#pragma once
+
+#include <google/protobuf/descriptor.h>
+#include <google/protobuf/message.h>
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+#include "case_rules.h"
+#include "problem_list.h"
+#include "snapshot_conversion_fields.h"
+
+namespace dem::io {
+namespace case_fields {
+
+using google::protobuf::FieldDescriptor;
+using google::protobuf::Message;
+
+// How a schema spells a list entry's field: case.proto as the rule says
+// (the member's name unless the rule gives another), snapshot.proto by the
+// member's name behind the prefix of a flattened struct ("hertz_").
+struct Naming {
+  bool snapshot = false;
+  std::string_view prefix{};
+};
+
+// The field a list entry meets; a list line whose field the schema lacks
+// is a programming error, named.
+inline const FieldDescriptor& field_of(const Message& m, const FieldRule& rule, const Naming& naming = {}) {
+  const std::string name = naming.snapshot ? std::string(naming.prefix) + std::string(rule.name)
+                                           : std::string(rule.field.empty() ? rule.name : rule.field);
+  const FieldDescriptor* field = m.GetDescriptor()->FindFieldByName(name);
+  if (field == nullptr) {
+    throw std::logic_error(m.GetDescriptor()->full_name() + " has no field " + name +
+                           ", which a field list names (dem/snapshot_fields.h, io/src/case_rules.h): add it to " +
+                           (naming.snapshot ? "idl/dem/snapshot.proto" : "idl/dem/case.proto"));
+  }
+  return *field;
+}
+
+template <class T, class Entry>
+void read_member(const Message& m, const Entry& entry, T& def) {
+  using Member = fields::MemberOf<Entry>;
+  const FieldRule& rule = rule_for<T>(entry.name);
+  const FieldDescriptor& field = field_of(m, rule);
+  if (const char* problem = fields::type_problem<Member>(field)) {
+    throw std::logic_error("field " + field.full_name() + " cannot carry its list entry: " + problem);
+  }
+  Member value = def.*entry.member;
+  fields::get_value(value, m, &field);
+  if constexpr (std::is_arithmetic_v<Member>) {
+    if (rule.zero_keeps_default && value == Member{}) return;
+  }
+  def.*entry.member = std::move(value);
+}
+
+// The checker's check the rule names: ProblemList's for a case, the
+// snapshot's range checks for a snapshot (snapshot_rules.cpp).
+template <class Checker>
+void apply_rule(Checker& checker, const std::string& path, double value, const FieldRule& rule) {
+  switch (rule.check) {
+    case Check::kNone:
+      break;
+    case Check::kFinite:
+      checker.finite(path, value);
+      break;
+    case Check::kNonNegative:
+      checker.non_negative(path, value);
+      break;
+    case Check::kPositive:
+      checker.positive(path, value);
+      break;
+    case Check::kWithin:
+      checker.within(path, value, rule.interval);
+      break;
+  }
+}
+
+template <class T, class Checker>
+void check_named(const Message& message, const std::string& path, Checker& checker, const Naming& naming) {
+  std::apply(
+      [&](const auto&... entry) {
+        const auto check = [&](std::string_view name) {
+          const FieldRule& rule = rule_for<T>(name);
+          if (rule.check == Check::kNone) return;
+          const FieldDescriptor& field = field_of(message, rule, naming);
+          if (field.cpp_type() != FieldDescriptor::CPPTYPE_DOUBLE || field.is_repeated()) {
+            throw std::logic_error("field " + field.full_name() + " has a rule for numbers but is not a double");
+          }
+          const google::protobuf::Reflection& r = *message.GetReflection();
+          if (field.has_presence() && !r.HasField(message, &field)) return;
+          apply_rule(checker, path + '.' + field.name(), r.GetDouble(message, &field), rule);
+        };
+        (check(entry.name), ...);
+      },
+      SnapshotFields<T>::list);
+}
+
+}  // namespace case_fields
+
+// The message's fields into def, entry by entry of T's list; a field with
+// presence left out, or a zero where the rule keeps the default, leaves
+// the member as it was.
+template <class T>
+void read_fields(const google::protobuf::Message& message, T& def) {
+  std::apply([&](const auto&... entry) { (case_fields::read_member(message, entry, def), ...); },
+             SnapshotFields<T>::list);
+}
+
+// Each of the case message's numbers checked by its rule, a problem named
+// path.field; a field with presence left out is not checked.
+template <class T>
+void check_fields(const google::protobuf::Message& message, const std::string& path, ProblemList& problems) {
+  case_fields::check_named<T>(message, path, problems, {});
+}
+
+// The same rules over a snapshot's message, whose fields are named as the
+// members behind `prefix` (the snapshot holds exactly what a case may).
+template <class T, class Checker>
+void check_snapshot_fields(const google::protobuf::Message& message, const std::string& path, Checker& checker,
+                           std::string_view prefix = {}) {
+  case_fields::check_named<T>(message, path, checker, {.snapshot = true, .prefix = prefix});
+}
+
+}  // namespace dem::io

@@ -1,0 +1,137 @@
+// What a case's numbers must be, one rule per entry of the engine's field
+// list of each struct (SnapshotFields, dem/snapshot_fields.h): the one
+// place a material's, a damping's, a servo's or a contact law's ranges are
+// declared. The case's validation (case_fields.h, check_fields) and the
+// snapshot's (snapshot_rules.cpp) apply them; a static_assert below wants
+// a rule for every list entry, so a new member of these structs cannot be
+// left unchecked. Checks across fields or messages (a name's uniqueness, a
+// particle material's density > 0, E > 0 under a Hertz law) stay with the
+// references they need (case_validation.cpp, contact_model_checks.cpp).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <type_traits>
+
+#include "dem/definitions.h"
+#include "dem/snapshot_fields.h"
+#include "problem_list.h"
+
+namespace dem::io {
+
+// What a case's number must be: ProblemList's check of that name.
+enum class Check { kNone, kFinite, kNonNegative, kPositive, kWithin };
+
+struct FieldRule {
+  std::string_view name;  // the list entry's
+  Check check = Check::kNone;
+  Interval interval{};  // for kWithin
+  // proto3 cannot tell an unset number from 0, so 0 keeps the struct's default.
+  bool zero_keeps_default = false;
+  // The case.proto field, when a case spells it otherwise than the member.
+  std::string_view field{};
+};
+
+// The fraction of local damping, [0, 1) (Miyata eq. 33).
+inline constexpr Interval kLocalDamping{0.0, 1.0, false, true};
+
+// CaseRules<T>::list: a FieldRule per entry of SnapshotFields<T>::list.
+template <class T>
+struct CaseRules;
+
+template <>
+struct CaseRules<MaterialDef> {
+  static constexpr std::array list = {
+      // Particles, walls and contact models refer to it: checked with the references (case_validation.cpp).
+      FieldRule{.name = "name"},
+      // Only particles need a density (> 0 for theirs, case_validation.cpp); a wall material may leave it out.
+      FieldRule{.name = "density", .check = Check::kNonNegative, .zero_keeps_default = true},
+      FieldRule{.name = "friction", .check = Check::kNonNegative},
+      FieldRule{.name = "cohesion", .check = Check::kNonNegative},
+      // > 0 for a particle material a Hertz law serves (contact_model_checks.cpp); a wall of E = 0 is rigid.
+      FieldRule{.name = "youngs_modulus", .check = Check::kNonNegative},
+      FieldRule{.name = "poisson_ratio", .check = Check::kWithin, .interval = kPoissonRatio},
+  };
+};
+template <>
+struct CaseRules<LinearLawDef> {
+  static constexpr std::array list = {
+      FieldRule{.name = "normal_stiffness", .check = Check::kPositive},
+      FieldRule{.name = "shear_stiffness", .check = Check::kNonNegative},
+  };
+};
+template <>
+struct CaseRules<HertzDampingDef> {
+  static constexpr std::array list = {
+      FieldRule{.name = "damping_ratio", .check = Check::kNonNegative},
+      FieldRule{.name = "restitution", .check = Check::kWithin, .interval = kRestitution},
+      FieldRule{.name = "tangential", .field = "tangential_damping"},
+  };
+};
+template <>
+struct CaseRules<RollingResistanceDef> {
+  static constexpr std::array list = {
+      FieldRule{.name = "friction", .check = Check::kNonNegative},
+      FieldRule{.name = "damping_ratio", .check = Check::kNonNegative},
+  };
+};
+template <>
+struct CaseRules<DampingDef> {
+  static constexpr std::array list = {
+      FieldRule{.name = "contact_beta", .check = Check::kNonNegative},
+      FieldRule{.name = "global_alpha", .check = Check::kNonNegative},
+      FieldRule{.name = "global_alpha_rotation", .check = Check::kNonNegative},
+      FieldRule{.name = "local_alpha", .check = Check::kWithin, .interval = kLocalDamping},
+      FieldRule{.name = "local_alpha_rotation", .check = Check::kWithin, .interval = kLocalDamping},
+  };
+};
+template <>
+struct CaseRules<ServoDef> {
+  static constexpr std::array list = {
+      FieldRule{.name = "target_force", .check = Check::kFinite},
+      FieldRule{.name = "gain", .check = Check::kPositive},
+      FieldRule{.name = "max_speed", .check = Check::kPositive},
+  };
+};
+
+namespace case_fields {
+
+// The rules name the list's entries, each once: as many as the list has.
+template <class T>
+constexpr bool rules_match_list() {
+  constexpr auto& list = SnapshotFields<T>::list;
+  constexpr auto& rules = CaseRules<T>::list;
+  if (rules.size() != std::tuple_size_v<std::remove_cvref_t<decltype(list)>>) return false;
+  for (std::size_t i = 0; i < rules.size(); ++i) {
+    if (field_index(list, rules[i].name) == rules.size()) return false;
+    for (std::size_t j = 0; j < i; ++j) {
+      if (rules[j].name == rules[i].name) return false;
+    }
+  }
+  return true;
+}
+
+#define DEM_CASE_RULES_MATCH(T) \
+  static_assert(rules_match_list<T>(), #T ": give each entry of its field list one rule in CaseRules (case_rules.h)")
+DEM_CASE_RULES_MATCH(MaterialDef);
+DEM_CASE_RULES_MATCH(LinearLawDef);
+DEM_CASE_RULES_MATCH(HertzDampingDef);
+DEM_CASE_RULES_MATCH(RollingResistanceDef);
+DEM_CASE_RULES_MATCH(DampingDef);
+DEM_CASE_RULES_MATCH(ServoDef);
+#undef DEM_CASE_RULES_MATCH
+
+template <class T>
+constexpr const FieldRule& rule_for(std::string_view name) {
+  for (const FieldRule& rule : CaseRules<T>::list) {
+    if (rule.name == name) return rule;
+  }
+  throw std::logic_error("no case rule for " + std::string(name));  // rules_match_list rules it out
+}
+
+}  // namespace case_fields
+}  // namespace dem::io
