@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang, AddressSanitizer and
 # UndefinedBehaviorSanitizer in build-fuzz/ and runs each for SECONDS
-# (default 60), one after the other, starting from the seed corpus and the
-# regression inputs in tests/fuzz; prints each target's executions, rate
+# (default 60), as many at once as there are cores (DEM_FUZZ_JOBS),
+# starting from the seed corpus and the regression inputs in tests/fuzz;
+# prints each target's executions, rate
 # and coverage. A crash, a sanitizer report, a leak or an input slower than
 # 10 s (DEM_FUZZ_TIMEOUT) fails the run; the input is saved in
 # build-fuzz/findings/ (copy it to tests/fuzz/regressions/<target>/ with the
@@ -34,25 +35,44 @@ mkdir -p "$build/findings"
 history="$build/fuzz_history.tsv"
 [ -f "$history" ] || printf 'date\tcommit\ttarget\tseconds\texecutions\texec/s\tcov\tft\tcorpus\texit\n' >"$history"
 commit=$(git -C "$root" describe --always --dirty 2>/dev/null || echo unknown)
-failed=0
-printf '%-12s %12s %10s %8s %8s %8s %12s\n' target executions exec/s cov ft corpus total
-for target in "${targets[@]}"; do
-  corpus="$build/corpus/$target"
+# fuzz_one TARGET: runs one target for SECONDS; its log in fuzz_TARGET.log,
+# its exit code in fuzz_TARGET.exit.
+fuzz_one() {
+  local target="$1" code=0
+  local corpus="$build/corpus/$target"
   mkdir -p "$corpus"
-  log="$build/fuzz_$target.log"
   # A target without regressions has no directory for them (git keeps no
   # empty directory), and libFuzzer exits at a directory that is missing.
-  inputs=("$corpus")
+  local inputs=("$corpus") dir
   for dir in "$root/tests/fuzz/corpus/$target" "$root/tests/fuzz/regressions/$target"; do
     [ ! -d "$dir" ] || inputs+=("$dir")
   done
-  set +e
   "$build/tests/fuzz/fuzz_$target" -max_total_time="$seconds" -timeout="${DEM_FUZZ_TIMEOUT:-10}" -rss_limit_mb=2560 \
     -max_len=65536 \
     -print_final_stats=1 -artifact_prefix="$build/findings/$target-" \
-    "${inputs[@]}" >"$log" 2>&1
-  code=$?
-  set -e
+    "${inputs[@]}" >"$build/fuzz_$target.log" 2>&1 || code=$?
+  echo "$code" >"$build/fuzz_$target.exit"
+}
+# The targets run side by side, a core each (DEM_FUZZ_JOBS, default every
+# core): each is one process on one core, so four minutes of fuzzing take
+# two on two cores and each target still gets its SECONDS of a core.
+at_once="${DEM_FUZZ_JOBS:-$(nproc)}"
+running=0
+for target in "${targets[@]}"; do
+  rm -f "$build/fuzz_$target.exit"
+  fuzz_one "$target" &
+  running=$((running + 1))
+  if [ "$running" -ge "$at_once" ]; then
+    wait -n
+    running=$((running - 1))
+  fi
+done
+wait
+failed=0
+printf '%-12s %12s %10s %8s %8s %8s %12s\n' target executions exec/s cov ft corpus total
+for target in "${targets[@]}"; do
+  log="$build/fuzz_$target.log"
+  code=$(cat "$build/fuzz_$target.exit" 2>/dev/null || echo 1)
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
   rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -n 1)
   # "|| true": a log without a status line (the fuzzer did not start) must
