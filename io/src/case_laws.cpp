@@ -15,11 +15,10 @@ CaseLaw case_law(const proto::ContactModel& model) {
 }
 
 void set_law_parameters(const google::protobuf::Message& parameters, ContactModelDef& def) {
-  if (dynamic_cast<const proto::LinearLaw*>(&parameters) != nullptr) {
-    read_fields(parameters, def.linear);
-  } else if (const auto* restitution = dynamic_cast<const proto::LinearRestitutionLaw*>(&parameters)) {
-    read_fields(parameters, def.linear);  // its stiffnesses, by LinearLawDef's list
-    def.restitution = restitution->restitution();
+  const auto* restitution = dynamic_cast<const proto::LinearRestitutionLaw*>(&parameters);
+  if (restitution != nullptr || dynamic_cast<const proto::LinearLaw*>(&parameters) != nullptr) {
+    read_fields(parameters, def.linear);  // both linear laws' stiffnesses, by LinearLawDef's list
+    if (restitution != nullptr) def.restitution = restitution->restitution();
   } else if (dynamic_cast<const proto::HertzLaw*>(&parameters) != nullptr) {
     read_fields(parameters, def.hertz);
   }

@@ -99,11 +99,10 @@ class ContactModelChecker {
     }
     const std::string where = path + "." + law.field->name();
     if (!law.law) problems_.add(where, "is no contact law of this engine");
-    if (dynamic_cast<const proto::LinearLaw*>(law.parameters) != nullptr) {
-      check_fields<LinearLawDef>(*law.parameters, where, problems_);
-    } else if (const auto* restitution = dynamic_cast<const proto::LinearRestitutionLaw*>(law.parameters)) {
-      check_fields<LinearLawDef>(*law.parameters, where, problems_);  // its stiffnesses
-      problems_.within(where + ".restitution", restitution->restitution(), kRestitution);
+    const auto* restitution = dynamic_cast<const proto::LinearRestitutionLaw*>(law.parameters);
+    if (restitution != nullptr || dynamic_cast<const proto::LinearLaw*>(law.parameters) != nullptr) {
+      check_fields<LinearLawDef>(*law.parameters, where, problems_);  // both linear laws' stiffnesses
+      if (restitution != nullptr) problems_.within(where + ".restitution", restitution->restitution(), kRestitution);
     } else if (dynamic_cast<const proto::HertzLaw*>(law.parameters) != nullptr) {
       check_fields<HertzDampingDef>(*law.parameters, where, problems_);
     }
