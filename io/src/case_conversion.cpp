@@ -320,9 +320,7 @@ class Converter {
       const CaseLaw law = case_law(model);
       if (law.law) def.law = *law.law;
       if (law.parameters != nullptr) set_law_parameters(*law.parameters, def);
-      if (model.has_friction()) def.friction = model.friction();
-      if (model.has_cohesion()) def.cohesion = model.cohesion();
-      read_fields(model.rolling(), def.rolling);  // none (zeros) when the model leaves it out
+      read_fields(model, def);  // restitution, friction, cohesion, rolling (case_rules.h)
       world.contact_models.push_back(def);
     }
   }

@@ -6,10 +6,12 @@
 // names the field as a case spells it: "material[1].friction: must be >= 0
 // (got -1)". The snapshot's settings are checked by the same rules
 // (check_snapshot_fields, snapshot_rules.cpp), so a snapshot holds exactly
-// what a case may.
+// what a case may. A rule may place its field in a message of the case's
+// (a law's parameters), walk a struct member's message by that struct's
+// rules, or leave the member to code that converts it by hand (elsewhere).
 //
 // A new member of MaterialDef, LinearLawDef, HertzDampingDef,
-// RollingResistanceDef, DampingDef or ServoDef is its struct member, its
+// RollingResistanceDef, ContactModelDef, DampingDef or ServoDef is its struct member, its
 // list line (the build fails until it has one), its rule line (the build
 // fails until it has one), a field of its name in idl/dem/case.proto
 // (CaseFields.EveryListedFieldHasItsCaseField names a missing one) and one
@@ -41,8 +43,22 @@ using google::protobuf::Message;
 // member's name behind the prefix of a flattened struct ("hertz_").
 struct Naming {
   bool snapshot = false;
-  std::string_view prefix{};
+  std::string prefix{};
 };
+
+// The message a list entry's field is in: m, or the message field of m's
+// the rule says holds it (a snapshot flattens those, so there m); null
+// when that message is not set.
+inline const Message* holder_of(const Message& m, const FieldRule& rule, const Naming& naming) {
+  if (rule.inside.empty() || naming.snapshot) return &m;
+  const FieldDescriptor* inside = m.GetDescriptor()->FindFieldByName(std::string(rule.inside));
+  if (inside == nullptr || inside->cpp_type() != FieldDescriptor::CPPTYPE_MESSAGE || inside->is_repeated()) {
+    throw std::logic_error(m.GetDescriptor()->full_name() + " has no message field " + std::string(rule.inside) +
+                           ", which the rule of " + std::string(rule.name) + " names (io/src/case_rules.h)");
+  }
+  const google::protobuf::Reflection& r = *m.GetReflection();
+  return r.HasField(m, inside) ? &r.GetMessage(m, inside) : nullptr;
+}
 
 // The field a list entry meets; a list line whose field the schema lacks
 // is a programming error, named.
@@ -58,20 +74,44 @@ inline const FieldDescriptor& field_of(const Message& m, const FieldRule& rule, 
   return *field;
 }
 
+// A struct with rules of its own is a message field, walked by them.
+inline const Message* nested_message(const Message& m, const FieldDescriptor& field) {
+  if (field.cpp_type() != FieldDescriptor::CPPTYPE_MESSAGE || field.is_repeated()) {
+    throw std::logic_error("field " + field.full_name() + " cannot carry its list entry: a struct wants a message");
+  }
+  const google::protobuf::Reflection& r = *m.GetReflection();
+  return r.HasField(m, &field) ? &r.GetMessage(m, &field) : nullptr;
+}
+
+template <class T>
+void read_fields_of(const Message& message, T& def);
+
 template <class T, class Entry>
 void read_member(const Message& m, const Entry& entry, T& def) {
   using Member = fields::MemberOf<Entry>;
   const FieldRule& rule = rule_for<T>(entry.name);
-  const FieldDescriptor& field = field_of(m, rule);
-  if (const char* problem = fields::type_problem<Member>(field)) {
-    throw std::logic_error("field " + field.full_name() + " cannot carry its list entry: " + problem);
+  if (rule.elsewhere) return;
+  const Message* holder = holder_of(m, rule, {});
+  if (holder == nullptr) return;
+  const FieldDescriptor& field = field_of(*holder, rule);
+  if constexpr (HasCaseRules<Member>) {
+    if (const Message* nested = nested_message(*holder, field)) read_fields_of(*nested, def.*entry.member);
+  } else {
+    if (const char* problem = fields::type_problem<Member>(field)) {
+      throw std::logic_error("field " + field.full_name() + " cannot carry its list entry: " + problem);
+    }
+    Member value = def.*entry.member;
+    fields::get_value(value, *holder, &field);
+    if constexpr (std::is_arithmetic_v<Member>) {
+      if (rule.zero_keeps_default && value == Member{}) return;
+    }
+    def.*entry.member = std::move(value);
   }
-  Member value = def.*entry.member;
-  fields::get_value(value, m, &field);
-  if constexpr (std::is_arithmetic_v<Member>) {
-    if (rule.zero_keeps_default && value == Member{}) return;
-  }
-  def.*entry.member = std::move(value);
+}
+
+template <class T>
+void read_fields_of(const Message& message, T& def) {
+  std::apply([&](const auto&... entry) { (read_member(message, entry, def), ...); }, SnapshotFields<T>::list);
 }
 
 // The checker's check the rule names: ProblemList's for a case, the
@@ -97,23 +137,52 @@ void apply_rule(Checker& checker, const std::string& path, double value, const F
 }
 
 template <class T, class Checker>
+void check_named(const Message& message, const std::string& path, Checker& checker, const Naming& naming);
+
+// One list entry's field by its rule, named path.field (path.inside.field
+// for a field in a law's message).
+template <class Member, class Checker>
+void check_member(const Message& message, const FieldRule& rule, const std::string& path, Checker& checker,
+                  const Naming& naming) {
+  if (rule.elsewhere) return;
+  const Message* holder = holder_of(message, rule, naming);
+  if (holder == nullptr) return;
+  const std::string where = holder == &message ? path : path + '.' + std::string(rule.inside);
+  if constexpr (HasCaseRules<Member>) {
+    if (naming.snapshot) {  // flattened behind "<member>_", as the snapshot converts it
+      check_named<Member>(message, path, checker,
+                          {.snapshot = true, .prefix = naming.prefix + std::string(rule.name) + "_"});
+      return;
+    }
+    const FieldDescriptor& field = field_of(*holder, rule, naming);
+    if (const Message* nested = nested_message(*holder, field)) {
+      check_named<Member>(*nested, where + '.' + field.name(), checker, naming);
+    }
+  } else {
+    if (rule.check == Check::kNone) return;
+    const FieldDescriptor& field = field_of(*holder, rule, naming);
+    if (field.cpp_type() != FieldDescriptor::CPPTYPE_DOUBLE || field.is_repeated()) {
+      throw std::logic_error("field " + field.full_name() + " has a rule for numbers but is not a double");
+    }
+    const google::protobuf::Reflection& r = *holder->GetReflection();
+    if (field.has_presence() && !r.HasField(*holder, &field)) return;
+    apply_rule(checker, where + '.' + field.name(), r.GetDouble(*holder, &field), rule);
+  }
+}
+
+// The fields in the rules' order, each by the type of its list entry.
+template <class T, class Checker>
 void check_named(const Message& message, const std::string& path, Checker& checker, const Naming& naming) {
-  std::apply(
-      [&](const auto&... entry) {
-        const auto check = [&](std::string_view name) {
-          const FieldRule& rule = rule_for<T>(name);
-          if (rule.check == Check::kNone) return;
-          const FieldDescriptor& field = field_of(message, rule, naming);
-          if (field.cpp_type() != FieldDescriptor::CPPTYPE_DOUBLE || field.is_repeated()) {
-            throw std::logic_error("field " + field.full_name() + " has a rule for numbers but is not a double");
-          }
-          const google::protobuf::Reflection& r = *message.GetReflection();
-          if (field.has_presence() && !r.HasField(message, &field)) return;
-          apply_rule(checker, path + '.' + field.name(), r.GetDouble(message, &field), rule);
-        };
-        (check(entry.name), ...);
-      },
-      SnapshotFields<T>::list);
+  for (const FieldRule& rule : CaseRules<T>::list) {
+    std::apply(
+        [&](const auto&... entry) {
+          ((entry.name == rule.name
+                ? check_member<fields::MemberOf<decltype(entry)>>(message, rule, path, checker, naming)
+                : void()),
+           ...);
+        },
+        SnapshotFields<T>::list);
+  }
 }
 
 }  // namespace case_fields
@@ -123,8 +192,7 @@ void check_named(const Message& message, const std::string& path, Checker& check
 // the member as it was.
 template <class T>
 void read_fields(const google::protobuf::Message& message, T& def) {
-  std::apply([&](const auto&... entry) { (case_fields::read_member(message, entry, def), ...); },
-             SnapshotFields<T>::list);
+  case_fields::read_fields_of(message, def);
 }
 
 // Each of the case message's numbers checked by its rule, a problem named
@@ -139,7 +207,7 @@ void check_fields(const google::protobuf::Message& message, const std::string& p
 template <class T, class Checker>
 void check_snapshot_fields(const google::protobuf::Message& message, const std::string& path, Checker& checker,
                            std::string_view prefix = {}) {
-  case_fields::check_named<T>(message, path, checker, {.snapshot = true, .prefix = prefix});
+  case_fields::check_named<T>(message, path, checker, {.snapshot = true, .prefix = std::string(prefix)});
 }
 
 }  // namespace dem::io

@@ -34,14 +34,27 @@ struct FieldRule {
   bool zero_keeps_default = false;
   // The case.proto field, when a case spells it otherwise than the member.
   std::string_view field{};
+  // The message field of the case's that holds it (a law's parameters);
+  // none set, the member keeps its default and nothing is checked.
+  std::string_view inside{};
+  // Converted and checked by hand where the comment says (a name looked
+  // up, a oneof's case, a law's parameters in the message the law names).
+  bool elsewhere = false;
 };
 
 // The fraction of local damping, [0, 1) (Miyata eq. 33).
 inline constexpr Interval kLocalDamping{0.0, 1.0, false, true};
 
-// CaseRules<T>::list: a FieldRule per entry of SnapshotFields<T>::list.
+// CaseRules<T>::list: a FieldRule per entry of SnapshotFields<T>::list,
+// in the order the fields are checked. A member that is itself a struct
+// with rules (ContactModelDef::rolling) is its message, walked by them.
 template <class T>
 struct CaseRules;
+
+template <class T>
+concept HasCaseRules = requires {
+  CaseRules<T>::list;
+};
 
 template <>
 struct CaseRules<MaterialDef> {
@@ -80,6 +93,27 @@ struct CaseRules<RollingResistanceDef> {
   };
 };
 template <>
+struct CaseRules<ContactModelDef> {
+  static constexpr std::array list = {
+      // The first and last of `materials`, by name (case_conversion.cpp; the references, contact_model_checks.cpp).
+      FieldRule{.name = "material_a", .elsewhere = true},
+      FieldRule{.name = "material_b", .elsewhere = true},
+      // The field of the `law` oneof and its message's parameters, by their own lists (case_laws.cpp).
+      FieldRule{.name = "law", .elsewhere = true},
+      FieldRule{.name = "linear", .elsewhere = true},
+      FieldRule{.name = "hertz", .elsewhere = true},
+      // e of the linear restitution law (Miyata eq. 17); checked before
+      // friction, as the law's other parameters are.
+      FieldRule{
+          .name = "restitution", .check = Check::kWithin, .interval = kRestitution, .inside = "linear_restitution"},
+      // Left out, the materials' (dem/definitions.h).
+      FieldRule{.name = "friction", .check = Check::kNonNegative},
+      FieldRule{.name = "cohesion", .check = Check::kNonNegative},
+      // None (zeros) when the model leaves it out.
+      FieldRule{.name = "rolling"},
+  };
+};
+template <>
 struct CaseRules<DampingDef> {
   static constexpr std::array list = {
       FieldRule{.name = "contact_beta", .check = Check::kNonNegative},
@@ -108,6 +142,7 @@ constexpr bool rules_match_list() {
   if (rules.size() != std::tuple_size_v<std::remove_cvref_t<decltype(list)>>) return false;
   for (std::size_t i = 0; i < rules.size(); ++i) {
     if (field_index(list, rules[i].name) == rules.size()) return false;
+    if (rules[i].elsewhere && rules[i].check != Check::kNone) return false;  // checked where it is converted
     for (std::size_t j = 0; j < i; ++j) {
       if (rules[j].name == rules[i].name) return false;
     }
@@ -116,11 +151,14 @@ constexpr bool rules_match_list() {
 }
 
 #define DEM_CASE_RULES_MATCH(T) \
-  static_assert(rules_match_list<T>(), #T ": give each entry of its field list one rule in CaseRules (case_rules.h)")
+  static_assert(                \
+      rules_match_list<T>(),    \
+      #T ": give each entry of its field list one rule in CaseRules (case_rules.h), none both elsewhere and checked")
 DEM_CASE_RULES_MATCH(MaterialDef);
 DEM_CASE_RULES_MATCH(LinearLawDef);
 DEM_CASE_RULES_MATCH(HertzDampingDef);
 DEM_CASE_RULES_MATCH(RollingResistanceDef);
+DEM_CASE_RULES_MATCH(ContactModelDef);
 DEM_CASE_RULES_MATCH(DampingDef);
 DEM_CASE_RULES_MATCH(ServoDef);
 #undef DEM_CASE_RULES_MATCH

@@ -59,6 +59,7 @@ TEST(CaseFields, EveryListedFieldHasItsCaseField) {
   expect_every_field_found<LinearLawDef>(proto::LinearRestitutionLaw());
   expect_every_field_found<HertzDampingDef>(proto::HertzLaw());
   expect_every_field_found<RollingResistanceDef>(proto::RollingResistance());
+  expect_every_field_found<ContactModelDef>(proto::ContactModel());
   expect_every_field_found<DampingDef>(proto::Damping());
   expect_every_field_found<ServoDef>(proto::Servo());
 }
@@ -153,6 +154,57 @@ TEST(CaseFields, AFieldLeftOutIsNeitherReadNorChecked) {
   read_fields(damping, def);
   EXPECT_EQ(def.local_alpha, 0.7);
   EXPECT_FALSE(def.local_alpha_rotation.has_value());
+}
+
+// A contact model's own numbers by ContactModelDef's rules: the
+// restitution law's e from the law's message, friction and cohesion when
+// set, rolling resistance by its own rules; the materials and the law are
+// converted elsewhere (case_conversion.cpp, case_laws.cpp).
+TEST(CaseFields, AContactModelsOwnNumbersFollowItsRules) {
+  proto::ContactModel model;
+  model.add_materials("sand");
+  model.mutable_linear_restitution()->set_normal_stiffness(1e6);
+  model.mutable_linear_restitution()->set_restitution(0.8);
+  model.set_friction(0.3);
+  model.mutable_rolling()->set_friction(0.1);
+  ContactModelDef def;
+  read_fields(model, def);
+  EXPECT_EQ(def.restitution, 0.8);
+  EXPECT_EQ(def.friction, 0.3);
+  EXPECT_FALSE(def.cohesion.has_value());
+  EXPECT_EQ(def.rolling.friction, 0.1);
+  EXPECT_EQ(def.rolling.damping_ratio, 0.0);
+  EXPECT_EQ(def.material_a, kInvalidId);                                    // by name, elsewhere
+  EXPECT_EQ(def.linear.normal_stiffness, LinearLawDef{}.normal_stiffness);  // the law's list, case_laws.cpp
+
+  // Another law: e keeps its default, the law's message holds none.
+  proto::ContactModel linear;
+  linear.mutable_linear()->set_normal_stiffness(1e6);
+  ContactModelDef plain;
+  read_fields(linear, plain);
+  EXPECT_EQ(plain.restitution, ContactModelDef{}.restitution);
+  EXPECT_FALSE(plain.friction.has_value());
+
+  // Checked in the rules' order: e (with the law's parameters), then friction, cohesion, rolling.
+  model.mutable_linear_restitution()->set_restitution(0);
+  model.set_friction(-0.1);
+  model.set_cohesion(-2);
+  model.mutable_rolling()->set_damping_ratio(-1);
+  ProblemList problems;
+  check_fields<ContactModelDef>(model, "contact_model[0]", problems);
+  std::vector<std::string> lines;
+  for (const CaseProblem& problem : problems.take()) lines.push_back(problem.path + ": " + problem.message);
+  EXPECT_EQ(lines, (std::vector<std::string>{
+                       "contact_model[0].linear_restitution.restitution: must be in (0, 1] (got 0)",
+                       "contact_model[0].friction: must be >= 0 (got -0.1)",
+                       "contact_model[0].cohesion: must be >= 0 (got -2)",
+                       "contact_model[0].rolling.damping_ratio: must be >= 0 (got -1)",
+                   }));
+
+  // Left out, nothing is checked: no restitution law, no friction, no rolling.
+  ProblemList none;
+  check_fields<ContactModelDef>(linear, "contact_model[1]", none);
+  EXPECT_TRUE(none.take().empty());
 }
 
 }  // namespace
