@@ -17,7 +17,6 @@
 #include "dem/io/particle_file.h"
 #include "dem/packing.h"
 #include "field_path.h"
-#include "format_number.h"
 #include "problem_list.h"
 
 namespace dem::io {
@@ -277,10 +276,10 @@ class Converter {
   }
 
  private:
-  // BALL's TOL is a fraction of a radius. One beyond the largest diameter
-  // makes every pair within it a contact-table row: far apart particles
-  // by the million would make the table quadratic in their number.
+  // Validation could not read the particle files' radii; the particles
+  // are all known here. A case without files was checked there.
   void check_contact_tolerance(const WorldDefT<Dim>& world) const {
+    if (std::ranges::none_of(case_.particles(), [](const auto& source) { return source.has_csv_file(); })) return;
     double largest = 0.0;
     for (const ParticleDefT<Dim>& particle : world.particles) {
       double radius = particle.radius;  // a shaped particle's is set by the engine from its shape
@@ -291,11 +290,8 @@ class Converter {
       }
       largest = std::max(largest, radius);
     }
-    if (world.contact_tolerance > 2.0 * largest) {
-      throw CaseError(describe_problem(
-          source_, "numerics.contact_tolerance",
-          "must be at most the largest particle's diameter (" + format_number(2.0 * largest) + " m), got " +
-              format_number(world.contact_tolerance) + " m; leave it out for a tenth of the mean radius"));
+    if (const auto problem = contact_tolerance_problem(world.contact_tolerance, largest)) {
+      throw CaseError(describe_problem(source_, "numerics.contact_tolerance", *problem));
     }
   }
 

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -51,6 +52,17 @@ inline constexpr double kSmallestMagnitude = 1e-30;
 inline std::string no_particle_with_id(std::uint64_t id, std::uint64_t count) {
   return "no particle with id " + std::to_string(id) + " (the case defines " + std::to_string(count) + " particles" +
          (count > 0 ? ", ids 0 to " + std::to_string(count - 1) : "") + ")";
+}
+
+// Why a contact tolerance is too wide, for validation and for conversion
+// (which alone reads the particle files' radii). BALL's TOL is a fraction
+// of a radius. One beyond the largest diameter makes every pair within it
+// a contact-table row: far apart particles by the million would make the
+// table quadratic in their number.
+inline std::optional<std::string> contact_tolerance_problem(double tolerance, double largest_radius) {
+  if (!(tolerance > 2.0 * largest_radius)) return std::nullopt;
+  return "must be at most the largest particle's diameter (" + format_number(2.0 * largest_radius) + " m), got " +
+         format_number(tolerance) + " m; leave it out for a tenth of the mean radius";
 }
 
 // Each check returns whether the value passed, so callers can skip checks
