@@ -83,27 +83,15 @@ ShapeDefT<Dim> to_shape(const Source& source) {
   return {};
 }
 
-TrimDef to_trim(const proto::Trim& trim) {
-  TrimDef def;
-  def.height = trim.height();
-  def.amplitude = trim.amplitude();
-  // A smooth cut may leave the wavelength out; it then plays no part.
-  if (trim.wavelength() > 0) def.wavelength = trim.wavelength();
-  return def;
-}
-
 MeasurementRegion to_region(const proto::MeasurementRegion& r);
 
-// A stage's stop conditions; a region is one of the case's output regions
-// (validation checked the names), in the case's dimension.
+// A stage's stop conditions: the numbers by their list (case_rules.h), the
+// walls and a region by name here; a region is one of the case's output
+// regions (validation checked the names), in the case's dimension.
 template <int Dim>
 StopConditions to_stop_conditions(const proto::Until& until, const WallIndex& walls, const proto::Output& output) {
   StopConditions def;
-  if (until.has_kinetic_energy_below()) def.kinetic_energy_below = until.kinetic_energy_below();
-  if (until.has_out_of_balance_below()) def.out_of_balance_below = until.out_of_balance_below();
-  if (until.has_kinetic_to_elastic_below()) def.kinetic_to_elastic_below = until.kinetic_to_elastic_below();
-  if (until.has_unbalanced_force_below()) def.unbalanced_force_below = until.unbalanced_force_below();
-  if (until.has_servo_tolerance()) def.servo_tolerance = until.servo_tolerance();
+  read_fields(until, def);
   if (until.has_wall_stress_above()) {
     def.wall_stress_above =
         WallThreshold{walls.at(until.wall_stress_above().wall()), until.wall_stress_above().value()};
@@ -112,7 +100,6 @@ StopConditions to_stop_conditions(const proto::Until& until, const WallIndex& wa
     def.wall_settlement_above =
         WallThreshold{walls.at(until.wall_settlement_above().wall()), until.wall_settlement_above().value()};
   }
-  if (until.has_deviator_strain_above()) def.deviator_strain_above = until.deviator_strain_above();
   if (until.has_region_out_of_balance_below()) {
     const proto::RegionThreshold& threshold = until.region_out_of_balance_below();
     for (const proto::MeasurementRegion& region : output.region()) {
@@ -120,8 +107,6 @@ StopConditions to_stop_conditions(const proto::Until& until, const WallIndex& wa
       def.region_out_of_balance_below = RegionThreshold{region_for<Dim>(to_region(region)), threshold.value()};
     }
   }
-  def.min_cycles = until.min_cycles();
-  if (until.check_interval() > 0) def.check_interval = until.check_interval();
   return def;
 }
 
@@ -501,7 +486,7 @@ class Converter {
       for (const proto::MaterialFriction& friction : stage.friction()) {
         def.frictions.emplace_back(materials_.at(friction.material()), friction.friction());
       }
-      if (stage.has_trim()) def.trim = to_trim(stage.trim());
+      if (stage.has_trim()) read_fields(stage.trim(), def.trim.emplace());  // a smooth cut may leave out the wavelength
       if (stage.has_place_wall()) {
         def.place_wall = PlaceWallDef{walls_.at(stage.place_wall().wall()), stage.place_wall().clearance()};
       }

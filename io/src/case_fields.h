@@ -11,7 +11,8 @@
 // rules, or leave the member to code that converts it by hand (elsewhere).
 //
 // A new member of MaterialDef, LinearLawDef, HertzDampingDef,
-// RollingResistanceDef, ContactModelDef, DampingDef or ServoDef is its struct member, its
+// RollingResistanceDef, ContactModelDef, DampingDef, ServoDef,
+// StopConditions or TrimDef is its struct member, its
 // list line (the build fails until it has one), its rule line (the build
 // fails until it has one), a field of its name in idl/dem/case.proto
 // (CaseFields.EveryListedFieldHasItsCaseField names a missing one) and one
@@ -21,6 +22,7 @@
 #include <google/protobuf/descriptor.h>
 #include <google/protobuf/message.h>
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -86,32 +88,46 @@ inline const Message* nested_message(const Message& m, const FieldDescriptor& fi
 template <class T>
 void read_fields_of(const Message& message, T& def);
 
-template <class T, class Entry>
-void read_member(const Message& m, const Entry& entry, T& def) {
-  using Member = fields::MemberOf<Entry>;
-  const FieldRule& rule = rule_for<T>(entry.name);
-  if (rule.elsewhere) return;
-  const Message* holder = holder_of(m, rule, {});
-  if (holder == nullptr) return;
-  const FieldDescriptor& field = field_of(*holder, rule);
-  if constexpr (HasCaseRules<Member>) {
-    if (const Message* nested = nested_message(*holder, field)) read_fields_of(*nested, def.*entry.member);
-  } else {
-    if (const char* problem = fields::type_problem<Member>(field)) {
-      throw std::logic_error("field " + field.full_name() + " cannot carry its list entry: " + problem);
+// The I-th entry of T's list, its member type and its rule, known at
+// compile time: a member converted elsewhere is never instantiated here,
+// whatever its type.
+template <class T, std::size_t I>
+constexpr const auto& entry_at() {
+  return std::get<I>(SnapshotFields<T>::list);
+}
+template <class T, std::size_t I>
+using MemberAt = fields::MemberOf<decltype(entry_at<T, I>())>;
+
+template <class T, std::size_t I>
+void read_member(const Message& m, T& def) {
+  using Member = MemberAt<T, I>;
+  constexpr FieldRule rule = rule_for<T>(entry_at<T, I>().name);
+  if constexpr (!rule.elsewhere) {
+    Member& member = def.*entry_at<T, I>().member;
+    const Message* holder = holder_of(m, rule, {});
+    if (holder == nullptr) return;
+    const FieldDescriptor& field = field_of(*holder, rule);
+    if constexpr (HasCaseRules<Member>) {
+      if (const Message* nested = nested_message(*holder, field)) read_fields_of(*nested, member);
+    } else {
+      if (const char* problem = fields::type_problem<Member>(field)) {
+        throw std::logic_error("field " + field.full_name() + " cannot carry its list entry: " + problem);
+      }
+      Member value = member;
+      fields::get_value(value, *holder, &field);
+      if constexpr (std::is_arithmetic_v<Member>) {
+        if (rule.zero_keeps_default && value == Member{}) return;
+      }
+      member = std::move(value);
     }
-    Member value = def.*entry.member;
-    fields::get_value(value, *holder, &field);
-    if constexpr (std::is_arithmetic_v<Member>) {
-      if (rule.zero_keeps_default && value == Member{}) return;
-    }
-    def.*entry.member = std::move(value);
   }
 }
 
 template <class T>
 void read_fields_of(const Message& message, T& def) {
-  std::apply([&](const auto&... entry) { (read_member(message, entry, def), ...); }, SnapshotFields<T>::list);
+  constexpr std::size_t n = std::tuple_size_v<std::remove_cvref_t<decltype(SnapshotFields<T>::list)>>;
+  [&]<std::size_t... I>(std::index_sequence<I...>) { (read_member<T, I>(message, def), ...); }
+  (std::make_index_sequence<n>{});
 }
 
 // The checker's check the rule names: ProblemList's for a case, the
@@ -139,50 +155,43 @@ void apply_rule(Checker& checker, const std::string& path, double value, const F
 template <class T, class Checker>
 void check_named(const Message& message, const std::string& path, Checker& checker, const Naming& naming);
 
-// One list entry's field by its rule, named path.field (path.inside.field
-// for a field in a law's message).
-template <class Member, class Checker>
-void check_member(const Message& message, const FieldRule& rule, const std::string& path, Checker& checker,
-                  const Naming& naming) {
-  if (rule.elsewhere) return;
-  const Message* holder = holder_of(message, rule, naming);
-  if (holder == nullptr) return;
-  const std::string where = holder == &message ? path : path + '.' + std::string(rule.inside);
-  if constexpr (HasCaseRules<Member>) {
-    if (naming.snapshot) {  // flattened behind "<member>_", as the snapshot converts it
-      check_named<Member>(message, path, checker,
-                          {.snapshot = true, .prefix = naming.prefix + std::string(rule.name) + "_"});
-      return;
+// The R-th rule of T's, over its list entry's field, named path.field
+// (path.inside.field for a field in a law's message).
+template <class T, std::size_t R, class Checker>
+void check_member(const Message& message, const std::string& path, Checker& checker, const Naming& naming) {
+  constexpr FieldRule rule = CaseRules<T>::list[R];
+  if constexpr (!rule.elsewhere) {
+    using Member = MemberAt<T, field_index(SnapshotFields<T>::list, rule.name)>;
+    const Message* holder = holder_of(message, rule, naming);
+    if (holder == nullptr) return;
+    const std::string where = holder == &message ? path : path + '.' + std::string(rule.inside);
+    if constexpr (HasCaseRules<Member>) {
+      if (naming.snapshot) {  // flattened behind "<member>_", as the snapshot converts it
+        check_named<Member>(message, path, checker,
+                            {.snapshot = true, .prefix = naming.prefix + std::string(rule.name) + "_"});
+        return;
+      }
+      const FieldDescriptor& field = field_of(*holder, rule, naming);
+      if (const Message* nested = nested_message(*holder, field)) {
+        check_named<Member>(*nested, where + '.' + field.name(), checker, naming);
+      }
+    } else if constexpr (rule.check != Check::kNone) {
+      const FieldDescriptor& field = field_of(*holder, rule, naming);
+      if (field.cpp_type() != FieldDescriptor::CPPTYPE_DOUBLE || field.is_repeated()) {
+        throw std::logic_error("field " + field.full_name() + " has a rule for numbers but is not a double");
+      }
+      const google::protobuf::Reflection& r = *holder->GetReflection();
+      if (field.has_presence() && !r.HasField(*holder, &field)) return;
+      apply_rule(checker, where + '.' + field.name(), r.GetDouble(*holder, &field), rule);
     }
-    const FieldDescriptor& field = field_of(*holder, rule, naming);
-    if (const Message* nested = nested_message(*holder, field)) {
-      check_named<Member>(*nested, where + '.' + field.name(), checker, naming);
-    }
-  } else {
-    if (rule.check == Check::kNone) return;
-    const FieldDescriptor& field = field_of(*holder, rule, naming);
-    if (field.cpp_type() != FieldDescriptor::CPPTYPE_DOUBLE || field.is_repeated()) {
-      throw std::logic_error("field " + field.full_name() + " has a rule for numbers but is not a double");
-    }
-    const google::protobuf::Reflection& r = *holder->GetReflection();
-    if (field.has_presence() && !r.HasField(*holder, &field)) return;
-    apply_rule(checker, where + '.' + field.name(), r.GetDouble(*holder, &field), rule);
   }
 }
 
 // The fields in the rules' order, each by the type of its list entry.
 template <class T, class Checker>
 void check_named(const Message& message, const std::string& path, Checker& checker, const Naming& naming) {
-  for (const FieldRule& rule : CaseRules<T>::list) {
-    std::apply(
-        [&](const auto&... entry) {
-          ((entry.name == rule.name
-                ? check_member<fields::MemberOf<decltype(entry)>>(message, rule, path, checker, naming)
-                : void()),
-           ...);
-        },
-        SnapshotFields<T>::list);
-  }
+  [&]<std::size_t... R>(std::index_sequence<R...>) { (check_member<T, R>(message, path, checker, naming), ...); }
+  (std::make_index_sequence<CaseRules<T>::list.size()>{});
 }
 
 }  // namespace case_fields

@@ -1,7 +1,8 @@
 // What a case's numbers must be, one rule per entry of the engine's field
-// list of each struct (SnapshotFields, dem/snapshot_fields.h): the one
-// place a material's, a damping's, a servo's or a contact law's ranges are
-// declared. The case's validation (case_fields.h, check_fields) and the
+// list of each struct (SnapshotFields, dem/snapshot_fields.h and
+// dem/programme_fields.h): the one place a material's, a contact model's,
+// a damping's, a servo's, a contact law's, a stop condition's or a trim's
+// ranges are declared. The case's validation (case_fields.h, check_fields) and the
 // snapshot's (snapshot_rules.cpp) apply them; a static_assert below wants
 // a rule for every list entry, so a new member of these structs cannot be
 // left unchecked. Checks across fields or messages (a name's uniqueness, a
@@ -18,6 +19,7 @@
 #include <type_traits>
 
 #include "dem/definitions.h"
+#include "dem/programme_fields.h"
 #include "dem/snapshot_fields.h"
 #include "problem_list.h"
 
@@ -132,6 +134,38 @@ struct CaseRules<ServoDef> {
   };
 };
 
+template <>
+struct CaseRules<StopConditions> {
+  static constexpr std::array list = {
+      // Walls and regions by name (case_conversion.cpp, case_validation.cpp).
+      FieldRule{.name = "region_out_of_balance_below", .elsewhere = true},
+      FieldRule{.name = "wall_stress_above", .elsewhere = true},
+      FieldRule{.name = "wall_settlement_above", .elsewhere = true},
+      // Needs a box control in force (case_validation.cpp).
+      FieldRule{.name = "deviator_strain_above", .check = Check::kPositive},
+      FieldRule{.name = "kinetic_energy_below", .check = Check::kPositive},
+      FieldRule{.name = "out_of_balance_below", .check = Check::kPositive},
+      FieldRule{.name = "kinetic_to_elastic_below", .check = Check::kPositive},
+      FieldRule{.name = "unbalanced_force_below", .check = Check::kPositive},
+      // Needs a servo in force (case_validation.cpp).
+      FieldRule{.name = "servo_tolerance", .check = Check::kPositive},
+      // At most the stage's cycles (case_validation.cpp).
+      FieldRule{.name = "min_cycles"},
+      FieldRule{.name = "check_interval", .zero_keeps_default = true},
+  };
+};
+// Miyata et al. (2002) eq. 60: a sine of this amplitude and wavelength
+// about the height.
+template <>
+struct CaseRules<TrimDef> {
+  static constexpr std::array list = {
+      FieldRule{.name = "height", .check = Check::kFinite},
+      FieldRule{.name = "amplitude", .check = Check::kNonNegative},
+      // > 0 for a rough surface, checked with the amplitude (case_validation.cpp); a smooth cut may leave it out.
+      FieldRule{.name = "wavelength", .zero_keeps_default = true},
+  };
+};
+
 namespace case_fields {
 
 // The rules name the list's entries, each once: as many as the list has.
@@ -161,6 +195,8 @@ DEM_CASE_RULES_MATCH(RollingResistanceDef);
 DEM_CASE_RULES_MATCH(ContactModelDef);
 DEM_CASE_RULES_MATCH(DampingDef);
 DEM_CASE_RULES_MATCH(ServoDef);
+DEM_CASE_RULES_MATCH(StopConditions);
+DEM_CASE_RULES_MATCH(TrimDef);
 #undef DEM_CASE_RULES_MATCH
 
 template <class T>

@@ -693,11 +693,10 @@ class CaseChecker {
   }
 
   // Miyata et al. (2002) eq. 60: a sine of this amplitude and wavelength
-  // about the height; a smooth cut needs no wavelength.
+  // about the height (case_rules.h); a smooth cut needs no wavelength.
   void check_trim(const std::string& path, const proto::Trim& trim) {
-    problems_.finite(path + ".height", trim.height());
-    const bool amplitude_ok = problems_.non_negative(path + ".amplitude", trim.amplitude());
-    if (amplitude_ok && trim.amplitude() > 0) {
+    check_fields<TrimDef>(trim, path, problems_);
+    if (!problems_.reported(path + ".amplitude") && trim.amplitude() > 0) {
       if (problems_.finite(path + ".wavelength", trim.wavelength()) && !(trim.wavelength() > 0)) {
         problems_.add(path + ".wavelength", "must be > 0 for a rough surface (amplitude " +
                                                 format_number(trim.amplitude()) + "; got " +
@@ -745,30 +744,16 @@ class CaseChecker {
       }
       problems_.positive(region_path + ".value", threshold.value());
     }
-    if (until.has_deviator_strain_above()) {
-      problems_.positive(path + ".deviator_strain_above", until.deviator_strain_above());
-      if (!box_controlled_) {
-        problems_.add(path + ".deviator_strain_above", "no box control is set during this stage (box_control)");
-      }
+    check_fields<StopConditions>(until, path, problems_);
+    if (until.has_deviator_strain_above() && !box_controlled_) {
+      problems_.add(path + ".deviator_strain_above", "no box control is set during this stage (box_control)");
     }
     if (until.has_wall_stress_above()) check_threshold(path + ".wall_stress_above", until.wall_stress_above());
     if (until.has_wall_settlement_above()) {
       check_threshold(path + ".wall_settlement_above", until.wall_settlement_above());
     }
-    if (until.has_kinetic_energy_below()) {
-      problems_.positive(path + ".kinetic_energy_below", until.kinetic_energy_below());
-    }
-    if (until.has_out_of_balance_below()) {
-      problems_.positive(path + ".out_of_balance_below", until.out_of_balance_below());
-    }
-    if (until.has_kinetic_to_elastic_below()) {
-      problems_.positive(path + ".kinetic_to_elastic_below", until.kinetic_to_elastic_below());
-    }
-    if (until.has_unbalanced_force_below()) {
-      problems_.positive(path + ".unbalanced_force_below", until.unbalanced_force_below());
-    }
-    if (until.has_servo_tolerance() && problems_.positive(path + ".servo_tolerance", until.servo_tolerance()) &&
-        !any_servo && !box_controlled_) {
+    if (until.has_servo_tolerance() && !problems_.reported(path + ".servo_tolerance") && !any_servo &&
+        !box_controlled_) {
       problems_.add(path + ".servo_tolerance", "no wall is servo-controlled during this stage");
     }
     if (stage.cycles() > 0 && until.min_cycles() > stage.cycles()) {

@@ -3,6 +3,7 @@
 // wherever it applies.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -116,6 +117,12 @@ class ProblemList {
     if (above && below) return true;
     add(path, "must be in " + interval.text() + " (got " + format_number(value) + ")");
     return false;
+  }
+
+  // Whether a problem names the field: a check across fields builds on one
+  // that passed its rule (case_rules.h).
+  bool reported(const std::string& path) const {
+    return std::ranges::any_of(list_, [&](const CaseProblem& problem) { return problem.path == path; });
   }
 
   std::vector<CaseProblem> take() { return std::move(list_); }

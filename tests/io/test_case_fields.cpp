@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -62,6 +63,8 @@ TEST(CaseFields, EveryListedFieldHasItsCaseField) {
   expect_every_field_found<ContactModelDef>(proto::ContactModel());
   expect_every_field_found<DampingDef>(proto::Damping());
   expect_every_field_found<ServoDef>(proto::Servo());
+  expect_every_field_found<StopConditions>(proto::Until());
+  expect_every_field_found<TrimDef>(proto::Trim());
 }
 
 // The snapshot's settings are checked by the same rules, its fields named
@@ -205,6 +208,68 @@ TEST(CaseFields, AContactModelsOwnNumbersFollowItsRules) {
   ProblemList none;
   check_fields<ContactModelDef>(linear, "contact_model[1]", none);
   EXPECT_TRUE(none.take().empty());
+}
+
+// A stage's stop conditions: the numbers by StopConditions' list, set or
+// left out; the walls and the region are named, so converted elsewhere.
+TEST(CaseFields, AStagesStopConditionsFollowTheirRules) {
+  proto::Until until;
+  until.set_kinetic_to_elastic_below(1e-4);
+  until.set_servo_tolerance(0.02);
+  until.set_min_cycles(300);
+  until.mutable_wall_stress_above()->set_wall("top");
+  until.mutable_wall_stress_above()->set_value(1e5);
+  StopConditions def;
+  read_fields(until, def);
+  EXPECT_EQ(def.kinetic_to_elastic_below, 1e-4);
+  EXPECT_EQ(def.servo_tolerance, 0.02);
+  EXPECT_FALSE(def.kinetic_energy_below.has_value());
+  EXPECT_FALSE(def.wall_stress_above.has_value());
+  EXPECT_EQ(def.min_cycles, 300u);
+  EXPECT_EQ(def.check_interval, StopConditions{}.check_interval);  // 0 keeps the default
+  until.set_check_interval(25);
+  read_fields(until, def);
+  EXPECT_EQ(def.check_interval, 25u);
+
+  until.set_kinetic_to_elastic_below(0);
+  until.set_deviator_strain_above(-0.1);
+  ProblemList problems;
+  check_fields<StopConditions>(until, "stage[1].until", problems);
+  EXPECT_TRUE(problems.reported("stage[1].until.deviator_strain_above"));
+  std::vector<std::string> lines;
+  for (const CaseProblem& problem : problems.take()) lines.push_back(problem.path + ": " + problem.message);
+  EXPECT_EQ(lines, (std::vector<std::string>{
+                       "stage[1].until.deviator_strain_above: must be > 0 (got -0.1)",
+                       "stage[1].until.kinetic_to_elastic_below: must be > 0 (got 0)",
+                   }));
+}
+
+// Miyata et al. (2002) eq. 60's trim: a smooth cut's wavelength left out
+// keeps TrimDef's; the height and amplitude by their rules.
+TEST(CaseFields, ATrimFollowsItsRules) {
+  proto::Trim trim;
+  trim.set_height(0.2);
+  TrimDef def;
+  read_fields(trim, def);
+  EXPECT_EQ(def.height, 0.2);
+  EXPECT_EQ(def.amplitude, 0.0);
+  EXPECT_EQ(def.wavelength, TrimDef{}.wavelength);
+  trim.set_amplitude(0.01);
+  trim.set_wavelength(0.05);
+  read_fields(trim, def);
+  EXPECT_EQ(def.amplitude, 0.01);
+  EXPECT_EQ(def.wavelength, 0.05);
+
+  trim.set_height(std::numeric_limits<double>::infinity());
+  trim.set_amplitude(-1);
+  ProblemList problems;
+  check_fields<TrimDef>(trim, "stage[0].trim", problems);
+  std::vector<std::string> lines;
+  for (const CaseProblem& problem : problems.take()) lines.push_back(problem.path + ": " + problem.message);
+  EXPECT_EQ(lines, (std::vector<std::string>{
+                       "stage[0].trim.height: must be a finite number (got inf)",
+                       "stage[0].trim.amplitude: must be >= 0 (got -1)",
+                   }));
 }
 
 }  // namespace
