@@ -111,23 +111,23 @@ StopConditions to_stop_conditions(const proto::Until& until, const WallIndex& wa
 }
 
 // Element-test control of a box of walls (validation checked the names and
-// that every axis says what drives it).
+// that every axis says what drives it); the numbers by their lists (case_rules.h).
 template <int Dim>
 BoxControlT<Dim> to_box_control(const proto::BoxControl& box, const WallIndex& walls) {
   BoxControlT<Dim> def;
+  read_fields(box, def);
   for (int i = 0; i < Dim; ++i) {
     const proto::BoxAxis& axis = box.axis(i);
     BoxAxisDef& a = def.axes[static_cast<std::size_t>(i)];
+    read_fields(axis, a);
     a.lower = walls.at(axis.lower_wall());
     a.upper = walls.at(axis.upper_wall());
     switch (axis.control_case()) {
       case proto::BoxAxis::kStrainRate:
         a.control = AxisControl::kStrainRate;
-        a.strain_rate = axis.strain_rate();
         break;
       case proto::BoxAxis::kStress:
         a.control = AxisControl::kStress;
-        a.stress = axis.stress();
         break;
       case proto::BoxAxis::kStressPath:
       case proto::BoxAxis::CONTROL_NOT_SET:
@@ -142,9 +142,6 @@ BoxControlT<Dim> to_box_control(const proto::BoxControl& box, const WallIndex& w
     def.path = StressPath::kStressRatio;
     def.path_value = box.stress_ratio();
   }
-  def.gain = box.gain();
-  def.max_speed = box.max_speed();
-  def.continuum = box.continuum();
   return def;
 }
 

@@ -12,7 +12,7 @@
 //
 // A new member of MaterialDef, LinearLawDef, HertzDampingDef,
 // RollingResistanceDef, ContactModelDef, DampingDef, ServoDef,
-// StopConditions or TrimDef is its struct member, its
+// BoxAxisDef, BoxControlT, StopConditions or TrimDef is its struct member, its
 // list line (the build fails until it has one), its rule line (the build
 // fails until it has one), a field of its name in idl/dem/case.proto
 // (CaseFields.EveryListedFieldHasItsCaseField names a missing one) and one
@@ -110,6 +110,8 @@ void read_member(const Message& m, T& def) {
     if constexpr (HasCaseRules<Member>) {
       if (const Message* nested = nested_message(*holder, field)) read_fields_of(*nested, member);
     } else {
+      // A oneof's member or a message left out: the member as it was.
+      if (!field.is_repeated() && field.has_presence() && !holder->GetReflection()->HasField(*holder, &field)) return;
       if (const char* problem = fields::type_problem<Member>(field)) {
         throw std::logic_error("field " + field.full_name() + " cannot carry its list entry: " + problem);
       }

@@ -1,8 +1,8 @@
 // What a case's numbers must be, one rule per entry of the engine's field
 // list of each struct (SnapshotFields, dem/snapshot_fields.h and
 // dem/programme_fields.h): the one place a material's, a contact model's,
-// a damping's, a servo's, a contact law's, a stop condition's or a trim's
-// ranges are declared. The case's validation (case_fields.h, check_fields) and the
+// a damping's, a servo's, a contact law's, a box control's, a stop
+// condition's or a trim's ranges are declared. The case's validation (case_fields.h, check_fields) and the
 // snapshot's (snapshot_rules.cpp) apply them; a static_assert below wants
 // a rule for every list entry, so a new member of these structs cannot be
 // left unchecked. Checks across fields or messages (a name's uniqueness, a
@@ -134,6 +134,33 @@ struct CaseRules<ServoDef> {
   };
 };
 
+// Element-test control of a box of walls: the walls by name and what
+// drives each axis (a oneof) converted by hand (case_conversion.cpp), as
+// are the stress path (a oneof) and the gain and maximum speed's checks,
+// which hold only when an axis is servo-driven (case_validation.cpp).
+template <>
+struct CaseRules<BoxAxisDef> {
+  static constexpr std::array list = {
+      FieldRule{.name = "lower", .field = "lower_wall", .elsewhere = true},
+      FieldRule{.name = "upper", .field = "upper_wall", .elsewhere = true},
+      FieldRule{.name = "control", .elsewhere = true},
+      FieldRule{.name = "strain_rate", .check = Check::kFinite},
+      FieldRule{.name = "stress", .check = Check::kPositive},
+  };
+};
+template <int Dim>
+struct CaseRules<BoxControlT<Dim>> {
+  static constexpr std::array list = {
+      FieldRule{.name = "axes", .field = "axis", .elsewhere = true},
+      FieldRule{.name = "path", .elsewhere = true},
+      FieldRule{.name = "path_value", .elsewhere = true},
+      FieldRule{.name = "gain"},
+      FieldRule{.name = "max_speed"},
+      // The box's extents when the control is set, filled in by the engine.
+      FieldRule{.name = "reference_extent", .elsewhere = true},
+      FieldRule{.name = "continuum"},
+  };
+};
 template <>
 struct CaseRules<StopConditions> {
   static constexpr std::array list = {
@@ -195,6 +222,9 @@ DEM_CASE_RULES_MATCH(RollingResistanceDef);
 DEM_CASE_RULES_MATCH(ContactModelDef);
 DEM_CASE_RULES_MATCH(DampingDef);
 DEM_CASE_RULES_MATCH(ServoDef);
+DEM_CASE_RULES_MATCH(BoxAxisDef);
+DEM_CASE_RULES_MATCH(BoxControlT<2>);
+DEM_CASE_RULES_MATCH(BoxControlT<3>);
 DEM_CASE_RULES_MATCH(StopConditions);
 DEM_CASE_RULES_MATCH(TrimDef);
 #undef DEM_CASE_RULES_MATCH

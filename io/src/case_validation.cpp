@@ -636,12 +636,11 @@ class CaseChecker {
         problems_.add(axis_path + ".upper_wall",
                       "must differ from lower_wall (both are " + in_quotes(axis.lower_wall()) + ")");
       }
+      check_fields<BoxAxisDef>(axis, axis_path, problems_);  // the strain rate or stress, whichever is set
       switch (axis.control_case()) {
         case proto::BoxAxis::kStrainRate:
-          problems_.finite(axis_path + ".strain_rate", axis.strain_rate());
           break;
         case proto::BoxAxis::kStress:
-          problems_.positive(axis_path + ".stress", axis.stress());
           servo = true;
           break;
         case proto::BoxAxis::kStressPath:

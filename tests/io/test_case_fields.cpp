@@ -63,6 +63,9 @@ TEST(CaseFields, EveryListedFieldHasItsCaseField) {
   expect_every_field_found<ContactModelDef>(proto::ContactModel());
   expect_every_field_found<DampingDef>(proto::Damping());
   expect_every_field_found<ServoDef>(proto::Servo());
+  expect_every_field_found<BoxAxisDef>(proto::BoxAxis());
+  expect_every_field_found<BoxControlT<2>>(proto::BoxControl());
+  expect_every_field_found<BoxControlT<3>>(proto::BoxControl());
   expect_every_field_found<StopConditions>(proto::Until());
   expect_every_field_found<TrimDef>(proto::Trim());
 }
@@ -269,6 +272,44 @@ TEST(CaseFields, ATrimFollowsItsRules) {
   EXPECT_EQ(lines, (std::vector<std::string>{
                        "stage[0].trim.height: must be a finite number (got inf)",
                        "stage[0].trim.amplitude: must be >= 0 (got -1)",
+                   }));
+}
+
+// A box control's gain, maximum speed and continuum by its list, an
+// axis's strain rate or stress by its own - whichever of the oneof is
+// set; the walls, the axis's control and the path are converted by hand.
+TEST(CaseFields, ABoxControlsNumbersFollowTheirRules) {
+  proto::BoxControl box;
+  box.set_gain(1e-6);
+  box.set_max_speed(0.01);
+  box.set_continuum(true);
+  box.set_stress_ratio(2);
+  BoxControlT<2> def;
+  read_fields(box, def);
+  EXPECT_EQ(def.gain, 1e-6);
+  EXPECT_EQ(def.max_speed, 0.01);
+  EXPECT_TRUE(def.continuum);
+  EXPECT_EQ(def.path, StressPath::kNone);  // by hand
+  EXPECT_EQ(def.path_value, 0.0);
+
+  proto::BoxAxis axis;
+  axis.set_lower_wall("bottom");
+  axis.set_stress(-1e3);
+  BoxAxisDef a;
+  a.strain_rate = 0.5;  // the oneof's other member, left out: kept
+  read_fields(axis, a);
+  EXPECT_EQ(a.stress, -1e3);
+  EXPECT_EQ(a.strain_rate, 0.5);
+  EXPECT_EQ(a.lower, kInvalidId);
+  ProblemList problems;
+  check_fields<BoxAxisDef>(axis, "box_control.axis[1]", problems);
+  axis.set_strain_rate(std::numeric_limits<double>::quiet_NaN());
+  check_fields<BoxAxisDef>(axis, "box_control.axis[0]", problems);
+  std::vector<std::string> lines;
+  for (const CaseProblem& problem : problems.take()) lines.push_back(problem.path + ": " + problem.message);
+  EXPECT_EQ(lines, (std::vector<std::string>{
+                       "box_control.axis[1].stress: must be > 0 (got -1000)",
+                       "box_control.axis[0].strain_rate: must be a finite number (got nan)",
                    }));
 }
 
