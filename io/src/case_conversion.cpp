@@ -188,27 +188,14 @@ int loading_stage(const proto::Case& c) {
   return 0;
 }
 
+// The numbers by their lists (case_rules.h), the plates by name here.
 analysis::CompressionSettings to_compression(const proto::Case& c, const WallIndex& walls) {
   const proto::CompressionOutput& compression = c.output().compression();
   analysis::CompressionSettings def;
+  read_fields(compression, def);
   def.loading_plate = walls.at(compression.loading_plate());
   def.bottom_plate = walls.at(compression.bottom_plate());
   def.loading_stage = loading_stage(c);
-  // proto3 cannot tell an unset number from 0, so 0 keeps the default.
-  if (compression.transition_stress() > 0) def.transition_stress = compression.transition_stress();
-  if (compression.final_stress() > 0) def.final_stress = compression.final_stress();
-  def.contacts_at_stress.assign(compression.contacts_at_stress().begin(), compression.contacts_at_stress().end());
-  if (compression.has_force_distribution()) {
-    const proto::ForceDistributionOutput& d = compression.force_distribution();
-    analysis::ForceDistributionSettings f;
-    f.stress_from = d.stress_from();
-    f.stress_to = d.stress_to();
-    if (d.snapshots() > 0) f.snapshots = static_cast<int>(d.snapshots());
-    if (d.bin_width() > 0) f.bin_width = d.bin_width();
-    if (d.tail_from() > 0) f.tail_from = d.tail_from();
-    def.force_distribution = f;
-  }
-  if (compression.stress_drop_fraction() > 0) def.stress_drop_fraction = compression.stress_drop_fraction();
   return def;
 }
 

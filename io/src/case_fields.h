@@ -7,16 +7,19 @@
 // (got -1)". The snapshot's settings are checked by the same rules
 // (check_snapshot_fields, snapshot_rules.cpp), so a snapshot holds exactly
 // what a case may. A rule may place its field in a message of the case's
-// (a law's parameters), walk a struct member's message by that struct's
-// rules, or leave the member to code that converts it by hand (elsewhere).
+// (a law's parameters) or leave the member to code that converts it by
+// hand (elsewhere: a name looked up, a oneof's case); a member that is a
+// struct with rules, or an optional one, is its message walked by them; a
+// repeated number is checked item by item, named field[i]; an unsigned
+// count (uint32) is the engine's int.
 //
-// A new member of MaterialDef, LinearLawDef, HertzDampingDef,
-// RollingResistanceDef, ContactModelDef, DampingDef, ServoDef,
-// BoxAxisDef, BoxControlT, StopConditions or TrimDef is its struct member, its
-// list line (the build fails until it has one), its rule line (the build
-// fails until it has one), a field of its name in idl/dem/case.proto
-// (CaseFields.EveryListedFieldHasItsCaseField names a missing one) and one
-// in idl/dem/snapshot.proto; nothing here.
+// A new member of a struct with rules (case_rules.h: materials, contact
+// models and laws, damping, servos, box controls, stop conditions, trims,
+// the compression output) is its struct member, its list line (the build
+// fails until it has one), its rule line (the build fails until it has
+// one), a field of its name in idl/dem/case.proto
+// (CaseFields.EveryListedFieldHasItsCaseField names a missing one) and, if
+// a snapshot holds the struct, one in idl/dem/snapshot.proto; nothing here.
 #pragma once
 
 #include <google/protobuf/descriptor.h>
@@ -109,9 +112,20 @@ void read_member(const Message& m, T& def) {
     const FieldDescriptor& field = field_of(*holder, rule);
     if constexpr (HasCaseRules<Member>) {
       if (const Message* nested = nested_message(*holder, field)) read_fields_of(*nested, member);
+    } else if constexpr (OptionalRules<Member>::value) {
+      if (const Message* nested = nested_message(*holder, field)) read_fields_of(*nested, member.emplace());
     } else {
+      const google::protobuf::Reflection& r = *holder->GetReflection();
       // A oneof's member or a message left out: the member as it was.
-      if (!field.is_repeated() && field.has_presence() && !holder->GetReflection()->HasField(*holder, &field)) return;
+      if (!field.is_repeated() && field.has_presence() && !r.HasField(*holder, &field)) return;
+      if constexpr (std::is_same_v<Member, int>) {
+        // A count the schema keeps unsigned (uint32), as the engine's int.
+        if (field.cpp_type() == FieldDescriptor::CPPTYPE_UINT32 && !field.is_repeated()) {
+          const int value = static_cast<int>(r.GetUInt32(*holder, &field));
+          if (!(rule.zero_keeps_default && value == 0)) member = value;
+          return;
+        }
+      }
       if (const char* problem = fields::type_problem<Member>(field)) {
         throw std::logic_error("field " + field.full_name() + " cannot carry its list entry: " + problem);
       }
@@ -167,24 +181,32 @@ void check_member(const Message& message, const std::string& path, Checker& chec
     const Message* holder = holder_of(message, rule, naming);
     if (holder == nullptr) return;
     const std::string where = holder == &message ? path : path + '.' + std::string(rule.inside);
-    if constexpr (HasCaseRules<Member>) {
+    if constexpr (HasCaseRules<Member> || OptionalRules<Member>::value) {
+      using Nested = typename OptionalRules<Member>::Struct;
       if (naming.snapshot) {  // flattened behind "<member>_", as the snapshot converts it
-        check_named<Member>(message, path, checker,
+        check_named<Nested>(message, path, checker,
                             {.snapshot = true, .prefix = naming.prefix + std::string(rule.name) + "_"});
         return;
       }
       const FieldDescriptor& field = field_of(*holder, rule, naming);
       if (const Message* nested = nested_message(*holder, field)) {
-        check_named<Member>(*nested, where + '.' + field.name(), checker, naming);
+        check_named<Nested>(*nested, where + '.' + field.name(), checker, naming);
       }
     } else if constexpr (rule.check != Check::kNone) {
       const FieldDescriptor& field = field_of(*holder, rule, naming);
-      if (field.cpp_type() != FieldDescriptor::CPPTYPE_DOUBLE || field.is_repeated()) {
+      if (field.cpp_type() != FieldDescriptor::CPPTYPE_DOUBLE) {
         throw std::logic_error("field " + field.full_name() + " has a rule for numbers but is not a double");
       }
       const google::protobuf::Reflection& r = *holder->GetReflection();
+      const std::string named = where + '.' + field.name();
+      if (field.is_repeated()) {  // each number, named field[i]
+        for (int i = 0; i < r.FieldSize(*holder, &field); ++i) {
+          apply_rule(checker, named + '[' + std::to_string(i) + ']', r.GetRepeatedDouble(*holder, &field, i), rule);
+        }
+        return;
+      }
       if (field.has_presence() && !r.HasField(*holder, &field)) return;
-      apply_rule(checker, where + '.' + field.name(), r.GetDouble(*holder, &field), rule);
+      apply_rule(checker, named, r.GetDouble(*holder, &field), rule);
     }
   }
 }

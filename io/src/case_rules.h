@@ -1,23 +1,24 @@
 // What a case's numbers must be, one rule per entry of the engine's field
-// list of each struct (SnapshotFields, dem/snapshot_fields.h and
-// dem/programme_fields.h): the one place a material's, a contact model's,
+// list of each struct (SnapshotFields, dem/snapshot_fields.h,
+// dem/programme_fields.h, dem/analysis/compression_fields.h): the one place a material's, a contact model's,
 // a damping's, a servo's, a contact law's, a box control's, a stop
-// condition's or a trim's ranges are declared. The case's validation (case_fields.h, check_fields) and the
-// snapshot's (snapshot_rules.cpp) apply them; a static_assert below wants
-// a rule for every list entry, so a new member of these structs cannot be
-// left unchecked. Checks across fields or messages (a name's uniqueness, a
-// particle material's density > 0, E > 0 under a Hertz law) stay with the
-// references they need (case_validation.cpp, contact_model_checks.cpp).
+// condition's, a trim's or the compression output's ranges are declared. The case's validation (case_fields.h,
+// check_fields) and the snapshot's (snapshot_rules.cpp) apply them; a static_assert below wants a rule for every list
+// entry, so a new member of these structs cannot be left unchecked. Checks across fields or messages (a name's
+// uniqueness, a particle material's density > 0, E > 0 under a Hertz law) stay with the references they need
+// (case_validation.cpp, contact_model_checks.cpp).
 #pragma once
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <tuple>
 #include <type_traits>
 
+#include "dem/analysis/compression_fields.h"
 #include "dem/definitions.h"
 #include "dem/programme_fields.h"
 #include "dem/snapshot_fields.h"
@@ -56,6 +57,16 @@ struct CaseRules;
 template <class T>
 concept HasCaseRules = requires {
   CaseRules<T>::list;
+};
+// A member whose message may be left out: std::optional of a struct with
+// rules. Struct: the struct walked, the optional's or T itself.
+template <class T>
+struct OptionalRules : std::false_type {
+  using Struct = T;
+};
+template <HasCaseRules T>
+struct OptionalRules<std::optional<T>> : std::true_type {
+  using Struct = T;
 };
 
 template <>
@@ -193,6 +204,38 @@ struct CaseRules<TrimDef> {
   };
 };
 
+// The plate loading analyses' settings (Miyata et al. 2002, 3.2-3.3):
+// proto3 cannot tell an unset number from 0, so 0 keeps a default. The
+// plates are walls by name and the analyses start with the stage that
+// places the loading plate (case_conversion.cpp); the checks across
+// fields (final above transition stress, stress_to above stress_from, at
+// least two snapshots, a stress drop below 1) are in
+// compression_output_checks.cpp.
+template <>
+struct CaseRules<analysis::ForceDistributionSettings> {
+  static constexpr std::array list = {
+      FieldRule{.name = "stress_from", .check = Check::kPositive},
+      FieldRule{.name = "stress_to", .check = Check::kFinite},
+      FieldRule{.name = "snapshots", .zero_keeps_default = true},
+      FieldRule{.name = "bin_width", .check = Check::kNonNegative, .zero_keeps_default = true},
+      FieldRule{.name = "tail_from", .check = Check::kNonNegative, .zero_keeps_default = true},
+  };
+};
+template <>
+struct CaseRules<analysis::CompressionSettings> {
+  static constexpr std::array list = {
+      FieldRule{.name = "loading_plate", .elsewhere = true},
+      FieldRule{.name = "bottom_plate", .elsewhere = true},
+      FieldRule{.name = "loading_stage", .elsewhere = true},
+      FieldRule{.name = "transition_stress", .check = Check::kNonNegative, .zero_keeps_default = true},
+      FieldRule{.name = "final_stress", .check = Check::kNonNegative, .zero_keeps_default = true},
+      FieldRule{.name = "contacts_at_stress", .check = Check::kPositive},  // each
+      // None when left out.
+      FieldRule{.name = "force_distribution"},
+      FieldRule{.name = "stress_drop_fraction", .check = Check::kNonNegative, .zero_keeps_default = true},
+  };
+};
+
 namespace case_fields {
 
 // The rules name the list's entries, each once: as many as the list has.
@@ -227,6 +270,8 @@ DEM_CASE_RULES_MATCH(BoxControlT<2>);
 DEM_CASE_RULES_MATCH(BoxControlT<3>);
 DEM_CASE_RULES_MATCH(StopConditions);
 DEM_CASE_RULES_MATCH(TrimDef);
+DEM_CASE_RULES_MATCH(analysis::ForceDistributionSettings);
+DEM_CASE_RULES_MATCH(analysis::CompressionSettings);
 #undef DEM_CASE_RULES_MATCH
 
 template <class T>

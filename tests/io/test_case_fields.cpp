@@ -68,6 +68,8 @@ TEST(CaseFields, EveryListedFieldHasItsCaseField) {
   expect_every_field_found<BoxControlT<3>>(proto::BoxControl());
   expect_every_field_found<StopConditions>(proto::Until());
   expect_every_field_found<TrimDef>(proto::Trim());
+  expect_every_field_found<analysis::ForceDistributionSettings>(proto::ForceDistributionOutput());
+  expect_every_field_found<analysis::CompressionSettings>(proto::CompressionOutput());
 }
 
 // The snapshot's settings are checked by the same rules, its fields named
@@ -310,6 +312,50 @@ TEST(CaseFields, ABoxControlsNumbersFollowTheirRules) {
   EXPECT_EQ(lines, (std::vector<std::string>{
                        "box_control.axis[1].stress: must be > 0 (got -1000)",
                        "box_control.axis[0].strain_rate: must be a finite number (got nan)",
+                   }));
+}
+
+// The plate loading analyses' settings: 0 keeps a default, the force
+// distribution is none unless set (its count an unsigned field, the
+// engine's int), each stress of contacts_at_stress checked by its index.
+TEST(CaseFields, TheCompressionOutputFollowsItsRules) {
+  proto::CompressionOutput out;
+  out.set_loading_plate("top");
+  out.set_final_stress(300e3);
+  out.add_contacts_at_stress(100e3);
+  out.add_contacts_at_stress(200e3);
+  analysis::CompressionSettings def;
+  read_fields(out, def);
+  const analysis::CompressionSettings defaults;
+  EXPECT_EQ(def.transition_stress, defaults.transition_stress);
+  EXPECT_EQ(def.final_stress, 300e3);
+  EXPECT_EQ(def.contacts_at_stress, (std::vector<double>{100e3, 200e3}));
+  EXPECT_FALSE(def.force_distribution.has_value());
+  EXPECT_EQ(def.stress_drop_fraction, defaults.stress_drop_fraction);
+  EXPECT_EQ(def.loading_plate, kInvalidId);  // by name, elsewhere
+
+  proto::ForceDistributionOutput& d = *out.mutable_force_distribution();
+  d.set_stress_from(1e5);
+  d.set_stress_to(2e5);
+  d.set_snapshots(4);
+  read_fields(out, def);
+  ASSERT_TRUE(def.force_distribution.has_value());
+  EXPECT_EQ(def.force_distribution->stress_from, 1e5);
+  EXPECT_EQ(def.force_distribution->stress_to, 2e5);
+  EXPECT_EQ(def.force_distribution->snapshots, 4);
+  EXPECT_EQ(def.force_distribution->bin_width, analysis::ForceDistributionSettings{}.bin_width);
+
+  out.set_contacts_at_stress(1, -5);
+  d.set_stress_from(0);
+  d.set_tail_from(-1);
+  ProblemList problems;
+  check_fields<analysis::CompressionSettings>(out, "output.compression", problems);
+  std::vector<std::string> lines;
+  for (const CaseProblem& problem : problems.take()) lines.push_back(problem.path + ": " + problem.message);
+  EXPECT_EQ(lines, (std::vector<std::string>{
+                       "output.compression.contacts_at_stress[1]: must be > 0 (got -5)",
+                       "output.compression.force_distribution.stress_from: must be > 0 (got 0)",
+                       "output.compression.force_distribution.tail_from: must be >= 0 (got -1)",
                    }));
 }
 
