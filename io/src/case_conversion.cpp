@@ -347,12 +347,8 @@ class Converter {
 
   LatticeDefT<Dim> to_lattice(const proto::Lattice& lattice) const {
     LatticeDefT<Dim> def;
+    read_fields(lattice, def);  // its numbers (case_rules.h)
     def.material = materials_.at(lattice.material());
-    def.radius = lattice.radius();
-    def.origin = to_vec<Dim>(lattice.origin());
-    def.columns = static_cast<int>(lattice.columns());
-    def.rows = static_cast<int>(lattice.rows());
-    if (lattice.layers() > 0) def.layers = static_cast<int>(lattice.layers());
     def.spacing = lattice.spacing() > 0 ? lattice.spacing() : 2 * lattice.radius();
     def.arrangement = lattice.arrangement() == proto::LATTICE_HEXAGONAL ? LatticeArrangement::kHexagonal
                                                                         : LatticeArrangement::kSquare;
@@ -361,14 +357,11 @@ class Converter {
 
   RandomPackingDefT<Dim> to_random_packing(const proto::RandomPacking& packing) const {
     RandomPackingDefT<Dim> def;
+    read_fields(packing, def);  // its box, seed and dense generation (case_rules.h)
     def.material = materials_.at(packing.material());
-    def.min = to_vec<Dim>(packing.min());
-    def.max = to_vec<Dim>(packing.max());
     for (const proto::SizeClass& size : packing.size()) {
       def.sizes.push_back({size.radius(), static_cast<int>(size.count()), to_shape<Dim>(size)});
     }
-    def.seed = packing.seed();
-    def.next_size_when_full = packing.next_size_when_full();
     // Unset, the engine's default - but no more than the limit allows: a
     // limit below the default (a small server, the fuzz targets) bounds the
     // work of a packing that nearly cannot fit whether or not the case asks.

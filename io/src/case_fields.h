@@ -11,11 +11,11 @@
 // hand (elsewhere: a name looked up, a oneof's case); a member that is a
 // struct with rules, or an optional one, is its message walked by them; a
 // repeated number is checked item by item, named field[i]; an unsigned
-// count (uint32) is the engine's int.
+// count (uint32) is the engine's int; a Vector the engine's vector.
 //
 // A new member of a struct with rules (case_rules.h: materials, contact
 // models and laws, damping, servos, box controls, stop conditions, trims,
-// the compression output) is its struct member, its list line (the build
+// lattices and random packings, the compression output) is its struct member, its list line (the build
 // fails until it has one), its rule line (the build fails until it has
 // one), a field of its name in idl/dem/case.proto
 // (CaseFields.EveryListedFieldHasItsCaseField names a missing one) and, if
@@ -91,6 +91,21 @@ inline const Message* nested_message(const Message& m, const FieldDescriptor& fi
 template <class T>
 void read_fields_of(const Message& message, T& def);
 
+// A proto::Vector as the engine's vector of the case's dimension (a 2D
+// case's z is 0, validation saw to it); left out, zero.
+template <class V>
+V vector_of(const Message& m, const FieldDescriptor& field) {
+  if (field.message_type() != proto::Vector::descriptor() || field.is_repeated()) {
+    throw std::logic_error("field " + field.full_name() + " cannot carry its list entry: a vector wants a Vector");
+  }
+  const auto& v = static_cast<const proto::Vector&>(m.GetReflection()->GetMessage(m, &field));
+  if constexpr (V::RowsAtCompileTime == 2) {
+    return {v.x(), v.y()};
+  } else {
+    return {v.x(), v.y(), v.z()};
+  }
+}
+
 // The I-th entry of T's list, its member type and its rule, known at
 // compile time: a member converted elsewhere is never instantiated here,
 // whatever its type.
@@ -114,6 +129,8 @@ void read_member(const Message& m, T& def) {
       if (const Message* nested = nested_message(*holder, field)) read_fields_of(*nested, member);
     } else if constexpr (OptionalRules<Member>::value) {
       if (const Message* nested = nested_message(*holder, field)) read_fields_of(*nested, member.emplace());
+    } else if constexpr (std::is_same_v<Member, Vec<2>> || std::is_same_v<Member, Vec<3>>) {
+      member = vector_of<Member>(*holder, field);
     } else {
       const google::protobuf::Reflection& r = *holder->GetReflection();
       // A oneof's member or a message left out: the member as it was.

@@ -1,8 +1,10 @@
 // What a case's numbers must be, one rule per entry of the engine's field
 // list of each struct (SnapshotFields, dem/snapshot_fields.h,
-// dem/programme_fields.h, dem/analysis/compression_fields.h): the one place a material's, a contact model's,
+// dem/programme_fields.h, dem/packing_fields.h,
+// dem/analysis/compression_fields.h): the one place a material's, a contact model's,
 // a damping's, a servo's, a contact law's, a box control's, a stop
-// condition's, a trim's or the compression output's ranges are declared. The case's validation (case_fields.h,
+// condition's, a trim's, a particle generator's or the compression
+// output's ranges are declared. The case's validation (case_fields.h,
 // check_fields) and the snapshot's (snapshot_rules.cpp) apply them; a static_assert below wants a rule for every list
 // entry, so a new member of these structs cannot be left unchecked. Checks across fields or messages (a name's
 // uniqueness, a particle material's density > 0, E > 0 under a Hertz law) stay with the references they need
@@ -20,6 +22,7 @@
 
 #include "dem/analysis/compression_fields.h"
 #include "dem/definitions.h"
+#include "dem/packing_fields.h"
 #include "dem/programme_fields.h"
 #include "dem/snapshot_fields.h"
 #include "problem_list.h"
@@ -172,6 +175,41 @@ struct CaseRules<BoxControlT<Dim>> {
       FieldRule{.name = "continuum"},
   };
 };
+// The particle generators (dem/packing.h). A vector is checked by hand,
+// finite and, in 2D, of z = 0 (case_validation.cpp), as are a lattice's
+// counts and a packing's box and size classes, whose checks depend on
+// their shapes.
+template <int Dim>
+struct CaseRules<LatticeDefT<Dim>> {
+  static constexpr std::array list = {
+      FieldRule{.name = "material", .elsewhere = true},  // by name
+      FieldRule{.name = "radius", .check = Check::kPositive},
+      FieldRule{.name = "origin"},
+      FieldRule{.name = "columns"},
+      FieldRule{.name = "rows"},
+      FieldRule{.name = "layers", .zero_keeps_default = true},
+      // 0 stands for 2 x radius, touching neighbours (case_conversion.cpp).
+      FieldRule{.name = "spacing", .elsewhere = true},
+      // LATTICE_HEXAGONAL, else square (case_conversion.cpp).
+      FieldRule{.name = "arrangement", .elsewhere = true},
+  };
+};
+template <int Dim>
+struct CaseRules<RandomPackingDefT<Dim>> {
+  static constexpr std::array list = {
+      FieldRule{.name = "material", .elsewhere = true},  // by name
+      FieldRule{.name = "min"},
+      FieldRule{.name = "max"},
+      // Each class's radius or shape (case_conversion.cpp).
+      FieldRule{.name = "sizes", .field = "size", .elsewhere = true},
+      FieldRule{.name = "seed"},
+      // Left out, the engine's default within the server's limit (case_conversion.cpp).
+      FieldRule{.name = "max_attempts", .elsewhere = true},
+      FieldRule{.name = "next_size_when_full"},
+      // The caller's: a server abandoning a load (case_conversion.cpp).
+      FieldRule{.name = "stopped", .elsewhere = true},
+  };
+};
 template <>
 struct CaseRules<StopConditions> {
   static constexpr std::array list = {
@@ -268,6 +306,10 @@ DEM_CASE_RULES_MATCH(ServoDef);
 DEM_CASE_RULES_MATCH(BoxAxisDef);
 DEM_CASE_RULES_MATCH(BoxControlT<2>);
 DEM_CASE_RULES_MATCH(BoxControlT<3>);
+DEM_CASE_RULES_MATCH(LatticeDefT<2>);
+DEM_CASE_RULES_MATCH(LatticeDefT<3>);
+DEM_CASE_RULES_MATCH(RandomPackingDefT<2>);
+DEM_CASE_RULES_MATCH(RandomPackingDefT<3>);
 DEM_CASE_RULES_MATCH(StopConditions);
 DEM_CASE_RULES_MATCH(TrimDef);
 DEM_CASE_RULES_MATCH(analysis::ForceDistributionSettings);

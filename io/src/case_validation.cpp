@@ -238,7 +238,8 @@ class CaseChecker {
   void check_lattice(const std::string& path, const proto::Lattice& lattice) {
     shapes_.note(problems_, path, false, dimension_);
     material_reference(path + ".material", lattice.material());
-    const bool radius_ok = problems_.positive(path + ".radius", lattice.radius());
+    check_fields<LatticeDefT<3>>(lattice, path, problems_);  // a 2D lattice's rules are the same
+    const bool radius_ok = !problems_.reported(path + ".radius");
     if (radius_ok) note_radius(lattice.radius());
     vector(path + ".origin", lattice.origin());
     if (lattice.columns() == 0) problems_.add(path + ".columns", "must be > 0");

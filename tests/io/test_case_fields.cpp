@@ -67,6 +67,10 @@ TEST(CaseFields, EveryListedFieldHasItsCaseField) {
   expect_every_field_found<BoxControlT<2>>(proto::BoxControl());
   expect_every_field_found<BoxControlT<3>>(proto::BoxControl());
   expect_every_field_found<StopConditions>(proto::Until());
+  expect_every_field_found<LatticeDefT<2>>(proto::Lattice());
+  expect_every_field_found<LatticeDefT<3>>(proto::Lattice());
+  expect_every_field_found<RandomPackingDefT<2>>(proto::RandomPacking());
+  expect_every_field_found<RandomPackingDefT<3>>(proto::RandomPacking());
   expect_every_field_found<TrimDef>(proto::Trim());
   expect_every_field_found<analysis::ForceDistributionSettings>(proto::ForceDistributionOutput());
   expect_every_field_found<analysis::CompressionSettings>(proto::CompressionOutput());
@@ -357,6 +361,50 @@ TEST(CaseFields, TheCompressionOutputFollowsItsRules) {
                        "output.compression.force_distribution.stress_from: must be > 0 (got 0)",
                        "output.compression.force_distribution.tail_from: must be >= 0 (got -1)",
                    }));
+}
+
+// The particle generators: a Vector as the case's dimension's vector
+// (zero when left out), an unsigned count as an int, 0 layers the
+// default; the material, a lattice's spacing and arrangement and a
+// packing's size classes and attempts are converted by hand.
+TEST(CaseFields, ALatticeAndAPackingFollowTheirLists) {
+  proto::Lattice lattice;
+  lattice.set_material("sand");
+  lattice.set_radius(0.01);
+  lattice.mutable_origin()->set_x(0.5);
+  lattice.mutable_origin()->set_z(0.25);
+  lattice.set_columns(4);
+  lattice.set_rows(3);
+  lattice.set_spacing(0.05);
+  LatticeDefT<3> def;
+  read_fields(lattice, def);
+  EXPECT_EQ(def.radius, 0.01);
+  EXPECT_EQ(def.origin, Vec3(0.5, 0, 0.25));
+  EXPECT_EQ(def.columns, 4);
+  EXPECT_EQ(def.rows, 3);
+  EXPECT_EQ(def.layers, 1);                          // 0 keeps the default
+  EXPECT_EQ(def.spacing, LatticeDefT<3>{}.spacing);  // by hand
+  LatticeDefT<2> flat;
+  read_fields(lattice, flat);
+  EXPECT_EQ(flat.origin, Vec2(0.5, 0));
+
+  lattice.set_radius(-1);
+  ProblemList problems;
+  check_fields<LatticeDefT<2>>(lattice, "particles[0].lattice", problems);
+  EXPECT_TRUE(problems.reported("particles[0].lattice.radius"));
+
+  proto::RandomPacking packing;
+  packing.mutable_min()->set_x(-1);
+  packing.set_seed(42);
+  packing.set_next_size_when_full(true);
+  packing.add_size()->set_radius(0.01);
+  RandomPackingDefT<2> random;
+  read_fields(packing, random);
+  EXPECT_EQ(random.min, Vec2(-1, 0));
+  EXPECT_EQ(random.max, Vec2(0, 0));  // left out: zero, as the case says
+  EXPECT_EQ(random.seed, 42u);
+  EXPECT_TRUE(random.next_size_when_full);
+  EXPECT_TRUE(random.sizes.empty());  // by hand
 }
 
 }  // namespace
