@@ -65,14 +65,15 @@ template <int Dim, typename Source>
 ShapeDefT<Dim> to_shape(const Source& source) {
   if constexpr (Dim == 2) {
     if (source.has_superquadric()) {
-      const proto::Superquadric& shape = source.superquadric();
-      return {shape.a(), shape.b(), shape.n(), shape.angle_deg() * std::numbers::pi / 180.0};
+      ShapeDefT<2> def;
+      read_fields(source.superquadric(), def);  // a, b, n and the angle in radians (case_rules.h)
+      return def;
     }
   } else {
     if (source.has_ellipsoid()) {
       const proto::Ellipsoid& shape = source.ellipsoid();
       ShapeDefT<3> def;
-      def.axes = to_vec<3>(shape.semi_axes());
+      read_fields(shape, def);  // the semi-axes (case_rules.h)
       if (shape.has_orientation()) {
         const proto::Quaternion& q = shape.orientation();
         def.orientation = Quaternion(q.w(), q.x(), q.y(), q.z()).normalized();

@@ -11,11 +11,12 @@
 // hand (elsewhere: a name looked up, a oneof's case); a member that is a
 // struct with rules, or an optional one, is its message walked by them; a
 // repeated number is checked item by item, named field[i]; an unsigned
-// count (uint32) is the engine's int; a Vector the engine's vector.
+// count (uint32) is the engine's int; a Vector the engine's vector; an
+// angle in degrees radians.
 //
 // A new member of a struct with rules (case_rules.h: materials, contact
 // models and laws, damping, servos, box controls, stop conditions, trims,
-// lattices and random packings, the compression output) is its struct member, its list line (the build
+// shapes, lattices and random packings, the compression output) is its struct member, its list line (the build
 // fails until it has one), its rule line (the build fails until it has
 // one), a field of its name in idl/dem/case.proto
 // (CaseFields.EveryListedFieldHasItsCaseField names a missing one) and, if
@@ -26,6 +27,7 @@
 #include <google/protobuf/message.h>
 
 #include <cstddef>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -151,6 +153,7 @@ void read_member(const Message& m, T& def) {
       if constexpr (std::is_arithmetic_v<Member>) {
         if (rule.zero_keeps_default && value == Member{}) return;
       }
+      if constexpr (rule.unit == Unit::kDegrees) value = value * std::numbers::pi / 180.0;
       member = std::move(value);
     }
   }

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstddef>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -32,6 +33,9 @@ namespace dem::io {
 // What a case's number must be: ProblemList's check of that name.
 enum class Check { kNone, kFinite, kNonNegative, kPositive, kWithin };
 
+// The unit a case gives a number in, where it is not the engine's.
+enum class Unit { kEngine, kDegrees };
+
 struct FieldRule {
   std::string_view name;  // the list entry's
   Check check = Check::kNone;
@@ -46,6 +50,7 @@ struct FieldRule {
   // Converted and checked by hand where the comment says (a name looked
   // up, a oneof's case, a law's parameters in the message the law names).
   bool elsewhere = false;
+  Unit unit = Unit::kEngine;  // kDegrees: read as radians, checked as given
 };
 
 // The fraction of local damping, [0, 1) (Miyata eq. 33).
@@ -210,6 +215,28 @@ struct CaseRules<RandomPackingDefT<Dim>> {
       FieldRule{.name = "stopped", .elsewhere = true},
   };
 };
+// A particle's shape (shape_checks.cpp adds what holds across fields).
+// Miyata et al. (2002) 2.3(1): 1 < n <= 10 keeps a superquadric's surface
+// smooth and convex, away from the corners of n = 1 and the difficulties
+// above 10.
+template <>
+struct CaseRules<ShapeDefT<2>> {
+  static constexpr std::array list = {
+      FieldRule{.name = "a", .check = Check::kPositive},
+      FieldRule{.name = "b", .check = Check::kPositive},
+      FieldRule{.name = "n", .check = Check::kWithin, .interval = {1.0, 10.0, true, false}},
+      FieldRule{.name = "angle", .check = Check::kFinite, .field = "angle_deg", .unit = Unit::kDegrees},
+  };
+};
+template <>
+struct CaseRules<ShapeDefT<3>> {
+  static constexpr std::array list = {
+      // Set, and each semi-axis > 0 (shape_checks.cpp).
+      FieldRule{.name = "axes", .field = "semi_axes"},
+      // Normalised, the identity when left out (case_conversion.cpp).
+      FieldRule{.name = "orientation", .elsewhere = true},
+  };
+};
 template <>
 struct CaseRules<StopConditions> {
   static constexpr std::array list = {
@@ -310,6 +337,8 @@ DEM_CASE_RULES_MATCH(LatticeDefT<2>);
 DEM_CASE_RULES_MATCH(LatticeDefT<3>);
 DEM_CASE_RULES_MATCH(RandomPackingDefT<2>);
 DEM_CASE_RULES_MATCH(RandomPackingDefT<3>);
+DEM_CASE_RULES_MATCH(ShapeDefT<2>);
+DEM_CASE_RULES_MATCH(ShapeDefT<3>);
 DEM_CASE_RULES_MATCH(StopConditions);
 DEM_CASE_RULES_MATCH(TrimDef);
 DEM_CASE_RULES_MATCH(analysis::ForceDistributionSettings);

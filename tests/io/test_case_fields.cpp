@@ -5,6 +5,7 @@
 
 #include <array>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -67,6 +68,8 @@ TEST(CaseFields, EveryListedFieldHasItsCaseField) {
   expect_every_field_found<BoxControlT<2>>(proto::BoxControl());
   expect_every_field_found<BoxControlT<3>>(proto::BoxControl());
   expect_every_field_found<StopConditions>(proto::Until());
+  expect_every_field_found<ShapeDefT<2>>(proto::Superquadric());
+  expect_every_field_found<ShapeDefT<3>>(proto::Ellipsoid());
   expect_every_field_found<LatticeDefT<2>>(proto::Lattice());
   expect_every_field_found<LatticeDefT<3>>(proto::Lattice());
   expect_every_field_found<RandomPackingDefT<2>>(proto::RandomPacking());
@@ -405,6 +408,44 @@ TEST(CaseFields, ALatticeAndAPackingFollowTheirLists) {
   EXPECT_EQ(random.seed, 42u);
   EXPECT_TRUE(random.next_size_when_full);
   EXPECT_TRUE(random.sizes.empty());  // by hand
+}
+
+// A superquadric's angle is given in degrees and held in radians, as
+// before (angle_deg x pi / 180); its numbers' problems name the case's
+// fields. An ellipsoid's semi-axes are its Vector.
+TEST(CaseFields, AShapeFollowsItsRules) {
+  proto::Superquadric shape;
+  shape.set_a(0.02);
+  shape.set_b(0.01);
+  shape.set_n(4);
+  shape.set_angle_deg(30);
+  ShapeDefT<2> def;
+  read_fields(shape, def);
+  EXPECT_EQ(def.a, 0.02);
+  EXPECT_EQ(def.b, 0.01);
+  EXPECT_EQ(def.n, 4);
+  EXPECT_EQ(def.angle, 30 * std::numbers::pi / 180.0);
+
+  shape.set_n(1);
+  shape.set_angle_deg(std::numeric_limits<double>::infinity());
+  ProblemList problems;
+  check_fields<ShapeDefT<2>>(shape, "particles[1].particle.superquadric", problems);
+  std::vector<std::string> lines;
+  for (const CaseProblem& problem : problems.take()) lines.push_back(problem.path + ": " + problem.message);
+  EXPECT_EQ(lines, (std::vector<std::string>{
+                       "particles[1].particle.superquadric.n: must be in (1, 10] (got 1)",
+                       "particles[1].particle.superquadric.angle_deg: must be a finite number (got inf)",
+                   }));
+
+  proto::Ellipsoid ellipsoid;
+  ellipsoid.mutable_semi_axes()->set_x(0.03);
+  ellipsoid.mutable_semi_axes()->set_y(0.02);
+  ellipsoid.mutable_semi_axes()->set_z(0.01);
+  ellipsoid.mutable_orientation()->set_w(2);
+  ShapeDefT<3> solid;
+  read_fields(ellipsoid, solid);
+  EXPECT_EQ(solid.axes, Vec3(0.03, 0.02, 0.01));
+  EXPECT_TRUE(solid.orientation.isApprox(Quaternion::Identity()));  // by hand
 }
 
 }  // namespace
