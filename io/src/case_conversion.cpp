@@ -46,9 +46,8 @@ Spin<Dim> to_spin(double about_z, const proto::Vector& vector) {
 template <int Dim>
 WallMotionT<Dim> to_motion(const proto::WallMotion& motion) {
   WallMotionT<Dim> def;
-  def.velocity = to_vec<Dim>(motion.velocity());
+  read_fields(motion, def);  // the velocity and the servo when set (case_rules.h)
   def.angular_velocity = to_spin<Dim>(motion.angular_velocity(), motion.angular_velocity_3d());
-  if (motion.has_servo()) read_fields(motion.servo(), def.servo.emplace());
   return def;
 }
 
@@ -148,7 +147,9 @@ BoxControlT<Dim> to_box_control(const proto::BoxControl& box, const WallIndex& w
 
 template <int Dim>
 CentripetalGravityT<Dim> to_centripetal(const proto::CentripetalGravity& field) {
-  return {to_vec<Dim>(field.centre()), field.acceleration()};
+  CentripetalGravityT<Dim> def;
+  read_fields(field, def);
+  return def;
 }
 
 template <int Dim>
@@ -225,11 +226,10 @@ class Converter {
     }
     if (case_.has_periodic()) {
       const proto::Periodic& p = case_.periodic();
+      read_fields(p, def.world.periodic);  // its bounds (case_rules.h)
       def.world.periodic.axes[0] = p.x();
       def.world.periodic.axes[1] = p.y();
       if constexpr (Dim == 3) def.world.periodic.axes[2] = p.z();
-      def.world.periodic.min = to_vec<Dim>(p.min());
-      def.world.periodic.max = to_vec<Dim>(p.max());
     }
     if (case_.planar_particle() == proto::Case::SPHERE) def.world.planar_particle = PlanarParticle::kSphere;
     // proto3 cannot tell an unset number from 0, so 0 keeps the engine's default.

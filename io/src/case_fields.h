@@ -15,10 +15,11 @@
 // angle in degrees radians.
 //
 // A new member of a struct with rules (case_rules.h: materials, contact
-// models and laws, damping, servos, box controls, stop conditions, trims,
-// shapes, lattices and random packings, the compression output) is its struct member, its list line (the build
-// fails until it has one), its rule line (the build fails until it has
-// one), a field of its name in idl/dem/case.proto
+// models and laws, damping, wall motions and servos, body forces, periodic
+// cells, box controls, stop conditions, trims, shapes, lattices and random
+// packings, the compression output) is its struct member, its list line
+// (the build fails until it has one), its rule line (the build fails
+// until it has one), a field of its name in idl/dem/case.proto
 // (CaseFields.EveryListedFieldHasItsCaseField names a missing one) and, if
 // a snapshot holds the struct, one in idl/dem/snapshot.proto; nothing here.
 #pragma once

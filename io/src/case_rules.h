@@ -1,14 +1,16 @@
 // What a case's numbers must be, one rule per entry of the engine's field
-// list of each struct (SnapshotFields, dem/snapshot_fields.h,
-// dem/programme_fields.h, dem/packing_fields.h,
-// dem/analysis/compression_fields.h): the one place a material's, a contact model's,
-// a damping's, a servo's, a contact law's, a box control's, a stop
-// condition's, a trim's, a particle generator's or the compression
-// output's ranges are declared. The case's validation (case_fields.h,
-// check_fields) and the snapshot's (snapshot_rules.cpp) apply them; a static_assert below wants a rule for every list
-// entry, so a new member of these structs cannot be left unchecked. Checks across fields or messages (a name's
-// uniqueness, a particle material's density > 0, E > 0 under a Hertz law) stay with the references they need
-// (case_validation.cpp, contact_model_checks.cpp).
+// list of each struct (SnapshotFields: dem/snapshot_fields.h, and for the
+// structs no snapshot holds dem/programme_fields.h, dem/packing_fields.h
+// and dem/analysis/compression_fields.h): the one place their ranges are
+// declared, and what each entry's field is called in idl/dem/case.proto,
+// where it sits, and whether it is converted elsewhere. The case's
+// validation (case_fields.h, check_fields) and the snapshot's
+// (snapshot_rules.cpp) apply them; a static_assert below wants a rule for
+// every list entry, so a new member of these structs cannot be left
+// unchecked. Checks across fields or messages (a name's uniqueness, a
+// particle material's density > 0, E > 0 under a Hertz law) stay with the
+// references they need (case_validation.cpp, contact_model_checks.cpp,
+// compression_output_checks.cpp, shape_checks.cpp).
 #pragma once
 
 #include <array>
@@ -237,6 +239,36 @@ struct CaseRules<ShapeDefT<3>> {
       FieldRule{.name = "orientation", .elsewhere = true},
   };
 };
+// A wall's motion: its velocity (a vector, checked by hand), the servo
+// that replaces it when set, and an angular velocity that is a scalar
+// about z in 2D and angular_velocity_3d in 3D (case_conversion.cpp).
+template <int Dim>
+struct CaseRules<WallMotionT<Dim>> {
+  static constexpr std::array list = {
+      FieldRule{.name = "velocity"},
+      FieldRule{.name = "angular_velocity", .elsewhere = true},
+      FieldRule{.name = "servo"},
+  };
+};
+// Randall's (1989, 6.4.2) centripetal gravity field; its centre a vector
+// checked by hand.
+template <int Dim>
+struct CaseRules<CentripetalGravityT<Dim>> {
+  static constexpr std::array list = {
+      FieldRule{.name = "centre"},
+      FieldRule{.name = "acceleration", .check = Check::kNonNegative},
+  };
+};
+// A periodic cell: the periodic axes are the case's x, y and z
+// (case_conversion.cpp); its bounds vectors checked by hand.
+template <int Dim>
+struct CaseRules<PeriodicDefT<Dim>> {
+  static constexpr std::array list = {
+      FieldRule{.name = "axes", .elsewhere = true},
+      FieldRule{.name = "min"},
+      FieldRule{.name = "max"},
+  };
+};
 template <>
 struct CaseRules<StopConditions> {
   static constexpr std::array list = {
@@ -339,6 +371,12 @@ DEM_CASE_RULES_MATCH(RandomPackingDefT<2>);
 DEM_CASE_RULES_MATCH(RandomPackingDefT<3>);
 DEM_CASE_RULES_MATCH(ShapeDefT<2>);
 DEM_CASE_RULES_MATCH(ShapeDefT<3>);
+DEM_CASE_RULES_MATCH(WallMotionT<2>);
+DEM_CASE_RULES_MATCH(WallMotionT<3>);
+DEM_CASE_RULES_MATCH(CentripetalGravityT<2>);
+DEM_CASE_RULES_MATCH(CentripetalGravityT<3>);
+DEM_CASE_RULES_MATCH(PeriodicDefT<2>);
+DEM_CASE_RULES_MATCH(PeriodicDefT<3>);
 DEM_CASE_RULES_MATCH(StopConditions);
 DEM_CASE_RULES_MATCH(TrimDef);
 DEM_CASE_RULES_MATCH(analysis::ForceDistributionSettings);

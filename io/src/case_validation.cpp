@@ -528,8 +528,9 @@ class CaseChecker {
     vector(path + ".velocity", motion.velocity());
     check_spin(path + ".angular_velocity", motion.angular_velocity(), motion.has_angular_velocity_3d(),
                motion.angular_velocity_3d());
+    check_fields<WallMotionT<3>>(motion, path,
+                                 problems_);  // the servo's numbers when set; a 2D motion's rules are the same
     if (!motion.has_servo()) return;
-    check_fields<ServoDef>(motion.servo(), path + ".servo", problems_);
     const proto::Vector& v = motion.velocity();
     const proto::Vector& spin = motion.angular_velocity_3d();
     if (v.x() != 0 || v.y() != 0 || v.z() != 0 || motion.angular_velocity() != 0 || spin.x() != 0 || spin.y() != 0 ||
@@ -710,7 +711,7 @@ class CaseChecker {
   // Randall's centripetal gravity field (6.4.2).
   void check_centripetal(const std::string& path, const proto::CentripetalGravity& field) {
     vector(path + ".centre", field.centre());
-    problems_.non_negative(path + ".acceleration", field.acceleration());
+    check_fields<CentripetalGravityT<3>>(field, path, problems_);  // a 2D field's rules are the same
   }
 
   void check_threshold(const std::string& path, const proto::WallThreshold& threshold) {

@@ -68,6 +68,12 @@ TEST(CaseFields, EveryListedFieldHasItsCaseField) {
   expect_every_field_found<BoxControlT<2>>(proto::BoxControl());
   expect_every_field_found<BoxControlT<3>>(proto::BoxControl());
   expect_every_field_found<StopConditions>(proto::Until());
+  expect_every_field_found<WallMotionT<2>>(proto::WallMotion());
+  expect_every_field_found<WallMotionT<3>>(proto::WallMotion());
+  expect_every_field_found<CentripetalGravityT<2>>(proto::CentripetalGravity());
+  expect_every_field_found<CentripetalGravityT<3>>(proto::CentripetalGravity());
+  expect_every_field_found<PeriodicDefT<2>>(proto::Periodic());
+  expect_every_field_found<PeriodicDefT<3>>(proto::Periodic());
   expect_every_field_found<ShapeDefT<2>>(proto::Superquadric());
   expect_every_field_found<ShapeDefT<3>>(proto::Ellipsoid());
   expect_every_field_found<LatticeDefT<2>>(proto::Lattice());
@@ -446,6 +452,47 @@ TEST(CaseFields, AShapeFollowsItsRules) {
   read_fields(ellipsoid, solid);
   EXPECT_EQ(solid.axes, Vec3(0.03, 0.02, 0.01));
   EXPECT_TRUE(solid.orientation.isApprox(Quaternion::Identity()));  // by hand
+}
+
+// A wall's motion: its velocity as the dimension's vector, its servo
+// walked (and checked) by ServoDef's rules when set; the angular velocity
+// by hand. A centripetal field's and a periodic cell's vectors likewise.
+TEST(CaseFields, AWallsMotionAndTheBodyForcesFollowTheirLists) {
+  proto::WallMotion motion;
+  motion.mutable_velocity()->set_y(-0.05);
+  WallMotionT<2> def;
+  read_fields(motion, def);
+  EXPECT_EQ(def.velocity, Vec2(0, -0.05));
+  EXPECT_FALSE(def.servo.has_value());
+  motion.mutable_servo()->set_target_force(100);
+  motion.mutable_servo()->set_gain(-1);
+  read_fields(motion, def);
+  ASSERT_TRUE(def.servo.has_value());
+  EXPECT_EQ(def.servo->target_force, 100);
+  ProblemList problems;
+  check_fields<WallMotionT<3>>(motion, "wall[2].motion", problems);
+  const std::vector<CaseProblem> found = problems.take();
+  ASSERT_EQ(found.size(), 2u);
+  EXPECT_EQ(found[0].path + ": " + found[0].message, "wall[2].motion.servo.gain: must be > 0 (got -1)");
+  EXPECT_EQ(found[1].path + ": " + found[1].message, "wall[2].motion.servo.max_speed: must be > 0 (got 0)");
+
+  proto::CentripetalGravity field;
+  field.mutable_centre()->set_x(1);
+  field.set_acceleration(-2);
+  CentripetalGravityT<3> centripetal;
+  read_fields(field, centripetal);
+  EXPECT_EQ(centripetal.centre, Vec3(1, 0, 0));
+  EXPECT_EQ(centripetal.acceleration, -2);
+  check_fields<CentripetalGravityT<2>>(field, "centripetal_gravity", problems);
+  EXPECT_TRUE(problems.reported("centripetal_gravity.acceleration"));
+
+  proto::Periodic cell;
+  cell.set_x(true);
+  cell.mutable_max()->set_x(2);
+  PeriodicDefT<2> periodic;
+  read_fields(cell, periodic);
+  EXPECT_EQ(periodic.max, Vec2(2, 0));
+  EXPECT_FALSE(periodic.axes[0]);  // by hand
 }
 
 }  // namespace
