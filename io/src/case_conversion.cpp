@@ -337,10 +337,8 @@ class Converter {
 
   ParticleDefT<Dim> to_particle(const proto::Particle& particle) const {
     ParticleDefT<Dim> def;
-    def.position = to_vec<Dim>(particle.position());
-    def.radius = particle.radius();
+    read_fields(particle, def);  // its position, radius and velocity (case_rules.h)
     def.material = materials_.at(particle.material());
-    def.velocity = to_vec<Dim>(particle.velocity());
     def.angular_velocity = to_spin<Dim>(particle.angular_velocity(), particle.angular_velocity_3d());
     def.shape = to_shape<Dim>(particle);
     return def;
@@ -400,8 +398,7 @@ class Converter {
     for (int i = 0; i < case_.wall_size(); ++i) {
       const proto::Wall& wall = case_.wall(i);
       WallDefT<Dim> def;
-      def.name = wall.name();
-      def.point = to_vec<Dim>(wall.point());
+      read_fields(wall, def);  // its name, point and extents (case_rules.h)
       if constexpr (Dim == 2) {
         if (wall.orientation_case() == proto::Wall::kAngleDeg) {
           const double angle = wall.angle_deg() * std::numbers::pi / 180.0;
@@ -415,11 +412,7 @@ class Converter {
         // engine wants them orthonormal, so the rest of v along u goes.
         const Vec3 v = to_vec<3>(wall.direction2());
         def.direction2 = (v - v.dot(def.direction) * def.direction).normalized();
-        def.k1 = wall.k1();
-        def.k2 = wall.k2();
       }
-      def.h1 = wall.h1();
-      def.h2 = wall.h2();
       if constexpr (Dim == 3) {
         if (wall.face_size() > 0) add_faces(wall, def);
       }

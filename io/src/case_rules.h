@@ -239,6 +239,56 @@ struct CaseRules<ShapeDefT<3>> {
       FieldRule{.name = "orientation", .elsewhere = true},
   };
 };
+// A particle and a wall: their vectors and extents are checked by hand
+// (finite, z = 0 in 2D, a radius > 0 unless a shape sets it, an extent's
+// high end above its low: case_validation.cpp), their materials are names,
+// and a wall's directions are made unit (and orthonormal in 3D) from the
+// case's, a 2D wall's perhaps from angle_deg (case_conversion.cpp).
+template <int Dim>
+struct CaseRules<ParticleDefT<Dim>> {
+  static constexpr std::array list = {
+      FieldRule{.name = "position"},
+      // Left out for a shape, whose bounding radius the engine sets.
+      FieldRule{.name = "radius"},
+      FieldRule{.name = "material", .elsewhere = true},
+      FieldRule{.name = "velocity"},
+      // A scalar about z in 2D, angular_velocity_3d in 3D.
+      FieldRule{.name = "angular_velocity", .elsewhere = true},
+      // A superquadric in 2D, an ellipsoid in 3D.
+      FieldRule{.name = "shape", .elsewhere = true},
+  };
+};
+// The entries both dimensions' walls share; a 3D wall adds its second side.
+inline constexpr std::array kWallRules = {
+    FieldRule{.name = "name"},  // unique, checked with the references
+    FieldRule{.name = "point"},
+    FieldRule{.name = "direction", .elsewhere = true},
+    FieldRule{.name = "h1"},
+    FieldRule{.name = "h2"},
+    FieldRule{.name = "material", .elsewhere = true},
+    // With its angular velocity, as a stage's commands (case_conversion.cpp).
+    FieldRule{.name = "motion", .elsewhere = true},
+    // The state of a wall a stage removed; a case's walls stand.
+    FieldRule{.name = "removed", .elsewhere = true},
+};
+template <>
+struct CaseRules<WallDefT<2>> {
+  static constexpr std::array list = kWallRules;
+};
+template <>
+struct CaseRules<WallDefT<3>> {
+  static constexpr std::array list = [] {
+    std::array<FieldRule, kWallRules.size() + 4> rules{};
+    std::size_t i = 0;
+    for (const FieldRule& rule : kWallRules) rules[i++] = rule;
+    rules[i++] = FieldRule{.name = "direction2", .elsewhere = true};
+    rules[i++] = FieldRule{.name = "k1"};
+    rules[i++] = FieldRule{.name = "k2"};
+    // A wall of triangle faces, their extent replacing the rectangle's (case_conversion.cpp).
+    rules[i++] = FieldRule{.name = "triangles", .field = "face", .elsewhere = true};
+    return rules;
+  }();
+};
 // A wall's motion: its velocity (a vector, checked by hand), the servo
 // that replaces it when set, and an angular velocity that is a scalar
 // about z in 2D and angular_velocity_3d in 3D (case_conversion.cpp).
@@ -371,6 +421,10 @@ DEM_CASE_RULES_MATCH(RandomPackingDefT<2>);
 DEM_CASE_RULES_MATCH(RandomPackingDefT<3>);
 DEM_CASE_RULES_MATCH(ShapeDefT<2>);
 DEM_CASE_RULES_MATCH(ShapeDefT<3>);
+DEM_CASE_RULES_MATCH(ParticleDefT<2>);
+DEM_CASE_RULES_MATCH(ParticleDefT<3>);
+DEM_CASE_RULES_MATCH(WallDefT<2>);
+DEM_CASE_RULES_MATCH(WallDefT<3>);
 DEM_CASE_RULES_MATCH(WallMotionT<2>);
 DEM_CASE_RULES_MATCH(WallMotionT<3>);
 DEM_CASE_RULES_MATCH(CentripetalGravityT<2>);

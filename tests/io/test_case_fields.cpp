@@ -68,6 +68,10 @@ TEST(CaseFields, EveryListedFieldHasItsCaseField) {
   expect_every_field_found<BoxControlT<2>>(proto::BoxControl());
   expect_every_field_found<BoxControlT<3>>(proto::BoxControl());
   expect_every_field_found<StopConditions>(proto::Until());
+  expect_every_field_found<ParticleDefT<2>>(proto::Particle());
+  expect_every_field_found<ParticleDefT<3>>(proto::Particle());
+  expect_every_field_found<WallDefT<2>>(proto::Wall());
+  expect_every_field_found<WallDefT<3>>(proto::Wall());
   expect_every_field_found<WallMotionT<2>>(proto::WallMotion());
   expect_every_field_found<WallMotionT<3>>(proto::WallMotion());
   expect_every_field_found<CentripetalGravityT<2>>(proto::CentripetalGravity());
@@ -493,6 +497,43 @@ TEST(CaseFields, AWallsMotionAndTheBodyForcesFollowTheirLists) {
   read_fields(cell, periodic);
   EXPECT_EQ(periodic.max, Vec2(2, 0));
   EXPECT_FALSE(periodic.axes[0]);  // by hand
+}
+
+// A particle's and a wall's own numbers by their lists; materials,
+// directions, shapes, spins, motions and faces by hand.
+TEST(CaseFields, AParticleAndAWallFollowTheirLists) {
+  proto::Particle particle;
+  particle.mutable_position()->set_x(0.1);
+  particle.mutable_position()->set_z(0.3);
+  particle.set_radius(0.01);
+  particle.mutable_velocity()->set_y(2);
+  ParticleDefT<3> ball;
+  read_fields(particle, ball);
+  EXPECT_EQ(ball.position, Vec3(0.1, 0, 0.3));
+  EXPECT_EQ(ball.radius, 0.01);
+  EXPECT_EQ(ball.velocity, Vec3(0, 2, 0));
+
+  proto::Wall wall;
+  wall.set_name("lid");
+  wall.mutable_point()->set_z(1);
+  wall.mutable_direction()->set_x(2);
+  wall.set_h1(-1);
+  wall.set_h2(1);
+  wall.set_k1(-0.5);
+  wall.set_k2(0.5);
+  WallDefT<3> def;
+  read_fields(wall, def);
+  EXPECT_EQ(def.name, "lid");
+  EXPECT_EQ(def.point, Vec3(0, 0, 1));
+  EXPECT_EQ(def.h1, -1);
+  EXPECT_EQ(def.h2, 1);
+  EXPECT_EQ(def.k1, -0.5);
+  EXPECT_EQ(def.k2, 0.5);
+  EXPECT_EQ(def.direction, WallDefT<3>{}.direction);  // made unit by hand
+  WallDefT<2> flat;
+  read_fields(wall, flat);
+  EXPECT_EQ(flat.point, Vec2(0, 0));
+  EXPECT_EQ(flat.h2, 1);
 }
 
 }  // namespace
