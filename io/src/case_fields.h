@@ -15,8 +15,8 @@
 // angle in degrees radians.
 //
 // A new member of a struct with rules (case_rules.h: materials, contact
-// models and laws, damping, wall motions and servos, body forces, periodic
-// cells, box controls, stop conditions, trims, shapes, lattices and random
+// models and laws, damping, particles, walls, their motions and servos,
+// body forces, periodic cells, box controls, stop conditions, trims, shapes, lattices and random
 // packings, the compression output) is its struct member, its list line
 // (the build fails until it has one), its rule line (the build fails
 // until it has one), a field of its name in idl/dem/case.proto
