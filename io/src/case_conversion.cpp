@@ -17,7 +17,6 @@
 #include "dem/io/particle_file.h"
 #include "dem/packing.h"
 #include "field_path.h"
-#include "format_number.h"
 #include "problem_list.h"
 
 namespace dem::io {
@@ -47,9 +46,8 @@ Spin<Dim> to_spin(double about_z, const proto::Vector& vector) {
 template <int Dim>
 WallMotionT<Dim> to_motion(const proto::WallMotion& motion) {
   WallMotionT<Dim> def;
-  def.velocity = to_vec<Dim>(motion.velocity());
+  read_fields(motion, def);  // the velocity and the servo when set (case_rules.h)
   def.angular_velocity = to_spin<Dim>(motion.angular_velocity(), motion.angular_velocity_3d());
-  if (motion.has_servo()) read_fields(motion.servo(), def.servo.emplace());
   return def;
 }
 
@@ -66,14 +64,15 @@ template <int Dim, typename Source>
 ShapeDefT<Dim> to_shape(const Source& source) {
   if constexpr (Dim == 2) {
     if (source.has_superquadric()) {
-      const proto::Superquadric& shape = source.superquadric();
-      return {shape.a(), shape.b(), shape.n(), shape.angle_deg() * std::numbers::pi / 180.0};
+      ShapeDefT<2> def;
+      read_fields(source.superquadric(), def);  // a, b, n and the angle in radians (case_rules.h)
+      return def;
     }
   } else {
     if (source.has_ellipsoid()) {
       const proto::Ellipsoid& shape = source.ellipsoid();
       ShapeDefT<3> def;
-      def.axes = to_vec<3>(shape.semi_axes());
+      read_fields(shape, def);  // the semi-axes (case_rules.h)
       if (shape.has_orientation()) {
         const proto::Quaternion& q = shape.orientation();
         def.orientation = Quaternion(q.w(), q.x(), q.y(), q.z()).normalized();
@@ -84,27 +83,15 @@ ShapeDefT<Dim> to_shape(const Source& source) {
   return {};
 }
 
-TrimDef to_trim(const proto::Trim& trim) {
-  TrimDef def;
-  def.height = trim.height();
-  def.amplitude = trim.amplitude();
-  // A smooth cut may leave the wavelength out; it then plays no part.
-  if (trim.wavelength() > 0) def.wavelength = trim.wavelength();
-  return def;
-}
-
 MeasurementRegion to_region(const proto::MeasurementRegion& r);
 
-// A stage's stop conditions; a region is one of the case's output regions
-// (validation checked the names), in the case's dimension.
+// A stage's stop conditions: the numbers by their list (case_rules.h), the
+// walls and a region by name here; a region is one of the case's output
+// regions (validation checked the names), in the case's dimension.
 template <int Dim>
 StopConditions to_stop_conditions(const proto::Until& until, const WallIndex& walls, const proto::Output& output) {
   StopConditions def;
-  if (until.has_kinetic_energy_below()) def.kinetic_energy_below = until.kinetic_energy_below();
-  if (until.has_out_of_balance_below()) def.out_of_balance_below = until.out_of_balance_below();
-  if (until.has_kinetic_to_elastic_below()) def.kinetic_to_elastic_below = until.kinetic_to_elastic_below();
-  if (until.has_unbalanced_force_below()) def.unbalanced_force_below = until.unbalanced_force_below();
-  if (until.has_servo_tolerance()) def.servo_tolerance = until.servo_tolerance();
+  read_fields(until, def);
   if (until.has_wall_stress_above()) {
     def.wall_stress_above =
         WallThreshold{walls.at(until.wall_stress_above().wall()), until.wall_stress_above().value()};
@@ -113,7 +100,6 @@ StopConditions to_stop_conditions(const proto::Until& until, const WallIndex& wa
     def.wall_settlement_above =
         WallThreshold{walls.at(until.wall_settlement_above().wall()), until.wall_settlement_above().value()};
   }
-  if (until.has_deviator_strain_above()) def.deviator_strain_above = until.deviator_strain_above();
   if (until.has_region_out_of_balance_below()) {
     const proto::RegionThreshold& threshold = until.region_out_of_balance_below();
     for (const proto::MeasurementRegion& region : output.region()) {
@@ -121,29 +107,27 @@ StopConditions to_stop_conditions(const proto::Until& until, const WallIndex& wa
       def.region_out_of_balance_below = RegionThreshold{region_for<Dim>(to_region(region)), threshold.value()};
     }
   }
-  def.min_cycles = until.min_cycles();
-  if (until.check_interval() > 0) def.check_interval = until.check_interval();
   return def;
 }
 
 // Element-test control of a box of walls (validation checked the names and
-// that every axis says what drives it).
+// that every axis says what drives it); the numbers by their lists (case_rules.h).
 template <int Dim>
 BoxControlT<Dim> to_box_control(const proto::BoxControl& box, const WallIndex& walls) {
   BoxControlT<Dim> def;
+  read_fields(box, def);
   for (int i = 0; i < Dim; ++i) {
     const proto::BoxAxis& axis = box.axis(i);
     BoxAxisDef& a = def.axes[static_cast<std::size_t>(i)];
+    read_fields(axis, a);
     a.lower = walls.at(axis.lower_wall());
     a.upper = walls.at(axis.upper_wall());
     switch (axis.control_case()) {
       case proto::BoxAxis::kStrainRate:
         a.control = AxisControl::kStrainRate;
-        a.strain_rate = axis.strain_rate();
         break;
       case proto::BoxAxis::kStress:
         a.control = AxisControl::kStress;
-        a.stress = axis.stress();
         break;
       case proto::BoxAxis::kStressPath:
       case proto::BoxAxis::CONTROL_NOT_SET:
@@ -158,15 +142,14 @@ BoxControlT<Dim> to_box_control(const proto::BoxControl& box, const WallIndex& w
     def.path = StressPath::kStressRatio;
     def.path_value = box.stress_ratio();
   }
-  def.gain = box.gain();
-  def.max_speed = box.max_speed();
-  def.continuum = box.continuum();
   return def;
 }
 
 template <int Dim>
 CentripetalGravityT<Dim> to_centripetal(const proto::CentripetalGravity& field) {
-  return {to_vec<Dim>(field.centre()), field.acceleration()};
+  CentripetalGravityT<Dim> def;
+  read_fields(field, def);
+  return def;
 }
 
 template <int Dim>
@@ -207,27 +190,14 @@ int loading_stage(const proto::Case& c) {
   return 0;
 }
 
+// The numbers by their lists (case_rules.h), the plates by name here.
 analysis::CompressionSettings to_compression(const proto::Case& c, const WallIndex& walls) {
   const proto::CompressionOutput& compression = c.output().compression();
   analysis::CompressionSettings def;
+  read_fields(compression, def);
   def.loading_plate = walls.at(compression.loading_plate());
   def.bottom_plate = walls.at(compression.bottom_plate());
   def.loading_stage = loading_stage(c);
-  // proto3 cannot tell an unset number from 0, so 0 keeps the default.
-  if (compression.transition_stress() > 0) def.transition_stress = compression.transition_stress();
-  if (compression.final_stress() > 0) def.final_stress = compression.final_stress();
-  def.contacts_at_stress.assign(compression.contacts_at_stress().begin(), compression.contacts_at_stress().end());
-  if (compression.has_force_distribution()) {
-    const proto::ForceDistributionOutput& d = compression.force_distribution();
-    analysis::ForceDistributionSettings f;
-    f.stress_from = d.stress_from();
-    f.stress_to = d.stress_to();
-    if (d.snapshots() > 0) f.snapshots = static_cast<int>(d.snapshots());
-    if (d.bin_width() > 0) f.bin_width = d.bin_width();
-    if (d.tail_from() > 0) f.tail_from = d.tail_from();
-    def.force_distribution = f;
-  }
-  if (compression.stress_drop_fraction() > 0) def.stress_drop_fraction = compression.stress_drop_fraction();
   return def;
 }
 
@@ -256,11 +226,10 @@ class Converter {
     }
     if (case_.has_periodic()) {
       const proto::Periodic& p = case_.periodic();
+      read_fields(p, def.world.periodic);  // its bounds (case_rules.h)
       def.world.periodic.axes[0] = p.x();
       def.world.periodic.axes[1] = p.y();
       if constexpr (Dim == 3) def.world.periodic.axes[2] = p.z();
-      def.world.periodic.min = to_vec<Dim>(p.min());
-      def.world.periodic.max = to_vec<Dim>(p.max());
     }
     if (case_.planar_particle() == proto::Case::SPHERE) def.world.planar_particle = PlanarParticle::kSphere;
     // proto3 cannot tell an unset number from 0, so 0 keeps the engine's default.
@@ -277,10 +246,10 @@ class Converter {
   }
 
  private:
-  // BALL's TOL is a fraction of a radius. One beyond the largest diameter
-  // makes every pair within it a contact-table row: far apart particles
-  // by the million would make the table quadratic in their number.
+  // Validation could not read the particle files' radii; the particles
+  // are all known here. A case without files was checked there.
   void check_contact_tolerance(const WorldDefT<Dim>& world) const {
+    if (std::ranges::none_of(case_.particles(), [](const auto& source) { return source.has_csv_file(); })) return;
     double largest = 0.0;
     for (const ParticleDefT<Dim>& particle : world.particles) {
       double radius = particle.radius;  // a shaped particle's is set by the engine from its shape
@@ -291,11 +260,8 @@ class Converter {
       }
       largest = std::max(largest, radius);
     }
-    if (world.contact_tolerance > 2.0 * largest) {
-      throw CaseError(describe_problem(
-          source_, "numerics.contact_tolerance",
-          "must be at most the largest particle's diameter (" + format_number(2.0 * largest) + " m), got " +
-              format_number(world.contact_tolerance) + " m; leave it out for a tenth of the mean radius"));
+    if (const auto problem = contact_tolerance_problem(world.contact_tolerance, largest)) {
+      throw CaseError(describe_problem(source_, "numerics.contact_tolerance", *problem));
     }
   }
 
@@ -320,9 +286,7 @@ class Converter {
       const CaseLaw law = case_law(model);
       if (law.law) def.law = *law.law;
       if (law.parameters != nullptr) set_law_parameters(*law.parameters, def);
-      if (model.has_friction()) def.friction = model.friction();
-      if (model.has_cohesion()) def.cohesion = model.cohesion();
-      read_fields(model.rolling(), def.rolling);  // none (zeros) when the model leaves it out
+      read_fields(model, def);  // restitution, friction, cohesion, rolling (case_rules.h)
       world.contact_models.push_back(def);
     }
   }
@@ -373,10 +337,8 @@ class Converter {
 
   ParticleDefT<Dim> to_particle(const proto::Particle& particle) const {
     ParticleDefT<Dim> def;
-    def.position = to_vec<Dim>(particle.position());
-    def.radius = particle.radius();
+    read_fields(particle, def);  // its position, radius and velocity (case_rules.h)
     def.material = materials_.at(particle.material());
-    def.velocity = to_vec<Dim>(particle.velocity());
     def.angular_velocity = to_spin<Dim>(particle.angular_velocity(), particle.angular_velocity_3d());
     def.shape = to_shape<Dim>(particle);
     return def;
@@ -384,12 +346,8 @@ class Converter {
 
   LatticeDefT<Dim> to_lattice(const proto::Lattice& lattice) const {
     LatticeDefT<Dim> def;
+    read_fields(lattice, def);  // its numbers (case_rules.h)
     def.material = materials_.at(lattice.material());
-    def.radius = lattice.radius();
-    def.origin = to_vec<Dim>(lattice.origin());
-    def.columns = static_cast<int>(lattice.columns());
-    def.rows = static_cast<int>(lattice.rows());
-    if (lattice.layers() > 0) def.layers = static_cast<int>(lattice.layers());
     def.spacing = lattice.spacing() > 0 ? lattice.spacing() : 2 * lattice.radius();
     def.arrangement = lattice.arrangement() == proto::LATTICE_HEXAGONAL ? LatticeArrangement::kHexagonal
                                                                         : LatticeArrangement::kSquare;
@@ -398,14 +356,11 @@ class Converter {
 
   RandomPackingDefT<Dim> to_random_packing(const proto::RandomPacking& packing) const {
     RandomPackingDefT<Dim> def;
+    read_fields(packing, def);  // its box, seed and dense generation (case_rules.h)
     def.material = materials_.at(packing.material());
-    def.min = to_vec<Dim>(packing.min());
-    def.max = to_vec<Dim>(packing.max());
     for (const proto::SizeClass& size : packing.size()) {
       def.sizes.push_back({size.radius(), static_cast<int>(size.count()), to_shape<Dim>(size)});
     }
-    def.seed = packing.seed();
-    def.next_size_when_full = packing.next_size_when_full();
     // Unset, the engine's default - but no more than the limit allows: a
     // limit below the default (a small server, the fuzz targets) bounds the
     // work of a packing that nearly cannot fit whether or not the case asks.
@@ -443,8 +398,7 @@ class Converter {
     for (int i = 0; i < case_.wall_size(); ++i) {
       const proto::Wall& wall = case_.wall(i);
       WallDefT<Dim> def;
-      def.name = wall.name();
-      def.point = to_vec<Dim>(wall.point());
+      read_fields(wall, def);  // its name, point and extents (case_rules.h)
       if constexpr (Dim == 2) {
         if (wall.orientation_case() == proto::Wall::kAngleDeg) {
           const double angle = wall.angle_deg() * std::numbers::pi / 180.0;
@@ -458,11 +412,7 @@ class Converter {
         // engine wants them orthonormal, so the rest of v along u goes.
         const Vec3 v = to_vec<3>(wall.direction2());
         def.direction2 = (v - v.dot(def.direction) * def.direction).normalized();
-        def.k1 = wall.k1();
-        def.k2 = wall.k2();
       }
-      def.h1 = wall.h1();
-      def.h2 = wall.h2();
       if constexpr (Dim == 3) {
         if (wall.face_size() > 0) add_faces(wall, def);
       }
@@ -507,7 +457,7 @@ class Converter {
       for (const proto::MaterialFriction& friction : stage.friction()) {
         def.frictions.emplace_back(materials_.at(friction.material()), friction.friction());
       }
-      if (stage.has_trim()) def.trim = to_trim(stage.trim());
+      if (stage.has_trim()) read_fields(stage.trim(), def.trim.emplace());  // a smooth cut may leave out the wavelength
       if (stage.has_place_wall()) {
         def.place_wall = PlaceWallDef{walls_.at(stage.place_wall().wall()), stage.place_wall().clearance()};
       }

@@ -14,11 +14,11 @@ CaseLaw case_law(const proto::ContactModel& model) {
   return found;
 }
 
+// The restitution law's e is ContactModelDef's own, read by its list (case_rules.h).
 void set_law_parameters(const google::protobuf::Message& parameters, ContactModelDef& def) {
-  const auto* restitution = dynamic_cast<const proto::LinearRestitutionLaw*>(&parameters);
-  if (restitution != nullptr || dynamic_cast<const proto::LinearLaw*>(&parameters) != nullptr) {
+  if (dynamic_cast<const proto::LinearLaw*>(&parameters) != nullptr ||
+      dynamic_cast<const proto::LinearRestitutionLaw*>(&parameters) != nullptr) {
     read_fields(parameters, def.linear);  // both linear laws' stiffnesses, by LinearLawDef's list
-    if (restitution != nullptr) def.restitution = restitution->restitution();
   } else if (dynamic_cast<const proto::HertzLaw*>(&parameters) != nullptr) {
     read_fields(parameters, def.hertz);
   }

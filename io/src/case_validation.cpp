@@ -178,11 +178,14 @@ class CaseChecker {
       problems_.add(path, "sets both superquadric (2D) and ellipsoid (3D); keep the one of the case's dimension");
     }
     if (particle.has_superquadric()) {
-      check_shape(path + ".superquadric", particle.superquadric(), false);
+      const proto::Superquadric& shape = particle.superquadric();
+      if (check_shape(path + ".superquadric", shape, false)) note_radius(std::max(shape.a(), shape.b()));
     } else if (particle.has_ellipsoid()) {
-      check_ellipsoid_shape(path + ".ellipsoid", particle.ellipsoid(), false);
-    } else {
-      problems_.positive(path + ".radius", particle.radius());
+      if (check_ellipsoid_shape(path + ".ellipsoid", particle.ellipsoid(), false)) {
+        note_radius(largest_semi_axis(particle.ellipsoid()));
+      }
+    } else if (problems_.positive(path + ".radius", particle.radius())) {
+      note_radius(particle.radius());
     }
     const bool shaped = particle.has_superquadric() || particle.has_ellipsoid();
     if (shaped && particle.radius() != 0) {
@@ -194,6 +197,13 @@ class CaseChecker {
     check_spin(path + ".angular_velocity", particle.angular_velocity(), particle.has_angular_velocity_3d(),
                particle.angular_velocity_3d());
     particle_count_ = saturating_add(particle_count_, 1);
+  }
+
+  // A particle's bounding radius (its shape's largest semi-axis), for the contact tolerance.
+  void note_radius(double radius) { largest_radius_ = std::max(largest_radius_, radius); }
+  static double largest_semi_axis(const proto::Ellipsoid& shape) {
+    const proto::Vector& axes = shape.semi_axes();
+    return std::max({axes.x(), axes.y(), axes.z()});
   }
 
   // An angular velocity: a scalar about z in 2D, a vector in 3D.
@@ -228,7 +238,9 @@ class CaseChecker {
   void check_lattice(const std::string& path, const proto::Lattice& lattice) {
     shapes_.note(problems_, path, false, dimension_);
     material_reference(path + ".material", lattice.material());
-    const bool radius_ok = problems_.positive(path + ".radius", lattice.radius());
+    check_fields<LatticeDefT<3>>(lattice, path, problems_);  // a 2D lattice's rules are the same
+    const bool radius_ok = !problems_.reported(path + ".radius");
+    if (radius_ok) note_radius(lattice.radius());
     vector(path + ".origin", lattice.origin());
     if (lattice.columns() == 0) problems_.add(path + ".columns", "must be > 0");
     if (lattice.rows() == 0) problems_.add(path + ".rows", "must be > 0");
@@ -282,10 +294,10 @@ class CaseChecker {
       }
       if (size.has_ellipsoid()) {
         // Placed by its bounding sphere (dem/packing.h), of the largest semi-axis.
-        const proto::Vector& axes = size.ellipsoid().semi_axes();
-        const double largest = std::max({axes.x(), axes.y(), axes.z()});
-        if (check_ellipsoid_shape(size_path + ".ellipsoid", size.ellipsoid(), true) && box_ok &&
-            2 * largest > smallest_side) {
+        const double largest = largest_semi_axis(size.ellipsoid());
+        const bool shape_ok = check_ellipsoid_shape(size_path + ".ellipsoid", size.ellipsoid(), true);
+        if (shape_ok) note_radius(largest);
+        if (shape_ok && box_ok && 2 * largest > smallest_side) {
           problems_.add(size_path + ".ellipsoid", "ellipsoids with a semi-axis of " + format_number(largest) +
                                                       " do not fit in the box (" + box + ")");
         }
@@ -293,16 +305,20 @@ class CaseChecker {
         // Placed by its bounding circle (dem/packing.h), at least as large
         // as the larger semi-axis.
         const proto::Superquadric& shape = size.superquadric();
-        if (check_shape(size_path + ".superquadric", shape, true) && box_ok &&
-            2 * std::max(shape.a(), shape.b()) > smallest_side) {
+        const bool shape_ok = check_shape(size_path + ".superquadric", shape, true);
+        if (shape_ok) note_radius(std::max(shape.a(), shape.b()));
+        if (shape_ok && box_ok && 2 * std::max(shape.a(), shape.b()) > smallest_side) {
           problems_.add(size_path + ".superquadric", "superquadrics with a semi-axis of " +
                                                          format_number(std::max(shape.a(), shape.b())) +
                                                          " do not fit in the box (" + box + ")");
         }
-      } else if (problems_.positive(size_path + ".radius", size.radius()) && box_ok &&
-                 2 * size.radius() > smallest_side) {
-        problems_.add(size_path + ".radius", std::string(three ? "spheres" : "discs") + " of radius " +
-                                                 format_number(size.radius()) + " do not fit in the box (" + box + ")");
+      } else if (problems_.positive(size_path + ".radius", size.radius())) {
+        note_radius(size.radius());
+        if (box_ok && 2 * size.radius() > smallest_side) {
+          problems_.add(size_path + ".radius", std::string(three ? "spheres" : "discs") + " of radius " +
+                                                   format_number(size.radius()) + " do not fit in the box (" + box +
+                                                   ")");
+        }
       }
       if (size.count() == 0) problems_.add(size_path + ".count", "must be > 0");
       particle_count_ = saturating_add(particle_count_, size.count());
@@ -325,8 +341,7 @@ class CaseChecker {
     for (const proto::SizeClass& size : packing.size()) {
       double radius = size.radius();
       if (size.has_ellipsoid()) {
-        const proto::Vector& axes = size.ellipsoid().semi_axes();
-        radius = std::max({axes.x(), axes.y(), axes.z()});
+        radius = largest_semi_axis(size.ellipsoid());
       } else if (size.has_superquadric()) {
         // Its bounding circle is at least this large (it reaches the
         // corners when n > 2), so the cells and the room are not underestimated.
@@ -513,8 +528,9 @@ class CaseChecker {
     vector(path + ".velocity", motion.velocity());
     check_spin(path + ".angular_velocity", motion.angular_velocity(), motion.has_angular_velocity_3d(),
                motion.angular_velocity_3d());
+    check_fields<WallMotionT<3>>(motion, path,
+                                 problems_);  // the servo's numbers when set; a 2D motion's rules are the same
     if (!motion.has_servo()) return;
-    check_fields<ServoDef>(motion.servo(), path + ".servo", problems_);
     const proto::Vector& v = motion.velocity();
     const proto::Vector& spin = motion.angular_velocity_3d();
     if (v.x() != 0 || v.y() != 0 || v.z() != 0 || motion.angular_velocity() != 0 || spin.x() != 0 || spin.y() != 0 ||
@@ -622,12 +638,11 @@ class CaseChecker {
         problems_.add(axis_path + ".upper_wall",
                       "must differ from lower_wall (both are " + in_quotes(axis.lower_wall()) + ")");
       }
+      check_fields<BoxAxisDef>(axis, axis_path, problems_);  // the strain rate or stress, whichever is set
       switch (axis.control_case()) {
         case proto::BoxAxis::kStrainRate:
-          problems_.finite(axis_path + ".strain_rate", axis.strain_rate());
           break;
         case proto::BoxAxis::kStress:
-          problems_.positive(axis_path + ".stress", axis.stress());
           servo = true;
           break;
         case proto::BoxAxis::kStressPath:
@@ -679,11 +694,10 @@ class CaseChecker {
   }
 
   // Miyata et al. (2002) eq. 60: a sine of this amplitude and wavelength
-  // about the height; a smooth cut needs no wavelength.
+  // about the height (case_rules.h); a smooth cut needs no wavelength.
   void check_trim(const std::string& path, const proto::Trim& trim) {
-    problems_.finite(path + ".height", trim.height());
-    const bool amplitude_ok = problems_.non_negative(path + ".amplitude", trim.amplitude());
-    if (amplitude_ok && trim.amplitude() > 0) {
+    check_fields<TrimDef>(trim, path, problems_);
+    if (!problems_.reported(path + ".amplitude") && trim.amplitude() > 0) {
       if (problems_.finite(path + ".wavelength", trim.wavelength()) && !(trim.wavelength() > 0)) {
         problems_.add(path + ".wavelength", "must be > 0 for a rough surface (amplitude " +
                                                 format_number(trim.amplitude()) + "; got " +
@@ -697,7 +711,7 @@ class CaseChecker {
   // Randall's centripetal gravity field (6.4.2).
   void check_centripetal(const std::string& path, const proto::CentripetalGravity& field) {
     vector(path + ".centre", field.centre());
-    problems_.non_negative(path + ".acceleration", field.acceleration());
+    check_fields<CentripetalGravityT<3>>(field, path, problems_);  // a 2D field's rules are the same
   }
 
   void check_threshold(const std::string& path, const proto::WallThreshold& threshold) {
@@ -731,30 +745,16 @@ class CaseChecker {
       }
       problems_.positive(region_path + ".value", threshold.value());
     }
-    if (until.has_deviator_strain_above()) {
-      problems_.positive(path + ".deviator_strain_above", until.deviator_strain_above());
-      if (!box_controlled_) {
-        problems_.add(path + ".deviator_strain_above", "no box control is set during this stage (box_control)");
-      }
+    check_fields<StopConditions>(until, path, problems_);
+    if (until.has_deviator_strain_above() && !box_controlled_) {
+      problems_.add(path + ".deviator_strain_above", "no box control is set during this stage (box_control)");
     }
     if (until.has_wall_stress_above()) check_threshold(path + ".wall_stress_above", until.wall_stress_above());
     if (until.has_wall_settlement_above()) {
       check_threshold(path + ".wall_settlement_above", until.wall_settlement_above());
     }
-    if (until.has_kinetic_energy_below()) {
-      problems_.positive(path + ".kinetic_energy_below", until.kinetic_energy_below());
-    }
-    if (until.has_out_of_balance_below()) {
-      problems_.positive(path + ".out_of_balance_below", until.out_of_balance_below());
-    }
-    if (until.has_kinetic_to_elastic_below()) {
-      problems_.positive(path + ".kinetic_to_elastic_below", until.kinetic_to_elastic_below());
-    }
-    if (until.has_unbalanced_force_below()) {
-      problems_.positive(path + ".unbalanced_force_below", until.unbalanced_force_below());
-    }
-    if (until.has_servo_tolerance() && problems_.positive(path + ".servo_tolerance", until.servo_tolerance()) &&
-        !any_servo && !box_controlled_) {
+    if (until.has_servo_tolerance() && !problems_.reported(path + ".servo_tolerance") && !any_servo &&
+        !box_controlled_) {
       problems_.add(path + ".servo_tolerance", "no wall is servo-controlled during this stage");
     }
     if (stage.cycles() > 0 && until.min_cycles() > stage.cycles()) {
@@ -853,8 +853,17 @@ class CaseChecker {
     }
   }
 
+  // The tolerance against the largest particle the sources give: all of
+  // them unless a particle file's radii are unknown until conversion
+  // reads it (case_conversion.cpp). Without a sound particle the sources
+  // have their own problems.
   void check_numerics() {
-    problems_.non_negative("numerics.contact_tolerance", case_.numerics().contact_tolerance());
+    const double tolerance = case_.numerics().contact_tolerance();
+    if (problems_.non_negative("numerics.contact_tolerance", tolerance) && count_known_ && largest_radius_ > 0) {
+      if (const auto problem = contact_tolerance_problem(tolerance, largest_radius_)) {
+        problems_.add("numerics.contact_tolerance", *problem);
+      }
+    }
     if (const auto problem = thread_count_problem(case_.numerics().threads(), limits_)) {
       problems_.add("numerics.threads", *problem);
     }
@@ -868,7 +877,8 @@ class CaseChecker {
   std::set<std::string> particle_materials_;
   std::set<std::string> wall_materials_;
   std::uint64_t particle_count_ = 0;
-  bool count_known_ = true;  // false once a csv_file source holds an unknown number
+  bool count_known_ = true;      // false once a csv_file source holds an unknown number (and unknown radii)
+  double largest_radius_ = 0.0;  // m, of the particles whose size passed its checks
   ShapeMix shapes_;
   int dimension_ = 0;            // 2 or 3; 0 until known (or when the case declares neither)
   bool box_controlled_ = false;  // a box control is set in the stage being checked

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "case_fields.h"
 #include "dem/analysis/compression_settings.h"
 #include "field_path.h"
 #include "format_number.h"
@@ -11,10 +12,11 @@ namespace {
 
 constexpr const char* kPath = "output.compression";
 
+// Its numbers passed their rules (case_rules.h); these hold across them.
 void check_force_distribution(const proto::ForceDistributionOutput& d, ProblemList& problems) {
   const std::string path = std::string(kPath) + ".force_distribution";
-  const bool from_ok = problems.positive(path + ".stress_from", d.stress_from());
-  if (problems.finite(path + ".stress_to", d.stress_to()) && from_ok && !(d.stress_to() > d.stress_from())) {
+  if (!problems.reported(path + ".stress_to") && !problems.reported(path + ".stress_from") &&
+      !(d.stress_to() > d.stress_from())) {
     problems.add(path + ".stress_to", "must exceed stress_from (" + format_number(d.stress_to()) +
                                           " <= " + format_number(d.stress_from()) + ")");
   }
@@ -23,8 +25,6 @@ void check_force_distribution(const proto::ForceDistributionOutput& d, ProblemLi
                  "must be at least 2 (the first at stress_from, the last at stress_to); "
                  "leave it out for 10");
   }
-  problems.non_negative(path + ".bin_width", d.bin_width());
-  problems.non_negative(path + ".tail_from", d.tail_from());
 }
 
 }  // namespace
@@ -37,8 +37,9 @@ void check_compression_output(const proto::CompressionOutput& c, const NameIndex
     problems.add(path + ".bottom_plate",
                  "must differ from loading_plate (both are " + in_quotes(c.bottom_plate()) + ")");
   }
-  const bool transition_ok = problems.non_negative(path + ".transition_stress", c.transition_stress());
-  const bool final_ok = problems.non_negative(path + ".final_stress", c.final_stress());
+  check_fields<analysis::CompressionSettings>(c, path, problems);  // each number by its rule (case_rules.h)
+  const bool transition_ok = !problems.reported(path + ".transition_stress");
+  const bool final_ok = !problems.reported(path + ".final_stress");
   const analysis::CompressionSettings defaults;
   const double transition = c.transition_stress() > 0 ? c.transition_stress() : defaults.transition_stress;
   const double final_stress = c.final_stress() > 0 ? c.final_stress() : defaults.final_stress;
@@ -48,12 +49,8 @@ void check_compression_output(const proto::CompressionOutput& c, const NameIndex
                                              format_number(defaults.transition_stress) + " and " +
                                              format_number(defaults.final_stress) + ")");
   }
-  for (int i = 0; i < c.contacts_at_stress_size(); ++i) {
-    problems.positive(indexed(path + ".contacts_at_stress", i), c.contacts_at_stress(i));
-  }
   if (c.has_force_distribution()) check_force_distribution(c.force_distribution(), problems);
-  if (problems.non_negative(path + ".stress_drop_fraction", c.stress_drop_fraction()) &&
-      !(c.stress_drop_fraction() < 1)) {
+  if (!problems.reported(path + ".stress_drop_fraction") && !(c.stress_drop_fraction() < 1)) {
     problems.add(path + ".stress_drop_fraction", "must be in [0, 1) (got " + format_number(c.stress_drop_fraction()) +
                                                      "); leave it out for " +
                                                      format_number(defaults.stress_drop_fraction));

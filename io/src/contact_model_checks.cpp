@@ -63,9 +63,8 @@ class ContactModelChecker {
         ids.push_back(find_material(problems_, uses_.materials, indexed(path + ".materials", j), model.materials(j)));
       }
       check_law(path, model);
-      if (model.has_friction()) problems_.non_negative(path + ".friction", model.friction());
-      if (model.has_cohesion()) problems_.non_negative(path + ".cohesion", model.cohesion());
-      if (model.has_rolling()) check_fields<RollingResistanceDef>(model.rolling(), path + ".rolling", problems_);
+      // Restitution, friction, cohesion and rolling resistance by their rules (case_rules.h).
+      check_fields<ContactModelDef>(model, path, problems_);
 
       if (named > 2 || std::ranges::count(ids, -1) > 0) continue;
       const std::pair<int, int> pair = named == 0   ? std::pair{-1, -1}
@@ -89,7 +88,8 @@ class ContactModelChecker {
     if (pairs_hertz || walls_hertz) check_elastic_constants(touching.particle_ids);
   }
 
-  // Each law's parameters by the type of their message (case_laws.h).
+  // Each law's parameters by the type of their message (case_laws.h); the
+  // restitution law's e is the model's own (case_rules.h).
   void check_law(const std::string& path, const proto::ContactModel& model) {
     const CaseLaw law = case_law(model);
     if (law.field == nullptr) {
@@ -99,10 +99,9 @@ class ContactModelChecker {
     }
     const std::string where = path + "." + law.field->name();
     if (!law.law) problems_.add(where, "is no contact law of this engine");
-    const auto* restitution = dynamic_cast<const proto::LinearRestitutionLaw*>(law.parameters);
-    if (restitution != nullptr || dynamic_cast<const proto::LinearLaw*>(law.parameters) != nullptr) {
+    if (dynamic_cast<const proto::LinearLaw*>(law.parameters) != nullptr ||
+        dynamic_cast<const proto::LinearRestitutionLaw*>(law.parameters) != nullptr) {
       check_fields<LinearLawDef>(*law.parameters, where, problems_);  // both linear laws' stiffnesses
-      if (restitution != nullptr) problems_.within(where + ".restitution", restitution->restitution(), kRestitution);
     } else if (dynamic_cast<const proto::HertzLaw*>(law.parameters) != nullptr) {
       check_fields<HertzDampingDef>(*law.parameters, where, problems_);
     }

@@ -3,8 +3,10 @@
 // wherever it applies.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -51,6 +53,17 @@ inline constexpr double kSmallestMagnitude = 1e-30;
 inline std::string no_particle_with_id(std::uint64_t id, std::uint64_t count) {
   return "no particle with id " + std::to_string(id) + " (the case defines " + std::to_string(count) + " particles" +
          (count > 0 ? ", ids 0 to " + std::to_string(count - 1) : "") + ")";
+}
+
+// Why a contact tolerance is too wide, for validation and for conversion
+// (which alone reads the particle files' radii). BALL's TOL is a fraction
+// of a radius. One beyond the largest diameter makes every pair within it
+// a contact-table row: far apart particles by the million would make the
+// table quadratic in their number.
+inline std::optional<std::string> contact_tolerance_problem(double tolerance, double largest_radius) {
+  if (!(tolerance > 2.0 * largest_radius)) return std::nullopt;
+  return "must be at most the largest particle's diameter (" + format_number(2.0 * largest_radius) + " m), got " +
+         format_number(tolerance) + " m; leave it out for a tenth of the mean radius";
 }
 
 // Each check returns whether the value passed, so callers can skip checks
@@ -104,6 +117,12 @@ class ProblemList {
     if (above && below) return true;
     add(path, "must be in " + interval.text() + " (got " + format_number(value) + ")");
     return false;
+  }
+
+  // Whether a problem names the field: a check across fields builds on one
+  // that passed its rule (case_rules.h).
+  bool reported(const std::string& path) const {
+    return std::ranges::any_of(list_, [&](const CaseProblem& problem) { return problem.path == path; });
   }
 
   std::vector<CaseProblem> take() { return std::move(list_); }

@@ -2,16 +2,17 @@
 
 #include <cmath>
 
+#include "case_fields.h"
+
 namespace dem::io {
 
 bool check_superquadric(ProblemList& problems, const std::string& path, const proto::Superquadric& shape,
                         bool random_angle) {
-  const bool a_ok = problems.positive(path + ".a", shape.a());
-  const bool b_ok = problems.positive(path + ".b", shape.b());
-  // Miyata et al. (2002) 2.3(1): 1 < n <= 10 keeps the surface smooth and
-  // convex, away from the corners of n = 1 and the difficulties above 10.
-  const bool n_ok = problems.within(path + ".n", shape.n(), Interval{1.0, 10.0, true, false});
-  bool angle_ok = problems.finite(path + ".angle_deg", shape.angle_deg());
+  check_fields<ShapeDefT<2>>(shape, path, problems);  // a, b, n and the angle by their rules (case_rules.h)
+  const bool a_ok = !problems.reported(path + ".a");
+  const bool b_ok = !problems.reported(path + ".b");
+  const bool n_ok = !problems.reported(path + ".n");
+  bool angle_ok = !problems.reported(path + ".angle_deg");
   if (angle_ok && random_angle && shape.angle_deg() != 0) {
     problems.add(path + ".angle_deg",
                  "a random packing turns each particle at a random seeded angle; leave angle_deg out");

@@ -641,6 +641,22 @@ TEST_F(CaseConversion3d, ProbeIdsAreCheckedOnceTheParticleFilesAreRead) {
   }
 }
 
+// Validation cannot see a particle file's radii (0.001 m here): the
+// tolerance is held to them once the file is read.
+TEST_F(CaseConversion3d, TheContactToleranceIsCheckedOnceTheParticleFilesAreRead) {
+  loaded_.message.mutable_numerics()->set_contact_tolerance(0.003);
+  EXPECT_TRUE(find_case_problems(loaded_.message).empty());
+  try {
+    convert();
+    FAIL() << "a tolerance beyond every particle's diameter converted";
+  } catch (const CaseError& error) {
+    ASSERT_EQ(error.problems().size(), 1u);
+    EXPECT_THAT(error.problems()[0], HasSubstr("numerics.contact_tolerance: must be at most the largest particle's "
+                                               "diameter (0.002 m), got 0.003 m; leave it out for a tenth of the "
+                                               "mean radius"));
+  }
+}
+
 class SuperquadricConversion : public ::testing::Test {
  protected:
   proto::Case case_ = load_case_file(test::data_path("superquadrics.case.txtpb")).message;

@@ -39,6 +39,25 @@ TEST(CaseValidation, ReportsEveryProblemAtOnce) {
   }
 }
 
+// Every pair within the contact tolerance gets a contact-table row: it is
+// held to the largest particle the sources give, a shape's by its larger
+// semi-axis, and only once every source's size passed its own checks.
+TEST(CaseValidation, TheContactToleranceIsHeldToTheLargestParticle) {
+  proto::Case c = load_case_file(test::data_path("superquadrics.case.txtpb")).message;
+  c.mutable_particles(0)->mutable_particle()->mutable_superquadric()->set_a(0.01);
+  c.mutable_particles(2)->mutable_random_packing()->mutable_size(0)->mutable_superquadric()->set_b(0.045);
+  c.mutable_numerics()->set_contact_tolerance(0.09);
+  EXPECT_EQ(test::problem_text(c), "");
+  c.mutable_numerics()->set_contact_tolerance(0.091);
+  EXPECT_EQ(test::problem_text(c),
+            "numerics.contact_tolerance: must be at most the largest particle's diameter (0.09 m), got 0.091 m; leave "
+            "it out for a tenth of the mean radius\n");
+  // A size that failed its own check does not count: the others' largest does.
+  c.mutable_particles(2)->mutable_random_packing()->mutable_size(0)->mutable_superquadric()->set_n(20);
+  EXPECT_THAT(test::problem_text(c), HasSubstr("numerics.contact_tolerance: must be at most the largest particle's "
+                                               "diameter (0.08 m), got 0.091 m"));
+}
+
 // One plausible mistake: a change to the valid case and a piece of the message
 // that must name the field.
 struct Mistake {
@@ -374,6 +393,9 @@ const Mistake kMistakes[] = {
      "gravity.z: must be 0 in a 2D case (got -9.81); set dimension: 3 for a 3D case"},
     {"NegativeContactTolerance", [](auto& c) { c.mutable_numerics()->set_contact_tolerance(-0.001); },
      "numerics.contact_tolerance: must be >= 0 (got -0.001)"},
+    {"ContactToleranceBeyondTheLargestDiameter", [](auto& c) { c.mutable_numerics()->set_contact_tolerance(0.5); },
+     "numerics.contact_tolerance: must be at most the largest particle's diameter (0.02 m), got 0.5 m; leave it out "
+     "for a tenth of the mean radius"},
     {"TooManyThreads", [](auto& c) { c.mutable_numerics()->set_threads(3'000'000'000u); },
      "numerics.threads: asks for 3000000000 threads; this machine gives the process"},
     {"HundredThousandThreads", [](auto& c) { c.mutable_numerics()->set_threads(100'000); },
