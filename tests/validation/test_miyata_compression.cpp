@@ -23,11 +23,12 @@ std::filesystem::path case_file(const std::string& name) {
   return std::filesystem::path(DEM_CASES_DIR) / "miyata" / (name + ".case.txtpb");
 }
 
-std::vector<MiyataPacking> run_packings(const std::string& name, int count) {
+// `folder` keeps apart the runs of tests that CTest may run side by side.
+std::vector<MiyataPacking> run_packings(const std::string& name, int count, const std::string& folder = "miyata") {
   const std::filesystem::path file = case_file(name);
   const MiyataCase spec = read_miyata_case(file);
   const std::vector<MiyataPacking> packings =
-      run_miyata_packings(file, std::filesystem::path(DEM_VALIDATION_TEST_OUTPUT) / "miyata" / name,
+      run_miyata_packings(file, std::filesystem::path(DEM_VALIDATION_TEST_OUTPUT) / folder / name,
                           packing_seeds(spec.packing_seed, count), 2, 1);
   for (const MiyataPacking& p : packings) {
     print_miyata_report(stdout, name + ", " + p.label, p.figures);
@@ -102,6 +103,44 @@ TEST(MiyataCompression, EllipsoidsReducedOverPackings) {
       judge_over_packings(read_miyata_case(case_file("ellipsoids_reduced")), packings, most_of(packings.size()), judge);
   verdict.print(stdout, "over packings");
   EXPECT_TRUE(verdict.passed()) << verdict;
+}
+
+// Known disagreements: the seed's own statements, asserted, that this
+// model does not reproduce (docs/VALIDATION.md gives the evidence). Their
+// names start with DISABLED_ so that the discovered tests skip them; CTest
+// runs each on its own (tests/validation/CMakeLists.txt) and passes it only
+// while it fails on its assertion, so the day the model agrees with the
+// seed the entry fails and asks for the docs and this test to change.
+constexpr const char* kStillDisagrees = "KNOWN DISAGREEMENT, as documented:";
+
+// Fig. 32: above 400 kPa the curve is "almost linear" and the sample
+// "behaves as a continuum" - straight (R^2 > 0.95) and without giving way
+// in most of fifteen packings. Here about 11 of 15 are straight.
+TEST(MiyataCompression, DISABLED_KnownDisagreementEllipsoidsFinalStateStraight) {
+  const std::vector<MiyataPacking> packings = run_packings("ellipsoids_reduced", 15, "known_disagreements");
+  const Verdict verdict = judge_over_packings(read_miyata_case(case_file("ellipsoids_reduced")), packings,
+                                              most_of(packings.size()), judge_miyata_final_state);
+  verdict.print(stdout, "the seed's final state over packings");
+  if (!verdict.passed()) std::printf("%s the 3D final state gives way or bends\n", kStillDisagrees);
+  EXPECT_TRUE(verdict.passed()) << verdict;
+}
+
+// Fig. 26, 3.2(3): "There is no stress release for samples of
+// rectangular particles" - judged as everywhere here, in most packings:
+// at most one of five releases after the initial state. Here the reduced
+// SR releases in three of five (SS in one).
+TEST(MiyataCompression, DISABLED_KnownDisagreementRectanglesNeverReleaseStress) {
+  bool agrees = true;
+  for (const char* name : {"ss_reduced", "sr_reduced"}) {
+    const std::vector<MiyataPacking> packings = run_packings(name, 5, "known_disagreements");
+    const int releasing = releasing_packings(packings);
+    const int allowed = static_cast<int>(packings.size()) - most_of(packings.size());
+    std::printf("%s: %d of %zu packings release stress after the initial state (at most %d allowed)\n", name, releasing,
+                packings.size(), allowed);
+    EXPECT_LE(releasing, allowed) << name;
+    agrees = agrees && releasing <= allowed;
+  }
+  if (!agrees) std::printf("%s the rectangles release stress\n", kStillDisagrees);
 }
 
 }  // namespace
