@@ -22,6 +22,10 @@ struct Field {
 template <class Struct, class Member>
 Field(std::string_view, Member Struct::*) -> Field<Struct, Member>;
 
+// A list's entry, the member's name spelled once: DEM_FIELD(MaterialDef, friction).
+#define DEM_FIELD(Struct, member) \
+  ::dem::Field { #member, &Struct::member }
+
 namespace detail {
 
 // Converts to any member type: counts an aggregate's members by the

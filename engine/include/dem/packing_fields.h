@@ -12,9 +12,6 @@
 
 namespace dem {
 
-#define DEM_FIELD(Struct, member) \
-  Field { #member, &Struct::member }
-
 template <int Dim>
 struct SnapshotFields<LatticeDefT<Dim>> {
   using Lattice = LatticeDefT<Dim>;
@@ -31,8 +28,6 @@ struct SnapshotFields<RandomPackingDefT<Dim>> {
                       DEM_FIELD(Packing, sizes), DEM_FIELD(Packing, seed), DEM_FIELD(Packing, max_attempts),
                       DEM_FIELD(Packing, next_size_when_full), DEM_FIELD(Packing, stopped));
 };
-
-#undef DEM_FIELD
 
 #define DEM_PACKING_FIELDS_COMPLETE(...)                         \
   static_assert(detail::snapshot_fields_complete<__VA_ARGS__>(), \

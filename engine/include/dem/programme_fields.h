@@ -12,9 +12,6 @@
 
 namespace dem {
 
-#define DEM_FIELD(Struct, member) \
-  Field { #member, &Struct::member }
-
 template <>
 struct SnapshotFields<StopConditions> {
   using Until = StopConditions;
@@ -30,8 +27,6 @@ struct SnapshotFields<TrimDef> {
   static constexpr auto list =
       std::make_tuple(DEM_FIELD(TrimDef, height), DEM_FIELD(TrimDef, amplitude), DEM_FIELD(TrimDef, wavelength));
 };
-
-#undef DEM_FIELD
 
 static_assert(detail::snapshot_fields_complete<StopConditions>(),
               "StopConditions changed: give the new member its line in SnapshotFields (dem/programme_fields.h)");

@@ -23,9 +23,6 @@ namespace dem {
 template <class T>
 struct SnapshotFields;
 
-#define DEM_FIELD(Struct, member) \
-  Field { #member, &Struct::member }
-
 template <>
 struct SnapshotFields<MaterialDef> {
   static constexpr auto list = std::make_tuple(
@@ -175,8 +172,6 @@ struct SnapshotFields<WorldSnapshotT<Dim>> {
       DEM_FIELD(State, cycle), DEM_FIELD(State, time), DEM_FIELD(State, time_step),
       DEM_FIELD(State, critical_time_step), DEM_FIELD(State, continuum));
 };
-
-#undef DEM_FIELD
 
 // A struct with a list above.
 template <class T>

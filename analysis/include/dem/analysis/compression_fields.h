@@ -13,9 +13,6 @@
 
 namespace dem {
 
-#define DEM_FIELD(Struct, member) \
-  Field { #member, &Struct::member }
-
 template <>
 struct SnapshotFields<analysis::ForceDistributionSettings> {
   using Settings = analysis::ForceDistributionSettings;
@@ -32,8 +29,6 @@ struct SnapshotFields<analysis::CompressionSettings> {
                       DEM_FIELD(Settings, final_stress), DEM_FIELD(Settings, contacts_at_stress),
                       DEM_FIELD(Settings, force_distribution), DEM_FIELD(Settings, stress_drop_fraction));
 };
-
-#undef DEM_FIELD
 
 static_assert(detail::snapshot_fields_complete<analysis::ForceDistributionSettings>(),
               "ForceDistributionSettings changed: give the new member its line (dem/analysis/compression_fields.h)");
